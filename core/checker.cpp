@@ -1,0 +1,284 @@
+// The exact triangulation checker. Rules, checked in this order (the first broken one is
+// reported, naming the rule, the triangle number and the vertex indices):
+//   1. every triangle index is in range;
+//   2. the three vertices of a triangle belong to one part; per part, the triangle count is
+//      n + 2h - 2 - 2d (n vertices, h holes, d = vertices whose point repeats an earlier vertex
+//      of the part: by Euler's formula F = 2V - n - 2*chi with V = n - d distinct points and
+//      chi = 1 - h, so each point where rings touch removes two triangles);
+//   3. every triangle is counter-clockwise and non-degenerate (exact orient > 0);
+//   4. no directed edge appears in two triangles;
+//   5. every boundary edge, directed with the interior on its left (outer ring
+//      counter-clockwise, holes clockwise, whatever the input orientation), appears exactly once
+//      as a directed triangle edge, and its reverse never;
+//   6. every other directed triangle edge (a, b) has its twin (b, a) in another triangle;
+//   7. the exact sum of the doubled triangle areas equals the exact doubled polygon area.
+// Vertex identity is by index: coincident copies of a point are different vertices, and a
+// triangle may use any copy of its part. Edges, however, are matched through a canonical copy
+// (the lowest index of the part with the same coordinates): where a hole touches the outer ring at a point, each wedge
+// of interior around that point is bounded by one edge of each ring, so its fan of triangles
+// must meet both copies' edges. Without repeated coordinates this is plain index identity.
+// Linear time: open-addressing hash tables of directed edges keyed by (a << 32 | b).
+#include "checker.h"
+
+#include <cstdint>
+#include <cstring>
+#include <sstream>
+
+#include "predicates.h"
+
+namespace flood {
+
+namespace {
+
+// Open-addressing hash map from directed edge to the triangle that uses it.
+class EdgeTable {
+public:
+    explicit EdgeTable(size_t expected) {
+        size_t cap = 16;
+        while (cap < expected * 2) cap <<= 1;
+        keys_.assign(cap, kEmpty);
+        values_.assign(cap, 0);
+        mask_ = cap - 1;
+    }
+    // Inserts key -> value; returns the existing value's slot when the key is already there.
+    bool insert(uint64_t key, uint32_t value, uint32_t& existing) {
+        for (size_t i = hash(key) & mask_;; i = (i + 1) & mask_) {
+            if (keys_[i] == kEmpty) {
+                keys_[i] = key;
+                values_[i] = value;
+                return true;
+            }
+            if (keys_[i] == key) {
+                existing = values_[i];
+                return false;
+            }
+        }
+    }
+    bool find(uint64_t key, uint32_t& value) const {
+        for (size_t i = hash(key) & mask_;; i = (i + 1) & mask_) {
+            if (keys_[i] == kEmpty) return false;
+            if (keys_[i] == key) {
+                value = values_[i];
+                return true;
+            }
+        }
+    }
+    bool contains(uint64_t key) const {
+        uint32_t v;
+        return find(key, v);
+    }
+
+private:
+    static constexpr uint64_t kEmpty = ~uint64_t(0);  // never a key: indices are < 2^32 - 1
+    static size_t hash(uint64_t k) {
+        k ^= k >> 33;
+        k *= 0xff51afd7ed558ccdULL;
+        k ^= k >> 33;
+        return size_t(k);
+    }
+    std::vector<uint64_t> keys_;
+    std::vector<uint32_t> values_;
+    size_t mask_ = 0;
+};
+
+inline uint64_t edgeKey(Index a, Index b) { return (uint64_t(a) << 32) | b; }
+
+// canonical[v] = the lowest index of the same part whose point equals vertex v's point
+// (0.0 == -0.0).
+std::vector<Index> canonicalVertices(const std::vector<Point>& V, const std::vector<Index>& part) {
+    size_t cap = 16;
+    while (cap < V.size() * 2) cap <<= 1;
+    std::vector<Index> slots(cap, kNone), canonical(V.size());
+    for (Index v = 0; v < V.size(); ++v) {
+        double x = V[v].x + 0.0, y = V[v].y + 0.0;  // folds -0.0 into 0.0
+        uint64_t bx, by;
+        std::memcpy(&bx, &x, 8);
+        std::memcpy(&by, &y, 8);
+        uint64_t h = bx * 0x9e3779b97f4a7c15ULL ^ (by + 0x632be59bd9b4e019ULL) * 0xbf58476d1ce4e5b9ULL ^
+                     uint64_t(part[v]) * 0x94d049bb133111ebULL;
+        h ^= h >> 31;
+        for (size_t i = h & (cap - 1);; i = (i + 1) & (cap - 1)) {
+            if (slots[i] == kNone) {
+                slots[i] = v;
+                canonical[v] = v;
+                break;
+            }
+            if (V[slots[i]] == V[v] && part[slots[i]] == part[v]) {
+                canonical[v] = slots[i];
+                break;
+            }
+        }
+    }
+    return canonical;
+}
+
+CheckResult fail(const std::string& s) { return {false, s}; }
+
+std::string triName(size_t t, const Triangle& tri) {
+    std::ostringstream o;
+    o << "triangle " << t << " (" << tri[0] << ", " << tri[1] << ", " << tri[2] << ")";
+    return o.str();
+}
+
+}  // namespace
+
+CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangle>& triangles) {
+    const size_t n = polygon.vertices.size();
+    const auto& V = polygon.vertices;
+    if (n >= kNone) return fail("polygon: too many vertices for 32-bit indices");
+
+    // Ring -> part, and vertex -> part (vertices are stored ring by ring).
+    std::vector<Index> partOfRing(polygon.rings.size(), kNone);
+    for (Index p = 0; p < polygon.parts.size(); ++p) {
+        const Part& part = polygon.parts[p];
+        for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) partOfRing[r] = p;
+    }
+    std::vector<Index> partOfVertex(n, kNone);
+    for (Index r = 0; r < polygon.rings.size(); ++r) {
+        const Ring& ring = polygon.rings[r];
+        if (ring.count < 3) {
+            std::ostringstream o;
+            o << "ring-too-short: ring " << r << " has " << ring.count << " vertices";
+            return fail(o.str());
+        }
+        for (Index i = 0; i < ring.count; ++i) partOfVertex[ring.first + i] = partOfRing[r];
+    }
+
+    // Rule 1: indices in range.
+    for (size_t t = 0; t < triangles.size(); ++t)
+        for (Index v : triangles[t])
+            if (v >= n) {
+                std::ostringstream o;
+                o << "index-out-of-range: " << triName(t, triangles[t]) << " uses vertex " << v
+                  << " but the polygon has " << n << " vertices";
+                return fail(o.str());
+            }
+
+    const std::vector<Index> C = canonicalVertices(V, partOfVertex);
+
+    // Rule 2: one part per triangle, and the count per part.
+    std::vector<size_t> countOfPart(polygon.parts.size(), 0);
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        const Triangle& tri = triangles[t];
+        Index p = partOfVertex[tri[0]];
+        if (p == kNone || partOfVertex[tri[1]] != p || partOfVertex[tri[2]] != p)
+            return fail("mixed-parts: " + triName(t, tri) + " has vertices from different parts");
+        countOfPart[p]++;
+    }
+    std::vector<size_t> copiesOfPart(polygon.parts.size(), 0);  // d: repeated points per part
+    for (Index v = 0; v < n; ++v)
+        if (C[v] != v) copiesOfPart[partOfVertex[v]]++;
+    for (Index p = 0; p < polygon.parts.size(); ++p) {
+        const Part& part = polygon.parts[p];
+        size_t verts = 0;
+        for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r)
+            verts += polygon.rings[r].count;
+        size_t d = copiesOfPart[p];
+        size_t expected = verts + 2 * (part.ringCount - 1) - 2 - 2 * d;
+        if (countOfPart[p] != expected) {
+            std::ostringstream o;
+            o << "triangle-count: part " << p << " has " << countOfPart[p]
+              << " triangles, expected n + 2h - 2 - 2d = " << expected << " (n = " << verts
+              << ", h = " << part.ringCount - 1 << ", d = " << d << " repeated points)";
+            return fail(o.str());
+        }
+    }
+
+    // Rule 3: counter-clockwise and non-degenerate.
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        const Triangle& tri = triangles[t];
+        int o = orient(V[tri[0]], V[tri[1]], V[tri[2]]);
+        if (o == 0) return fail("degenerate-triangle: " + triName(t, tri) + " has zero area");
+        if (o < 0) return fail("clockwise-triangle: " + triName(t, tri) + " is clockwise");
+    }
+
+    // Rule 4: directed triangle edges are distinct.
+    EdgeTable edges(triangles.size() * 3);
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        const Triangle& tri = triangles[t];
+        for (int k = 0; k < 3; ++k) {
+            Index a = tri[k], b = tri[(k + 1) % 3];
+            uint32_t other;
+            if (!edges.insert(edgeKey(C[a], C[b]), uint32_t(t), other)) {
+                std::ostringstream o;
+                o << "edge-used-twice: directed edge (" << a << ", " << b << ") is in "
+                  << triName(other, triangles[other]) << " and " << triName(t, tri);
+                return fail(o.str());
+            }
+        }
+    }
+
+    // Ring orientations and the polygon's doubled area.
+    ExactSum polygonArea;
+    EdgeTable boundary(n);
+    for (Index r = 0; r < polygon.rings.size(); ++r) {
+        const Ring& ring = polygon.rings[r];
+        ExactSum ringArea;
+        for (Index i = 0; i < ring.count; ++i)
+            ringArea.addCross(V[ring.first + i], V[ring.first + (i + 1) % ring.count]);
+        int s = ringArea.sign();
+        if (s == 0) {
+            std::ostringstream o;
+            o << "ring-zero-area: ring " << r << " has zero signed area";
+            return fail(o.str());
+        }
+        bool outer = partOfRing[r] != kNone && polygon.parts[partOfRing[r]].firstRing == r;
+        // Forward when the ring's own direction already has the interior on its left.
+        bool forward = outer ? s > 0 : s < 0;
+        polygonArea.add(ringArea, forward ? 1 : -1);
+        for (Index i = 0; i < ring.count; ++i) {
+            Index a = ring.first + i, b = ring.first + (i + 1) % ring.count;
+            if (!forward) std::swap(a, b);
+            uint32_t dummy;
+            if (!boundary.insert(edgeKey(C[a], C[b]), r, dummy)) {
+                std::ostringstream o;
+                o << "boundary-edge-shared: rings " << dummy << " and " << r
+                  << " share the boundary segment (" << a << ", " << b << ")";
+                return fail(o.str());
+            }
+            // Rule 5.
+            if (edges.find(edgeKey(C[b], C[a]), dummy)) {
+                std::ostringstream o;
+                o << "boundary-edge-reversed: " << triName(dummy, triangles[dummy])
+                  << " uses boundary edge (" << b << ", " << a << ") of ring " << r
+                  << " from outside";
+                return fail(o.str());
+            }
+            if (!edges.contains(edgeKey(C[a], C[b]))) {
+                std::ostringstream o;
+                o << "boundary-edge-missing: no triangle has boundary edge (" << a << ", " << b
+                  << ") of ring " << r;
+                return fail(o.str());
+            }
+        }
+    }
+
+    // Rule 6: interior edges come in twins.
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        const Triangle& tri = triangles[t];
+        for (int k = 0; k < 3; ++k) {
+            Index a = tri[k], b = tri[(k + 1) % 3];
+            if (boundary.contains(edgeKey(C[a], C[b]))) continue;
+            if (!edges.contains(edgeKey(C[b], C[a]))) {
+                std::ostringstream o;
+                o << "unmatched-edge: " << triName(t, tri) << " has interior edge (" << a << ", "
+                  << b << ") but no triangle has (" << b << ", " << a << ")";
+                return fail(o.str());
+            }
+        }
+    }
+
+    // Rule 7: areas.
+    ExactSum triangleArea;
+    for (const Triangle& tri : triangles) triangleArea.addTriangle(V[tri[0]], V[tri[1]], V[tri[2]]);
+    if (!(triangleArea == polygonArea)) {
+        std::ostringstream o;
+        o.precision(17);
+        o << "area-mismatch: triangles cover doubled area " << triangleArea.approx()
+          << ", the polygon has " << polygonArea.approx();
+        return fail(o.str());
+    }
+    return {true, ""};
+}
+
+}  // namespace flood

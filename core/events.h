@@ -1,0 +1,133 @@
+// The event log: one record per action of the flood machine (§4), the only thing that
+// crosses from the core to the viewer, the trace files and the transcript.
+// Every kind is declared once in the lists below; they generate the enums and the names.
+// Events hold vertex indices and numbers only, never pointers, so traces serialize and replay.
+#pragma once
+#include <cstdint>
+
+#include "polygon.h"
+
+namespace flood {
+
+constexpr int kTraceFormatVersion = 1;
+
+// X(name, word in transcripts, one-line meaning)
+#define FLOOD_ACTIONS(X)                                                                   \
+    X(Start, "Start", "the water starts at the lowest bottom of a part")                   \
+    X(Raise, "Raise", "Next joins the active chain; triangles cut from the chain to it")   \
+    X(Bridge, "Bridge", "a sag in the gorge is joined to the chain; the gorge splits")     \
+    X(Spill, "Spill", "a top overflows; flooding moves to the gorge beyond it")            \
+    X(Jump, "Jump", "the water reaches a top from its far side; back to the other bank")   \
+    X(Fill, "Fill", "NextLeft and NextRight meet; the gorge is filled to its ceiling")     \
+    X(Forbidden, "Forbidden", "a forbidden state or transition: the input is invalid")
+
+enum class Action : uint8_t {
+#define FLOOD_X(name, word, meaning) name,
+    FLOOD_ACTIONS(FLOOD_X)
+#undef FLOOD_X
+        Count
+};
+
+// The tests of the decision tree (Fig. 9) in the order they run. An event records which
+// ran (Event::tested) and their outcomes (Event::passed), one bit each.
+#define FLOOD_TESTS(X)                                                       \
+    X(SameNext, "NextLeft == NextRight")                                    \
+    X(LeftLower, "NextLeft below NextRight (Next is NextLeft, C is Left)")  \
+    X(NextAbove, "Next above C (the bank goes up)")                         \
+    X(SagInside, "a sag lies inside Left, Right, NextRight, NextLeft")      \
+    X(CIsTop, "C is concave (a top, not a ceiling)")                        \
+    X(JumpSet, "C has a jump pointer")                                      \
+    X(WalkLanded, "the walk down the far side of the top found the gorge")
+
+enum class Test : uint8_t {
+#define FLOOD_X(name, text) name,
+    FLOOD_TESTS(FLOOD_X)
+#undef FLOOD_X
+        Count
+};
+
+// Why the machine stopped in a forbidden state. X(name, explanation in flood vocabulary)
+#define FLOOD_FORBIDDEN(X)                                                                     \
+    X(None, "")                                                                                \
+    X(StartNotBottom,                                                                          \
+      "the lowest vertex of the outer loop is not a bottom: the loop is not a simple polygon " \
+      "boundary (Fig. 11-A)")                                                                  \
+    X(CeilingAsEnd,                                                                            \
+      "an end of the active chain is a ceiling while NextLeft and NextRight differ: a valid "  \
+      "gorge closes at a ceiling only when both fingers meet there (Fig. 11-B)")               \
+    X(JumpWrongSide,                                                                           \
+      "the water reached a top from the bank it spilled from: banks cross")                     \
+    X(SpillNoBottom,                                                                           \
+      "spilling over a top found no bottom to flood: the loop folds over itself")              \
+    X(SpillOntoHeld,                                                                           \
+      "spilling over a top ran into a gorge that waits for a jump: the boundary crosses")      \
+    X(BadTriangle,                                                                             \
+      "a triangle to be cut is inverted or flat: an edge crosses the gorge")                   \
+    X(FillOpen,                                                                                \
+      "the fingers met but the gorge is not closed: loops cross each other")                   \
+    X(LeftBehind,                                                                              \
+      "the to-do list is empty but vertices were never flooded: a hole lies outside or loops " \
+      "cross")                                                                                 \
+    X(NoProgress, "the machine made no progress: the loops are inconsistent")
+
+enum class Forbidden : uint8_t {
+#define FLOOD_X(name, text) name,
+    FLOOD_FORBIDDEN(FLOOD_X)
+#undef FLOOD_X
+        Count
+};
+
+enum class Side : uint8_t { Left = 0, Right = 1 };
+
+// Left, Right, NextLeft, NextRight as vertex indices (kNone when there is no active chain).
+struct Fingers {
+    Index left = kNone, right = kNone, nextLeft = kNone, nextRight = kNone;
+};
+inline bool operator==(const Fingers& a, const Fingers& b) {
+    return a.left == b.left && a.right == b.right && a.nextLeft == b.nextLeft &&
+           a.nextRight == b.nextRight;
+}
+
+struct Event {
+    Action action = Action::Start;
+    Side side = Side::Left;  // C: the end of the chain that acts (Raise, Spill, Jump)
+    uint8_t tested = 0;      // bit i: Test(i) was evaluated
+    uint8_t passed = 0;      // bit i: Test(i) was true
+    Forbidden reason = Forbidden::None;
+    uint32_t step = 0;       // position in the log
+    uint32_t part = 0;       // part of a multipolygon being flooded
+    Fingers before, after;
+    Index water = kNone;     // vertex at the water level after the action
+    uint32_t firstTriangle = 0, triangleCount = 0;  // triangles cut by this action
+    uint32_t sagTests = 0;   // inside() evaluations made while searching the sag list
+    // Bridge: sag joined to chain vertex `bridgeTo` at position `chainIndex` of the chain;
+    // the wedge cut on the chain's left of it has `cutLeft` triangles, `cutRight` on its right.
+    Index sag = kNone, bridgeTo = kNone;
+    uint32_t chainIndex = 0, cutLeft = 0, cutRight = 0;
+    // Spill / Jump: the top, and the jump pointer set (Spill) or followed (Jump).
+    Index top = kNone, jumpTarget = kNone;
+    // Gorges put on the to-do list (Bridge: the other half; Spill: the chain held at the
+    // top) and taken from it (Fill, Spill landing on a pending gorge): ids, kNone if none.
+    uint32_t gorgePushed = kNone, gorgePopped = kNone;
+    Index bottom = kNone;    // Start / Spill: the bottom where the new gorge begins
+    // Forbidden: the vertices involved (up to two besides the fingers).
+    Index culprit = kNone, culprit2 = kNone;
+
+    bool didTest(Test t) const { return tested >> int(t) & 1; }
+    bool testResult(Test t) const { return passed >> int(t) & 1; }
+};
+
+const char* actionName(Action a);     // "Raise"
+const char* actionMeaning(Action a);
+const char* testText(Test t);
+const char* forbiddenName(Forbidden f);
+const char* forbiddenText(Forbidden f);
+
+// Receives every event as it happens. Recording costs one branch when nobody listens.
+class Listener {
+public:
+    virtual ~Listener() = default;
+    virtual void onEvent(const Event& e) = 0;
+};
+
+}  // namespace flood

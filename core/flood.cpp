@@ -1,0 +1,612 @@
+// The flooding machine (Ronfard & Rossignac 1994, §3–§6).
+//
+// Glossary (the paper's words, used as names below):
+//   loop          a circular doubly linked list of nodes; a node is a reference to a vertex.
+//                 Rings touching at a shared point are merged into one loop there (§1).
+//   active chain  the nodes from Left to Right (next-wards) of the active loop: the part of
+//                 the boundary under water in the current gorge.
+//   NextLeft      prev(Left); NextRight = next(Right): the fingers.
+//   water         the node at the water level: the highest node of the active chain.
+//   bottom / sag  convex / concave local minimum; top / ceiling: concave / convex maximum.
+//   gorge         a monotone region flooded from a bottom; pending gorges wait on the to-do
+//                 list (after a Bridge), held gorges wait at a top for a Jump (after a Spill).
+//
+// Invariants, true between any two steps on valid input:
+//   1. Every triangle cut so far lies below the water of its gorge; the loops bound exactly
+//      the part of the polygon not yet triangulated.
+//   2. Every node strictly inside the active chain is concave or flat (orient <= 0): the
+//      chain is a reflex chain, as in Garey et al.'s monotone triangulation.
+//   3. NextLeft and NextRight are above the water; no sag lies in the active gorge below
+//      the water.
+//   4. A top has a jump pointer only while its gorge is held there.
+// When one of these cannot hold — the input is invalid — the machine stops in a Forbidden
+// state (§6) instead of producing a wrong triangle.
+#include "flood.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <sstream>
+#include <unordered_map>
+
+#include "predicates.h"
+
+namespace flood {
+namespace {
+
+constexpr uint32_t kNil = kNone;
+
+struct Node {
+    Index v;          // vertex (index into the input)
+    uint32_t prev, next;
+    uint32_t jump = kNil;           // top: the other bank of its held gorge
+    uint32_t gorgeLeft = kNil;      // dormant gorge whose Left end is this node
+    uint32_t gorgeRight = kNil;     // dormant gorge whose Right end is this node
+    bool alive = true;
+    bool wet = false;  // has been in an active chain: the water reached it
+};
+
+struct GorgeRec {
+    uint32_t left, right, water;  // nodes
+    bool held = false;            // held at a top (Spill) rather than pending (Bridge)
+    bool done = false;
+    Index top = kNone;
+};
+
+// Exact coordinate permutation making the chosen vertical +y (a rotation: keeps orientation).
+Point toUp(Point p, Up up) {
+    switch (up) {
+        case Up::PlusY: return p;
+        case Up::MinusY: return {-p.x, -p.y};
+        case Up::PlusX: return {-p.y, p.x};
+        case Up::MinusX: return {p.y, -p.x};
+    }
+    return p;
+}
+
+class Machine {
+public:
+    Machine(const Polygon& poly, Listener* listener, const Options& opt)
+        : poly_(poly), listener_(listener) {
+        pts_.reserve(poly.vertices.size());
+        for (Point p : poly.vertices) pts_.push_back(toUp(p, opt.up));
+    }
+
+    FloodResult run() {
+        for (uint32_t part = 0; part < poly_.parts.size() && ok(); ++part) floodPart(part);
+        result_.steps = step_;
+        return std::move(result_);
+    }
+
+private:
+    // ---- [SECTION] predicates on nodes -------------------------------------------------
+    Point P(uint32_t n) const { return pts_[nodes_[n].v]; }
+    // The paper's below, made a strict total order on nodes: coincident vertices (rings
+    // touching at a point, bridge copies) are ordered by vertex index, then node id.
+    bool lower(uint32_t a, uint32_t b) const {
+        Point pa = P(a), pb = P(b);
+        if (pa.y != pb.y) return pa.y < pb.y;
+        if (pa.x != pb.x) return pa.x < pb.x;
+        if (nodes_[a].v != nodes_[b].v) return nodes_[a].v < nodes_[b].v;
+        return a < b;
+    }
+    int turn(uint32_t a, uint32_t b, uint32_t c) const { return orient(P(a), P(b), P(c)); }
+    uint32_t prev(uint32_t n) const { return nodes_[n].prev; }
+    uint32_t next(uint32_t n) const { return nodes_[n].next; }
+    bool isMinimum(uint32_t n) const { return lower(n, prev(n)) && lower(n, next(n)); }
+    bool isSag(uint32_t n) const { return isMinimum(n) && turn(prev(n), n, next(n)) <= 0; }
+    bool ok() const { return result_.diagnostic.ok(); }
+
+    // ---- [SECTION] set-up: loops, non-manifold points, sags -------------------------------
+    void floodPart(uint32_t part) {
+        const Part& pa = poly_.parts[part];
+        part_ = part;
+        partNodes_ = 0;
+        const uint32_t partFirstNode = uint32_t(nodes_.size());
+        std::vector<uint32_t> partVertices;
+        for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
+            const Ring& ring = poly_.rings[r];
+            // Orient loops so the interior is on the left: outer counter-clockwise, holes
+            // clockwise, whatever the file said.
+            ExactSum area;
+            for (Index i = 0; i < ring.count; ++i)
+                area.addCross(pts_[ring.first + i], pts_[ring.first + (i + 1) % ring.count]);
+            bool wantCcw = (r == pa.firstRing);
+            bool reverse = (area.sign() > 0) != wantCcw;
+            uint32_t base = uint32_t(nodes_.size());
+            for (Index i = 0; i < ring.count; ++i) {
+                Node nd;
+                nd.v = ring.first + i;
+                uint32_t p = base + (i + ring.count - 1) % ring.count;
+                uint32_t q = base + (i + 1) % ring.count;
+                nd.prev = reverse ? q : p;
+                nd.next = reverse ? p : q;
+                nodes_.push_back(nd);
+                partVertices.push_back(base + i);
+            }
+            partNodes_ += ring.count;
+        }
+        mergeTouchingLoops(partVertices);
+
+        // The sags of the part, sorted by height (§4).
+        sags_.clear();
+        for (uint32_t n : partVertices)
+            if (isSag(n)) sags_.push_back(n);
+        std::sort(sags_.begin(), sags_.end(), [&](uint32_t a, uint32_t b) { return lower(a, b); });
+        sagUsed_.assign(sags_.size(), 0);
+        // The bottoms, lowest first: every one of them starts a gorge unless the water
+        // reaches it first. They are the to-do list of last resort (see nextBottom()).
+        bottoms_.clear();
+        for (uint32_t n : partVertices)
+            if (isMinimum(n) && turn(prev(n), n, next(n)) > 0) bottoms_.push_back(n);
+        std::sort(bottoms_.begin(), bottoms_.end(), [&](uint32_t a, uint32_t b) { return lower(a, b); });
+        bottomCursor_ = 0;
+
+        // The lowest node of the outer ring is where the water starts.
+        const Ring& outer = poly_.rings[pa.firstRing];
+        uint32_t start = kNil;
+        for (uint32_t i = 0; i < outer.count; ++i) {
+            uint32_t n = partVertices[i];
+            if (start == kNil || lower(n, start)) start = n;
+        }
+        gorges_.clear();
+        todo_.clear();
+        budget_ = 8ull * partNodes_ + 64;
+        Event e = begin(Action::Start);
+        if (!isMinimum(start) || turn(prev(start), start, next(start)) <= 0) {
+            return forbid(e, Forbidden::StartNotBottom, start, kNil);
+        }
+        startGorge(start);
+        e.bottom = nodes_[start].v;
+        emit(e);
+        while (ok() && left_ != kNil) {
+            if (budget_-- == 0) {
+                Event f = begin(Action::Forbidden);
+                return forbid(f, Forbidden::NoProgress, left_, right_);
+            }
+            step();
+        }
+        // Every node of the part must have been flooded: a loop never reached means a hole
+        // outside the outer ring, or loops that cross.
+        if (ok()) {
+            uint32_t alive = firstAliveNode(partFirstNode);
+            if (alive != kNil) {
+                Event f = begin(Action::Forbidden);
+                return forbid(f, Forbidden::LeftBehind, alive, kNil);
+            }
+        }
+    }
+
+    uint32_t firstAliveNode(uint32_t from) const {
+        for (uint32_t n = from; n < nodes_.size(); ++n)
+            if (nodes_[n].alive) return n;
+        return kNil;
+    }
+
+    // Rings touching at a point become one loop there: arriving at the point, the next edge
+    // is the first one met rotating clockwise from the edge we came along (§1).
+    void mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
+        struct Key {
+            double x, y;
+            bool operator==(const Key& o) const { return x == o.x && y == o.y; }
+        };
+        struct KeyHash {
+            size_t operator()(const Key& k) const {
+                uint64_t a, b;
+                double x = k.x + 0.0, y = k.y + 0.0;  // -0.0 and 0.0 are the same point
+                std::memcpy(&a, &x, 8);
+                std::memcpy(&b, &y, 8);
+                return size_t(a * 0x9E3779B97F4A7C15ull ^ (b + 0x632BE59BD9B4E019ull));
+            }
+        };
+        std::unordered_map<Key, std::vector<uint32_t>, KeyHash> at;
+        at.reserve(partVertices.size());
+        for (uint32_t n : partVertices) {
+            Point p = P(n);
+            at[{p.x + 0.0, p.y + 0.0}].push_back(n);
+        }
+        for (auto& kv : at) {
+            std::vector<uint32_t>& corner = kv.second;
+            if (corner.size() < 2) continue;
+            std::sort(corner.begin(), corner.end());
+            Point c = P(corner[0]);
+            // Outgoing edges around the point, each with the node it leaves from.
+            std::vector<uint32_t> outs;  // node whose `next` edge leaves the point
+            for (uint32_t n : corner) outs.push_back(n);
+            std::vector<uint32_t> newNext(corner.size());
+            for (size_t i = 0; i < corner.size(); ++i) {
+                Point back = P(prev(corner[i]));  // direction we came from
+                size_t best = SIZE_MAX;
+                for (size_t j = 0; j < outs.size(); ++j) {
+                    Point d = P(next(outs[j]));
+                    if (best == SIZE_MAX || clockwiseCloser(c, back, d, P(next(outs[best]))))
+                        best = j;
+                }
+                newNext[i] = next(outs[best]);
+            }
+            for (size_t i = 0; i < corner.size(); ++i) {
+                nodes_[corner[i]].next = newNext[i];
+                nodes_[newNext[i]].prev = corner[i];
+            }
+        }
+    }
+
+    // Rotating clockwise from direction c->from, is c->a met before c->b? Exact.
+    bool clockwiseCloser(Point c, Point from, Point a, Point b) const {
+        // Clockwise angle from `from` to d in [0, 2pi), compared exactly by half-planes.
+        auto half = [&](Point d) {
+            int o = orient(c, from, d);  // <0: d is clockwise of `from` within pi
+            if (o < 0) return 0;
+            if (o == 0) {
+                // Same direction as `from` counts as a full turn (last); opposite is pi.
+                bool same = (d.x - c.x) * (from.x - c.x) + (d.y - c.y) * (from.y - c.y) > 0;
+                return same ? 2 : 1;
+            }
+            return 1;
+        };
+        int ha = half(a), hb = half(b);
+        if (ha != hb) return ha < hb;
+        return orient(c, a, b) < 0;  // b is clockwise of a: a comes first
+    }
+
+    // ---- [SECTION] events -----------------------------------------------------------------
+    Fingers fingers() const {
+        if (left_ == kNil) return {};
+        return {nodes_[left_].v, nodes_[right_].v, nodes_[prev(left_)].v, nodes_[next(right_)].v};
+    }
+    Event begin(Action a) {
+        Event e;
+        e.action = a;
+        e.part = part_;
+        if (listener_) e.before = fingers();
+        e.firstTriangle = uint32_t(result_.triangles.size());
+        return e;
+    }
+    void emit(Event& e) {
+        e.step = step_++;
+        e.triangleCount = uint32_t(result_.triangles.size()) - e.firstTriangle;
+        if (listener_) {
+            e.after = fingers();
+            e.water = water_ == kNil ? kNone : nodes_[water_].v;
+            listener_->onEvent(e);
+        }
+    }
+    void forbid(Event& e, Forbidden why, uint32_t a, uint32_t b) {
+        e.action = Action::Forbidden;
+        e.reason = why;
+        e.culprit = a == kNil ? kNone : nodes_[a].v;
+        e.culprit2 = b == kNil ? kNone : nodes_[b].v;
+        if (!listener_) e.before = fingers();
+        emit(e);
+        e.after = fingers();
+        result_.failure = e;
+        result_.diagnostic = {Status::Forbidden, describeForbidden(poly_, e)};
+        left_ = right_ = kNil;
+    }
+    static void mark(Event& e, Test t, bool r) {
+        e.tested |= uint8_t(1u << int(t));
+        if (r) e.passed |= uint8_t(1u << int(t));
+    }
+
+    // ---- [SECTION] the decision tree (Fig. 9) ----------------------------------------------
+    void step() {
+        uint32_t nl = prev(left_), nr = next(right_);
+        Event e = begin(Action::Raise);
+        bool same = nl == nr;
+        mark(e, Test::SameNext, same);
+        if (same) {
+            // The fingers meet, but a hole may still hang in the gorge below them.
+            uint32_t s = findSag(nl, e);
+            mark(e, Test::SagInside, s != kNil);
+            if (s != kNil) return bridge(e, s);
+            return fill(e);
+        }
+        if (nl == right_ || nr == left_) return forbid(e, Forbidden::FillOpen, nl, nr);
+        bool leftLower = lower(nl, nr);
+        mark(e, Test::LeftLower, leftLower);
+        Side side = leftLower ? Side::Left : Side::Right;
+        uint32_t c = leftLower ? left_ : right_;
+        uint32_t nx = leftLower ? nl : nr;
+        e.side = side;
+        bool up = lower(c, nx);
+        mark(e, Test::NextAbove, up);
+        if (up) {
+            uint32_t s = findSag(nx, e);
+            mark(e, Test::SagInside, s != kNil);
+            if (s != kNil) return bridge(e, s);
+            return raise(e, side);
+        }
+        // C is a local maximum of the loop: a top, or a ceiling reached too early.
+        bool top = turn(prev(c), c, next(c)) <= 0;
+        mark(e, Test::CIsTop, top);
+        if (!top) return forbid(e, Forbidden::CeilingAsEnd, c, nx);
+        bool jumpSet = nodes_[c].jump != kNil;
+        mark(e, Test::JumpSet, jumpSet);
+        if (jumpSet) return jump(e, side, c);
+        spill(e, side, c);
+    }
+
+    // The lowest unused sag above the water and below Next inside the quadrangle
+    // Left, Right, NextRight, NextLeft (§4, §5). Sags are sorted, so the scan starts at the
+    // water level and stops at Next.
+    uint32_t findSag(uint32_t nx, Event& e) {
+        auto it = std::upper_bound(sags_.begin(), sags_.end(), water_,
+                                   [&](uint32_t a, uint32_t b) { return lower(a, b); });
+        Point l = P(left_), r = P(right_), nl = P(prev(left_)), nr = P(next(right_));
+        for (; it != sags_.end() && lower(*it, nx); ++it) {
+            size_t k = size_t(it - sags_.begin());
+            if (sagUsed_[k]) continue;
+            ++e.sagTests;
+            if (inside(P(*it), l, r, nr, nl)) {
+                sagUsed_[k] = 1;
+                return *it;
+            }
+        }
+        return kNil;
+    }
+
+    // ---- [SECTION] the five actions ----------------------------------------------------------
+    void cutTriangle(uint32_t a, uint32_t b, uint32_t c) {
+        result_.triangles.push_back({nodes_[a].v, nodes_[b].v, nodes_[c].v});
+        ++cut_;
+    }
+    void unlink(uint32_t n) {
+        nodes_[prev(n)].next = next(n);
+        nodes_[next(n)].prev = prev(n);
+        nodes_[n].alive = false;
+    }
+
+    // Raise: Next joins the chain; the wedge of chain nodes it sees is cut off (Fig. 2).
+    void raise(Event& e, Side side) {
+        if (side == Side::Left) {
+            uint32_t nl = prev(left_), c = left_;
+            while (c != right_ && turn(nl, c, next(c)) > 0) {
+                uint32_t n = next(c);
+                cutTriangle(nl, c, n);
+                unlink(c);
+                c = n;
+            }
+            left_ = water_ = nl;
+            nodes_[nl].wet = true;
+        } else {
+            uint32_t nr = next(right_), c = right_;
+            while (c != left_ && turn(prev(c), c, nr) > 0) {
+                uint32_t p = prev(c);
+                cutTriangle(p, c, nr);
+                unlink(c);
+                c = p;
+            }
+            right_ = water_ = nr;
+            nodes_[nr].wet = true;
+        }
+        emit(e);
+    }
+
+    // Bridge: the sag s is joined to the water node (the highest node of the chain) by an
+    // internal edge, doubled into two references each (Fig. 4). The gorge splits in two: the
+    // left half stays active, the right half goes on the to-do list. The wedges the sag sees
+    // on either side are cut at once, so both half-chains stay reflex (invariant 2).
+    void bridge(Event& e, uint32_t s) {
+        e.action = Action::Bridge;
+        uint32_t c = water_;
+        e.sag = nodes_[s].v;
+        e.bridgeTo = nodes_[c].v;
+        if (listener_) {
+            uint32_t i = 0;
+            for (uint32_t x = left_; x != c && i <= partNodes_ * 2; x = next(x)) ++i;
+            e.chainIndex = i;
+        }
+        uint32_t s2 = uint32_t(nodes_.size()), c2 = s2 + 1;
+        nodes_.push_back(Node{nodes_[s].v, prev(s), c2});
+        nodes_.push_back(Node{nodes_[c].v, s2, next(c)});
+        nodes_[prev(s)].next = s2;
+        nodes_[next(c)].prev = c2;
+        nodes_[c].next = s;
+        nodes_[s].prev = c;
+        partNodes_ += 2;
+        uint32_t right2 = (right_ == c) ? c2 : right_;
+        // Left half: Left .. c, s. Cut while the node before s is convex.
+        uint32_t x = c, before = cut_;
+        while (x != left_ && turn(prev(x), x, s) > 0) {
+            uint32_t p = prev(x);
+            cutTriangle(p, x, s);
+            unlink(x);
+            x = p;
+        }
+        e.cutLeft = cut_ - before;
+        before = cut_;
+        uint32_t y = c2;
+        while (y != right2 && turn(s2, y, next(y)) > 0) {
+            uint32_t n = next(y);
+            cutTriangle(s2, y, n);
+            unlink(y);
+            y = n;
+        }
+        e.cutRight = cut_ - before;
+        e.gorgePushed = pushGorge(s2, right2, s2, false, kNone);
+        right_ = s;
+        water_ = s;
+        nodes_[s].wet = nodes_[s2].wet = true;
+        emit(e);
+    }
+
+    // Spill: C is a top without a jump pointer. Its gorge is held there, the jump pointer
+    // set to the other bank, and the water runs down the far side of the top to the next
+    // bottom, skipping the sags it drips from (Fig. 5). A pending gorge met on the way
+    // is the one that collects the water: it is taken off the to-do list.
+    void spill(Event& e, Side side, uint32_t t) {
+        e.action = Action::Spill;
+        uint32_t other = side == Side::Left ? right_ : left_;
+        nodes_[t].jump = other;
+        e.top = nodes_[t].v;
+        e.jumpTarget = nodes_[other].v;
+        e.gorgePushed = pushGorge(left_, right_, water_, true, nodes_[t].v);
+        bool goPrev = side == Side::Left;
+        uint32_t x = goPrev ? prev(t) : next(t);
+        // `drops` counts sags the water fell from whose landing is not settled yet: a sag
+        // followed by a ceiling roofs the basin below it (the next bottom is its floor); a
+        // sag followed by a top is matched by the bottom of the pocket beyond that top.
+        uint32_t drops = 0;
+        for (uint32_t guard = 0; guard <= partNodes_; ++guard, x = goPrev ? prev(x) : next(x)) {
+            Node& nd = nodes_[x];
+            uint32_t g = goPrev ? nd.gorgeRight : nd.gorgeLeft;
+            if (g != kNil && !gorges_[g].done && !gorges_[g].held) {
+                e.gorgePopped = g;
+                resumeGorge(g);
+                return emit(e);
+            }
+            if (nd.gorgeLeft != kNil || nd.gorgeRight != kNil || x == t) break;
+            bool convexHere = turn(prev(x), x, next(x)) > 0;
+            if (isMinimum(x)) {
+                if (!convexHere) {
+                    ++drops;
+                } else if (drops > 0) {
+                    --drops;
+                } else if (!nd.wet) {
+                    mark(e, Test::WalkLanded, true);
+                    e.bottom = nd.v;
+                    startGorge(x);
+                    return emit(e);
+                }
+            } else if (convexHere && drops > 0 && lower(prev(x), x) && lower(next(x), x)) {
+                --drops;  // a ceiling roofs the basin under the last sag
+            }
+        }
+        // The walk cannot tell where a drip from a sag lands when the basin below it is
+        // bounded by another part of the boundary (a spiral, say). Any gorge not flooded
+        // yet will do: flooding it reaches this top from its far side in time.
+        mark(e, Test::WalkLanded, false);
+        if (takeNextGorge(e)) return emit(e);
+        forbid(e, Forbidden::SpillNoBottom, t, kNil);
+    }
+
+    // Jump: the water reached a held top from its far side; the chain continues on the
+    // other bank, where the jump pointer leads (Fig. 6). The two chains meet at the top.
+    void jump(Event& e, Side side, uint32_t t) {
+        e.action = Action::Jump;
+        uint32_t g = side == Side::Left ? nodes_[t].gorgeRight : nodes_[t].gorgeLeft;
+        e.top = nodes_[t].v;
+        e.jumpTarget = nodes_[nodes_[t].jump].v;
+        if (g == kNil || gorges_[g].done || !gorges_[g].held)
+            return forbid(e, Forbidden::JumpWrongSide, t, nodes_[t].jump);
+        e.gorgePopped = g;
+        GorgeRec& rec = gorges_[g];
+        rec.done = true;
+        nodes_[rec.left].gorgeLeft = kNil;
+        nodes_[rec.right].gorgeRight = kNil;
+        if (side == Side::Left) left_ = rec.left;
+        else right_ = rec.right;
+        nodes_[t].jump = kNil;
+        water_ = t;
+        emit(e);
+    }
+
+    // Fill: NextLeft and NextRight are one node: the fan from it closes the loop (Fig. 3).
+    // Then the next pending gorge on the to-do list becomes active.
+    void fill(Event& e) {
+        e.action = Action::Fill;
+        uint32_t apex = prev(left_);
+        if (left_ == right_) return forbid(e, Forbidden::FillOpen, apex, left_);
+        for (uint32_t c = left_; c != right_;) {
+            uint32_t n = next(c);
+            if (turn(apex, c, n) <= 0) return forbid(e, Forbidden::BadTriangle, c, n);
+            c = n;
+        }
+        for (uint32_t c = left_; c != right_;) {
+            uint32_t n = next(c);
+            cutTriangle(apex, c, n);
+            nodes_[c].alive = false;
+            c = n;
+        }
+        nodes_[right_].alive = nodes_[apex].alive = false;
+        left_ = right_ = water_ = kNil;
+        takeNextGorge(e);
+        emit(e);
+    }
+
+    // The next gorge to flood: the last pending gorge on the to-do list, else the lowest
+    // bottom the water has not reached. False when neither exists.
+    bool takeNextGorge(Event& e) {
+        while (!todo_.empty()) {
+            uint32_t g = todo_.back();
+            todo_.pop_back();
+            if (gorges_[g].done) continue;
+            e.gorgePopped = g;
+            resumeGorge(g);
+            return true;
+        }
+        for (; bottomCursor_ < bottoms_.size(); ++bottomCursor_) {
+            uint32_t b = bottoms_[bottomCursor_];
+            if (nodes_[b].wet || !nodes_[b].alive) continue;
+            e.bottom = nodes_[b].v;
+            startGorge(b);
+            return true;
+        }
+        return false;
+    }
+
+    void startGorge(uint32_t bottom) {
+        left_ = right_ = water_ = bottom;
+        nodes_[bottom].wet = true;
+    }
+
+    uint32_t pushGorge(uint32_t l, uint32_t r, uint32_t w, bool held, Index top) {
+        uint32_t id = uint32_t(gorges_.size());
+        gorges_.push_back({l, r, w, held, false, top});
+        nodes_[l].gorgeLeft = id;
+        nodes_[r].gorgeRight = id;
+        if (!held) todo_.push_back(id);
+        return id;
+    }
+    void resumeGorge(uint32_t g) {
+        GorgeRec& rec = gorges_[g];
+        rec.done = true;
+        nodes_[rec.left].gorgeLeft = kNil;
+        nodes_[rec.right].gorgeRight = kNil;
+        left_ = rec.left;
+        right_ = rec.right;
+        water_ = rec.water;
+    }
+
+    const Polygon& poly_;
+    Listener* listener_;
+    std::vector<Point> pts_;
+    std::vector<Node> nodes_;
+    std::vector<uint32_t> sags_;
+    std::vector<uint8_t> sagUsed_;
+    std::vector<uint32_t> bottoms_;  // bottoms, lowest first
+    size_t bottomCursor_ = 0;
+    std::vector<GorgeRec> gorges_;
+    std::vector<uint32_t> todo_;  // pending gorges (ids), last pushed first
+    uint32_t left_ = kNil, right_ = kNil, water_ = kNil;
+    uint32_t part_ = 0, partNodes_ = 0, cut_ = 0, step_ = 0;
+    uint64_t budget_ = 0;
+    FloodResult result_;
+};
+
+}  // namespace
+
+FloodResult triangulate(const Polygon& polygon, Listener* listener, const Options& options) {
+    return Machine(polygon, listener, options).run();
+}
+
+std::string describeForbidden(const Polygon& polygon, const Event& e) {
+    std::ostringstream os;
+    os.precision(17);
+    auto vertex = [&](const char* label, Index v) {
+        if (v == kNone || v >= polygon.vertices.size()) return;
+        Index r = polygon.ringOf(v);
+        Point p = polygon.vertices[v];
+        os << "; " << label << " = vertex " << v << " (ring " << r << " vertex "
+           << v - polygon.rings[r].first << ", " << p.x << ", " << p.y << ")";
+    };
+    os << "forbidden transition " << forbiddenName(e.reason) << " at step " << e.step + 1;
+    vertex("at", e.culprit);
+    vertex("and", e.culprit2);
+    vertex("Left", e.after.left);
+    vertex("Right", e.after.right);
+    os << ": " << forbiddenText(e.reason);
+    return os.str();
+}
+
+}  // namespace flood

@@ -1,0 +1,34 @@
+// Public entry point of the core: triangulate a polygon by flooding (Ronfard & Rossignac 1994).
+#pragma once
+#include <string>
+#include <vector>
+
+#include "events.h"
+#include "polygon.h"
+#include "status.h"
+
+namespace flood {
+
+// The chosen vertical (§3). Heights are exact coordinate permutations, never rotations.
+enum class Up : uint8_t { PlusY, MinusY, PlusX, MinusX };
+
+struct Options {
+    Up up = Up::PlusY;
+};
+
+struct FloodResult {
+    std::vector<Triangle> triangles;  // counter-clockwise, numbered in the order flooded
+    Diagnostic diagnostic;            // Ok, or Forbidden with the explanation
+    Event failure;                    // the Forbidden event when diagnostic is not Ok
+    uint32_t steps = 0;               // events emitted
+};
+
+// Floods every part of `polygon`. The polygon should have passed validate(); invalid input
+// ends in a Forbidden diagnostic, never a crash or a hang. `listener` may be null.
+FloodResult triangulate(const Polygon& polygon, Listener* listener = nullptr,
+                        const Options& options = {});
+
+// Human-readable description of a forbidden event, naming the vertices (index, ring, x, y).
+std::string describeForbidden(const Polygon& polygon, const Event& e);
+
+}  // namespace flood

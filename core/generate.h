@@ -1,0 +1,29 @@
+// Seeded generator of valid polygons for tests, benchmarks and the viewer's open list.
+// Every family takes (seed, size), size being roughly the total vertex count, and returns a
+// valid flood::Polygon: rings simple, holes inside their outer ring, rings touching only at
+// single shared vertices. Output is identical on every platform (own PRNG and own sin/cos,
+// no std distributions). Where a new family goes: add a function in generate.cpp and one row
+// to its family table.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "polygon.h"
+
+namespace flood {
+
+// Names of all families, in a fixed order.
+std::vector<std::string> familyNames();
+
+// One-line description of a family (empty for unknown names).
+std::string familyDescription(const std::string& family);
+
+// Generates a polygon of the family; asserts the family name exists (see familyNames()).
+Polygon generate(const std::string& family, uint64_t seed, size_t size);
+
+// Exact transforms: rotate by rotation90 quarter turns counter-clockwise, then mirror x -> -x,
+// then reverse every ring's orientation, then start every ring `shift` vertices later.
+Polygon transform(const Polygon& polygon, int rotation90, bool mirror, bool reverse, size_t shift);
+
+}  // namespace flood

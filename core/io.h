@@ -1,0 +1,33 @@
+// Reading polygons: GeoJSON, bare ring arrays (earcut fixtures) and WKT; writing results.
+#pragma once
+#include <iosfwd>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "polygon.h"
+#include "status.h"
+
+namespace flood {
+
+struct ReadResult {
+    Polygon polygon;
+    std::vector<std::string> warnings;  // e.g. repeated consecutive points dropped
+    Diagnostic diagnostic;              // Ok, or Malformed with "FILE:LINE:COL: ..."
+};
+
+// Detects the format from the content. `name` is used in messages ("-" means stdin).
+ReadResult parsePolygon(std::string_view text, const std::string& name);
+ReadResult readPolygonFile(const std::string& path);  // "-" reads stdin
+
+// Validity rules checked before flooding (docs/ERRORS.md): finite coordinates, rings with at
+// least 3 distinct points, non-zero area, no self-intersection, holes inside their outer ring
+// and not overlapping. Rings may touch at single shared vertices. Returns Invalid with
+// "NAME: ring R vertex V (x, y): reason" on the first problem found.
+Diagnostic validate(const Polygon& polygon, const std::string& name);
+
+void writeJson(std::ostream& out, const Polygon& p, const std::vector<Triangle>& t);
+void writeSvg(std::ostream& out, const Polygon& p, const std::vector<Triangle>& t);
+void writeObj(std::ostream& out, const Polygon& p, const std::vector<Triangle>& t);
+
+}  // namespace flood

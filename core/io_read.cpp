@@ -1,0 +1,256 @@
+// Reading polygons: format detection, GeoJSON and bare ring arrays (earcut fixtures).
+// WKT lives in io_wkt.cpp. Every problem becomes a Malformed diagnostic, never an exception
+// escaping to the caller and never a crash.
+//
+// JSON goes through nlohmann::json: it is a Debian package (nlohmann-json3-dev), header-only,
+// and its parse errors carry the byte position, which we turn into NAME:LINE:COL.
+// Its parser is recursive, so nesting depth is bounded by a cheap bracket scan first.
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "io.h"
+#include "io_util.h"
+
+namespace flood {
+
+// Defined in io_wkt.cpp.
+ReadResult parseWkt(std::string_view text, const std::string& name);
+
+namespace io_detail {
+
+// Appends one ring as read to `rr.polygon`: repeated consecutive points are dropped with a
+// warning, then a closing point equal to the first is dropped silently.
+void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Point>& raw,
+                  bool outer) {
+    const size_t ring = rr.polygon.rings.size();
+    std::vector<Point> pts;
+    pts.reserve(raw.size());
+    for (size_t i = 0; i < raw.size(); ++i) {
+        if (!pts.empty() && raw[i] == pts.back()) {
+            // The last point repeating the first is a closing point, not a duplicate.
+            if (i + 1 == raw.size() && pts.size() > 1 && raw[i] == pts.front()) continue;
+            rr.warnings.push_back(name + ": ring " + std::to_string(ring) + " vertex " +
+                                  std::to_string(i) + " " + formatPoint(raw[i]) +
+                                  ": repeated point dropped");
+            continue;
+        }
+        pts.push_back(raw[i]);
+    }
+    if (pts.size() >= 2 && pts.back() == pts.front()) pts.pop_back();
+    rr.polygon.addRing(pts, outer);
+}
+
+}  // namespace io_detail
+
+namespace {
+
+using nlohmann::json;
+using io_detail::kMaxJsonDepth;
+using io_detail::tooDeep;
+using io_detail::where;
+
+struct BadStructure {
+    std::string message;
+};
+
+// nlohmann's what() reads "[json.exception.parse_error.101] parse error at line 1, column 5:
+// syntax error ..."; keep only the part after the position, which we print ourselves.
+std::string jsonReason(const char* what) {
+    std::string s = what;
+    size_t col = s.find("column ");
+    if (col != std::string::npos) {
+        size_t colon = s.find(": ", col);
+        if (colon != std::string::npos) return s.substr(colon + 2);
+    }
+    size_t bracket = s.find("] ");
+    return bracket == std::string::npos ? s : s.substr(bracket + 2);
+}
+
+Point readVertex(const json& v, const std::string& ctx) {
+    if (!v.is_array() || v.size() < 2 || !v[0].is_number() || !v[1].is_number())
+        throw BadStructure{ctx + ": coordinate is not a pair of numbers (got " +
+                           v.dump().substr(0, 60) + ")"};
+    return {v[0].get<double>(), v[1].get<double>()};
+}
+
+void readRings(ReadResult& rr, const std::string& name, const json& rings,
+               const std::string& ctx) {
+    if (!rings.is_array()) throw BadStructure{ctx + ": polygon is not an array of rings"};
+    if (rings.empty()) throw BadStructure{ctx + ": polygon has no rings"};
+    for (size_t r = 0; r < rings.size(); ++r) {
+        std::string rctx = ctx + " ring " + std::to_string(r);
+        const json& ring = rings[r];
+        if (!ring.is_array()) throw BadStructure{rctx + ": ring is not an array of points"};
+        std::vector<Point> raw;
+        raw.reserve(ring.size());
+        for (size_t v = 0; v < ring.size(); ++v)
+            raw.push_back(readVertex(ring[v], rctx + " vertex " + std::to_string(v)));
+        io_detail::addCleanRing(rr, name, raw, r == 0);
+    }
+}
+
+// Depth of nested arrays at the front of `j`: 1 for [x,...], 2 for a ring, 3 for a polygon.
+int arrayDepth(const json& j) {
+    int d = 0;
+    const json* p = &j;
+    while (p->is_array() && !p->empty()) {
+        ++d;
+        p = &(*p)[0];
+    }
+    return d;
+}
+
+void readGeometry(ReadResult& rr, const std::string& name, const json& g, const std::string& ctx,
+                  int& polygonCount);
+
+void readPolygonOrMulti(ReadResult& rr, const std::string& name, const json& coords,
+                        bool multi, const std::string& ctx, int& polygonCount) {
+    if (!multi) {
+        readRings(rr, name, coords, ctx + "polygon " + std::to_string(polygonCount++));
+        return;
+    }
+    if (!coords.is_array()) throw BadStructure{ctx + "multipolygon is not an array of polygons"};
+    for (const json& poly : coords)
+        readRings(rr, name, poly, ctx + "polygon " + std::to_string(polygonCount++));
+}
+
+void readGeometry(ReadResult& rr, const std::string& name, const json& g, const std::string& ctx,
+                  int& polygonCount) {
+    if (!g.is_object() || !g.contains("type") || !g["type"].is_string())
+        throw BadStructure{ctx + "GeoJSON object without a \"type\" string"};
+    const std::string type = g["type"].get<std::string>();
+    if (type == "Polygon" || type == "MultiPolygon") {
+        if (!g.contains("coordinates"))
+            throw BadStructure{ctx + type + " without \"coordinates\""};
+        readPolygonOrMulti(rr, name, g["coordinates"], type == "MultiPolygon", ctx, polygonCount);
+    } else if (type == "Feature") {
+        if (!g.contains("geometry") || g["geometry"].is_null())
+            throw BadStructure{ctx + "Feature without geometry"};
+        readGeometry(rr, name, g["geometry"], ctx, polygonCount);
+    } else if (type == "FeatureCollection" || type == "GeometryCollection") {
+        const char* key = type == "FeatureCollection" ? "features" : "geometries";
+        if (!g.contains(key) || !g[key].is_array())
+            throw BadStructure{ctx + type + " without a \"" + key + "\" array"};
+        const json& items = g[key];
+        for (size_t i = 0; i < items.size(); ++i) {
+            const json& item = items[i];
+            const json* geom = &item;
+            if (type == "FeatureCollection") {
+                if (!item.is_object() || !item.contains("geometry"))
+                    throw BadStructure{ctx + "feature " + std::to_string(i) +
+                                       ": not a Feature with a geometry"};
+                geom = &item["geometry"];
+            }
+            std::string gtype = geom->is_object() && geom->contains("type") &&
+                                        (*geom)["type"].is_string()
+                                    ? (*geom)["type"].get<std::string>()
+                                    : std::string();
+            bool polygonal = gtype == "Polygon" || gtype == "MultiPolygon" ||
+                             gtype == "GeometryCollection" || gtype == "Feature";
+            if (!polygonal) {
+                rr.warnings.push_back(name + ": " + ctx + (type == "FeatureCollection"
+                                                               ? "feature "
+                                                               : "geometry ") +
+                                      std::to_string(i) + ": not polygonal (" +
+                                      (gtype.empty() ? "null" : gtype) + "), skipped");
+                continue;
+            }
+            readGeometry(rr, name, *geom,
+                         ctx + (type == "FeatureCollection" ? "feature " : "geometry ") +
+                             std::to_string(i) + " ",
+                         polygonCount);
+        }
+    } else {
+        throw BadStructure{ctx + "unsupported GeoJSON type \"" + type +
+                           "\" (expected Polygon, MultiPolygon, Feature or FeatureCollection)"};
+    }
+}
+
+ReadResult parseJson(std::string_view text, const std::string& name) {
+    ReadResult rr;
+    size_t deep = tooDeep(text);
+    if (deep != std::string_view::npos) {
+        rr.diagnostic = {Status::Malformed,
+                         where(name, text, deep) + ": JSON nested deeper than " +
+                             std::to_string(kMaxJsonDepth) + " levels; refusing to parse"};
+        return rr;
+    }
+    json doc;
+    try {
+        doc = json::parse(text.begin(), text.end());
+    } catch (const json::parse_error& e) {
+        // e.byte is the 1-based position of the last character read.
+        size_t off = e.byte > 0 ? e.byte - 1 : 0;
+        rr.diagnostic = {Status::Malformed,
+                         where(name, text, off) + ": JSON syntax error: " + jsonReason(e.what())};
+        return rr;
+    }
+    try {
+        int polygonCount = 0;
+        if (doc.is_object()) {
+            readGeometry(rr, name, doc, "", polygonCount);
+        } else {
+            int d = arrayDepth(doc);
+            if (d == 3) readRings(rr, name, doc, "polygon 0");
+            else if (d == 4) readPolygonOrMulti(rr, name, doc, true, "", polygonCount);
+            else
+                throw BadStructure{"expected an array of rings [[[x,y],...],...] or of polygons "
+                                   "[[[[x,y],...],...],...], or a GeoJSON object"};
+        }
+        if (rr.polygon.rings.empty()) throw BadStructure{"no polygon found"};
+    } catch (const BadStructure& b) {
+        rr.polygon = Polygon{};
+        rr.diagnostic = {Status::Malformed, name + ": " + b.message};
+    } catch (const json::exception& e) {  // e.g. a number too large for the conversion
+        rr.polygon = Polygon{};
+        rr.diagnostic = {Status::Malformed, name + ": " + e.what()};
+    }
+    return rr;
+}
+
+}  // namespace
+
+ReadResult parsePolygon(std::string_view text, const std::string& name) {
+    size_t i = 0;
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") i = 3;  // UTF-8 byte order mark
+    while (i < text.size() && std::strchr(" \t\r\n", text[i])) ++i;
+    if (i == text.size()) {
+        ReadResult rr;
+        rr.diagnostic = {Status::Malformed, name + ":1:1: empty input, no polygon"};
+        return rr;
+    }
+    if (text[i] == '[' || text[i] == '{') return parseJson(text, name);
+    return parseWkt(text, name);
+}
+
+ReadResult readPolygonFile(const std::string& path) {
+    std::string text;
+    std::string name = path == "-" ? "<stdin>" : path;
+    if (path == "-") {
+        text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+    } else {
+        std::ifstream in(path, std::ios::binary);
+        if (!in) {
+            ReadResult rr;
+            rr.diagnostic = {Status::Malformed,
+                             name + ": cannot open file: " + std::strerror(errno)};
+            return rr;
+        }
+        std::ostringstream ss;
+        ss << in.rdbuf();
+        if (in.bad()) {
+            ReadResult rr;
+            rr.diagnostic = {Status::Malformed, name + ": read error"};
+            return rr;
+        }
+        text = ss.str();
+    }
+    return parsePolygon(text, name);
+}
+
+}  // namespace flood

@@ -1,0 +1,75 @@
+// Small helpers shared by the file-format code (internal to core/, not a public API).
+#pragma once
+#include <charconv>
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include "polygon.h"
+
+namespace flood::io_detail {
+
+// Shortest decimal text that reads back as the same double ("nan", "inf", "-inf" for the
+// non-finite values, which JSON cannot hold but messages and WKT can).
+inline std::string formatDouble(double v) {
+    if (v != v) return "nan";
+    if (v == 1.0 / 0.0) return "inf";
+    if (v == -1.0 / 0.0) return "-inf";
+    char buf[32];
+    auto r = std::to_chars(buf, buf + sizeof buf, v);
+    return std::string(buf, r.ptr);
+}
+
+inline std::string formatPoint(Point p) {
+    return "(" + formatDouble(p.x) + ", " + formatDouble(p.y) + ")";
+}
+
+// 1-based line and column of byte `offset` in `text` (columns count bytes).
+struct LineCol {
+    size_t line = 1, col = 1;
+};
+inline LineCol lineColAt(std::string_view text, size_t offset) {
+    LineCol lc;
+    if (offset > text.size()) offset = text.size();
+    for (size_t i = 0; i < offset; ++i) {
+        if (text[i] == '\n') {
+            ++lc.line;
+            lc.col = 1;
+        } else {
+            ++lc.col;
+        }
+    }
+    return lc;
+}
+
+inline std::string where(const std::string& name, std::string_view text, size_t offset) {
+    LineCol lc = lineColAt(text, offset);
+    return name + ":" + std::to_string(lc.line) + ":" + std::to_string(lc.col);
+}
+
+// nlohmann's parser recurses once per nesting level: deeper documents are refused up front.
+constexpr int kMaxJsonDepth = 64;
+
+// Scans brackets outside strings; returns the offset of the first bracket deeper than
+// kMaxJsonDepth, or npos. Linear time, no recursion.
+inline size_t tooDeep(std::string_view text) {
+    int depth = 0;
+    bool inString = false;
+    for (size_t i = 0; i < text.size(); ++i) {
+        char c = text[i];
+        if (inString) {
+            if (c == '\\') ++i;
+            else if (c == '"') inString = false;
+            continue;
+        }
+        if (c == '"') inString = true;
+        else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth) return i;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return std::string_view::npos;
+}
+
+}  // namespace flood::io_detail

@@ -1,0 +1,39 @@
+#include "polygon.h"
+
+#include <algorithm>
+
+namespace flood {
+
+Index Polygon::ringOf(Index v) const {
+    auto it = std::upper_bound(rings.begin(), rings.end(), v,
+                               [](Index x, const Ring& r) { return x < r.first; });
+    return Index(it - rings.begin()) - 1;
+}
+
+size_t Polygon::expectedTriangles() const {
+    size_t t = 0;
+    for (const Part& p : parts) {
+        Index first = rings[p.firstRing].first;
+        const Ring& last = rings[p.firstRing + p.ringCount - 1];
+        size_t n = last.first + last.count - first;
+        // Each extra copy of a point (rings touching there) takes 2pi from the angle sum,
+        // so two triangles fewer.
+        std::vector<Point> pts(vertices.begin() + first, vertices.begin() + first + long(n));
+        for (Point& q : pts) q = {q.x + 0.0, q.y + 0.0};
+        std::sort(pts.begin(), pts.end(),
+                  [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+        size_t copies = 0;
+        for (size_t i = 1; i < pts.size(); ++i) copies += pts[i] == pts[i - 1];
+        t += n + 2 * (p.ringCount - 1) - 2 - 2 * copies;
+    }
+    return t;
+}
+
+void Polygon::addRing(const std::vector<Point>& pts, bool outer) {
+    if (outer) parts.push_back({Index(rings.size()), 0});
+    rings.push_back({Index(vertices.size()), Index(pts.size())});
+    parts.back().ringCount++;
+    vertices.insert(vertices.end(), pts.begin(), pts.end());
+}
+
+}  // namespace flood

@@ -1,0 +1,48 @@
+// Polygon model of the paper (§3): an array of vertices and loops of vertex references.
+// Input rings are kept exactly as read (either orientation); the flood machine orients
+// loops itself. A multipolygon is a list of parts, each an outer ring followed by its holes.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace flood {
+
+struct Point {
+    double x = 0, y = 0;
+};
+inline bool operator==(Point a, Point b) { return a.x == b.x && a.y == b.y; }
+inline bool operator!=(Point a, Point b) { return !(a == b); }
+
+using Index = uint32_t;
+constexpr Index kNone = 0xffffffffu;
+
+struct Ring {
+    Index first = 0;  // first vertex in Polygon::vertices
+    Index count = 0;  // number of vertices (no repeated closing point)
+};
+
+struct Part {
+    Index firstRing = 0;  // outer ring; holes follow
+    Index ringCount = 0;
+};
+
+// Vertices of all rings concatenated in file order (closing points dropped).
+struct Polygon {
+    std::vector<Point> vertices;
+    std::vector<Ring> rings;
+    std::vector<Part> parts;
+
+    Index ringOf(Index v) const;  // ring containing vertex v (binary search)
+    size_t holeCount() const { return rings.size() - parts.size(); }
+    // n + 2h - 2 per part, summed: the triangle count of any triangulation (§1); two fewer
+    // for each extra copy of a point where rings touch.
+    size_t expectedTriangles() const;
+    // Adds a ring; starts a new part when `outer` is true.
+    void addRing(const std::vector<Point>& pts, bool outer);
+};
+
+using Triangle = std::array<Index, 3>;
+
+}  // namespace flood

@@ -1,0 +1,326 @@
+// Exact geometric predicates: orient, inside, and the ExactSum accumulator.
+//
+// Sign conventions (stated once): coordinates are x to the right, y up. orient(a, b, c) is the
+// sign of the doubled signed area of triangle (a, b, c) =
+//     ax*by - ay*bx + bx*cy - by*cx + cx*ay - cy*ax,
+// positive for a counter-clockwise turn (c left of a->b), negative for clockwise, 0 when
+// collinear. ExactSum holds an exact sum of products; addCross(a, b) adds a x b = ax*by - ay*bx,
+// so summing addCross over a ring's edges gives its doubled signed area (positive when the
+// ring is counter-clockwise).
+//
+// Three stages, each exact where it is used:
+//  1. Floating-point filter (Shewchuk's ccwerrboundA on the sum of absolute products). Falls
+//     through when anything is non-finite or the magnitudes are so small that underflow could
+//     spoil the relative error bound.
+//  2. Expansion arithmetic: each of the six products is split exactly into two doubles with fma
+//     (two-product) and the twelve doubles are summed with two-sum into a non-overlapping
+//     expansion whose sign is the sign of its largest component. Exact when every nonzero
+//     |coordinate| lies in [2^-450, 2^450]: products then stay in [2^-900, 2^901], their
+//     rounding errors are normal doubles, and no sum can overflow.
+//  3. GMP rationals otherwise (mpq_set_d is exact for every finite double).
+#include "predicates.h"
+
+#include <gmp.h>
+
+#include <cassert>
+#include <cmath>
+
+namespace flood {
+
+namespace {
+
+constexpr double kEpsilon = 0x1p-53;  // half an ulp of 1: the unit roundoff
+constexpr double kCcwErrBoundA = (3.0 + 16.0 * kEpsilon) * kEpsilon;
+constexpr double kFilterMin = 0x1p-800;  // below this, underflow could matter: go exact
+constexpr double kSafeMin = 0x1p-450;    // expansion arithmetic is exact for |coordinates|
+constexpr double kSafeMax = 0x1p450;     //   in [kSafeMin, kSafeMax] (or zero)
+constexpr double kTermMax = 0x1p1000;    // ExactSum terms stay below this (no overflow)
+
+// x + y = s + e exactly (Knuth's two-sum; needs round-to-nearest and no fp contraction).
+inline void twoSum(double a, double b, double& s, double& e) {
+    s = a + b;
+    double bv = s - a;
+    double av = s - bv;
+    e = (a - av) + (b - bv);
+}
+
+// a * b = p + e exactly, when no underflow/overflow happens.
+inline void twoProduct(double a, double b, double& p, double& e) {
+    p = a * b;
+    e = std::fma(a, b, -p);
+}
+
+inline bool safe(double v) {
+    double m = std::fabs(v);
+    return m == 0 || (m >= kSafeMin && m <= kSafeMax);
+}
+
+// Adds b to the non-overlapping expansion h[0..len) (increasing magnitude) in place,
+// dropping zero components. Returns the new length (at most len + 1).
+inline int growExpansion(double* h, int len, double b) {
+    double q = b;
+    int j = 0;
+    for (int i = 0; i < len; ++i) {
+        double s, e;
+        twoSum(q, h[i], s, e);
+        if (e != 0) h[j++] = e;
+        q = s;
+    }
+    if (q != 0) h[j++] = q;
+    return j;
+}
+
+int orientExpansion(Point a, Point b, Point c) {
+    const double f[6][2] = {{a.x, b.y}, {-a.y, b.x}, {b.x, c.y},
+                            {-b.y, c.x}, {c.x, a.y}, {-c.y, a.x}};
+    double h[13];
+    int len = 0;
+    for (const auto& pr : f) {
+        double p, e;
+        twoProduct(pr[0], pr[1], p, e);
+        len = growExpansion(h, len, p);
+        len = growExpansion(h, len, e);
+    }
+    if (len == 0) return 0;
+    return h[len - 1] > 0 ? 1 : -1;
+}
+
+struct Mpq {
+    mpq_t q;
+    Mpq() { mpq_init(q); }
+    explicit Mpq(double d) {
+        mpq_init(q);
+        mpq_set_d(q, d);
+    }
+    Mpq(const Mpq&) = delete;
+    Mpq& operator=(const Mpq&) = delete;
+    ~Mpq() { mpq_clear(q); }
+};
+
+// q += a * b exactly.
+void mpqAddProduct(mpq_t q, double a, double b) {
+    Mpq x(a), y(b);
+    mpq_mul(x.q, x.q, y.q);
+    mpq_add(q, q, x.q);
+}
+
+int orientGmp(Point a, Point b, Point c) {
+    Mpq sum;
+    mpqAddProduct(sum.q, a.x, b.y);
+    mpqAddProduct(sum.q, -a.y, b.x);
+    mpqAddProduct(sum.q, b.x, c.y);
+    mpqAddProduct(sum.q, -b.y, c.x);
+    mpqAddProduct(sum.q, c.x, a.y);
+    mpqAddProduct(sum.q, -c.y, a.x);
+    return mpq_sgn(sum.q);
+}
+
+// s lies on the closed segment p-q (p == q allowed).
+bool onSegment(Point s, Point p, Point q) {
+    if (orient(p, q, s) != 0) return false;
+    return std::fmin(p.x, q.x) <= s.x && s.x <= std::fmax(p.x, q.x) &&
+           std::fmin(p.y, q.y) <= s.y && s.y <= std::fmax(p.y, q.y);
+}
+
+}  // namespace
+
+int orient(Point a, Point b, Point c) {
+    assert(std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(b.x) &&
+           std::isfinite(b.y) && std::isfinite(c.x) && std::isfinite(c.y) &&
+           "orient() needs finite coordinates; validate the input first");
+    // Stage 1: filter.
+    double detLeft = (a.x - c.x) * (b.y - c.y);
+    double detRight = (a.y - c.y) * (b.x - c.x);
+    double det = detLeft - detRight;
+    double detSum = std::fabs(detLeft) + std::fabs(detRight);
+    if (std::isfinite(det) && std::isfinite(detSum) && detSum >= kFilterMin) {
+        double bound = kCcwErrBoundA * detSum;
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+    }
+    // Stage 2: expansions, when every coordinate is in the safe exponent range.
+    if (safe(a.x) && safe(a.y) && safe(b.x) && safe(b.y) && safe(c.x) && safe(c.y))
+        return orientExpansion(a, b, c);
+    // Stage 3: rationals.
+    return orientGmp(a, b, c);
+}
+
+// Rule: s is inside when it lies on none of the four closed edges L-R, R-NR, NR-NL, NL-L and
+// the closed path L -> R -> NR -> NL -> L winds around it a nonzero number of times. For a
+// simple quadrangle (convex or not, either orientation) this is exactly its open interior; a
+// degenerate quadrangle (repeated or collinear vertices) has no interior points beyond those of
+// its non-degenerate part; a self-crossing one counts both lobes. All tests are exact orient
+// calls and exact coordinate comparisons.
+bool inside(Point s, Point left, Point right, Point nextRight, Point nextLeft) {
+    const Point q[4] = {left, right, nextRight, nextLeft};
+    int winding = 0;
+    for (int i = 0; i < 4; ++i) {
+        Point p = q[i], r = q[(i + 1) % 4];
+        if (onSegment(s, p, r)) return false;
+        if (p.y <= s.y) {
+            if (r.y > s.y && orient(p, r, s) > 0) ++winding;  // upward edge, s on its left
+        } else {
+            if (r.y <= s.y && orient(p, r, s) < 0) --winding;  // downward edge, s on its right
+        }
+    }
+    return winding != 0;
+}
+
+// [SECTION] ExactSum
+
+struct ExactSum::Big {
+    mpq_t q;
+    Big() { mpq_init(q); }
+    Big(const Big& o) {
+        mpq_init(q);
+        mpq_set(q, o.q);
+    }
+    Big& operator=(const Big&) = delete;
+    ~Big() { mpq_clear(q); }
+};
+
+ExactSum::Big& ExactSum::ownBig() {
+    if (!big_)
+        big_ = std::make_shared<Big>();
+    else if (big_.use_count() > 1)
+        big_ = std::make_shared<Big>(*big_);
+    return *big_;
+}
+
+void ExactSum::toBig() {
+    Big& b = ownBig();
+    for (double t : terms_) {
+        Mpq x(t);
+        mpq_add(b.q, b.q, x.q);
+    }
+    terms_.clear();
+    compressedSize_ = 0;
+}
+
+void ExactSum::growTerm(double b) {
+    if (b == 0) return;
+    if (!(std::fabs(b) <= kTermMax)) {
+        Mpq x(b);
+        mpq_add(ownBig().q, ownBig().q, x.q);
+        return;
+    }
+    double q = b;
+    size_t j = 0;
+    for (size_t i = 0; i < terms_.size(); ++i) {
+        double s, e;
+        twoSum(q, terms_[i], s, e);
+        if (e != 0) terms_[j++] = e;
+        q = s;
+    }
+    terms_.resize(j);
+    if (q != 0) terms_.push_back(q);
+    if (!terms_.empty() && std::fabs(terms_.back()) > kTermMax) toBig();
+}
+
+// Shewchuk's Compress: same value, non-overlapping, usually far fewer components.
+void ExactSum::maybeCompress() {
+    if (terms_.size() <= 2 * compressedSize_ + 8) return;
+    size_t m = terms_.size();
+    std::vector<double> g(m);
+    double q = terms_[m - 1];
+    size_t bottom = m - 1;
+    for (size_t i = m - 1; i-- > 0;) {
+        double s, e;
+        twoSum(q, terms_[i], s, e);
+        if (e != 0) {
+            g[bottom--] = s;
+            q = e;
+        } else {
+            q = s;
+        }
+    }
+    g[bottom] = q;
+    size_t top = 0;
+    for (size_t i = bottom + 1; i < m; ++i) {
+        double s, e;
+        twoSum(g[i], q, s, e);
+        if (e != 0) terms_[top++] = e;
+        q = s;
+    }
+    terms_[top++] = q;
+    terms_.resize(top);
+    if (top == 1 && terms_[0] == 0) terms_.clear();
+    compressedSize_ = terms_.size();
+}
+
+void ExactSum::addProduct(double a, double b) {
+    if (a == 0 || b == 0) return;
+    double ma = std::fabs(a), mb = std::fabs(b);
+    if (ma >= kSafeMin && ma <= kSafeMax && mb >= kSafeMin && mb <= kSafeMax) {
+        double p, e;
+        twoProduct(a, b, p, e);
+        growTerm(p);
+        growTerm(e);
+        maybeCompress();
+    } else {
+        mpqAddProduct(ownBig().q, a, b);
+    }
+}
+
+void ExactSum::addCross(Point a, Point b) {
+    addProduct(a.x, b.y);
+    addProduct(-a.y, b.x);
+}
+
+void ExactSum::addTriangle(Point a, Point b, Point c) {
+    addCross(a, b);
+    addCross(b, c);
+    addCross(c, a);
+}
+
+void ExactSum::add(const ExactSum& other, int sign) {
+    assert((sign == 1 || sign == -1) && "ExactSum::add takes sign +1 or -1");
+    if (&other == this) {
+        ExactSum copy = other;
+        add(copy, sign);
+        return;
+    }
+    for (double t : other.terms_) growTerm(sign * t);
+    maybeCompress();
+    if (other.big_) {
+        Big& b = ownBig();
+        if (sign > 0)
+            mpq_add(b.q, b.q, other.big_->q);
+        else
+            mpq_sub(b.q, b.q, other.big_->q);
+    }
+}
+
+int ExactSum::sign() const {
+    if (!big_) return terms_.empty() ? 0 : (terms_.back() > 0 ? 1 : -1);
+    Mpq total;
+    mpq_set(total.q, big_->q);
+    for (double t : terms_) {
+        Mpq x(t);
+        mpq_add(total.q, total.q, x.q);
+    }
+    return mpq_sgn(total.q);
+}
+
+double ExactSum::approx() const {
+    if (big_) {
+        Mpq total;
+        mpq_set(total.q, big_->q);
+        for (double t : terms_) {
+            Mpq x(t);
+            mpq_add(total.q, total.q, x.q);
+        }
+        return mpq_get_d(total.q);
+    }
+    double s = 0;
+    for (double t : terms_) s += t;  // increasing magnitude: the error is tiny
+    return s;
+}
+
+bool ExactSum::operator==(const ExactSum& other) const {
+    ExactSum d = *this;
+    d.add(other, -1);
+    return d.sign() == 0;
+}
+
+}  // namespace flood

@@ -1,0 +1,52 @@
+// The paper's three geometric predicates (§5) — convex, below, inside — and the exact
+// orientation test they rest on. Coordinates: x to the right, y up; "up" is +y.
+// Every predicate is exact for any finite double input: a fast floating-point filter,
+// then exact expansion arithmetic, then GMP rationals for extreme exponents. No epsilon.
+#pragma once
+#include <memory>
+
+#include "polygon.h"
+
+namespace flood {
+
+// Sign of the doubled signed area of triangle (a, b, c):
+// +1 when c lies left of the directed line a->b (counter-clockwise turn),
+// -1 when it lies right (clockwise), 0 when the three points are collinear.
+int orient(Point a, Point b, Point c);
+
+// below(a, b): a is lower than b. Heights are y; equal heights are ordered by x, as if
+// every horizontal line were tilted slightly (the paper's lexicographic tie-break).
+inline bool below(Point a, Point b) { return a.y < b.y || (a.y == b.y && a.x < b.x); }
+
+// convex(prev, v, next): the corner at v, walking prev -> v -> next with the interior on the
+// left, is strictly convex (turns left). Collinear corners count as not convex.
+inline bool convex(Point prev, Point v, Point next) { return orient(prev, v, next) > 0; }
+
+// inside(s, left, right, nextRight, nextLeft): s lies strictly inside the quadrangle
+// Left, Right, NextRight, NextLeft (counter-clockwise in that order), the region of the
+// active gorge between the water level and the next water level (§5, Fig. 4).
+bool inside(Point s, Point left, Point right, Point nextRight, Point nextLeft);
+
+// Exact signed doubled area accumulator: add triangles or ring edges, compare sums exactly.
+class ExactSum {
+public:
+    void addProduct(double a, double b);        // += a*b, exactly
+    void addCross(Point a, Point b);             // += a.x*b.y - a.y*b.x, exactly
+    void addTriangle(Point a, Point b, Point c);  // += doubled signed area, exactly
+    void add(const ExactSum& other, int sign = 1);
+    int sign() const;                             // exact sign of the sum
+    double approx() const;                        // nearest double (for messages)
+    bool operator==(const ExactSum& other) const;  // exact equality of the two sums
+    size_t size() const { return terms_.size(); }  // expansion length (for tests)
+private:
+    struct Big;                  // GMP rational, used once a term leaves the safe range
+    void growTerm(double b);     // += b, exactly (expansion only)
+    void maybeCompress();
+    void toBig();                // moves the expansion into big_
+    Big& ownBig();               // big_, unshared (copy-on-write)
+    std::vector<double> terms_;  // non-overlapping expansion, increasing magnitude
+    std::shared_ptr<Big> big_;   // value = sum(terms_) + *big_ when set
+    size_t compressedSize_ = 0;  // length after the last compression
+};
+
+}  // namespace flood

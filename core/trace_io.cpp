@@ -1,0 +1,319 @@
+// JSON Lines traces (see trace_io.h). nlohmann::json (Debian nlohmann-json3-dev, header-only)
+// reads and writes each line; a bracket scan bounds nesting before parsing.
+#include "trace_io.h"
+
+#include <cstring>
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "io_util.h"
+
+namespace flood {
+namespace {
+
+using nlohmann::json;
+
+const char* kTestNames[] = {
+#define FLOOD_X(name, text) #name,
+    FLOOD_TESTS(FLOOD_X)
+#undef FLOOD_X
+};
+
+json indexJson(uint32_t i) { return i == kNone ? json(nullptr) : json(i); }
+
+json fingersJson(const Fingers& f) {
+    return {{"left", indexJson(f.left)},
+            {"right", indexJson(f.right)},
+            {"nextLeft", indexJson(f.nextLeft)},
+            {"nextRight", indexJson(f.nextRight)}};
+}
+
+json testsJson(uint8_t bits) {
+    json a = json::array();
+    for (int t = 0; t < int(Test::Count); ++t)
+        if (bits >> t & 1) a.push_back(kTestNames[t]);
+    return a;
+}
+
+json eventJson(const Event& e) {
+    return {{"step", e.step},
+            {"action", actionName(e.action)},
+            {"side", e.side == Side::Left ? "Left" : "Right"},
+            {"tested", testsJson(e.tested)},
+            {"passed", testsJson(e.passed)},
+            {"reason", forbiddenName(e.reason)},
+            {"part", e.part},
+            {"before", fingersJson(e.before)},
+            {"after", fingersJson(e.after)},
+            {"water", indexJson(e.water)},
+            {"firstTriangle", e.firstTriangle},
+            {"triangleCount", e.triangleCount},
+            {"sagTests", e.sagTests},
+            {"sag", indexJson(e.sag)},
+            {"bridgeTo", indexJson(e.bridgeTo)},
+            {"chainIndex", e.chainIndex},
+            {"cutLeft", e.cutLeft},
+            {"cutRight", e.cutRight},
+            {"top", indexJson(e.top)},
+            {"jumpTarget", indexJson(e.jumpTarget)},
+            {"gorgePushed", indexJson(e.gorgePushed)},
+            {"gorgePopped", indexJson(e.gorgePopped)},
+            {"bottom", indexJson(e.bottom)},
+            {"culprit", indexJson(e.culprit)},
+            {"culprit2", indexJson(e.culprit2)}};
+}
+
+struct Bad {
+    std::string message;
+};
+
+const json& field(const json& o, const char* key) {
+    if (!o.is_object() || !o.contains(key)) throw Bad{std::string("missing field \"") + key + "\""};
+    return o[key];
+}
+
+uint32_t number(const json& o, const char* key) {
+    const json& v = field(o, key);
+    if (!v.is_number_unsigned() || v.get<uint64_t>() > 0xffffffffull)
+        throw Bad{std::string("field \"") + key + "\" is not an unsigned 32-bit integer"};
+    return v.get<uint32_t>();
+}
+
+// A vertex index (or null for none), checked against the vertex count.
+Index vertex(const json& o, const char* key, size_t n) {
+    const json& v = field(o, key);
+    if (v.is_null()) return kNone;
+    uint32_t i = number(o, key);
+    if (i >= n)
+        throw Bad{std::string("field \"") + key + "\" = " + std::to_string(i) +
+                  " is not a vertex index (there are " + std::to_string(n) + ")"};
+    return i;
+}
+
+uint32_t idOrNone(const json& o, const char* key) {
+    return field(o, key).is_null() ? kNone : number(o, key);
+}
+
+Fingers fingers(const json& o, const char* key, size_t n) {
+    const json& f = field(o, key);
+    return {vertex(f, "left", n), vertex(f, "right", n), vertex(f, "nextLeft", n),
+            vertex(f, "nextRight", n)};
+}
+
+uint8_t tests(const json& o, const char* key) {
+    const json& a = field(o, key);
+    if (!a.is_array()) throw Bad{std::string("field \"") + key + "\" is not a list of test names"};
+    uint8_t bits = 0;
+    for (const json& t : a) {
+        int found = -1;
+        for (int i = 0; i < int(Test::Count); ++i)
+            if (t.is_string() && t.get<std::string>() == kTestNames[i]) found = i;
+        if (found < 0) throw Bad{"unknown test " + t.dump() + " in \"" + key + "\""};
+        bits |= uint8_t(1u << found);
+    }
+    return bits;
+}
+
+template <typename Enum, typename NameFn>
+Enum byName(const json& o, const char* key, int count, NameFn name) {
+    const json& v = field(o, key);
+    if (v.is_string())
+        for (int i = 0; i < count; ++i)
+            if (v.get<std::string>() == name(Enum(i))) return Enum(i);
+    throw Bad{std::string("field \"") + key + "\" has unknown value " + v.dump()};
+}
+
+Event parseEvent(const json& o, size_t n) {
+    Event e;
+    e.step = number(o, "step");
+    e.action = byName<Action>(o, "action", int(Action::Count), actionName);
+    e.side = byName<Side>(o, "side", 2,
+                          [](Side s) { return s == Side::Left ? "Left" : "Right"; });
+    e.tested = tests(o, "tested");
+    e.passed = tests(o, "passed");
+    e.reason = byName<Forbidden>(o, "reason", int(Forbidden::Count), forbiddenName);
+    e.part = number(o, "part");
+    e.before = fingers(o, "before", n);
+    e.after = fingers(o, "after", n);
+    e.water = vertex(o, "water", n);
+    e.firstTriangle = number(o, "firstTriangle");
+    e.triangleCount = number(o, "triangleCount");
+    e.sagTests = number(o, "sagTests");
+    e.sag = vertex(o, "sag", n);
+    e.bridgeTo = vertex(o, "bridgeTo", n);
+    e.chainIndex = number(o, "chainIndex");
+    e.cutLeft = number(o, "cutLeft");
+    e.cutRight = number(o, "cutRight");
+    e.top = vertex(o, "top", n);
+    e.jumpTarget = vertex(o, "jumpTarget", n);
+    e.gorgePushed = idOrNone(o, "gorgePushed");
+    e.gorgePopped = idOrNone(o, "gorgePopped");
+    e.bottom = vertex(o, "bottom", n);
+    e.culprit = vertex(o, "culprit", n);
+    e.culprit2 = vertex(o, "culprit2", n);
+    return e;
+}
+
+void parseHeader(const json& h, Polygon& p) {
+    const json& format = field(h, "format");
+    if (!format.is_string() || format.get<std::string>() != "flood-trace")
+        throw Bad{"not a flood trace (\"format\" is not \"flood-trace\")"};
+    uint32_t version = number(h, "version");
+    if (int(version) != kTraceFormatVersion)
+        throw Bad{"trace format version " + std::to_string(version) + ", this build reads " +
+                  std::to_string(kTraceFormatVersion)};
+    const json& vs = field(h, "vertices");
+    if (!vs.is_array()) throw Bad{"\"vertices\" is not an array"};
+    for (size_t i = 0; i < vs.size(); ++i) {
+        const json& v = vs[i];
+        if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+            throw Bad{"vertex " + std::to_string(i) + " is not a pair of numbers"};
+        p.vertices.push_back({v[0].get<double>(), v[1].get<double>()});
+    }
+    auto pairs = [&](const char* key) {
+        const json& a = field(h, key);
+        if (!a.is_array()) throw Bad{std::string("\"") + key + "\" is not an array"};
+        std::vector<std::pair<uint32_t, uint32_t>> out;
+        for (const json& x : a) {
+            if (!x.is_array() || x.size() != 2 || !x[0].is_number_unsigned() ||
+                !x[1].is_number_unsigned() || x[0].get<uint64_t>() > 0xffffffffull ||
+                x[1].get<uint64_t>() > 0xffffffffull)
+                throw Bad{std::string("\"") + key + "\" entries must be [first, count] pairs"};
+            out.push_back({x[0].get<uint32_t>(), x[1].get<uint32_t>()});
+        }
+        return out;
+    };
+    uint64_t next = 0;
+    for (auto [first, count] : pairs("rings")) {
+        if (first != next) throw Bad{"rings do not cover the vertices in order"};
+        p.rings.push_back({first, count});
+        next += count;
+    }
+    if (next != p.vertices.size()) throw Bad{"rings do not cover all vertices"};
+    next = 0;
+    for (auto [first, count] : pairs("parts")) {
+        if (first != next || count == 0) throw Bad{"parts do not cover the rings in order"};
+        p.parts.push_back({first, count});
+        next += count;
+    }
+    if (next != p.rings.size()) throw Bad{"parts do not cover all rings"};
+}
+
+}  // namespace
+
+void writeTrace(std::ostream& out, const Trace& trace) {
+    const Polygon& p = trace.polygon;
+    json vertices = json::array(), rings = json::array(), parts = json::array();
+    for (const Point& v : p.vertices) vertices.push_back({v.x, v.y});
+    for (const Ring& r : p.rings) rings.push_back({r.first, r.count});
+    for (const Part& q : p.parts) parts.push_back({q.firstRing, q.ringCount});
+    json header = {{"format", "flood-trace"},
+                   {"version", kTraceFormatVersion},
+                   {"vertices", vertices},
+                   {"rings", rings},
+                   {"parts", parts}};
+    out << header.dump() << "\n";
+    for (const Event& e : trace.events) out << eventJson(e).dump() << "\n";
+    json tris = json::array();
+    for (const Triangle& t : trace.triangles) tris.push_back({t[0], t[1], t[2]});
+    json last = {{"triangles", tris},
+                 {"status", statusName(trace.diagnostic.status)},
+                 {"message", trace.diagnostic.message}};
+    out << last.dump() << "\n";
+}
+
+Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& trace) {
+    trace = Trace{};
+    size_t lineNo = 0, pos = 0;
+    bool sawHeader = false, sawEnd = false;
+    try {
+        while (pos < text.size()) {
+            size_t eol = text.find('\n', pos);
+            if (eol == std::string_view::npos) eol = text.size();
+            std::string_view line = text.substr(pos, eol - pos);
+            pos = eol + 1;
+            ++lineNo;
+            if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;
+            if (sawEnd) throw Bad{"text after the final triangles line"};
+            if (io_detail::tooDeep(line) != std::string_view::npos) throw Bad{"JSON nested too deeply"};
+            json o;
+            try {
+                o = json::parse(line.begin(), line.end());
+            } catch (const json::parse_error& e) {
+                throw Bad{std::string("JSON syntax error at column ") + std::to_string(e.byte) +
+                          ": " + e.what()};
+            }
+            if (!o.is_object()) throw Bad{"a line must be one JSON object"};
+            if (!sawHeader) {
+                parseHeader(o, trace.polygon);
+                sawHeader = true;
+            } else if (o.contains("triangles")) {
+                const json& ts = o["triangles"];
+                if (!ts.is_array()) throw Bad{"\"triangles\" is not an array"};
+                size_t n = trace.polygon.vertices.size();
+                for (const json& t : ts) {
+                    if (!t.is_array() || t.size() != 3) throw Bad{"a triangle is not [a, b, c]"};
+                    Triangle tri;
+                    for (int k = 0; k < 3; ++k) {
+                        if (!t[k].is_number_unsigned() || t[k].get<uint64_t>() >= n)
+                            throw Bad{"triangle " + t.dump() + " has a bad vertex index"};
+                        tri[k] = t[k].get<Index>();
+                    }
+                    trace.triangles.push_back(tri);
+                }
+                const json& st = field(o, "status");
+                bool known = false;
+                for (int s : {0, 2, 3, 4, 5, 6, 7})
+                    if (st.is_string() && st.get<std::string>() == statusName(Status(s))) {
+                        trace.diagnostic.status = Status(s);
+                        known = true;
+                    }
+                if (!known) throw Bad{"unknown status " + st.dump()};
+                const json& msg = field(o, "message");
+                if (!msg.is_string()) throw Bad{"\"message\" is not a string"};
+                trace.diagnostic.message = msg.get<std::string>();
+                sawEnd = true;
+            } else {
+                Event e = parseEvent(o, trace.polygon.vertices.size());
+                if (e.step != trace.events.size())
+                    throw Bad{"event step " + std::to_string(e.step) + ", expected " +
+                              std::to_string(trace.events.size())};
+                trace.events.push_back(e);
+            }
+        }
+        if (!sawHeader) throw Bad{"empty trace, no header line"};
+        if (!sawEnd) throw Bad{"truncated trace: no final triangles line"};
+        for (const Event& e : trace.events)
+            if (uint64_t(e.firstTriangle) + e.triangleCount > trace.triangles.size()) {
+                lineNo = 0;
+                throw Bad{"event " + std::to_string(e.step) +
+                          " refers to triangles beyond the final list"};
+            }
+    } catch (const Bad& b) {
+        trace = Trace{};
+        return {Status::Malformed,
+                name + (lineNo ? ":" + std::to_string(lineNo) : std::string()) + ": " + b.message};
+    } catch (const json::exception& e) {
+        trace = Trace{};
+        return {Status::Malformed, name + ":" + std::to_string(lineNo) + ": " + e.what()};
+    }
+    return {};
+}
+
+Diagnostic readTraceFile(const std::string& path, Trace& trace) {
+    std::string text;
+    if (path == "-") {
+        text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
+        return parseTrace(text, "<stdin>", trace);
+    }
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return {Status::Malformed, path + ": cannot open file: " + std::strerror(errno)};
+    std::ostringstream ss;
+    ss << in.rdbuf();
+    return parseTrace(ss.str(), path, trace);
+}
+
+}  // namespace flood

@@ -1,0 +1,27 @@
+// Saving and loading a Trace (replay.h) as JSON Lines, the file `flood trace` writes and the
+// viewer opens. Line 1 is a header:
+//   {"format":"flood-trace","version":kTraceFormatVersion,"vertices":[[x,y],...],
+//    "rings":[[first,count],...],"parts":[[firstRing,ringCount],...]}
+// then one object per event with every field of flood::Event (action, side, reason by name;
+// tested and passed as lists of test names; fingers as objects; kNone written as null),
+// then a last line {"triangles":[[a,b,c],...],"status":"ok","message":"..."}.
+// Loading checks the format and version and every index; a malformed line becomes a
+// Malformed diagnostic naming the line, never a crash.
+#pragma once
+#include <iosfwd>
+#include <string>
+#include <string_view>
+
+#include "replay.h"
+#include "status.h"
+
+namespace flood {
+
+void writeTrace(std::ostream& out, const Trace& trace);
+
+// Parses a trace; on failure `trace` is left empty and the diagnostic reads
+// "NAME:LINE: what is wrong".
+Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& trace);
+Diagnostic readTraceFile(const std::string& path, Trace& trace);  // "-" reads stdin
+
+}  // namespace flood

@@ -1,0 +1,471 @@
+// Validity of an input polygon, checked exactly before flooding (docs/ERRORS.md).
+//
+// Checks, in this order; the first failing check is reported, and within a check the problem
+// with the lowest vertex (or edge) index, so the message does not depend on grid sizes:
+//   1. every coordinate is finite;
+//   2. every ring has at least 3 distinct points and no zero-length edge;
+//   3. every ring has a non-zero signed area (exact, ExactSum);
+//   4. no two edges of the polygon (all parts) cross, overlap collinearly, or have a vertex
+//      lying in the interior of another edge; a spike (an edge folding back on the previous
+//      one) counts as an overlap;
+//   5. where rings meet at a shared vertex (the same coordinates appear as a vertex more than
+//      once, in two rings or twice in one ring) they touch without crossing: around the shared
+//      point the wedges of the rings do not interleave;
+//   6. each hole lies inside its outer ring, and not inside another hole of its part
+//      (with 4 and 5, this means hole interiors do not overlap).
+// Not detected (documented in docs/ERRORS.md): an interior disconnected by a chain of
+// touching holes (GEOS "Interior is disconnected"); a ring touching itself at a vertex is
+// accepted (GEOS calls it "Ring Self-intersection"); a part lying inside another part of a
+// multipolygon. Rings touching at a point that is a vertex of one ring but interior to an
+// edge of the other are rejected (GEOS accepts them): the flood machine needs shared vertices.
+//
+// All decisions use the exact flood::orient() and coordinate comparisons; no floating-point
+// arithmetic decides anything. Cost: O(n log n) — a sort of the vertices for the sweep, a
+// sort for coincident vertices, and a balanced-tree sweep with O(1) tests per event.
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <set>
+#include <string>
+
+#include "io.h"
+#include "io_util.h"
+#include "predicates.h"
+
+namespace flood {
+namespace {
+
+using io_detail::formatPoint;
+
+struct Validator {
+    const Polygon& P;
+    const std::string& name;
+    size_t n = 0;
+    std::vector<Index> ringOfV;  // ring of each vertex
+    std::vector<int> ringSign;   // orientation of each ring: +1 counter-clockwise, -1 clockwise
+    std::vector<Index> partOfRing;
+
+    Validator(const Polygon& p, const std::string& nm) : P(p), name(nm), n(p.vertices.size()) {}
+
+    Index next(Index v) const {
+        const Ring& r = P.rings[ringOfV[v]];
+        return v + 1 == r.first + r.count ? r.first : v + 1;
+    }
+    Index prev(Index v) const {
+        const Ring& r = P.rings[ringOfV[v]];
+        return v == r.first ? r.first + r.count - 1 : v - 1;
+    }
+    Point pt(Index v) const { return P.vertices[v]; }
+
+    // "ring R vertex V (x, y)" for global vertex v.
+    std::string at(Index v) const {
+        Index r = ringOfV[v];
+        return "ring " + std::to_string(r) + " vertex " + std::to_string(v - P.rings[r].first) +
+               " " + formatPoint(pt(v));
+    }
+    Diagnostic fail(Index v, const std::string& reason) const {
+        return {Status::Invalid, name + ": " + at(v) + ": " + reason + " (global vertex " +
+                                     std::to_string(v) + ")"};
+    }
+
+    Diagnostic run();
+    Diagnostic checkRings();
+    Diagnostic checkEdges();
+    Diagnostic checkSharedVertices();
+    Diagnostic checkTouchTopology();
+    Diagnostic checkHoles();
+
+    // Vertices sorted by coordinates; groups of equal coordinates with more than one member.
+    std::vector<Index> byCoord;
+    std::vector<std::pair<Index, Index>> groups;  // [begin, end) ranges into byCoord
+    std::vector<Index> groupOf;                   // group of each vertex, or kNone
+    std::vector<Index> enclosing;  // innermost ring whose interior contains each ring
+};
+
+// --- exact geometric helpers -------------------------------------------------------------
+
+// Half of the plane around p in which direction p->a lies: 0 for angles [0, pi), 1 for
+// [pi, 2 pi). Exact: only comparisons.
+int half(Point p, Point a) { return (a.y > p.y || (a.y == p.y && a.x > p.x)) ? 0 : 1; }
+
+// Direction p->a comes before p->b counter-clockwise from the +x axis.
+bool angleLess(Point p, Point a, Point b) {
+    int ha = half(p, a), hb = half(p, b);
+    if (ha != hb) return ha < hb;
+    return orient(p, a, b) > 0;
+}
+bool sameDirection(Point p, Point a, Point b) {
+    return half(p, a) == half(p, b) && orient(p, a, b) == 0;
+}
+
+// c lies on segment a-b strictly between its ends; requires orient(a, b, c) == 0.
+bool strictlyBetween(Point a, Point b, Point c) {
+    if (c == a || c == b) return false;
+    if (a.x != b.x) return (a.x < c.x && c.x < b.x) || (b.x < c.x && c.x < a.x);
+    return (a.y < c.y && c.y < b.y) || (b.y < c.y && c.y < a.y);
+}
+
+// --- checks 1 to 3: coordinates and rings ------------------------------------------------
+
+Diagnostic Validator::checkRings() {
+    for (Index v = 0; v < n; ++v)
+        if (!std::isfinite(pt(v).x) || !std::isfinite(pt(v).y))
+            return fail(v, "coordinate is not a finite number");
+    std::vector<Point> tmp;
+    for (Index r = 0; r < P.rings.size(); ++r) {
+        const Ring& ring = P.rings[r];
+        if (ring.count == 0)
+            return {Status::Invalid, name + ": ring " + std::to_string(r) +
+                                         ": ring is empty, it needs at least 3 distinct points"};
+        tmp.assign(P.vertices.begin() + ring.first, P.vertices.begin() + ring.first + ring.count);
+        std::sort(tmp.begin(), tmp.end(),
+                  [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+        size_t distinct = std::unique(tmp.begin(), tmp.end()) - tmp.begin();
+        if (distinct < 3)
+            return fail(ring.first, "ring has " + std::to_string(distinct) +
+                                        " distinct point" + (distinct == 1 ? "" : "s") +
+                                        ", at least 3 are needed");
+        for (Index v = ring.first; v < ring.first + ring.count; ++v)
+            if (pt(v) == pt(next(v)))
+                return fail(v, "repeated consecutive point (zero-length edge)");
+    }
+    ringSign.assign(P.rings.size(), 0);
+    for (Index r = 0; r < P.rings.size(); ++r) {
+        const Ring& ring = P.rings[r];
+        ExactSum area;
+        for (Index v = ring.first; v < ring.first + ring.count; ++v) area.addCross(pt(v), pt(next(v)));
+        ringSign[r] = area.sign();
+        if (ringSign[r] == 0) return fail(ring.first, "ring has zero area");
+    }
+    return {};
+}
+
+// --- check 4: edge against edge, by a sweep ----------------------------------------------
+//
+// Shamos-Hoey: events are the vertices in the order of below() (y, then x: the paper's tilted
+// horizontal); the active edges are kept in a balanced tree ordered left to right along the
+// sweep line by exact orient() comparisons. Only edges that become neighbours in that order
+// are tested, and the lowest violation is always found before the sweep passes it. Edges
+// meeting at a shared vertex end and start at one event, so touching rings never disturb the
+// order. The same sweep records, for each ring, the ring whose interior immediately encloses
+// it (the edge just left of the ring's lowest vertex tells), used by check 6.
+
+struct Segment {
+    Point lo, hi;  // lo below hi
+    Index e;       // the edge: vertex e -> next(e)
+    bool up;       // the ring runs from lo to hi along this edge
+};
+
+struct SweepOrder {
+    const std::vector<Segment>* segs;
+    // a before b along the sweep line (a left of b), both active at the current event.
+    bool operator()(Index ia, Index ib) const {
+        if (ia == ib) return false;
+        const Segment& a = (*segs)[ia];
+        const Segment& b = (*segs)[ib];
+        if (!below(a.lo, b.lo)) {  // a starts at or after b: place a.lo against b
+            int o = orient(b.lo, b.hi, a.lo);
+            if (o == 0) o = orient(b.lo, b.hi, a.hi);
+            if (o != 0) return o > 0;
+        } else {
+            int o = orient(a.lo, a.hi, b.lo);
+            if (o == 0) o = orient(a.lo, a.hi, b.hi);
+            if (o != 0) return o < 0;
+        }
+        return ia < ib;  // collinear: an overlap, reported when they are tested
+    }
+};
+
+Diagnostic Validator::checkEdges() {
+    std::vector<Segment> segs(n);
+    for (Index v = 0; v < n; ++v) {
+        Point a = pt(v), b = pt(next(v));
+        bool up = below(a, b);
+        segs[v] = {up ? a : b, up ? b : a, v, up};
+    }
+    std::vector<Index> events(n);
+    for (Index v = 0; v < n; ++v) events[v] = v;
+    std::sort(events.begin(), events.end(), [&](Index a, Index b) {
+        return below(pt(a), pt(b)) || (pt(a) == pt(b) && a < b);
+    });
+
+    std::optional<std::pair<Index, std::string>> problem;  // vertex to report, reason
+    auto edgeText = [&](Index e) {
+        Index r = ringOfV[e];
+        return "ring " + std::to_string(r) + " edge " + std::to_string(e - P.rings[r].first) +
+               "-" + std::to_string(next(e) - P.rings[r].first) + " " + formatPoint(pt(e)) +
+               "-" + formatPoint(pt(next(e)));
+    };
+    auto testPair = [&](Index e, Index f) {
+        if (problem || e == f) return;
+        Point a = pt(e), b = pt(next(e)), c = pt(f), d = pt(next(f));
+        // Adjacent edges of one ring meet at their shared vertex; only a spike is wrong.
+        bool adjacent = false;
+        for (int k = 0; k < 2; ++k) {
+            Index e1 = k ? f : e, e2 = k ? e : f;
+            if (next(e1) != e2) continue;
+            adjacent = true;
+            Point p = pt(e1), q = pt(e2), s = pt(next(e2));
+            if (orient(p, q, s) == 0 && sameDirection(q, p, s)) {
+                problem.emplace(e2, "the ring folds back on itself here (spike): edge " +
+                                        edgeText(e1) + " overlaps the next edge");
+                return;
+            }
+        }
+        if (adjacent) return;
+        int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+        Index lo = std::min(e, f), hi = std::max(e, f);
+        if (o1 * o2 < 0 && o3 * o4 < 0) {
+            problem.emplace(lo, "edge " + edgeText(lo) + " crosses edge " + edgeText(hi));
+            return;
+        }
+        if (o1 == 0 && o2 == 0 && o3 == 0 && o4 == 0) {
+            bool useX = a.x != b.x;
+            auto key = [&](Point p) { return useX ? p.x : p.y; };
+            double l = std::max(std::min(key(a), key(b)), std::min(key(c), key(d)));
+            double h = std::min(std::max(key(a), key(b)), std::max(key(c), key(d)));
+            if (l < h)
+                problem.emplace(lo, "edge " + edgeText(lo) + " overlaps collinear edge " +
+                                        edgeText(hi));
+            return;
+        }
+        auto onEdge = [&](Index vertex, Index edge) {
+            problem.emplace(vertex, "vertex lies on the interior of edge " + edgeText(edge) +
+                                        " (rings may only touch at shared vertices)");
+        };
+        if (o1 == 0 && strictlyBetween(a, b, c)) onEdge(f, e);
+        else if (o2 == 0 && strictlyBetween(a, b, d)) onEdge(next(f), e);
+        else if (o3 == 0 && strictlyBetween(c, d, a)) onEdge(e, f);
+        else if (o4 == 0 && strictlyBetween(c, d, b)) onEdge(next(e), f);
+    };
+
+    using Tree = std::set<Index, SweepOrder>;
+    Tree active(SweepOrder{&segs});
+    std::vector<Tree::iterator> where(n, active.end());
+    enclosing.assign(P.rings.size(), kNone);
+    std::vector<char> ringSeen(P.rings.size(), 0);
+    std::vector<Index> ending, starting, newRings;
+    for (size_t i = 0; i < n && !problem;) {
+        size_t j = i;
+        Point p = pt(events[i]);
+        ending.clear(), starting.clear(), newRings.clear();
+        for (; j < n && pt(events[j]) == p; ++j) {
+            Index v = events[j];
+            for (Index e : {prev(v), v}) (segs[e].hi == p ? ending : starting).push_back(e);
+            Index r = ringOfV[v];
+            if (!ringSeen[r]) ringSeen[r] = 1, newRings.push_back(r);
+        }
+        i = j;
+        for (Index e : ending) {
+            auto it = where[e];
+            Index before = kNone, after = kNone;
+            if (it != active.begin()) testPair(e, before = *std::prev(it));
+            if (std::next(it) != active.end()) testPair(e, after = *std::next(it));
+            active.erase(it);
+            where[e] = active.end();
+            if (before != kNone && after != kNone) testPair(before, after);
+        }
+        for (Index e : starting) {
+            auto it = active.insert(e).first;
+            where[e] = it;
+            if (it != active.begin()) testPair(e, *std::prev(it));
+            if (std::next(it) != active.end()) testPair(e, *std::next(it));
+        }
+        if (problem) break;
+        // Rings whose lowest vertex is p, left to right: the edge just left of a ring's
+        // leftmost edge bounds the face the ring lies in.
+        if (newRings.empty()) continue;
+        std::vector<std::pair<Index, Index>> leftmost;  // (leftmost edge, ring)
+        for (Index r : newRings) {
+            Index best = kNone;
+            for (Index e : starting)
+                if (ringOfV[e] == r && (best == kNone || active.key_comp()(e, best))) best = e;
+            leftmost.push_back({best, r});
+        }
+        std::sort(leftmost.begin(), leftmost.end(), [&](auto a, auto b) {
+            return active.key_comp()(a.first, b.first);
+        });
+        for (auto [e, r] : leftmost) {
+            auto it = where[e];
+            if (it == active.begin()) continue;  // nothing to the left: outside everything
+            const Segment& t = segs[*std::prev(it)];
+            Index tr = ringOfV[t.e];
+            bool rightIsInside = t.up ? ringSign[tr] < 0 : ringSign[tr] > 0;
+            enclosing[r] = rightIsInside ? tr : enclosing[tr];
+        }
+    }
+    if (problem) return fail(problem->first, problem->second);
+    return {};
+}
+
+// --- check 5: rings meeting at shared vertices -------------------------------------------
+
+Diagnostic Validator::checkSharedVertices() {
+    byCoord.resize(n);
+    for (Index v = 0; v < n; ++v) byCoord[v] = v;
+    std::sort(byCoord.begin(), byCoord.end(), [&](Index a, Index b) {
+        Point p = pt(a), q = pt(b);
+        return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && a < b)));
+    });
+    groupOf.assign(n, kNone);
+    for (Index i = 0; i < n;) {
+        Index j = i + 1;
+        while (j < n && pt(byCoord[j]) == pt(byCoord[i])) ++j;
+        if (j - i > 1) {
+            for (Index k = i; k < j; ++k) groupOf[byCoord[k]] = Index(groups.size());
+            groups.push_back({i, j});
+        }
+        i = j;
+    }
+    // Around each shared point, every occurrence contributes a wedge of two rays (to its
+    // previous and next vertex). The rings cross there exactly when two wedges interleave.
+    struct Ray {
+        Point to;
+        Index owner;  // the vertex occurrence whose wedge this ray bounds
+        bool after;   // the polygon's interior lies just counter-clockwise of this ray
+    };
+    std::vector<Ray> rays;
+    std::vector<Index> stack;
+    for (auto [gb, ge] : groups) {
+        Point p = pt(byCoord[gb]);
+        rays.clear();
+        for (Index k = gb; k < ge; ++k) {
+            Index v = byCoord[k];
+            Index r = ringOfV[v];
+            // Walking prev -> v -> next, the ring's inside is on the left for a
+            // counter-clockwise ring; the polygon's interior is the other side for a hole.
+            bool nextAfter = (ringSign[r] > 0) != (P.parts[partOfRing[r]].firstRing != r);
+            rays.push_back({pt(prev(v)), v, !nextAfter});
+            rays.push_back({pt(next(v)), v, nextAfter});
+        }
+        std::sort(rays.begin(), rays.end(),
+                  [&](const Ray& a, const Ray& b) { return angleLess(p, a.to, b.to); });
+        stack.clear();
+        for (const Ray& r : rays) {
+            if (!stack.empty() && stack.back() == r.owner) stack.pop_back();
+            else stack.push_back(r.owner);
+        }
+        if (stack.empty()) {
+            // Sectors between consecutive rays must alternate interior / exterior; otherwise
+            // two loops overlap here (a loop nested in another with the same orientation,
+            // or a hole nested in a hole).
+            for (size_t i = 0; i < rays.size(); ++i) {
+                const Ray& a = rays[i];
+                const Ray& b = rays[(i + 1) % rays.size()];
+                if (a.after == b.after) {
+                    Index u = std::min(a.owner, b.owner), w = std::max(a.owner, b.owner);
+                    return fail(u, "the interior overlaps itself at this shared vertex (" +
+                                       (u == w ? std::string("a ring") : at(w)) +
+                                       " touches here from the inside, with the orientation "
+                                       "of a nested loop or hole)");
+                }
+            }
+            continue;
+        }
+        // Find the interleaving pair with the lowest vertex ids, for a stable message.
+        std::vector<Index> occ;
+        for (Index k = gb; k < ge; ++k) occ.push_back(byCoord[k]);
+        std::sort(occ.begin(), occ.end());
+        auto position = [&](Index owner, int which) {
+            int seen = 0;
+            for (size_t i = 0; i < rays.size(); ++i)
+                if (rays[i].owner == owner && seen++ == which) return i;
+            return rays.size();
+        };
+        for (size_t i = 0; i < occ.size(); ++i)
+            for (size_t j = i + 1; j < occ.size(); ++j) {
+                size_t a0 = position(occ[i], 0), a1 = position(occ[i], 1);
+                size_t b0 = position(occ[j], 0), b1 = position(occ[j], 1);
+                bool inB0 = a0 < b0 && b0 < a1, inB1 = a0 < b1 && b1 < a1;
+                if (inB0 != inB1)
+                    return fail(occ[i], "the boundary crosses itself at this shared vertex (" +
+                                            at(occ[j]) + " passes through to the other side)");
+            }
+        return fail(occ[0], "the boundary crosses itself at this shared vertex");
+    }
+    return checkTouchTopology();
+}
+
+// Touching is allowed only where it keeps the interior connected and every ring simple (as
+// GEOS rules): a ring may not touch itself, and the rings of a part touching each other may not
+// close a cycle (two rings touching twice, or three touching in a ring cut the interior in two).
+Diagnostic Validator::checkTouchTopology() {
+    std::vector<Index> parent(P.rings.size());
+    for (Index r = 0; r < parent.size(); ++r) parent[r] = r;
+    auto find = [&](Index r) {
+        while (parent[r] != r) r = parent[r] = parent[parent[r]];
+        return r;
+    };
+    for (auto [gb, ge] : groups) {
+        std::vector<Index> occ(byCoord.begin() + gb, byCoord.begin() + ge);
+        std::sort(occ.begin(), occ.end());
+        for (size_t i = 1; i < occ.size(); ++i) {
+            Index a = occ[i - 1], b = occ[i];
+            if (ringOfV[a] == ringOfV[b])
+                return fail(b, "the ring touches itself here (it also passes through " + at(a) +
+                                   "): a ring must be simple");
+            if (partOfRing[ringOfV[a]] != partOfRing[ringOfV[b]]) continue;
+            Index ra = find(ringOfV[a]), rb = find(ringOfV[b]);
+            if (ra == rb)
+                return fail(b, "rings touching here and elsewhere enclose part of the interior: "
+                               "the interior is disconnected");
+            parent[ra] = rb;
+        }
+    }
+    return {};
+}
+
+// --- check 6: holes inside their outer ring, not inside each other -----------------------
+// Uses enclosing[], the innermost ring whose interior contains each ring (from the sweep).
+
+Diagnostic Validator::checkHoles() {
+    for (Index r = 0; r < P.rings.size(); ++r) {
+        const Part& part = P.parts[partOfRing[r]];
+        Index outer = part.firstRing, e = enclosing[r];
+        Index v = P.rings[r].first;
+        auto sameHole = [&](Index x) {
+            return x != kNone && partOfRing[x] == partOfRing[r] && x != outer;
+        };
+        if (r == outer) {
+            if (e != kNone && P.parts[partOfRing[e]].firstRing == e)
+                return fail(v, "outer ring " + std::to_string(r) +
+                                   " lies inside the outer ring " + std::to_string(e) +
+                                   " of another part: parts overlap");
+            continue;
+        }
+        if (e == outer) continue;
+        if (sameHole(e))
+            return fail(v, "hole (ring " + std::to_string(r) + ") lies inside another hole (ring " +
+                               std::to_string(e) + "): holes overlap");
+        return fail(v, "hole (ring " + std::to_string(r) + ") lies outside its outer ring (ring " +
+                           std::to_string(outer) + ")" +
+                           (e == kNone ? std::string()
+                                       : ", inside ring " + std::to_string(e) + " instead"));
+    }
+    return {};
+}
+
+Diagnostic Validator::run() {
+    if (P.rings.empty()) return {Status::Invalid, name + ": polygon has no rings"};
+    ringOfV.resize(n);
+    partOfRing.resize(P.rings.size());
+    for (Index k = 0; k < P.parts.size(); ++k)
+        for (Index r = P.parts[k].firstRing; r < P.parts[k].firstRing + P.parts[k].ringCount; ++r)
+            partOfRing[r] = k;
+    for (Index r = 0; r < P.rings.size(); ++r)
+        for (Index v = P.rings[r].first; v < P.rings[r].first + P.rings[r].count; ++v)
+            ringOfV[v] = r;
+    Diagnostic d = checkRings();
+    if (d.ok()) d = checkEdges();
+    if (d.ok()) d = checkSharedVertices();
+    if (d.ok()) d = checkHoles();
+    return d;
+}
+
+}  // namespace
+
+Diagnostic validate(const Polygon& polygon, const std::string& name) {
+    return Validator(polygon, name).run();
+}
+
+}  // namespace flood

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs every Debian package the build, tests and viewer need. Idempotent: installs only
+# what is missing, with apt-get only. Run as root (or with sudo available).
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config ninja-build
+  nlohmann-json3-dev libcli11-dev libgmp-dev          # core + CLI
+  libgtest-dev libbenchmark-dev                       # tests, benchmarks
+  libglfw3-dev libglm-dev libimgui-dev libstb-dev     # viewer
+  python3-glad python3-jinja2                         # GL loader generated at build time
+  xvfb xauth                                          # headless GUI tests
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+echo "install-deps: installing ${missing[*]}"
+SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

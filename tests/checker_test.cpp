@@ -1,0 +1,236 @@
+// The exact checker accepts correct triangulations and rejects each kind of wrong one with the
+// rule it breaks named in the reason.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+
+#include "checker.h"
+
+using flood::checkTriangulation;
+using flood::Point;
+using flood::Polygon;
+using flood::Triangle;
+
+namespace {
+
+Polygon square() {
+    Polygon p;
+    p.addRing({{0, 0}, {2, 0}, {2, 2}, {0, 2}}, true);
+    return p;
+}
+
+// Regular-ish convex hexagon on integer coordinates, counter-clockwise.
+Polygon hexagon() {
+    Polygon p;
+    p.addRing({{2, 0}, {4, 0}, {6, 2}, {4, 4}, {2, 4}, {0, 2}}, true);
+    return p;
+}
+const std::vector<Triangle> kHexagonFan = {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 4, 5}};
+
+// Square (0..6) with a square hole (2..4), both rings counter-clockwise in the input.
+Polygon squareWithHole() {
+    Polygon p;
+    p.addRing({{0, 0}, {6, 0}, {6, 6}, {0, 6}}, true);
+    p.addRing({{2, 2}, {4, 2}, {4, 4}, {2, 4}}, false);
+    return p;
+}
+const std::vector<Triangle> kSquareWithHole = {{0, 1, 5}, {0, 5, 4}, {1, 2, 6}, {1, 6, 5},
+                                               {2, 3, 7}, {2, 7, 6}, {3, 0, 4}, {3, 4, 7}};
+
+::testing::AssertionResult rejected(const Polygon& p, const std::vector<Triangle>& t,
+                                    const std::string& rule) {
+    auto r = checkTriangulation(p, t);
+    if (r.ok) return ::testing::AssertionFailure() << "accepted, expected " << rule;
+    if (r.reason.find(rule) == std::string::npos)
+        return ::testing::AssertionFailure() << "reason '" << r.reason << "', expected " << rule;
+    return ::testing::AssertionSuccess() << r.reason;
+}
+
+::testing::AssertionResult accepted(const Polygon& p, const std::vector<Triangle>& t) {
+    auto r = checkTriangulation(p, t);
+    if (!r.ok) return ::testing::AssertionFailure() << r.reason;
+    return ::testing::AssertionSuccess();
+}
+
+}  // namespace
+
+TEST(Checker, AcceptsSquare) {
+    EXPECT_TRUE(accepted(square(), {{0, 1, 2}, {0, 2, 3}}));
+    EXPECT_TRUE(accepted(square(), {{1, 2, 3}, {1, 3, 0}}));
+    EXPECT_TRUE(accepted(square(), {{2, 0, 1}, {3, 0, 2}}));  // rotated vertex order
+}
+
+TEST(Checker, AcceptsClockwiseInputRing) {
+    Polygon p;
+    p.addRing({{0, 0}, {0, 2}, {2, 2}, {2, 0}}, true);
+    EXPECT_TRUE(accepted(p, {{0, 3, 2}, {0, 2, 1}}));
+    EXPECT_TRUE(rejected(p, {{0, 2, 3}, {0, 1, 2}}, "clockwise-triangle"));
+}
+
+TEST(Checker, AcceptsSquareWithHoleBothOrientations) {
+    EXPECT_TRUE(accepted(squareWithHole(), kSquareWithHole));
+    // Same shape, both rings reversed: old index -> new index.
+    Polygon q;
+    q.addRing({{0, 0}, {0, 6}, {6, 6}, {6, 0}}, true);
+    q.addRing({{2, 2}, {2, 4}, {4, 4}, {4, 2}}, false);
+    const flood::Index map[8] = {0, 3, 2, 1, 4, 7, 6, 5};
+    std::vector<Triangle> t;
+    for (const Triangle& tri : kSquareWithHole) t.push_back({map[tri[0]], map[tri[1]], map[tri[2]]});
+    EXPECT_TRUE(accepted(q, t));
+    // Outer clockwise, hole counter-clockwise mixed.
+    Polygon r;
+    r.addRing({{0, 0}, {0, 6}, {6, 6}, {6, 0}}, true);
+    r.addRing({{2, 2}, {4, 2}, {4, 4}, {2, 4}}, false);
+    const flood::Index map2[8] = {0, 3, 2, 1, 4, 5, 6, 7};
+    t.clear();
+    for (const Triangle& tri : kSquareWithHole) t.push_back({map2[tri[0]], map2[tri[1]], map2[tri[2]]});
+    EXPECT_TRUE(accepted(r, t));
+}
+
+TEST(Checker, AcceptsHoleTouchingOuterAtSharedVertex) {
+    // Outer: 0(0,0) 1(2,0) 2(4,0) 3(4,4) 4(0,4); hole: 5(2,0) 6(3,2) 7(1,2), apex on vertex 1.
+    // Each wedge of interior at (2,0) is bounded by one edge of each ring; the left wedge's
+    // triangle uses copy 1, the right wedge's uses copy 5. The touching point makes the region
+    // simply connected: n + 2h - 2 - 2d = 8 + 2 - 2 - 2 = 6 triangles.
+    Polygon p;
+    p.addRing({{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}}, true);
+    p.addRing({{2, 0}, {3, 2}, {1, 2}}, false);
+    std::vector<Triangle> t = {{0, 1, 7}, {0, 7, 4}, {4, 7, 6}, {4, 6, 3}, {3, 6, 2}, {2, 6, 5}};
+    EXPECT_TRUE(accepted(p, t));
+    t[5] = {2, 6, 1};  // the other copy works too
+    EXPECT_TRUE(accepted(p, t));
+    t.push_back({0, 1, 7});
+    EXPECT_TRUE(rejected(p, t, "triangle-count"));
+}
+
+TEST(Checker, AcceptsQuadHoleTouchingOuter) {
+    // Outer 0(0,0) 1(3,0) 2(6,0) 3(6,6) 4(0,6); hole 5(3,0) 6(4,2) 7(3,4) 8(2,2) touching the
+    // outer ring at (3,0): 9 + 2 - 2 - 2 = 7 triangles.
+    Polygon p;
+    p.addRing({{0, 0}, {3, 0}, {6, 0}, {6, 6}, {0, 6}}, true);
+    p.addRing({{3, 0}, {4, 2}, {3, 4}, {2, 2}}, false);
+    std::vector<Triangle> t = {{0, 1, 8}, {0, 8, 4}, {8, 7, 4}, {4, 7, 3},
+                               {7, 6, 3}, {6, 2, 3}, {5, 2, 6}};
+    EXPECT_TRUE(accepted(p, t));
+    t[6] = {5, 6, 2};
+    EXPECT_TRUE(rejected(p, t, "clockwise-triangle"));
+}
+
+TEST(Checker, AcceptsTwoParts) {
+    Polygon p;
+    p.addRing({{0, 0}, {2, 0}, {2, 2}, {0, 2}}, true);
+    p.addRing({{2, 2}, {4, 2}, {4, 4}, {2, 4}}, true);  // touches the first part at (2,2)
+    EXPECT_TRUE(accepted(p, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}}));
+    EXPECT_TRUE(rejected(p, {{0, 1, 6}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}}, "mixed-parts"));
+}
+
+TEST(Checker, RejectsMissingTriangle) {
+    EXPECT_TRUE(rejected(square(), {{0, 1, 2}}, "triangle-count"));
+    EXPECT_TRUE(rejected(squareWithHole(), {kSquareWithHole.begin(), kSquareWithHole.end() - 1},
+                         "triangle-count"));
+}
+
+TEST(Checker, RejectsFlippedTriangle) {
+    EXPECT_TRUE(rejected(square(), {{0, 2, 1}, {0, 2, 3}}, "clockwise-triangle"));
+}
+
+TEST(Checker, RejectsDegenerateTriangle) {
+    Polygon p;  // collinear vertex 1 on the bottom edge
+    p.addRing({{0, 0}, {1, 0}, {2, 0}, {2, 2}, {0, 2}}, true);
+    EXPECT_TRUE(accepted(p, {{1, 2, 3}, {1, 3, 4}, {0, 1, 4}}));
+    EXPECT_TRUE(rejected(p, {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}, "degenerate-triangle"));
+}
+
+TEST(Checker, RejectsOverlappingTrianglesWithCorrectCount) {
+    EXPECT_TRUE(accepted(hexagon(), kHexagonFan));
+    // (1, 4, 5) overlaps (0, 3, 4); count is right but boundary edge (5, 0) is never covered.
+    EXPECT_TRUE(rejected(hexagon(), {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {1, 4, 5}},
+                         "boundary-edge-missing"));
+    // Same triangle twice: every edge used twice the same way.
+    EXPECT_TRUE(rejected(square(), {{0, 1, 2}, {0, 1, 2}}, "edge-used-twice"));
+}
+
+TEST(Checker, RejectsBoundaryEdgeMissing) {
+    EXPECT_TRUE(rejected(hexagon(), {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {2, 4, 5}},
+                         "boundary-edge-missing"));
+}
+
+TEST(Checker, RejectsBoundaryEdgeFromOutside) {
+    // Triangles covering the hole of the square-with-hole use hole edges from the wrong side.
+    std::vector<Triangle> t = kSquareWithHole;
+    t[7] = {4, 5, 6};
+    EXPECT_TRUE(rejected(squareWithHole(), t, "boundary-edge-reversed"));
+}
+
+TEST(Checker, RejectsEdgeUsedTwiceSameWay) {
+    EXPECT_TRUE(rejected(hexagon(), {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 3, 5}},
+                         "edge-used-twice"));
+}
+
+TEST(Checker, RejectsUnmatchedInteriorEdge) {
+    // Three ears plus the overlapping middle triangle (1, 3, 5): every boundary edge once, no
+    // directed edge twice, count right, but diagonal (2, 0) has no twin.
+    EXPECT_TRUE(accepted(hexagon(), {{0, 1, 2}, {2, 3, 4}, {4, 5, 0}, {0, 2, 4}}));
+    EXPECT_TRUE(rejected(hexagon(), {{0, 1, 2}, {2, 3, 4}, {4, 5, 0}, {1, 3, 5}},
+                         "unmatched-edge"));
+}
+
+TEST(Checker, RejectsCrossingDiagonals) {
+    // Diagonals 1-3 and 5-1 cross 2-4, 4-0 and 0-2: all boundary edges covered once.
+    EXPECT_TRUE(rejected(hexagon(), {{0, 1, 2}, {2, 3, 4}, {4, 5, 0}, {1, 3, 5}},
+                         "unmatched-edge"));
+    // Diagonals 0-3 and 1-4 (and 2-4) cross; the count is right, edge (4, 5) is lost.
+    EXPECT_TRUE(rejected(hexagon(), {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {0, 3, 5}},
+                         "boundary-edge-missing"));
+    // A square split along both diagonals at once.
+    EXPECT_TRUE(rejected(square(), {{0, 1, 2}, {1, 2, 3}}, "edge-used-twice"));
+    EXPECT_TRUE(rejected(square(), {{0, 1, 2}, {1, 3, 0}}, "edge-used-twice"));
+}
+
+TEST(Checker, RejectsIndexOutOfRange) {
+    EXPECT_TRUE(rejected(square(), {{0, 1, 2}, {0, 2, 7}}, "index-out-of-range"));
+    EXPECT_TRUE(rejected(square(), {{0, 1, 2}, {0, 2, flood::kNone}}, "index-out-of-range"));
+}
+
+TEST(Checker, ReasonNamesTriangleAndVertices) {
+    auto r = checkTriangulation(square(), {{0, 1, 2}, {0, 3, 2}});
+    ASSERT_FALSE(r.ok);
+    EXPECT_NE(r.reason.find("triangle 1 (0, 3, 2)"), std::string::npos) << r.reason;
+}
+
+TEST(Checker, RejectsBadRings) {
+    Polygon p;
+    p.addRing({{0, 0}, {1, 1}, {2, 2}}, true);
+    EXPECT_TRUE(rejected(p, {{0, 1, 2}}, "degenerate-triangle"));
+    EXPECT_TRUE(rejected(p, {}, "triangle-count"));
+}
+
+TEST(Checker, AreaRuleAgreesWithTopology) {
+    // When rules 1-6 hold, the triangles form a 2-chain whose boundary is the polygon's, so the
+    // area rule cannot fail on its own: it is a second, independent proof. Check it holds on a
+    // polygon with large and tiny coordinates, where a float area sum would be inexact.
+    Polygon p;
+    p.addRing({{0, 0}, {1e-300, 0}, {1e300, 1e-300}, {1e300, 1e300}, {0, 1e-10}}, true);
+    EXPECT_TRUE(accepted(p, {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}));
+}
+
+TEST(Checker, MillionTrianglesFast) {
+    // Convex polygon on the parabola y = x^2 (exact integers), fan-triangulated.
+    const int n = 1000002;
+    std::vector<Point> pts;
+    pts.reserve(n);
+    for (int i = 0; i < n; ++i) pts.push_back({double(i), double(i) * double(i)});
+    Polygon p;
+    p.addRing(pts, true);
+    std::vector<Triangle> t;
+    t.reserve(n - 2);
+    for (flood::Index i = 1; i + 1 < flood::Index(n); ++i) t.push_back({0, i, i + 1});
+    auto start = std::chrono::steady_clock::now();
+    auto r = checkTriangulation(p, t);
+    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    EXPECT_TRUE(r.ok) << r.reason;
+    EXPECT_LT(seconds, 5.0);
+    std::swap(t[1000][1], t[1000][2]);
+    EXPECT_FALSE(checkTriangulation(p, t).ok);
+}

@@ -1,0 +1,287 @@
+// The viewer's model without a window: replay consistency in both directions, seek versus
+// stepping, breakpoints, vertex classes and the camera. Compiles to nothing when the viewer
+// is not built (FLOOD_VIEWER=OFF), since the model lives in viewer/.
+#if __has_include("model.h")
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "generate.h"
+#include "model.h"
+#include "scene.h"
+#include "transcript.h"
+
+using namespace flood;
+using namespace flood::view;
+
+namespace {
+
+// Everything the canvas draws from a ReplayState.
+void expectSame(const ReplayState& a, const ReplayState& b, const std::string& where) {
+    SCOPED_TRACE(where);
+    EXPECT_EQ(a.step, b.step);
+    EXPECT_EQ(a.part, b.part);
+    EXPECT_TRUE(a.fingers == b.fingers);
+    EXPECT_EQ(a.water, b.water);
+    EXPECT_EQ(a.triangleCount, b.triangleCount);
+    EXPECT_EQ(a.chain, b.chain);
+    EXPECT_EQ(a.jumps, b.jumps);
+    EXPECT_EQ(a.bridges, b.bridges);
+    EXPECT_EQ(a.forbidden, b.forbidden);
+    ASSERT_EQ(a.dormant.size(), b.dormant.size());
+    for (size_t i = 0; i < a.dormant.size(); ++i) {
+        EXPECT_EQ(a.dormant[i].id, b.dormant[i].id);
+        EXPECT_EQ(a.dormant[i].held, b.dormant[i].held);
+        EXPECT_EQ(a.dormant[i].top, b.dormant[i].top);
+        EXPECT_EQ(a.dormant[i].chain, b.dormant[i].chain);
+    }
+}
+
+std::vector<std::string> polygonFiles() {
+    auto files = listPolygonFiles(std::string(FLOOD_SOURCE_DIR) + "/polygons");
+    return files;
+}
+
+Polygon squareWithHole(bool reverseOuter, bool reverseHole) {
+    std::vector<Point> outer{{0, 0}, {10, 0}, {10, 10}, {0, 10}};
+    std::vector<Point> hole{{3, 3}, {3, 7}, {7, 7}, {7, 3}};
+    if (reverseOuter) std::reverse(outer.begin(), outer.end());
+    if (reverseHole) std::reverse(hole.begin(), hole.end());
+    Polygon p;
+    p.addRing(outer, true);
+    p.addRing(hole, false);
+    return p;
+}
+
+}  // namespace
+
+TEST(ViewerModel, ForwardThenBackwardGivesIdenticalStates) {
+    auto files = polygonFiles();
+    ASSERT_FALSE(files.empty()) << "polygons/ has no sample polygons";
+    for (const auto& f : files) {
+        Model m;
+        m.open(f);
+        std::vector<ReplayState> forward;
+        m.first();
+        forward.push_back(m.state());
+        while (m.step() < m.steps()) {
+            m.stepForward();
+            forward.push_back(m.state());
+        }
+        ASSERT_EQ(forward.size(), m.steps() + 1u) << f;
+        while (m.step() > 0) {
+            m.stepBack();
+            expectSame(m.state(), forward[m.step()], f + " step " + std::to_string(m.step()));
+        }
+    }
+}
+
+TEST(ViewerModel, SeekEqualsStepping) {
+    for (const auto& f : polygonFiles()) {
+        Model stepping, seeking;
+        stepping.open(f);
+        seeking.open(f);
+        stepping.first();
+        // Seek in a scrambled order so keyframes are crossed in both directions.
+        for (uint32_t s = 0; s <= stepping.steps(); ++s) {
+            uint32_t target = (s * 7919u) % (stepping.steps() + 1);
+            seeking.seek(target);
+            Model fresh;
+            fresh.open(f);
+            fresh.first();
+            for (uint32_t i = 0; i < target; ++i) fresh.stepForward();
+            expectSame(seeking.state(), fresh.state(), f + " seek " + std::to_string(target));
+            if (HasFailure()) return;
+        }
+    }
+}
+
+TEST(ViewerModel, BreakpointsStopAtTheFirstMatchingEvent) {
+    for (const auto& f : polygonFiles()) {
+        Model m;
+        m.open(f);
+        const auto& ev = m.trace().events;
+        for (int a = 1; a < int(Action::Count); ++a) {
+            m.breakpoints = {};
+            m.breakpoints.actions[size_t(a)] = true;
+            m.first();
+            uint32_t expected = 0;
+            for (uint32_t i = 0; i < ev.size() && !expected; ++i)
+                if (ev[i].action == Action(a)) expected = i + 1;
+            bool hit = m.runToBreakpoint(+1);
+            EXPECT_EQ(hit, expected != 0) << f << " " << actionName(Action(a));
+            EXPECT_EQ(m.step(), expected ? expected : m.steps()) << f;
+            // Backward from the end finds the last one.
+            m.last();
+            uint32_t lastHit = 0;
+            for (uint32_t i = 0; i + 1 < ev.size(); ++i)  // events before the final step
+                if (ev[i].action == Action(a)) lastHit = i + 1;
+            EXPECT_EQ(m.runToBreakpoint(-1), lastHit != 0) << f;
+            EXPECT_EQ(m.step(), lastHit) << f;
+        }
+        // A triangle breakpoint stops where that triangle is cut.
+        if (!m.trace().triangles.empty()) {
+            uint32_t t = uint32_t(m.trace().triangles.size() / 2);
+            m.breakpoints = {};
+            m.breakpoints.triangle = t;
+            m.first();
+            ASSERT_TRUE(m.runToBreakpoint(+1)) << f;
+            EXPECT_EQ(m.step(), m.triangleStep(t)) << f;
+            const Event* e = m.currentEvent();
+            EXPECT_TRUE(t >= e->firstTriangle && t < e->firstTriangle + e->triangleCount);
+            EXPECT_GE(m.state().triangleCount, t + 1);
+        }
+        // A vertex breakpoint stops when it becomes one of the fingers.
+        if (m.steps() > 1) {
+            Index v = ev.back().before.left;
+            if (v != kNone) {
+                m.breakpoints = {};
+                m.breakpoints.vertex = v;
+                m.first();
+                ASSERT_TRUE(m.runToBreakpoint(+1)) << f;
+                const Fingers& after = m.currentEvent()->after;
+                EXPECT_TRUE(after.left == v || after.right == v || after.nextLeft == v ||
+                            after.nextRight == v);
+            }
+        }
+    }
+}
+
+TEST(ViewerModel, LongRunsReplayAcrossKeyframes) {
+    // Hundreds of events, so seeking crosses the replay's keyframes in both directions.
+    Model m;
+    m.openPolygon(generate("circle-holes", 7, 1500), "circle-holes", {});
+    ASSERT_GT(m.steps(), 600u) << m.verdict();
+    std::vector<ReplayState> forward;
+    for (uint32_t s = 0; s <= m.steps(); ++s) {
+        m.seek(s);
+        forward.push_back(m.state());
+    }
+    for (uint32_t s : {m.steps(), 0u, 511u, 257u, 255u, 256u, 1u, m.steps() - 1, 300u}) {
+        m.seek(s);
+        expectSame(m.state(), forward[s], "seek " + std::to_string(s));
+    }
+    while (m.step() > 0) {
+        m.stepBack();
+        if (m.step() % 97 == 0) expectSame(m.state(), forward[m.step()], "back");
+    }
+}
+
+TEST(ViewerModel, PlaybackStopsAtBreakpointAndEnd) {
+    Model m;
+    m.openPolygon(generate("comb", 3, 60), "comb", {});
+    m.first();
+    m.speed = 1000;
+    m.togglePlay();
+    m.advance(10);  // far more than enough steps
+    EXPECT_FALSE(m.playing);
+    EXPECT_EQ(m.step(), m.steps());
+
+    m.breakpoints.actions[size_t(Action::Bridge)] = true;
+    m.first();
+    m.togglePlay();
+    m.advance(10);
+    EXPECT_FALSE(m.playing);
+    ASSERT_NE(m.currentEvent(), nullptr);
+    EXPECT_EQ(m.currentEvent()->action, Action::Bridge) << "comb has sags: it must bridge";
+}
+
+TEST(ViewerModel, VertexClassesIgnoreRingOrientation) {
+    for (bool ro : {false, true})
+        for (bool rh : {false, true}) {
+            auto c = classifyVertices(squareWithHole(ro, rh));
+            auto at = [&](Point p) {
+                Polygon poly = squareWithHole(ro, rh);
+                for (Index i = 0; i < poly.vertices.size(); ++i)
+                    if (poly.vertices[i] == p) return c[i];
+                return VertexClass::Count;
+            };
+            EXPECT_EQ(at({0, 0}), VertexClass::Bottom);     // convex minimum of the outer loop
+            EXPECT_EQ(at({10, 10}), VertexClass::Ceiling);  // convex maximum
+            EXPECT_EQ(at({3, 3}), VertexClass::Sag);        // the hole's lowest point
+            EXPECT_EQ(at({7, 7}), VertexClass::Top);        // the hole's highest point
+            EXPECT_EQ(at({10, 0}), VertexClass::Regular);
+        }
+}
+
+TEST(ViewerModel, CameraRoundTripsAndZoomsAtTheCursor) {
+    Polygon p = squareWithHole(false, false);
+    Camera cam;
+    cam.fit(p, Rect{100, 50, 400, 300});
+    for (Point q : p.vertices) {
+        Vec2 s = cam.toScreen(q);
+        EXPECT_TRUE(Rect({100, 50, 400, 300}).contains(s));
+        Point back = cam.toWorld(s);
+        EXPECT_NEAR(back.x, q.x, 1e-9);
+        EXPECT_NEAR(back.y, q.y, 1e-9);
+    }
+    Vec2 cursor{220, 130};
+    Point before = cam.toWorld(cursor);
+    cam.zoomAt(cursor, 3.5);
+    Point after = cam.toWorld(cursor);
+    EXPECT_NEAR(before.x, after.x, 1e-9);
+    EXPECT_NEAR(before.y, after.y, 1e-9);
+    // y is up in the world and down on screen.
+    EXPECT_LT(cam.toScreen({0, 10}).y, cam.toScreen({0, 0}).y);
+}
+
+TEST(ViewerModel, TranscriptItemsFollowTheCoreTranscript) {
+    for (const auto& f : polygonFiles()) {
+        Model m;
+        m.open(f);
+        std::string text = transcript(m.trace().events);
+        size_t at = 0;
+        for (const auto& item : m.transcript()) {
+            size_t found = text.find(item.text, at);
+            ASSERT_NE(found, std::string::npos) << f << ": " << item.text << " in " << text;
+            at = found + item.text.size();
+        }
+    }
+}
+
+TEST(ViewerModel, InvalidInputStillOpensAndBlamesVertices) {
+    std::string path = ::testing::TempDir() + "viewer-bowtie.json";
+    std::ofstream(path) << R"({"type":"Polygon","coordinates":[[[0,0],[10,10],[10,0],[0,10],[0,0]]]})";
+    Model m;
+    m.open(path);
+    EXPECT_FALSE(m.inputDiagnostic().ok());
+    EXPECT_EQ(m.polygon().vertices.size(), 4u);
+    EXPECT_FALSE(m.offenders().empty()) << m.inputDiagnostic().message;
+    for (const Event& e : m.trace().events)
+        if (e.action == Action::Forbidden) {
+            EXPECT_EQ(m.step(), e.step + 1);
+            break;
+        }
+    Scene sc = buildScene(m);  // must not trip on whatever state the machine stopped in
+    EXPECT_EQ(sc.rings.size(), 1u);
+
+    Model missing;
+    missing.open("/nonexistent/polygon.json");
+    EXPECT_FALSE(missing.inputDiagnostic().ok());
+    EXPECT_TRUE(missing.polygon().vertices.empty());
+    EXPECT_EQ(missing.steps(), 0u);
+}
+
+TEST(ViewerModel, SceneShowsTheStateOfTheStep) {
+    for (const auto& f : polygonFiles()) {
+        Model m;
+        m.open(f);
+        for (uint32_t s = 0; s <= m.steps(); ++s) {
+            m.seek(s);
+            Scene sc = buildScene(m);
+            EXPECT_EQ(sc.water.size() + sc.current.size(), m.state().triangleCount) << f;
+            const Event* e = m.currentEvent();
+            EXPECT_EQ(sc.current.size(), e ? e->triangleCount : 0u) << f << " step " << s;
+        }
+        std::ostringstream svg;
+        writeSceneSvg(svg, buildScene(m), m.polygon(), 600);
+        std::string text = svg.str(), needle = "<polygon ";
+        size_t count = 0;
+        for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1))
+            ++count;
+        EXPECT_EQ(text.rfind("<svg", 0), 0u) << f;
+        EXPECT_EQ(count, m.state().triangleCount) << f << ": one SVG polygon per triangle";
+    }
+}
+#endif

@@ -1,0 +1,227 @@
+// flood-viewer: replays the flooding triangulation of a polygon step by step.
+//   flood-viewer [FILE] [--step N] [--screenshot OUT.png] [--size WxH]
+// Without a display it prints a summary of the run instead and says how to get pictures.
+#include <imgui.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+
+#include "model.h"
+#include "transcript.h"
+#include "panels.h"
+#include "platform_glfw.h"
+#include "renderer.h"
+
+using namespace flood;
+using namespace flood::view;
+
+namespace {
+
+struct Args {
+    std::string file;
+    long step = -1;  // -1: where the model lands by itself
+    std::string screenshot;
+    int width = 1280, height = 800;
+};
+
+const char* const kUsage =
+    "usage: flood-viewer [FILE] [--step N] [--screenshot OUT.png] [--size WxH]\n"
+    "  FILE              polygon (GeoJSON, ring arrays or WKT); default: polygons/paper-figure-7.json\n"
+    "  --step N          show the state after N events\n"
+    "  --screenshot OUT  render once in a hidden window, write OUT as PNG and exit\n"
+    "  --size WxH        window size in pixels (default 1280x800)\n"
+    "keys in the viewer: F1 or ?\n";
+
+// Returns 0 to go on, or an exit code + 1 (so 1 means "exit 0", e.g. after --help).
+int parseArgs(int argc, char** argv, Args& a) {
+    for (int i = 1; i < argc; ++i) {
+        std::string s = argv[i];
+        auto value = [&](const char* name) -> const char* {
+            if (i + 1 >= argc) {
+                std::fprintf(stderr, "flood-viewer: %s needs a value\n%s", name, kUsage);
+                return nullptr;
+            }
+            return argv[++i];
+        };
+        if (s == "-h" || s == "--help") {
+            std::fputs(kUsage, stdout);
+            return 1;
+        } else if (s == "--step") {
+            const char* v = value("--step");
+            char* end = nullptr;
+            if (!v || (a.step = std::strtol(v, &end, 10), *end != 0) || a.step < 0) {
+                if (v) std::fprintf(stderr, "flood-viewer: --step wants a number >= 0, got '%s'\n", v);
+                return 2 + 1;
+            }
+        } else if (s == "--screenshot") {
+            const char* v = value("--screenshot");
+            if (!v) return 2 + 1;
+            a.screenshot = v;
+        } else if (s == "--size") {
+            const char* v = value("--size");
+            if (!v || std::sscanf(v, "%dx%d", &a.width, &a.height) != 2 || a.width < 64 ||
+                a.height < 64 || a.width > 16384 || a.height > 16384) {
+                if (v) std::fprintf(stderr, "flood-viewer: --size wants WxH (64..16384), got '%s'\n", v);
+                return 2 + 1;
+            }
+        } else if (!s.empty() && s[0] == '-' && s != "-") {
+            std::fprintf(stderr, "flood-viewer: unknown option %s\n%s", s.c_str(), kUsage);
+            return 2 + 1;
+        } else if (a.file.empty()) {
+            a.file = s;
+        } else {
+            std::fprintf(stderr, "flood-viewer: one FILE only\n%s", kUsage);
+            return 2 + 1;
+        }
+    }
+    return 0;
+}
+
+// No display: say so, then print what can be known without one.
+int printSummary(const std::string& why, Model& model, const Args& args) {
+    std::printf("flood-viewer: %s.\n", why.c_str());
+    if (!args.screenshot.empty()) {
+        std::fprintf(stderr, "flood-viewer: cannot write %s without a display; try\n"
+                             "  xvfb-run -a flood-viewer %s --screenshot %s\n",
+                     args.screenshot.c_str(), args.file.c_str(), args.screenshot.c_str());
+        return 1;
+    }
+    if (model.polygon().vertices.empty()) {
+        std::printf("%s\n", model.inputDiagnostic().message.empty()
+                                ? "no polygon to summarise (polygons/ is empty)"
+                                : model.inputDiagnostic().message.c_str());
+        return model.inputDiagnostic().ok() ? 0 : int(model.inputDiagnostic().status);
+    }
+    const Trace& t = model.trace();
+    std::printf("Summary of %s:\n", model.path().c_str());
+    std::printf("  %zu vertices in %zu rings, %zu events, %zu triangles\n",
+                t.polygon.vertices.size(), t.polygon.rings.size(), t.events.size(),
+                t.triangles.size());
+    std::printf("  verdict: %s\n", model.verdict().c_str());
+    std::printf("  transcript: %s\n", transcript(model.trace().events).c_str());
+    std::printf("For more without a display:\n"
+                "  flood transcript %s      every event, one per line\n"
+                "  flood trace %s           the recorded trace\n"
+                "  xvfb-run -a flood-viewer %s --step N --screenshot out.png\n",
+                model.path().c_str(), model.path().c_str(), model.path().c_str());
+    return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    Args args;
+    if (int rc = parseArgs(argc, argv, args)) return rc - 1;
+    if (args.file.empty()) args.file = defaultPolygonPath();
+
+    Model model;
+    // Screenshots stay reproducible: they neither read nor write the recent list.
+    std::string recentFile;
+    if (args.screenshot.empty()) {
+        const char* xdg = std::getenv("XDG_CONFIG_HOME");
+        const char* home = std::getenv("HOME");
+        if (xdg && *xdg) recentFile = std::string(xdg) + "/flood-viewer/recent.txt";
+        else if (home && *home) recentFile = std::string(home) + "/.config/flood-viewer/recent.txt";
+        if (!recentFile.empty()) model.loadRecent(recentFile);
+    }
+    if (!args.file.empty()) model.open(args.file);
+    if (args.step >= 0) model.seek(uint32_t(std::min<long>(args.step, model.steps())));
+
+    std::string error;
+    if (!platform::initialize(&error)) return printSummary(error, model, args);
+
+    const bool shot = !args.screenshot.empty();
+    platform::WindowOptions wo;
+    wo.width = args.width, wo.height = args.height, wo.hidden = shot;
+    wo.title = "flood-viewer — " + (model.path().empty() ? std::string("no polygon") : model.path());
+    IMGUI_CHECKVERSION();
+    ImGui::CreateContext();
+    ImGuiIO& io = ImGui::GetIO();
+    io.IniFilename = nullptr;  // the layout is tiled by code; nothing worth saving
+    if (!platform::createWindow(wo, &error)) {
+        ImGui::DestroyContext();
+        platform::terminate();
+        return printSummary(error, model, args);
+    }
+    // Owned by pointer so it is torn down while the GL context still exists.
+    auto rendererOwner = std::make_unique<Renderer>();
+    Renderer& renderer = *rendererOwner;
+    if (!imguiGlInit() || !renderer.init(&error)) {
+        std::fprintf(stderr, "flood-viewer: %s\n", error.c_str());
+        return int(Status::Internal);
+    }
+    // Screenshots use scale 1 so the same command gives the same pixels on every machine.
+    float scale = shot ? 1.f : platform::contentScale();
+    ImFontConfig font;
+    font.SizePixels = 13.f * scale;
+    io.Fonts->AddFontDefault(&font);
+    ImGui::StyleColorsDark();
+    ImGui::GetStyle().ScaleAllSizes(scale);
+
+    Ui ui(model, renderer);
+    ui.scale = scale;
+
+    int exitCode = 0;
+    double lastTime = platform::time();
+    for (int frame = 0; !platform::shouldClose(); ++frame) {
+        if (shot || model.playing) platform::pollEvents();
+        else platform::waitEvents(0.25);  // idle: wake on input, or 4 times a second
+        for (const auto& path : platform::takeDroppedPaths()) {
+            model.open(path);
+            ui.message = "opened " + path;
+            platform::setTitle("flood-viewer — " + path);
+        }
+        imguiGlNewFrame();
+        platform::newFrame();
+        ImGui::NewFrame();
+        Vec2 size = platform::windowSize();
+        ui.layout = computeLayout(size.x, size.y, scale);
+
+        if (!shot) handleShortcuts(ui);
+        drawCanvas(ui);
+        drawTimeline(ui);
+        drawStateMachine(ui);
+        drawDecision(ui);
+        drawBreakpoints(ui);
+        drawEvents(ui);
+        drawTranscript(ui);
+        drawOpen(ui);
+        drawHelp(ui);
+        ImGui::Render();
+
+        int fbW = 0, fbH = 0;
+        platform::framebufferSize(&fbW, &fbH);
+        renderer.render(size, fbW, fbH, ui.layout.canvas, palette::kBackground);
+        imguiGlRender();
+
+        // ImGui places windows on the 2nd frame; the 3rd is the first settled one.
+        std::string png = shot && frame == 2 ? args.screenshot : ui.pngRequest;
+        if (!png.empty()) {
+            std::vector<uint8_t> pixels;
+            bool ok = renderer.readPixels(fbW, fbH, pixels) && writePng(png, fbW, fbH, pixels, &error);
+            ui.message = ok ? "wrote " + png : "cannot write " + png + ": " + error;
+            ui.pngRequest.clear();
+            if (shot) {
+                std::fprintf(ok ? stdout : stderr, "flood-viewer: %s\n", ui.message.c_str());
+                exitCode = ok ? 0 : 1;
+                platform::requestClose();
+            }
+        }
+        platform::swapBuffers();
+
+        double now = platform::time();
+        if (!shot) model.advance(now - lastTime);
+        lastTime = now;
+    }
+
+    if (!recentFile.empty()) model.saveRecent(recentFile);
+    rendererOwner.reset();
+    imguiGlShutdown();
+    platform::destroyWindow();
+    ImGui::DestroyContext();
+    platform::terminate();
+    return exitCode;
+}

@@ -1,0 +1,454 @@
+// [SECTION] vertex classes  [SECTION] layout and camera  [SECTION] breakpoints
+// [SECTION] text views  [SECTION] Model  [SECTION] polygon files
+#include "model.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+
+#include "io.h"
+#include "predicates.h"
+#include "transcript.h"
+
+#ifndef FLOOD_SOURCE_DIR
+#define FLOOD_SOURCE_DIR "."
+#endif
+#ifndef FLOOD_VIEWER_DEFAULT_POLYGON
+#define FLOOD_VIEWER_DEFAULT_POLYGON "paper-figure-7.json"
+#endif
+
+namespace flood::view {
+
+// ========================================================================================
+// [SECTION] vertex classes
+const char* vertexClassName(VertexClass c) {
+    switch (c) {
+        case VertexClass::Regular: return "regular";
+        case VertexClass::Bottom: return "bottom";
+        case VertexClass::Sag: return "sag";
+        case VertexClass::Top: return "top";
+        case VertexClass::Ceiling: return "ceiling";
+        default: return "?";
+    }
+}
+
+std::vector<VertexClass> classifyVertices(const Polygon& polygon) {
+    std::vector<VertexClass> out(polygon.vertices.size(), VertexClass::Regular);
+    const auto& v = polygon.vertices;
+    for (size_t r = 0; r < polygon.rings.size(); ++r) {
+        const Ring& ring = polygon.rings[r];
+        if (ring.count < 3) continue;
+        // The file may list a ring either way; the predicates want the interior on the left.
+        // Outer rings of a part come first: holes must turn the other way.
+        bool isOuter = false;
+        for (const Part& p : polygon.parts) isOuter |= (p.firstRing == r);
+        double area2 = 0;
+        for (Index i = 0; i < ring.count; ++i) {
+            Point a = v[ring.first + i], b = v[ring.first + (i + 1) % ring.count];
+            area2 += a.x * b.y - a.y * b.x;
+        }
+        bool reversed = isOuter ? area2 < 0 : area2 > 0;
+        for (Index i = 0; i < ring.count; ++i) {
+            Point prev = v[ring.first + (i + ring.count - 1) % ring.count];
+            Point cur = v[ring.first + i];
+            Point next = v[ring.first + (i + 1) % ring.count];
+            if (reversed) std::swap(prev, next);
+            bool isMin = below(cur, prev) && below(cur, next);
+            bool isMax = below(prev, cur) && below(next, cur);
+            bool isConvex = convex(prev, cur, next);
+            VertexClass c = VertexClass::Regular;
+            if (isMin) c = isConvex ? VertexClass::Bottom : VertexClass::Sag;
+            if (isMax) c = isConvex ? VertexClass::Ceiling : VertexClass::Top;
+            out[ring.first + i] = c;
+        }
+    }
+    return out;
+}
+
+// ========================================================================================
+// [SECTION] layout and camera
+Layout computeLayout(double width, double height, double uiScale) {
+    // Side columns shrink on small windows so the canvas keeps at least half the width.
+    double side = std::min(300.0 * uiScale, width * 0.25);
+    double bottom = std::min(128.0 * uiScale, height * 0.3);
+    Layout l;
+    l.left = {0, 0, side, height - bottom};
+    l.right = {width - side, 0, side, height - bottom};
+    l.bottom = {0, height - bottom, width, bottom};
+    l.canvas = {side, 0, std::max(1.0, width - 2 * side), std::max(1.0, height - bottom)};
+    return l;
+}
+
+void Camera::fit(const Polygon& polygon, const Rect& viewport) {
+    viewport_ = viewport;
+    if (polygon.vertices.empty()) {
+        cx_ = cy_ = 0;
+        scale_ = 1;
+        return;
+    }
+    double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+    for (Point p : polygon.vertices) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+        y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    }
+    if (!(x0 <= x1)) x0 = x1 = y0 = y1 = 0;
+    cx_ = (x0 + x1) / 2;
+    cy_ = (y0 + y1) / 2;
+    double w = std::max(x1 - x0, 1e-300), h = std::max(y1 - y0, 1e-300);
+    const double usable = 0.88;  // 6% margin on each side
+    scale_ = std::min(viewport.w * usable / w, viewport.h * usable / h);
+    if (!std::isfinite(scale_) || scale_ <= 0) scale_ = 1;
+}
+
+Vec2 Camera::toScreen(Point p) const {
+    return {viewport_.x + viewport_.w / 2 + (p.x - cx_) * scale_,
+            viewport_.y + viewport_.h / 2 - (p.y - cy_) * scale_};
+}
+
+Point Camera::toWorld(Vec2 s) const {
+    return {cx_ + (s.x - viewport_.x - viewport_.w / 2) / scale_,
+            cy_ - (s.y - viewport_.y - viewport_.h / 2) / scale_};
+}
+
+void Camera::pan(double dx, double dy) {
+    cx_ -= dx / scale_;
+    cy_ += dy / scale_;
+}
+
+void Camera::zoomAt(Vec2 screen, double factor) {
+    Point before = toWorld(screen);
+    scale_ = std::clamp(scale_ * factor, 1e-12, 1e15);
+    Point after = toWorld(screen);
+    cx_ += before.x - after.x;
+    cy_ += before.y - after.y;
+}
+
+// ========================================================================================
+// [SECTION] breakpoints
+bool Breakpoints::any() const {
+    return forbidden || vertex != kNone || triangle >= 0 ||
+           std::any_of(actions.begin(), actions.end(), [](bool b) { return b; });
+}
+
+bool hits(const Breakpoints& b, const Event& e) {
+    if (b.actions[size_t(e.action)]) return true;
+    if (b.forbidden && (e.action == Action::Forbidden || e.reason != Forbidden::None)) return true;
+    if (b.vertex != kNone) {
+        const Fingers &x = e.before, &y = e.after;
+        if ((y.left == b.vertex && x.left != b.vertex) ||
+            (y.right == b.vertex && x.right != b.vertex) ||
+            (y.nextLeft == b.vertex && x.nextLeft != b.vertex) ||
+            (y.nextRight == b.vertex && x.nextRight != b.vertex))
+            return true;
+    }
+    if (b.triangle >= 0 && e.triangleCount > 0 && uint64_t(b.triangle) >= e.firstTriangle &&
+        uint64_t(b.triangle) < uint64_t(e.firstTriangle) + e.triangleCount)
+        return true;
+    return false;
+}
+
+// ========================================================================================
+// [SECTION] text views
+static std::string vertexName(Index v) { return v == kNone ? "-" : std::to_string(v); }
+
+std::string describeEvent(const Trace& trace, const Event& e) {
+    std::ostringstream s;
+    s << actionName(e.action);
+    const char* c = e.side == Side::Left ? "Left" : "Right";
+    switch (e.action) {
+        case Action::Start:
+            s << " at bottom " << vertexName(e.bottom) << " (part " << e.part << ")";
+            break;
+        case Action::Raise:
+            s << " " << c << ": Next" << c << " "
+              << vertexName(e.side == Side::Left ? e.before.nextLeft : e.before.nextRight)
+              << " joins the chain";
+            break;
+        case Action::Bridge:
+            s << " sag " << vertexName(e.sag) << " to " << vertexName(e.bridgeTo);
+            if (e.gorgePushed != kNone) s << ", gorge " << e.gorgePushed << " pending";
+            break;
+        case Action::Spill:
+            s << " over top " << vertexName(e.top) << " (jump -> " << vertexName(e.jumpTarget)
+              << "), new gorge at " << vertexName(e.bottom);
+            break;
+        case Action::Jump:
+            s << " from top " << vertexName(e.top) << " to " << vertexName(e.jumpTarget);
+            break;
+        case Action::Fill:
+            s << " at " << vertexName(e.before.nextLeft);
+            if (e.gorgePopped != kNone) s << ", resume gorge " << e.gorgePopped;
+            break;
+        case Action::Forbidden:
+            s << ": " << describeForbidden(trace.polygon, e);
+            break;
+        default: break;
+    }
+    if (e.triangleCount == 1) s << "; triangle " << e.firstTriangle;
+    if (e.triangleCount > 1)
+        s << "; triangles " << e.firstTriangle << "-" << e.firstTriangle + e.triangleCount - 1;
+    return s.str();
+}
+
+std::vector<TranscriptItem> buildTranscript(const Trace& trace) {
+    // Same grouping as flood::transcript() (core/transcript.h), with the events of each item
+    // kept so the panel can jump to them.
+    std::vector<TranscriptItem> items;
+    const auto& ev = trace.events;
+    for (uint32_t i = 0; i < ev.size();) {
+        if (ev[i].action == Action::Start) {
+            ++i;
+            continue;
+        }
+        TranscriptItem it;
+        it.firstEvent = i;
+        uint32_t first = kNone, last = 0, j = i;
+        do {
+            if (ev[j].triangleCount) {
+                if (first == kNone) first = ev[j].firstTriangle;
+                last = ev[j].firstTriangle + ev[j].triangleCount;
+            }
+            ++j;
+        } while (ev[i].action == Action::Raise && j < ev.size() && ev[j].action == Action::Raise);
+        it.lastEvent = j - 1;
+        it.text = actionName(ev[i].action);
+        std::string range = first == kNone ? "" : triangleRange(first, last - first);
+        if (!range.empty()) it.text += " " + range;
+        items.push_back(std::move(it));
+        i = j;
+    }
+    return items;
+}
+
+// ========================================================================================
+// [SECTION] Model
+Model::Model() : trace_(std::make_unique<Trace>()), replay_(std::make_unique<Replay>(*trace_)) {}
+Model::~Model() = default;
+
+void Model::open(const std::string& path) {
+    ReadResult r;
+    try {
+        r = readPolygonFile(path);
+    } catch (const std::exception& ex) {
+        r.diagnostic = {Status::Malformed, path + ": " + ex.what()};
+    }
+    Diagnostic d = r.diagnostic;
+    if (d.ok()) d = validate(r.polygon, path);
+    openPolygon(std::move(r.polygon), path, d, std::move(r.warnings));
+    if (!r.diagnostic.ok()) return;
+    recent_.erase(std::remove(recent_.begin(), recent_.end(), path), recent_.end());
+    recent_.insert(recent_.begin(), path);
+    if (recent_.size() > 10) recent_.resize(10);
+}
+
+void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic input,
+                        std::vector<std::string> warnings) {
+    playing = false;
+    path_ = name;
+    input_ = std::move(input);
+    warnings_ = std::move(warnings);
+    auto trace = std::make_unique<Trace>();
+    if (!polygon.vertices.empty()) {
+        try {
+            *trace = record(polygon);
+        } catch (const std::exception& ex) {
+            trace->diagnostic = {Status::Internal, name + ": " + ex.what()};
+        }
+    }
+    trace->polygon = std::move(polygon);
+    // The replay points into the trace: replace both together, replay first.
+    replay_.reset();
+    trace_ = std::move(trace);
+    replay_ = std::make_unique<Replay>(*trace_);
+    classes_ = classifyVertices(trace_->polygon);
+    transcript_ = buildTranscript(*trace_);
+    triangleStep_.assign(trace_->triangles.size(), 0);
+    for (const Event& e : trace_->events)
+        for (uint32_t t = e.firstTriangle;
+             t < e.firstTriangle + e.triangleCount && t < triangleStep_.size(); ++t)
+            triangleStep_[t] = e.step + 1;
+    computeOffenders();
+    needsFit = true;
+    step_ = 0;
+    replay_->seek(0);
+    // Land where the trouble is: the forbidden event, so its state is on screen.
+    for (const Event& e : trace_->events)
+        if (e.action == Action::Forbidden) {
+            seek(e.step + 1);
+            break;
+        }
+}
+
+void Model::computeOffenders() {
+    offenders_.clear();
+    auto add = [&](Index v) {
+        if (v != kNone && v < trace_->polygon.vertices.size()) offenders_.push_back(v);
+    };
+    for (const Event& e : trace_->events) {
+        if (e.action != Action::Forbidden) continue;
+        add(e.culprit), add(e.culprit2);
+        add(e.before.left), add(e.before.right), add(e.before.nextLeft), add(e.before.nextRight);
+    }
+    // Validation messages name a point as "(x, y)": blame every vertex at that point.
+    const std::string& m = input_.message;
+    for (size_t open = m.find('('); open != std::string::npos; open = m.find('(', open + 1)) {
+        double x, y;
+        if (std::sscanf(m.c_str() + open, "(%lf, %lf)", &x, &y) != 2) continue;
+        for (Index v = 0; v < trace_->polygon.vertices.size(); ++v)
+            if (trace_->polygon.vertices[v] == Point{x, y}) add(v);
+    }
+    std::sort(offenders_.begin(), offenders_.end());
+    offenders_.erase(std::unique(offenders_.begin(), offenders_.end()), offenders_.end());
+}
+
+std::string Model::verdict() const {
+    if (!input_.ok() && trace_->polygon.vertices.empty()) return input_.message;
+    std::string s;
+    if (!input_.ok()) s = "invalid input: " + input_.message + "\n";
+    for (const Event& e : trace_->events)
+        if (e.action == Action::Forbidden)
+            return s + "Forbidden at step " + std::to_string(e.step + 1) + ": " +
+                   describeForbidden(trace_->polygon, e);
+    if (!trace_->diagnostic.ok()) return s + trace_->diagnostic.message;
+    return s + "ok: " + std::to_string(trace_->triangles.size()) + " triangles (expected " +
+           std::to_string(trace_->polygon.expectedTriangles()) + ")";
+}
+
+const Event* Model::currentEvent() const {
+    return step_ == 0 || step_ > steps() ? nullptr : &trace_->events[step_ - 1];
+}
+
+void Model::seek(uint32_t step) {
+    step_ = std::min(step, steps());
+    replay_->seek(step_);
+}
+
+bool Model::seekAction(Action a, int direction) {
+    const auto& ev = trace_->events;
+    if (direction > 0) {
+        for (uint32_t s = step_ + 1; s <= ev.size(); ++s)
+            if (ev[s - 1].action == a) return seek(s), true;
+    } else {
+        for (uint32_t s = step_; s-- > 1;)
+            if (ev[s - 1].action == a) return seek(s), true;
+    }
+    return false;
+}
+
+bool Model::runToBreakpoint(int direction) {
+    const auto& ev = trace_->events;
+    if (direction > 0) {
+        for (uint32_t s = step_ + 1; s <= ev.size(); ++s)
+            if (hits(breakpoints, ev[s - 1])) return seek(s), true;
+        last();
+    } else {
+        for (uint32_t s = step_; s-- > 1;)
+            if (hits(breakpoints, ev[s - 1])) return seek(s), true;
+        first();
+    }
+    return false;
+}
+
+void Model::togglePlay() {
+    playing = !playing;
+    playClock_ = 0;
+    if (playing && step_ >= steps()) seek(0);  // play again from the start
+}
+
+void Model::advance(double seconds) {
+    if (!playing) return;
+    playClock_ += seconds * std::max(speed, 0.01);
+    while (playClock_ >= 1 && playing) {
+        playClock_ -= 1;
+        if (step_ >= steps()) {
+            playing = false;
+            break;
+        }
+        stepForward();
+        if (breakpoints.any() && hits(breakpoints, *currentEvent())) playing = false;
+    }
+    if (step_ >= steps()) playing = false;
+}
+
+void Model::loadRecent(const std::string& file) {
+    std::ifstream in(file);
+    for (std::string line; std::getline(in, line) && recent_.size() < 10;)
+        if (!line.empty()) recent_.push_back(line);
+}
+
+void Model::saveRecent(const std::string& file) const {
+    std::error_code ec;
+    std::filesystem::create_directories(std::filesystem::path(file).parent_path(), ec);
+    std::ofstream out(file);
+    for (const auto& r : recent_) out << r << "\n";
+}
+
+uint32_t Model::triangleStep(uint32_t t) const {
+    return t < triangleStep_.size() ? triangleStep_[t] : 0;
+}
+
+Index Model::pickVertex(Vec2 screen, double radiusPx) const {
+    Index best = kNone;
+    double bestD = radiusPx * radiusPx;
+    const auto& v = trace_->polygon.vertices;
+    for (Index i = 0; i < v.size(); ++i) {
+        Vec2 s = camera.toScreen(v[i]);
+        double d = (s.x - screen.x) * (s.x - screen.x) + (s.y - screen.y) * (s.y - screen.y);
+        if (d <= bestD) bestD = d, best = i;
+    }
+    return best;
+}
+
+int64_t Model::pickTriangle(Vec2 screen) const {
+    Point p = camera.toWorld(screen);
+    const auto& v = trace_->polygon.vertices;
+    uint32_t n = std::min<uint32_t>(state().triangleCount, uint32_t(trace_->triangles.size()));
+    // Display-only hit test: plain doubles are fine here, exactness lives in the core.
+    auto side = [](Point a, Point b, Point c) {
+        return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+    };
+    for (uint32_t t = 0; t < n; ++t) {
+        const Triangle& tri = trace_->triangles[t];
+        if (tri[0] >= v.size() || tri[1] >= v.size() || tri[2] >= v.size()) continue;
+        double a = side(v[tri[0]], v[tri[1]], p), b = side(v[tri[1]], v[tri[2]], p),
+               c = side(v[tri[2]], v[tri[0]], p);
+        if ((a >= 0 && b >= 0 && c >= 0) || (a <= 0 && b <= 0 && c <= 0)) return t;
+    }
+    return -1;
+}
+
+// ========================================================================================
+// [SECTION] polygon files
+std::string polygonsDir() {
+    if (const char* d = std::getenv("FLOOD_POLYGONS_DIR")) return d;
+    return std::string(FLOOD_SOURCE_DIR) + "/polygons";
+}
+
+std::vector<std::string> listPolygonFiles(const std::string& dir) {
+    std::vector<std::string> out;
+    std::error_code ec;
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+        std::string ext = entry.path().extension().string();
+        if (entry.is_regular_file(ec) && (ext == ".json" || ext == ".wkt"))
+            out.push_back(entry.path().string());
+    }
+    std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::string defaultPolygonPath() {
+    std::string dir = polygonsDir();
+    std::string preferred = dir + "/" FLOOD_VIEWER_DEFAULT_POLYGON;
+    std::error_code ec;
+    if (std::filesystem::exists(preferred, ec)) return preferred;
+    auto files = listPolygonFiles(dir);
+    return files.empty() ? std::string() : files.front();
+}
+
+}  // namespace flood::view

@@ -1,0 +1,171 @@
+// The viewer's data model: one recorded flood (Trace + Replay), the current step, playback,
+// breakpoints, camera and picking. No ImGui, no GL, no GLFW: the panels read it and call its
+// methods, and tests/viewer_model_test.cpp drives it without a window.
+//
+// Steps: step s means "the first s events applied" (Replay::seek(s)); the current event is
+// events[s - 1], the one that produced what is on screen. Step 0 has no current event.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "events.h"
+#include "flood.h"
+#include "polygon.h"
+#include "replay.h"
+#include "status.h"
+
+namespace flood::view {
+
+// ----------------------------------------------------------------------------------------
+// Vertex classes of §3 (Fig. 1), computed from each vertex's ring neighbours.
+enum class VertexClass : uint8_t { Regular, Bottom, Sag, Top, Ceiling, Count };
+const char* vertexClassName(VertexClass c);
+// Rings are walked with the interior on the left (outer rings counter-clockwise, holes
+// clockwise), whatever their orientation in the file.
+std::vector<VertexClass> classifyVertices(const Polygon& polygon);
+
+// ----------------------------------------------------------------------------------------
+// Screen geometry. Screen coordinates are ImGui's logical pixels: origin top-left, y down.
+struct Vec2 {
+    double x = 0, y = 0;
+};
+
+struct Rect {
+    double x = 0, y = 0, w = 0, h = 0;
+    bool contains(Vec2 p) const { return p.x >= x && p.y >= y && p.x < x + w && p.y < y + h; }
+};
+
+// The tiled window layout: panels on the left and right, timeline at the bottom, canvas in
+// the middle. Shared with the screenshot test so it can find a vertex on the PNG.
+struct Layout {
+    Rect canvas, left, right, bottom;
+};
+Layout computeLayout(double width, double height, double uiScale);
+
+// World (polygon coordinates, y up) to screen (y down): screen = origin + (p - center) * scale.
+class Camera {
+public:
+    void fit(const Polygon& polygon, const Rect& viewport);  // whole polygon, 6% margin
+    void setViewport(const Rect& viewport) { viewport_ = viewport; }
+    Vec2 toScreen(Point p) const;
+    Point toWorld(Vec2 s) const;
+    void pan(double dx, double dy);                 // by screen pixels
+    void zoomAt(Vec2 screen, double factor);         // keeps the world point under `screen`
+    double scale() const { return scale_; }          // pixels per world unit
+    const Rect& viewport() const { return viewport_; }
+
+private:
+    Rect viewport_;
+    double cx_ = 0, cy_ = 0, scale_ = 1;
+};
+
+// ----------------------------------------------------------------------------------------
+// Breakpoints: stop when an event matches any enabled condition.
+struct Breakpoints {
+    std::array<bool, size_t(Action::Count)> actions{};  // on these action kinds
+    bool forbidden = false;                             // on a Forbidden event
+    Index vertex = kNone;     // when this vertex becomes Left, Right, NextLeft or NextRight
+    int64_t triangle = -1;    // when this triangle number is cut
+    bool any() const;
+};
+bool hits(const Breakpoints& b, const Event& e);
+
+// ----------------------------------------------------------------------------------------
+// Text views of the log.
+std::string describeEvent(const Trace& trace, const Event& e);  // one line per event
+// The items of flood::transcript() (Fig. 7 caption: runs of Raise merge into "Raise 0-7"),
+// each with the events it covers.
+struct TranscriptItem {
+    uint32_t firstEvent = 0, lastEvent = 0;  // inclusive event indices
+    std::string text;
+};
+std::vector<TranscriptItem> buildTranscript(const Trace& trace);
+
+// ----------------------------------------------------------------------------------------
+class Model {
+public:
+    Model();
+    ~Model();
+    Model(const Model&) = delete;
+    Model& operator=(const Model&) = delete;
+
+    // Reads, validates and floods a file of any format io.h knows. Never throws: unreadable
+    // files leave an empty polygon and the message in inputDiagnostic(); invalid polygons are
+    // flooded anyway so the viewer can show where the machine stops.
+    void open(const std::string& path);
+    void openPolygon(Polygon polygon, const std::string& name, Diagnostic input,
+                     std::vector<std::string> warnings = {});
+
+    const std::string& path() const { return path_; }
+    const Trace& trace() const { return *trace_; }
+    const Polygon& polygon() const { return trace_->polygon; }
+    const Diagnostic& inputDiagnostic() const { return input_; }
+    const std::vector<std::string>& warnings() const { return warnings_; }
+    const std::vector<VertexClass>& classes() const { return classes_; }
+    const std::vector<Index>& offenders() const { return offenders_; }  // vertices to blame
+    const std::vector<TranscriptItem>& transcript() const { return transcript_; }
+    const std::vector<std::string>& recentFiles() const { return recent_; }
+    void loadRecent(const std::string& file);  // one path per line; missing file: no-op
+    void saveRecent(const std::string& file) const;
+    std::string verdict() const;  // "ok: 64 triangles" / "Forbidden at step 12: ..."
+
+    // Time.
+    uint32_t steps() const { return uint32_t(trace_->events.size()); }
+    uint32_t step() const { return step_; }
+    const ReplayState& state() const { return replay_->state(); }
+    const Event* currentEvent() const;
+    void seek(uint32_t step);  // clamps to [0, steps()]
+    void stepForward() { seek(step_ + 1); }
+    void stepBack() { seek(step_ == 0 ? 0 : step_ - 1); }
+    void first() { seek(0); }
+    void last() { seek(steps()); }
+    // Moves to the next (direction > 0) or previous event of kind `a`; false if none.
+    bool seekAction(Action a, int direction);
+    // Runs to the next/previous step whose event hits a breakpoint; false (and stops at the
+    // end of the log) if none does.
+    bool runToBreakpoint(int direction);
+    Breakpoints breakpoints;
+
+    // Playback: `speed` steps per second; advance() is fed the frame time.
+    bool playing = false;
+    double speed = 8;
+    void togglePlay();
+    void advance(double seconds);
+
+    // Triangles: the step whose event cut triangle t (its event index + 1).
+    uint32_t triangleStep(uint32_t t) const;
+
+    // Camera and picking (screen coordinates).
+    Camera camera;
+    bool needsFit = true;  // set on open; the canvas fits once it knows its viewport
+    Index pickVertex(Vec2 screen, double radiusPx) const;
+    int64_t pickTriangle(Vec2 screen) const;  // among the triangles cut so far, -1 if none
+
+private:
+    void computeOffenders();
+    std::unique_ptr<Trace> trace_;    // owned here, at a stable address for Replay
+    std::unique_ptr<Replay> replay_;
+    std::string path_;
+    Diagnostic input_;
+    std::vector<std::string> warnings_;
+    std::vector<VertexClass> classes_;
+    std::vector<Index> offenders_;
+    std::vector<TranscriptItem> transcript_;
+    std::vector<uint32_t> triangleStep_;
+    std::vector<std::string> recent_;
+    uint32_t step_ = 0;
+    double playClock_ = 0;
+};
+
+// Where to look for polygons: FLOOD_SOURCE_DIR/polygons unless overridden.
+std::string polygonsDir();
+// polygons/FLOOD_VIEWER_DEFAULT_POLYGON (CMake cache, default paper-figure-7.json) if it
+// exists, else the first polygon file, else "". FLOOD_POLYGONS_DIR overrides the directory.
+std::string defaultPolygonPath();
+// *.json and *.wkt files of a directory, sorted by name.
+std::vector<std::string> listPolygonFiles(const std::string& dir);
+
+}  // namespace flood::view

@@ -1,0 +1,30 @@
+#include <imgui.h>
+
+#include <fstream>
+
+#include "panels.h"
+
+namespace flood::view {
+
+void placeWindow(const Rect& r) {
+    ImGui::SetNextWindowPos(ImVec2(float(r.x), float(r.y)), ImGuiCond_Always);
+    ImGui::SetNextWindowSize(ImVec2(float(r.w), float(r.h)), ImGuiCond_Always);
+}
+
+ImVec4 toImVec4(Rgba c) { return ImVec4(c.r / 255.f, c.g / 255.f, c.b / 255.f, c.a / 255.f); }
+unsigned toImU32(Rgba c) { return IM_COL32(c.r, c.g, c.b, c.a); }
+
+std::string exportSvg(Ui& ui) {
+    std::string base = ui.model.path().empty() ? "flood" : ui.model.path();
+    size_t dot = base.find_last_of('.'), slash = base.find_last_of('/');
+    if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) base.resize(dot);
+    // Next to the input would write into the source tree; use the working directory.
+    if (slash != std::string::npos) base = base.substr(slash + 1);
+    std::string out = base + "-step" + std::to_string(ui.model.step()) + ".svg";
+    std::ofstream f(out);
+    writeSceneSvg(f, buildScene(ui.model, ui.sceneOptions), ui.model.polygon(), 1000);
+    ui.message = f ? "wrote " + out : "cannot write " + out;
+    return out;
+}
+
+}  // namespace flood::view

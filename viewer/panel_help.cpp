@@ -1,0 +1,96 @@
+// Keys, the glossary of the paper's words as the viewer uses them, and the key handling
+// itself so the two cannot drift apart.
+#include <imgui.h>
+
+#include "panels.h"
+#include "platform_glfw.h"
+
+namespace flood::view {
+
+void handleShortcuts(Ui& ui) {
+    ImGuiIO& io = ImGui::GetIO();
+    // Keys belong to text fields and focused widgets first.
+    if (io.WantCaptureKeyboard || io.WantTextInput) return;
+    Model& m = ui.model;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) m.togglePlay();
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) {
+        m.playing = false;
+        io.KeyShift ? (void)m.runToBreakpoint(+1) : m.stepForward();
+    }
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) {
+        m.playing = false;
+        io.KeyShift ? (void)m.runToBreakpoint(-1) : m.stepBack();
+    }
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home), false)) m.first();
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_End), false)) m.last();
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageDown)))
+        m.seekAction(ui.seekKind, +1);
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageUp))) m.seekAction(ui.seekKind, -1);
+    if (ImGui::IsKeyPressed(platform::kKeyF, false) && !io.KeyCtrl) m.needsFit = true;
+    if (ImGui::IsKeyPressed(platform::kKeyF1, false)) ui.showHelp = !ui.showHelp;
+    if (io.KeyCtrl && ImGui::IsKeyPressed('O', false)) ui.showOpen = true;
+    for (ImWchar c : io.InputQueueCharacters)
+        if (c == '?') ui.showHelp = !ui.showHelp;
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+        ui.showHelp = false;
+        ui.showOpen = false;
+    }
+}
+
+void drawHelp(Ui& ui) {
+    if (!ui.showHelp) return;
+    ImGui::SetNextWindowSize(ImVec2(520 * ui.scale, 480 * ui.scale), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(float(ui.layout.canvas.x + 40 * ui.scale),
+                                   float(ui.layout.canvas.y + 40 * ui.scale)),
+                            ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("Help", &ui.showHelp)) {
+        ImGui::End();
+        return;
+    }
+    static const char* const keys[][2] = {
+        {"Space", "play / pause"},
+        {"Left / Right", "one step back / forward"},
+        {"Shift+Left / Right", "run back / forward to a breakpoint"},
+        {"Home / End", "first / last step"},
+        {"PageUp / PageDown", "previous / next event of the kind chosen in the timeline"},
+        {"F", "fit the polygon in the canvas"},
+        {"F1 or ?", "this window"},
+        {"Ctrl+O", "open a polygon (or drop a file on the window)"},
+        {"drag / wheel", "pan / zoom at the cursor"},
+        {"hover", "vertex or triangle details"},
+        {"click a triangle", "go to the step that cut it"},
+        {"right-click a vertex", "break when it becomes Left, Right, NextLeft or NextRight"},
+    };
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
+        for (auto& k : keys) {
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(k[0]);
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(k[1]);
+        }
+        ImGui::EndTable();
+    }
+    ImGui::Separator();
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextUnformatted(
+        "Glossary (Ronfard & Rossignac 1994). The polygon is flooded from its lowest bottom; "
+        "triangles are numbered in the order the water covers them.\n"
+        "bottom / sag: convex / concave local minimum.  top / ceiling: concave / convex local "
+        "maximum.\n"
+        "gorge: a monotonic region being filled; its two sides are banks.\n"
+        "active chain: the concave line from Left to Right at the water's surface. NextLeft "
+        "precedes Left, NextRight follows Right (the fingers).\n"
+        "Raise: the lower finger joins the chain and a wedge of triangles is cut.\n"
+        "Bridge: a sag inside the gorge is joined to the chain; one half waits as a pending "
+        "gorge.\n"
+        "Spill: the water overflows a top; its jump pointer is set and a new gorge begins at "
+        "the next unmatched bottom.\n"
+        "Jump: the water reaches a top whose jump pointer is set, from its far side.\n"
+        "Fill: NextLeft == NextRight; the gorge is closed with a fan.\n"
+        "Forbidden: a state the machine cannot be in for valid input (Fig. 10, 11).");
+    ImGui::PopTextWrapPos();
+    ImGui::End();
+}
+
+}  // namespace flood::view

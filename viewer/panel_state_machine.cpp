@@ -1,0 +1,107 @@
+// The flood machine of §4 as a graph: six states (Fig. 10: R, B, S, J, F and the forbidden X)
+// on a circle. Every transition that occurs in the trace is drawn faintly with its count; the
+// last one taken is drawn bold, and the current state filled.
+#include <imgui.h>
+
+#include <cmath>
+#include <map>
+
+#include "panels.h"
+
+namespace flood::view {
+
+namespace {
+
+constexpr Action kNodes[] = {Action::Raise, Action::Bridge, Action::Spill,
+                             Action::Jump,  Action::Fill,   Action::Forbidden};
+constexpr int kNodeCount = 6;
+
+int nodeOf(Action a) {
+    for (int i = 0; i < kNodeCount; ++i)
+        if (kNodes[i] == a) return i;
+    return -1;  // Start is the entry, not a state
+}
+
+void arrow(ImDrawList* dl, ImVec2 a, ImVec2 b, float inset, ImU32 col, float thick) {
+    float dx = b.x - a.x, dy = b.y - a.y, len = std::sqrt(dx * dx + dy * dy);
+    if (len < 2 * inset + 1) return;
+    float ux = dx / len, uy = dy / len;
+    // Offset sideways so A->B and B->A do not overlap.
+    float ox = -uy * 4, oy = ux * 4;
+    ImVec2 s(a.x + ux * inset + ox, a.y + uy * inset + oy), e(b.x - ux * inset + ox, b.y - uy * inset + oy);
+    dl->AddLine(s, e, col, thick);
+    float hs = 4 + thick * 2;
+    dl->AddTriangleFilled(e, ImVec2(e.x - ux * hs - uy * hs / 2, e.y - uy * hs + ux * hs / 2),
+                          ImVec2(e.x - ux * hs + uy * hs / 2, e.y - uy * hs - ux * hs / 2), col);
+}
+
+}  // namespace
+
+void drawStateMachine(Ui& ui) {
+    Model& m = ui.model;
+    const Rect& col = ui.layout.left;
+    placeWindow({col.x, col.y, col.w, col.h * 0.38});
+    ImGui::Begin("State machine", nullptr,
+                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    const auto& ev = m.trace().events;
+    const Event* cur = m.currentEvent();
+
+    // Transition counts over the whole run, keyed (from, to) by node index.
+    std::map<std::pair<int, int>, int> counts;
+    for (size_t i = 1; i < ev.size(); ++i) {
+        int a = nodeOf(ev[i - 1].action), b = nodeOf(ev[i].action);
+        if (a >= 0 && b >= 0 && a != b) counts[{a, b}]++;
+    }
+    int from = -1, to = cur ? nodeOf(cur->action) : -1;
+    if (m.step() >= 2) from = nodeOf(ev[m.step() - 2].action);
+
+    ImDrawList* dl = ImGui::GetWindowDrawList();
+    ImVec2 origin = ImGui::GetCursorScreenPos();
+    ImVec2 avail = ImGui::GetContentRegionAvail();
+    float textH = ImGui::GetTextLineHeightWithSpacing() * 3;
+    float side = std::max(40.f, std::min(avail.x, avail.y - textH));
+    ImVec2 c(origin.x + avail.x / 2, origin.y + side / 2);
+    float R = side * 0.36f, nodeR = std::max(12.f, side * 0.1f);
+    ImVec2 pos[kNodeCount];
+    for (int i = 0; i < kNodeCount; ++i) {
+        float a = float(-M_PI / 2 + 2 * M_PI * i / kNodeCount);
+        pos[i] = ImVec2(c.x + R * std::cos(a), c.y + R * std::sin(a));
+    }
+    for (auto& [k, n] : counts) {
+        arrow(dl, pos[k.first], pos[k.second], nodeR, IM_COL32(120, 120, 130, 140), 1);
+        ImVec2 mid((pos[k.first].x * 0.6f + pos[k.second].x * 0.4f),
+                   (pos[k.first].y * 0.6f + pos[k.second].y * 0.4f));
+        dl->AddText(mid, IM_COL32(150, 150, 160, 255), std::to_string(n).c_str());
+    }
+    if (from >= 0 && to >= 0 && from != to)
+        arrow(dl, pos[from], pos[to], nodeR, IM_COL32(255, 255, 255, 255), 3);
+    for (int i = 0; i < kNodeCount; ++i) {
+        Rgba color = palette::action(kNodes[i]);
+        bool active = i == to;
+        if (active) dl->AddCircleFilled(pos[i], nodeR, toImU32(color));
+        dl->AddCircle(pos[i], nodeR, toImU32(color), 0, active ? 3.f : 1.5f);
+        if (active && from == to)  // a self-loop (Raise after Raise): a ring around the node
+            dl->AddCircle(pos[i], nodeR + 4, IM_COL32(255, 255, 255, 255), 0, 2);
+        const char* name = actionName(kNodes[i]);
+        ImVec2 ts = ImGui::CalcTextSize(name);
+        dl->AddText(ImVec2(pos[i].x - ts.x / 2, pos[i].y - ts.y / 2),
+                    active ? IM_COL32(0, 0, 0, 255) : IM_COL32(230, 230, 230, 255), name);
+    }
+    ImGui::Dummy(ImVec2(avail.x, side));
+
+    ImGui::PushTextWrapPos(0);
+    if (!cur) {
+        ImGui::TextDisabled("before Start: the water waits at the lowest bottom");
+    } else if (cur->action == Action::Forbidden) {
+        ImGui::TextColored(toImVec4(palette::kCulprit), "Forbidden (%s): %s",
+                           forbiddenName(cur->reason), forbiddenText(cur->reason));
+    } else {
+        ImGui::TextColored(toImVec4(palette::action(cur->action)), "%s", actionName(cur->action));
+        ImGui::SameLine();
+        ImGui::TextDisabled("%s", actionMeaning(cur->action));
+    }
+    ImGui::PopTextWrapPos();
+    ImGui::End();
+}
+
+}  // namespace flood::view

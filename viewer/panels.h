@@ -1,0 +1,50 @@
+// The viewer's panels, one file each (panel_*.cpp). They read the Model, change it only through
+// its methods, and share the small UI state below. ImGui lives here, never in the model.
+// A new panel: write panel_<name>.cpp with draw<Name>(Ui&), declare it below, call it from the
+// frame in main.cpp, and give it a rectangle of computeLayout() (model.cpp) or let it float.
+#pragma once
+#include <string>
+
+#include "model.h"
+#include "renderer.h"
+#include "scene.h"
+
+struct ImVec4;
+
+namespace flood::view {
+
+struct Ui {
+    Ui(Model& m, Renderer& r) : model(m), renderer(r) {}
+    Model& model;
+    Renderer& renderer;
+    float scale = 1;   // UI scale from the monitor's content scale
+    Layout layout;
+    SceneOptions sceneOptions;
+    bool showHelp = false;
+    bool showOpen = false;
+    Action seekKind = Action::Bridge;  // "previous/next event of kind" in the timeline
+    std::string message;               // last status message (saved files, load errors)
+    std::string pngRequest;            // non-empty: main writes this PNG after rendering
+    uint32_t eventsScrolledTo = ~0u;   // events list follows the step when it changes
+    uint32_t transcriptScrolledTo = ~0u;
+};
+
+void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, labels, input
+void drawTimeline(Ui& ui);       // panel_timeline.cpp: strip, transport, go-to, play
+void drawStateMachine(Ui& ui);   // panel_state_machine.cpp: the six states of §4
+void drawDecision(Ui& ui);       // panel_decision.cpp: the Fig. 9 tests of the current event
+void drawBreakpoints(Ui& ui);    // panel_breakpoints.cpp: breakpoints, legend, display options
+void drawEvents(Ui& ui);         // panel_events.cpp: every event, clipped
+void drawTranscript(Ui& ui);     // panel_transcript.cpp: the paper-style transcript
+void drawOpen(Ui& ui);           // panel_open.cpp: polygons/ and recent files
+void drawHelp(Ui& ui);           // panel_help.cpp: keys and glossary
+void handleShortcuts(Ui& ui);    // panel_help.cpp: the keys the help window lists
+
+// Helpers shared by panels (panel_common.cpp).
+void placeWindow(const Rect& r);  // tiles a panel at a layout rectangle
+ImVec4 toImVec4(Rgba c);
+unsigned toImU32(Rgba c);
+// Writes the current step as "<name>-step<N>.svg" in the working directory.
+std::string exportSvg(Ui& ui);
+
+}  // namespace flood::view

@@ -1,0 +1,112 @@
+#include "platform_glfw.h"
+
+#include <glad/gl.h>  // before GLFW, so GLFW does not pull in a GL header of its own
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <imgui.h>
+
+#include <cstdlib>
+
+namespace flood::view::platform {
+
+const int kKeyF = GLFW_KEY_F;
+const int kKeyF1 = GLFW_KEY_F1;
+
+namespace {
+GLFWwindow* g_window = nullptr;
+std::vector<std::string> g_dropped;
+std::string g_glfwError;
+
+void onError(int, const char* description) { g_glfwError = description ? description : "?"; }
+
+void onDrop(GLFWwindow*, int count, const char** paths) {
+    for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
+}
+}  // namespace
+
+bool displayNamed() {
+    const char* x = std::getenv("DISPLAY");
+    const char* w = std::getenv("WAYLAND_DISPLAY");
+    return (x && *x) || (w && *w);
+}
+
+bool initialize(std::string* error) {
+    glfwSetErrorCallback(onError);
+    if (!displayNamed()) {
+        if (error) *error = "no display: neither DISPLAY nor WAYLAND_DISPLAY is set";
+        return false;
+    }
+    if (!glfwInit()) {
+        if (error) *error = "no display: GLFW could not initialise (" + g_glfwError + ")";
+        return false;
+    }
+    return true;
+}
+
+void terminate() { glfwTerminate(); }
+
+bool createWindow(const WindowOptions& o, std::string* error) {
+    glfwDefaultWindowHints();
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+    glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+    glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+    glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+    glfwWindowHint(GLFW_STENCIL_BITS, 8);  // the even-odd polygon fill needs a stencil
+    glfwWindowHint(GLFW_VISIBLE, o.hidden ? GLFW_FALSE : GLFW_TRUE);
+    // Screenshots must be exactly the requested size, whatever the monitor's scale.
+    glfwWindowHint(GLFW_SCALE_TO_MONITOR, o.hidden ? GLFW_FALSE : GLFW_TRUE);
+    g_window = glfwCreateWindow(o.width, o.height, o.title.c_str(), nullptr, nullptr);
+    if (!g_window) {
+        if (error) *error = "cannot create an OpenGL 3.3 core window: " + g_glfwError;
+        return false;
+    }
+    glfwMakeContextCurrent(g_window);
+    glfwSwapInterval(o.hidden ? 0 : 1);
+    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress))) {
+        if (error) *error = "cannot load OpenGL functions";
+        return false;
+    }
+    glfwSetDropCallback(g_window, onDrop);
+    ImGui_ImplGlfw_InitForOpenGL(g_window, true);
+    return true;
+}
+
+void destroyWindow() {
+    if (!g_window) return;
+    ImGui_ImplGlfw_Shutdown();
+    glfwDestroyWindow(g_window);
+    g_window = nullptr;
+}
+
+bool shouldClose() { return glfwWindowShouldClose(g_window); }
+void requestClose() { glfwSetWindowShouldClose(g_window, GLFW_TRUE); }
+void pollEvents() { glfwPollEvents(); }
+void waitEvents(double timeout) { glfwWaitEventsTimeout(timeout); }
+void newFrame() { ImGui_ImplGlfw_NewFrame(); }
+void swapBuffers() { glfwSwapBuffers(g_window); }
+double time() { return glfwGetTime(); }
+
+Vec2 windowSize() {
+    int w = 0, h = 0;
+    glfwGetWindowSize(g_window, &w, &h);
+    return {double(w), double(h)};
+}
+
+void framebufferSize(int* w, int* h) { glfwGetFramebufferSize(g_window, w, h); }
+
+float contentScale() {
+    float x = 1, y = 1;
+    glfwGetWindowContentScale(g_window, &x, &y);
+    return x > 0 ? x : 1;
+}
+
+void setTitle(const std::string& title) { glfwSetWindowTitle(g_window, title.c_str()); }
+
+std::vector<std::string> takeDroppedPaths() {
+    std::vector<std::string> out;
+    out.swap(g_dropped);
+    return out;
+}
+
+}  // namespace flood::view::platform

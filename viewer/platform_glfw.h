@@ -1,0 +1,47 @@
+// The only file pair that talks to GLFW: window and GL context, content scale, input through
+// ImGui's GLFW backend, drag-and-drop, and hidden windows for screenshots.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "model.h"  // Vec2
+
+namespace flood::view::platform {
+
+struct WindowOptions {
+    int width = 1280, height = 800;
+    bool hidden = false;  // screenshot mode: render off screen, never shown
+    std::string title = "flood-viewer";
+};
+
+// True when the environment names a display (DISPLAY or WAYLAND_DISPLAY).
+bool displayNamed();
+// glfwInit; false with a reason when there is no usable display.
+bool initialize(std::string* error);
+void terminate();
+
+// Creates the window with a GL 3.3 core context, loads GL with glad and starts ImGui's GLFW
+// backend (the ImGui context must exist). Returns false with a reason.
+bool createWindow(const WindowOptions& options, std::string* error);
+void destroyWindow();
+
+bool shouldClose();
+void requestClose();
+void pollEvents();
+void waitEvents(double timeoutSeconds);  // idle without spinning when nothing plays
+void newFrame();                         // ImGui's platform half of a frame
+void swapBuffers();
+double time();
+
+Vec2 windowSize();                 // logical pixels (ImGui's units)
+void framebufferSize(int* w, int* h);
+float contentScale();              // 1 on a 96-dpi screen, 2 on most hi-DPI ones
+void setTitle(const std::string& title);
+std::vector<std::string> takeDroppedPaths();  // files dropped on the window since last call
+
+// ImGui 1.86 has no ImGuiKey for letters or function keys; its GLFW backend fills
+// io.KeysDown by GLFW key code, so these index io.KeysDown directly.
+extern const int kKeyF;
+extern const int kKeyF1;
+
+}  // namespace flood::view::platform

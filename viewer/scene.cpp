@@ -1,0 +1,216 @@
+#include "scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <ostream>
+
+namespace flood::view {
+
+namespace {
+
+bool valid(const Polygon& p, Index v) { return v != kNone && v < p.vertices.size(); }
+
+double area(Point a, Point b, Point c) {
+    return std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2;
+}
+
+Rgba classColor(VertexClass c) {
+    switch (c) {
+        case VertexClass::Bottom: return palette::kBottom;
+        case VertexClass::Sag: return palette::kSag;
+        case VertexClass::Top: return palette::kTop;
+        case VertexClass::Ceiling: return palette::kCeiling;
+        default: return palette::kRegular;
+    }
+}
+
+// The horizontal segment at the water vertex's height, from bank to bank of the active gorge:
+// the extreme crossings of that height with the chain and the two finger edges.
+bool waterLevel(const Polygon& poly, const ReplayState& s, Point& a, Point& b) {
+    if (!valid(poly, s.water)) return false;
+    const auto& v = poly.vertices;
+    double h = v[s.water].y, x0 = v[s.water].x, x1 = x0;
+    auto cross = [&](Index i, Index j) {
+        if (!valid(poly, i) || !valid(poly, j)) return;
+        Point p = v[i], q = v[j];
+        if ((p.y - h) * (q.y - h) > 0) return;
+        double x = p.y == q.y ? p.x : p.x + (h - p.y) / (q.y - p.y) * (q.x - p.x);
+        if (p.y == q.y) {
+            x0 = std::min({x0, p.x, q.x}), x1 = std::max({x1, p.x, q.x});
+        } else {
+            x0 = std::min(x0, x), x1 = std::max(x1, x);
+        }
+    };
+    for (size_t i = 0; i + 1 < s.chain.size(); ++i) cross(s.chain[i], s.chain[i + 1]);
+    cross(s.fingers.left, s.fingers.nextLeft);
+    cross(s.fingers.right, s.fingers.nextRight);
+    a = {x0, h}, b = {x1, h};
+    return true;
+}
+
+}  // namespace
+
+Scene buildScene(const Model& model, const SceneOptions& o) {
+    Scene sc;
+    const Polygon& poly = model.polygon();
+    const Trace& trace = model.trace();
+    const ReplayState& s = model.state();
+    const auto& v = poly.vertices;
+    const Event* ev = model.currentEvent();
+
+    for (const Ring& r : poly.rings) {
+        if (r.first + r.count > v.size()) continue;
+        sc.rings.emplace_back(v.begin() + r.first, v.begin() + r.first + r.count);
+    }
+
+    uint32_t n = std::min<uint32_t>(s.triangleCount, uint32_t(trace.triangles.size()));
+    uint32_t curFirst = ev ? ev->firstTriangle : 0, curEnd = ev ? curFirst + ev->triangleCount : 0;
+    for (uint32_t t = 0; t < n; ++t) {
+        const Triangle& tri = trace.triangles[t];
+        if (!valid(poly, tri[0]) || !valid(poly, tri[1]) || !valid(poly, tri[2])) continue;
+        Point a = v[tri[0]], b = v[tri[1]], c = v[tri[2]];
+        bool cur = t >= curFirst && t < curEnd;
+        (cur ? sc.current : sc.water).push_back({a, b, c, cur ? palette::kCurrent : palette::kWater});
+        if (o.triangleEdges) {
+            sc.lines.push_back({a, b, palette::kTriangleEdge, 1});
+            sc.lines.push_back({b, c, palette::kTriangleEdge, 1});
+            sc.lines.push_back({c, a, palette::kTriangleEdge, 1});
+        }
+        if (o.triangleNumbers) {
+            Scene::Label l{{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3}, std::to_string(t),
+                           cur ? Rgba{0, 0, 0, 255} : Rgba{230, 240, 255, 255}};
+            l.minArea = 700;  // about four times a label's own footprint
+            l.worldArea = area(a, b, c);
+            sc.labels.push_back(std::move(l));
+        }
+    }
+
+    for (const auto& ring : sc.rings)
+        for (size_t i = 0; i < ring.size(); ++i)
+            sc.lines.push_back({ring[i], ring[(i + 1) % ring.size()], palette::kBoundary, 1.5f});
+
+    if (o.bridges)
+        for (auto [sag, to] : s.bridges)
+            if (valid(poly, sag) && valid(poly, to))
+                sc.lines.push_back({v[sag], v[to], palette::kBridge, 2});
+
+    if (o.dormant)
+        for (const Gorge& g : s.dormant) {
+            for (size_t i = 0; i + 1 < g.chain.size(); ++i)
+                if (valid(poly, g.chain[i]) && valid(poly, g.chain[i + 1]))
+                    sc.lines.push_back({v[g.chain[i]], v[g.chain[i + 1]], palette::kDormant, 1.5f});
+            Index anchor = valid(poly, g.top) ? g.top : (g.chain.empty() ? kNone : g.chain[0]);
+            if (valid(poly, anchor)) {
+                sc.markers.push_back({v[anchor], palette::kDormant, 9, Scene::Shape::Ring});
+                sc.labels.push_back({v[anchor],
+                                     (g.held ? "held " : "pending ") + std::to_string(g.id),
+                                     palette::kDormant, 10, 10});
+            }
+        }
+
+    if (o.jumps)
+        for (auto [top, to] : s.jumps)
+            if (valid(poly, top) && valid(poly, to))
+                sc.lines.push_back({v[top], v[to], palette::kJump, 2, true});
+
+    for (size_t i = 0; i + 1 < s.chain.size(); ++i)
+        if (valid(poly, s.chain[i]) && valid(poly, s.chain[i + 1]))
+            sc.lines.push_back({v[s.chain[i]], v[s.chain[i + 1]], palette::kChain, 3});
+
+    sc.hasWater = waterLevel(poly, s, sc.waterA, sc.waterB);
+    if (sc.hasWater) sc.lines.push_back({sc.waterA, sc.waterB, palette::kWaterLevel, 2});
+
+    if (o.vertexClasses)
+        for (Index i = 0; i < v.size() && i < model.classes().size(); ++i) {
+            VertexClass c = model.classes()[i];
+            sc.markers.push_back({v[i], classColor(c), c == VertexClass::Regular ? 2.5f : 4.5f});
+        }
+
+    for (Index i : model.offenders()) {
+        sc.markers.push_back({v[i], palette::kCulprit, 11, Scene::Shape::Ring});
+    }
+
+    // Fingers, then Right, then Left last so Left is on top when they coincide.
+    const Fingers& f = s.fingers;
+    if (valid(poly, f.nextLeft)) {
+        sc.markers.push_back({v[f.nextLeft], palette::kNextLeft, 8, Scene::Shape::Finger});
+        sc.labels.push_back({v[f.nextLeft], "NL", palette::kNextLeft, -26, -22});
+    }
+    if (valid(poly, f.nextRight)) {
+        sc.markers.push_back({v[f.nextRight], palette::kNextRight, 8, Scene::Shape::Finger});
+        sc.labels.push_back({v[f.nextRight], "NR", palette::kNextRight, 10, -22});
+    }
+    if (valid(poly, f.right)) {
+        sc.markers.push_back({v[f.right], palette::kRight, 6.5f});
+        sc.labels.push_back({v[f.right], "R", palette::kRight, 9, 4});
+    }
+    if (valid(poly, f.left)) {
+        sc.markers.push_back({v[f.left], palette::kLeft, 6.5f});
+        sc.labels.push_back({v[f.left], "L", palette::kLeft, -18, 4});
+    }
+    return sc;
+}
+
+// ----------------------------------------------------------------------------------------
+static std::string svgColor(Rgba c) {
+    char buf[8];
+    std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
+    return buf;
+}
+
+void writeSceneSvg(std::ostream& out, const Scene& sc, const Polygon& polygon, int width) {
+    // Same fit as the canvas, onto a page whose aspect follows the polygon.
+    double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
+    if (!polygon.vertices.empty()) {
+        x0 = x1 = polygon.vertices[0].x, y0 = y1 = polygon.vertices[0].y;
+        for (Point p : polygon.vertices)
+            x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y),
+            y1 = std::max(y1, p.y);
+    }
+    double aspect = (x1 > x0 && y1 > y0) ? (y1 - y0) / (x1 - x0) : 1;
+    int height = std::clamp(int(width * aspect), 64, 8 * width);
+    Camera cam;
+    cam.fit(polygon, Rect{0, 0, double(width), double(height)});
+    auto P = [&](Point p) {
+        Vec2 s = cam.toScreen(p);
+        char buf[64];
+        std::snprintf(buf, sizeof buf, "%.2f,%.2f", s.x, s.y);
+        return std::string(buf);
+    };
+    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\""
+        << height << "\" viewBox=\"0 0 " << width << " " << height << "\">\n";
+    out << "<rect width=\"100%\" height=\"100%\" fill=\"" << svgColor(palette::kBackground)
+        << "\"/>\n<path fill-rule=\"evenodd\" fill=\"" << svgColor(palette::kPolygonFill)
+        << "\" d=\"";
+    for (const auto& ring : sc.rings) {
+        for (size_t i = 0; i < ring.size(); ++i) out << (i ? " L" : "M") << P(ring[i]);
+        out << " Z ";
+    }
+    out << "\"/>\n";
+    for (const auto* tris : {&sc.water, &sc.current})
+        for (const auto& t : *tris)
+            out << "<polygon points=\"" << P(t.a) << " " << P(t.b) << " " << P(t.c)
+                << "\" fill=\"" << svgColor(t.color) << "\"/>\n";
+    for (const auto& l : sc.lines)
+        out << "<line x1=\"" << cam.toScreen(l.a).x << "\" y1=\"" << cam.toScreen(l.a).y
+            << "\" x2=\"" << cam.toScreen(l.b).x << "\" y2=\"" << cam.toScreen(l.b).y
+            << "\" stroke=\"" << svgColor(l.color) << "\" stroke-width=\"" << l.width
+            << "\"/>\n";
+    for (const auto& m : sc.markers) {
+        Vec2 c = cam.toScreen(m.p);
+        bool ring = m.shape == Scene::Shape::Ring;
+        out << "<circle cx=\"" << c.x << "\" cy=\"" << c.y << "\" r=\"" << m.radius << "\" "
+            << (ring ? "fill=\"none\" stroke=\"" : "fill=\"") << svgColor(m.color) << "\"/>\n";
+    }
+    for (const auto& l : sc.labels) {
+        Vec2 c = cam.toScreen(l.p);
+        if (l.worldArea > 0 && l.worldArea * cam.scale() * cam.scale() < l.minArea) continue;
+        out << "<text x=\"" << c.x + l.dx << "\" y=\"" << c.y + l.dy + 10
+            << "\" font-family=\"sans-serif\" font-size=\"11\" fill=\"" << svgColor(l.color)
+            << "\">" << l.text << "</text>\n";
+    }
+    out << "</svg>\n";
+}
+
+}  // namespace flood::view

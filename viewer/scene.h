@@ -1,0 +1,62 @@
+// What the canvas shows at the current step, as world-space primitives with colours. Built
+// from the model alone (no GL, no ImGui) so the canvas, the SVG export and the tests agree.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "model.h"
+#include "palette.h"
+
+namespace flood::view {
+
+struct Scene {
+    struct Tri {
+        Point a, b, c;
+        Rgba color;
+    };
+    struct Line {
+        Point a, b;
+        Rgba color;
+        float width = 1;  // screen pixels (before UI scale)
+        bool arrow = false;
+    };
+    enum class Shape : uint8_t { Disc, Ring, Finger };
+    struct Marker {
+        Point p;
+        Rgba color;
+        float radius = 3;  // screen pixels (before UI scale)
+        Shape shape = Shape::Disc;
+    };
+    struct Label {
+        Point p;
+        std::string text;
+        Rgba color;
+        float dx = 0, dy = 0;    // screen offset (before UI scale)
+        double minArea = 0;      // hide when the owner's screen area (px²) is below this
+        double worldArea = 0;    // area of the owning triangle in world units², 0 = always
+    };
+    std::vector<std::vector<Point>> rings;  // filled even-odd: holes stay open
+    std::vector<Tri> water;                 // flooded triangles
+    std::vector<Tri> current;               // triangles cut by the current event
+    std::vector<Line> lines;                // edges, chain, water level, bridges, jumps
+    std::vector<Marker> markers;            // vertex classes, fingers, culprits
+    std::vector<Label> labels;
+    Point waterA, waterB;                   // the water level across the gorge
+    bool hasWater = false;
+};
+
+struct SceneOptions {
+    bool vertexClasses = true;
+    bool triangleNumbers = true;
+    bool triangleEdges = true;
+    bool jumps = true;
+    bool bridges = true;
+    bool dormant = true;
+};
+
+Scene buildScene(const Model& model, const SceneOptions& options = {});
+
+// Writes the scene as a standalone SVG of the given pixel width.
+void writeSceneSvg(std::ostream& out, const Scene& scene, const Polygon& polygon, int width);
+
+}  // namespace flood::view

@@ -1,0 +1,153 @@
+// GUI test: renders a known polygon with `flood-viewer --screenshot` and checks pixels whose
+// colours are known from the palette: background outside the polygon, water inside a flooded
+// triangle, and the Left marker at the Left vertex. Positions come from the same layout and
+// camera fit the viewer uses. Exit 77 (skipped) without a display, except in CI.
+#include <stb_image.h>  // implementation lives in Debian's libstb
+
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+#include <tuple>
+
+#include "model.h"
+#include "palette.h"
+
+using namespace flood;
+using namespace flood::view;
+
+namespace {
+
+struct Image {
+    int w = 0, h = 0;
+    unsigned char* px = nullptr;
+    Rgba at(int x, int y) const {
+        const unsigned char* p = px + (size_t(y) * w + x) * 4;
+        return {p[0], p[1], p[2], p[3]};
+    }
+};
+
+bool close(Rgba a, Rgba b, int tol) {
+    return std::abs(a.r - b.r) <= tol && std::abs(a.g - b.g) <= tol && std::abs(a.b - b.b) <= tol;
+}
+
+// True if a pixel within `radius` of (x, y) has `want`: anti-aliasing and rounding of the
+// projected position move a colour by a pixel, never more.
+bool near(const Image& img, Vec2 p, Rgba want, int radius, Rgba* seen) {
+    int cx = int(p.x), cy = int(p.y);
+    for (int dy = -radius; dy <= radius; ++dy)
+        for (int dx = -radius; dx <= radius; ++dx) {
+            int x = cx + dx, y = cy + dy;
+            if (x < 0 || y < 0 || x >= img.w || y >= img.h) continue;
+            if (close(img.at(x, y), want, 6)) return true;
+        }
+    if (seen && cx >= 0 && cy >= 0 && cx < img.w && cy < img.h) *seen = img.at(cx, cy);
+    return false;
+}
+
+int fail(const char* what, Vec2 p, Rgba want, Rgba seen) {
+    std::fprintf(stderr, "FAIL: %s at (%.1f, %.1f): want %d,%d,%d, got %d,%d,%d\n", what, p.x, p.y,
+                 want.r, want.g, want.b, seen.r, seen.g, seen.b);
+    return 1;
+}
+
+}  // namespace
+
+int main() {
+    const char* display = std::getenv("DISPLAY");
+    const char* wayland = std::getenv("WAYLAND_DISPLAY");
+    if (!(display && *display) && !(wayland && *wayland)) {
+        const char* ci = std::getenv("CI");
+        if (ci && std::string(ci) == "true") {
+            std::fprintf(stderr, "FAIL: no display in CI: run the tests under xvfb-run -a\n");
+            return 1;
+        }
+        std::printf("SKIP: no display (run under xvfb-run -a)\n");
+        return 77;
+    }
+
+    // A square with a square hole: bottoms, a sag, a top and ceilings, small enough to reason about.
+    std::string dir = FLOOD_WORK_DIR;
+    std::string input = dir + "/screenshot-test-square-hole.json";
+    std::ofstream(input) << R"({"type": "Polygon", "coordinates": [
+        [[0, 0], [10, 1], [11, 9], [1, 10], [0, 0]],
+        [[4, 4], [4, 6], [6, 6.5], [6.5, 4], [4, 4]]]})" "\n";
+
+    Model model;
+    model.open(input);
+    if (!model.inputDiagnostic().ok() || model.steps() == 0) {
+        std::fprintf(stderr, "FAIL: cannot flood the test polygon: %s\n", model.verdict().c_str());
+        return 1;
+    }
+    // A step with an earlier (not emphasised) flooded triangle and two distinct chain ends.
+    uint32_t step = 0;
+    for (uint32_t s = 1; s <= model.steps() && !step; ++s) {
+        model.seek(s);
+        const ReplayState& st = model.state();
+        const Event* e = model.currentEvent();
+        if (st.triangleCount > e->triangleCount && st.fingers.left != kNone &&
+            st.fingers.left != st.fingers.right && e->action != Action::Forbidden)
+            step = s;
+    }
+    if (!step) {
+        std::fprintf(stderr, "FAIL: no step with a flooded triangle and an open chain\n");
+        return 1;
+    }
+    model.seek(step);
+
+    const int W = 1000, H = 700;
+    std::string out = dir + "/screenshot-test.png";
+    std::remove(out.c_str());
+    std::string cmd = std::string("'") + FLOOD_VIEWER + "' '" + input + "' --step " +
+                      std::to_string(step) + " --screenshot '" + out + "' --size " +
+                      std::to_string(W) + "x" + std::to_string(H);
+    std::printf("%s\n", cmd.c_str());
+    std::fflush(stdout);  // before the child writes to the same stream
+    if (int rc = std::system(cmd.c_str()); rc != 0) {
+        std::fprintf(stderr, "FAIL: flood-viewer exited with %d\n", rc);
+        return 1;
+    }
+    Image img;
+    int channels = 0;
+    img.px = stbi_load(out.c_str(), &img.w, &img.h, &channels, 4);
+    if (!img.px || img.w != W || img.h != H) {
+        std::fprintf(stderr, "FAIL: %s is missing or not %dx%d\n", out.c_str(), W, H);
+        return 1;
+    }
+
+    // Screenshots are rendered at UI scale 1 (see main.cpp), so logical pixels are pixels.
+    Layout layout = computeLayout(W, H, 1);
+    model.camera.fit(model.polygon(), layout.canvas);
+    const Camera& cam = model.camera;
+    Rgba seen;
+    int failures = 0;
+
+    Vec2 bg{layout.canvas.x + 0.02 * layout.canvas.w, layout.canvas.y + layout.canvas.h / 2};
+    if (!near(img, bg, palette::kBackground, 0, &seen))
+        failures += fail("background", bg, palette::kBackground, seen);
+
+    // Water: sample inside the first flooded triangle away from its centroid label and edges.
+    const Event* e = model.currentEvent();
+    const auto& tris = model.trace().triangles;
+    const auto& v = model.polygon().vertices;
+    bool water = false;
+    Vec2 probe;
+    for (uint32_t t = 0; t < model.state().triangleCount && !water; ++t) {
+        if (t >= e->firstTriangle && t < e->firstTriangle + e->triangleCount) continue;
+        for (auto [wa, wb, wc] : {std::tuple{0.6, 0.2, 0.2}, {0.2, 0.6, 0.2}, {0.2, 0.2, 0.6}}) {
+            Point a = v[tris[t][0]], b = v[tris[t][1]], c = v[tris[t][2]];
+            probe = cam.toScreen({wa * a.x + wb * b.x + wc * c.x, wa * a.y + wb * b.y + wc * c.y});
+            if ((water = near(img, probe, palette::kWater, 1, &seen))) break;
+        }
+    }
+    if (!water) failures += fail("water in a flooded triangle", probe, palette::kWater, seen);
+
+    Vec2 left = cam.toScreen(v[model.state().fingers.left]);
+    if (!near(img, left, palette::kLeft, 1, &seen))
+        failures += fail("Left marker", left, palette::kLeft, seen);
+
+    stbi_image_free(img.px);
+    if (failures) return 1;
+    std::printf("ok: step %u, background, water and Left marker where expected\n", step);
+    return 0;
+}

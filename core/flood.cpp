@@ -30,6 +30,7 @@
 #include <unordered_map>
 
 #include "predicates.h"
+#include "sag_index.h"
 
 namespace flood {
 namespace {
@@ -133,7 +134,9 @@ private:
         for (uint32_t n : partVertices)
             if (isSag(n)) sags_.push_back(n);
         std::sort(sags_.begin(), sags_.end(), [&](uint32_t a, uint32_t b) { return lower(a, b); });
-        sagUsed_.assign(sags_.size(), 0);
+        std::vector<double> xOfRank(sags_.size());
+        for (size_t k = 0; k < sags_.size(); ++k) xOfRank[k] = P(sags_[k]).x;
+        sagIndex_.build(xOfRank);
         // The bottoms, lowest first: every one of them starts a gorge unless the water
         // reaches it first. They are the to-do list of last resort (see nextBottom()).
         bottoms_.clear();
@@ -330,19 +333,20 @@ private:
     // Left, Right, NextRight, NextLeft (§4, §5). Sags are sorted, so the scan starts at the
     // water level and stops at Next.
     uint32_t findSag(uint32_t nx, Event& e) {
-        auto it = std::upper_bound(sags_.begin(), sags_.end(), water_,
-                                   [&](uint32_t a, uint32_t b) { return lower(a, b); });
+        auto byHeight = [&](uint32_t a, uint32_t b) { return lower(a, b); };
+        int64_t lo = std::upper_bound(sags_.begin(), sags_.end(), water_, byHeight) - sags_.begin() - 1;
+        int64_t hi = std::lower_bound(sags_.begin(), sags_.end(), nx, byHeight) - sags_.begin();
+        if (hi <= lo + 1) return kNil;
         Point l = P(left_), r = P(right_), nl = P(prev(left_)), nr = P(next(right_));
-        for (; it != sags_.end() && lower(*it, nx); ++it) {
-            size_t k = size_t(it - sags_.begin());
-            if (sagUsed_[k]) continue;
+        double xmin = std::min(std::min(l.x, r.x), std::min(nl.x, nr.x));
+        double xmax = std::max(std::max(l.x, r.x), std::max(nl.x, nr.x));
+        int64_t k = sagIndex_.lowest(lo, hi, xmin, xmax, [&](uint32_t rank) {
             ++e.sagTests;
-            if (inside(P(*it), l, r, nr, nl)) {
-                sagUsed_[k] = 1;
-                return *it;
-            }
-        }
-        return kNil;
+            return inside(P(sags_[rank]), l, r, nr, nl);
+        });
+        if (k < 0) return kNil;
+        sagIndex_.markUsed(uint32_t(k));
+        return sags_[size_t(k)];
     }
 
     // ---- [SECTION] the five actions ----------------------------------------------------------
@@ -573,7 +577,7 @@ private:
     std::vector<Point> pts_;
     std::vector<Node> nodes_;
     std::vector<uint32_t> sags_;
-    std::vector<uint8_t> sagUsed_;
+    SagIndex sagIndex_;  // the sags by height rank, searchable by x
     std::vector<uint32_t> bottoms_;  // bottoms, lowest first
     size_t bottomCursor_ = 0;
     std::vector<GorgeRec> gorges_;

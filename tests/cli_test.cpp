@@ -80,7 +80,9 @@ TEST(Cli, TriangulateFormatsAndStdin) {
     int st = pclose(p);
     w.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
     EXPECT_EQ(w.code, 0) << w.out;
-    EXPECT_TRUE(has(w.out, "verify: ok: 8 triangles")) << w.out;
+    EXPECT_TRUE(has(w.out, "polygon: 8 triangles, exact triangulation")) << w.out;
+    EXPECT_TRUE(has(w.out, "complement: ")) << w.out;
+    EXPECT_TRUE(has(w.out, "verify: ok")) << w.out;
 }
 
 TEST(Cli, TranscriptTraceBenchAndUsage) {

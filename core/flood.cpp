@@ -27,7 +27,6 @@
 #include <cmath>
 #include <cstring>
 #include <sstream>
-#include <unordered_map>
 
 #include "predicates.h"
 #include "sag_index.h"
@@ -74,6 +73,8 @@ public:
     }
 
     FloodResult run() {
+        nodes_.reserve(poly_.vertices.size() * 3 / 2 + 16);  // bridges add two nodes per sag
+        result_.triangles.reserve(poly_.vertices.size() + 2 * poly_.rings.size());
         for (uint32_t part = 0; part < poly_.parts.size() && ok(); ++part) floodPart(part);
         result_.steps = step_;
         return std::move(result_);
@@ -90,6 +91,27 @@ private:
         if (pa.x != pb.x) return pa.x < pb.x;
         if (nodes_[a].v != nodes_[b].v) return nodes_[a].v < nodes_[b].v;
         return a < b;
+    }
+    // The same order as lower(), as a value: what the sorted sag list is searched with.
+    struct HeightKey {
+        double y, x;
+        uint32_t v, node;
+        bool operator<(const HeightKey& o) const {
+            if (y != o.y) return y < o.y;
+            if (x != o.x) return x < o.x;
+            if (v != o.v) return v < o.v;
+            return node < o.node;
+        }
+    };
+    HeightKey key(uint32_t n) const { return {P(n).y, P(n).x, nodes_[n].v, n}; }
+    // Number of sags strictly below node n, by binary search on the contiguous height keys,
+    // remembered per node: the water is usually the previous step's Next.
+    uint32_t sagsBelow(uint32_t n) {
+        if (n >= sagsBelow_.size()) sagsBelow_.resize(nodes_.size(), kNil);
+        uint32_t& r = sagsBelow_[n];
+        if (r == kNil)
+            r = uint32_t(std::lower_bound(sagKeys_.begin(), sagKeys_.end(), key(n)) - sagKeys_.begin());
+        return r;
     }
     int turn(uint32_t a, uint32_t b, uint32_t c) const { return orient(P(a), P(b), P(c)); }
     uint32_t prev(uint32_t n) const { return nodes_[n].prev; }
@@ -109,11 +131,8 @@ private:
             const Ring& ring = poly_.rings[r];
             // Orient loops so the interior is on the left: outer counter-clockwise, holes
             // clockwise, whatever the file said.
-            ExactSum area;
-            for (Index i = 0; i < ring.count; ++i)
-                area.addCross(pts_[ring.first + i], pts_[ring.first + (i + 1) % ring.count]);
             bool wantCcw = (r == pa.firstRing);
-            bool reverse = (area.sign() > 0) != wantCcw;
+            bool reverse = (ringTurn(ring) > 0) != wantCcw;
             uint32_t base = uint32_t(nodes_.size());
             for (Index i = 0; i < ring.count; ++i) {
                 Node nd;
@@ -135,8 +154,13 @@ private:
             if (isSag(n)) sags_.push_back(n);
         std::sort(sags_.begin(), sags_.end(), [&](uint32_t a, uint32_t b) { return lower(a, b); });
         std::vector<double> xOfRank(sags_.size());
-        for (size_t k = 0; k < sags_.size(); ++k) xOfRank[k] = P(sags_[k]).x;
+        sagKeys_.resize(sags_.size());
+        for (size_t k = 0; k < sags_.size(); ++k) {
+            xOfRank[k] = P(sags_[k]).x;
+            sagKeys_[k] = key(sags_[k]);
+        }
         sagIndex_.build(xOfRank);
+        sagsBelow_.assign(nodes_.size(), kNil);
         // The bottoms, lowest first: every one of them starts a gorge unless the water
         // reaches it first. They are the to-do list of last resort (see nextBottom()).
         bottoms_.clear();
@@ -180,6 +204,22 @@ private:
         }
     }
 
+    // Orientation of a ring: the turn at its lowest vertex, which is strictly convex on a
+    // simple ring (+1 counter-clockwise). Exact, and cheaper than summing the area.
+    int ringTurn(const Ring& ring) const {
+        Index low = 0;
+        for (Index i = 1; i < ring.count; ++i)
+            if (below(pts_[ring.first + i], pts_[ring.first + low])) low = i;
+        Point a = pts_[ring.first + (low + ring.count - 1) % ring.count];
+        Point c = pts_[ring.first + (low + 1) % ring.count];
+        int t = orient(a, pts_[ring.first + low], c);
+        if (t != 0) return t;
+        ExactSum area;  // degenerate corner: only on invalid rings; fall back to the area
+        for (Index i = 0; i < ring.count; ++i)
+            area.addCross(pts_[ring.first + i], pts_[ring.first + (i + 1) % ring.count]);
+        return area.sign();
+    }
+
     uint32_t firstAliveNode(uint32_t from) const {
         for (uint32_t n = from; n < nodes_.size(); ++n)
             if (nodes_[n].alive) return n;
@@ -189,33 +229,45 @@ private:
     // Rings touching at a point become one loop there: arriving at the point, the next edge
     // is the first one met rotating clockwise from the edge we came along (§1).
     void mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
-        struct Key {
-            double x, y;
-            bool operator==(const Key& o) const { return x == o.x && y == o.y; }
-        };
-        struct KeyHash {
-            size_t operator()(const Key& k) const {
-                uint64_t a, b;
-                double x = k.x + 0.0, y = k.y + 0.0;  // -0.0 and 0.0 are the same point
-                std::memcpy(&a, &x, 8);
-                std::memcpy(&b, &y, 8);
-                return size_t(a * 0x9E3779B97F4A7C15ull ^ (b + 0x632BE59BD9B4E019ull));
-            }
-        };
-        std::unordered_map<Key, std::vector<uint32_t>, KeyHash> at;
-        at.reserve(partVertices.size());
+        // Find coincident vertices with an open-addressing table of node ids keyed by the
+        // point (no allocation per vertex); most polygons have none.
+        size_t cap = 16;
+        while (cap < partVertices.size() * 2) cap <<= 1;
+        std::vector<uint32_t> table(cap, kNil);
+        std::vector<std::pair<uint32_t, uint32_t>> copies;  // (first node at the point, node)
         for (uint32_t n : partVertices) {
             Point p = P(n);
-            at[{p.x + 0.0, p.y + 0.0}].push_back(n);
+            double x = p.x + 0.0, y = p.y + 0.0;  // -0.0 and 0.0 are the same point
+            uint64_t a, b;
+            std::memcpy(&a, &x, 8);
+            std::memcpy(&b, &y, 8);
+            uint64_t h = a ^ (b * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull);
+            h = (h ^ (h >> 31)) * 0xBF58476D1CE4E5B9ull;  // mix the high bits down: integer
+            h = (h ^ (h >> 29)) * 0x94D049BB133111EBull;  // coordinates differ only there
+            h ^= h >> 32;
+            for (size_t i = h & (cap - 1);; i = (i + 1) & (cap - 1)) {
+                if (table[i] == kNil) {
+                    table[i] = n;
+                    break;
+                }
+                if (P(table[i]) == p) {
+                    copies.emplace_back(table[i], n);
+                    break;
+                }
+            }
         }
-        for (auto& kv : at) {
-            std::vector<uint32_t>& corner = kv.second;
-            if (corner.size() < 2) continue;
+        if (copies.empty()) return;
+        std::sort(copies.begin(), copies.end());
+        std::vector<uint32_t> corner;
+        for (size_t g = 0; g < copies.size();) {
+            corner.assign(1, copies[g].first);
+            size_t e = g;
+            for (; e < copies.size() && copies[e].first == copies[g].first; ++e) corner.push_back(copies[e].second);
+            g = e;
             std::sort(corner.begin(), corner.end());
             Point c = P(corner[0]);
             // Outgoing edges around the point, each with the node it leaves from.
-            std::vector<uint32_t> outs;  // node whose `next` edge leaves the point
-            for (uint32_t n : corner) outs.push_back(n);
+            const std::vector<uint32_t>& outs = corner;  // node whose `next` edge leaves the point
             std::vector<uint32_t> newNext(corner.size());
             for (size_t i = 0; i < corner.size(); ++i) {
                 Point back = P(prev(corner[i]));  // direction we came from
@@ -333,9 +385,10 @@ private:
     // Left, Right, NextRight, NextLeft (§4, §5). Sags are sorted, so the scan starts at the
     // water level and stops at Next.
     uint32_t findSag(uint32_t nx, Event& e) {
-        auto byHeight = [&](uint32_t a, uint32_t b) { return lower(a, b); };
-        int64_t lo = std::upper_bound(sags_.begin(), sags_.end(), water_, byHeight) - sags_.begin() - 1;
-        int64_t hi = std::lower_bound(sags_.begin(), sags_.end(), nx, byHeight) - sags_.begin();
+        // Ranks bracketing the water and Next: the number of sags below each.
+        int64_t lo = int64_t(sagsBelow(water_)) - 1;
+        if (lo + 1 < int64_t(sagKeys_.size()) && sags_[size_t(lo + 1)] == water_) ++lo;  // the water is itself a sag
+        int64_t hi = sagsBelow(nx);
         if (hi <= lo + 1) return kNil;
         Point l = P(left_), r = P(right_), nl = P(prev(left_)), nr = P(next(right_));
         double xmin = std::min(std::min(l.x, r.x), std::min(nl.x, nr.x));
@@ -578,6 +631,8 @@ private:
     std::vector<Node> nodes_;
     std::vector<uint32_t> sags_;
     SagIndex sagIndex_;  // the sags by height rank, searchable by x
+    std::vector<HeightKey> sagKeys_;  // height keys of sags_, for binary search
+    std::vector<uint32_t> sagsBelow_;  // per node: sags below it, kNil until asked
     std::vector<uint32_t> bottoms_;  // bottoms, lowest first
     size_t bottomCursor_ = 0;
     std::vector<GorgeRec> gorges_;

@@ -153,13 +153,13 @@ private:
         for (uint32_t n : partVertices)
             if (isSag(n)) sags_.push_back(n);
         std::sort(sags_.begin(), sags_.end(), [&](uint32_t a, uint32_t b) { return lower(a, b); });
-        std::vector<double> xOfRank(sags_.size());
+        std::vector<Point> pointOfRank(sags_.size());
         sagKeys_.resize(sags_.size());
         for (size_t k = 0; k < sags_.size(); ++k) {
-            xOfRank[k] = P(sags_[k]).x;
+            pointOfRank[k] = P(sags_[k]);
             sagKeys_[k] = key(sags_[k]);
         }
-        sagIndex_.build(xOfRank);
+        sagIndex_.build(pointOfRank);
         sagsBelow_.assign(nodes_.size(), kNil);
         // The bottoms, lowest first: every one of them starts a gorge unless the water
         // reaches it first. They are the to-do list of last resort (see nextBottom()).
@@ -391,9 +391,17 @@ private:
         int64_t hi = sagsBelow(nx);
         if (hi <= lo + 1) return kNil;
         Point l = P(left_), r = P(right_), nl = P(prev(left_)), nr = P(next(right_));
-        double xmin = std::min(std::min(l.x, r.x), std::min(nl.x, nr.x));
-        double xmax = std::max(std::max(l.x, r.x), std::max(nl.x, nr.x));
-        int64_t k = sagIndex_.lowest(lo, hi, xmin, xmax, [&](uint32_t rank) {
+        // Where such a sag can be: the quadrangle's box, the water's height band, and the
+        // interior side of both banks (left of NextLeft->Left and of Right->NextRight).
+        SagIndex::Region region;
+        region.xMin = std::min(std::min(l.x, r.x), std::min(nl.x, nr.x));
+        region.xMax = std::max(std::max(l.x, r.x), std::max(nl.x, nr.x));
+        region.yMin = P(water_).y;
+        region.yMax = P(nx).y;
+        region.lines[0][0] = nl, region.lines[0][1] = l;
+        region.lines[1][0] = r, region.lines[1][1] = nr;
+        region.lineCount = 2;
+        int64_t k = sagIndex_.lowest(lo, hi, region, [&](uint32_t rank) {
             ++e.sagTests;
             return inside(P(sags_[rank]), l, r, nr, nl);
         });

@@ -1,65 +1,82 @@
-// The sorted sag list (§4), indexed by x as well, so that a gorge looks only at the sags that
-// could lie under it. The paper scans every sag between the water and Next: O(S·G) over a run
-// (§7), quadratic on jagged outlines. Here the candidates are also limited to the x-range of
-// the quadrangle Left, Right, NextRight, NextLeft, with a merge-sort tree over x whose blocks
-// hold height ranks in order: O(log² S) per search plus the candidates tested.
+// The sorted sag list (§4), indexed in the plane as well, so that a gorge looks only at the
+// sags that could lie in it. The paper scans every sag between the water and Next: O(S·G)
+// over a run (§7), quadratic on jagged outlines. Here the sags also sit in a k-d tree whose
+// boxes are pruned by the gorge's bank lines and the water's height band, so a search visits
+// the sags near the gorge rather than every sag at its height. The exact `inside` test still
+// decides; the pruning only has to be conservative.
 #pragma once
-#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <vector>
+
+#include "polygon.h"
 
 namespace flood {
 
 class SagIndex {
 public:
-    // xOfRank[r]: the x coordinate of the sag of height rank r (ranks: sags sorted by height).
-    void build(const std::vector<double>& xOfRank);
+    // Where the sag must lie: a box, and strictly left of each directed line a->b given.
+    struct Region {
+        double xMin, xMax, yMin, yMax;
+        Point lines[2][2];
+        int lineCount = 0;
+    };
+
+    // pointOfRank[r]: the sag of height rank r (ranks: sags sorted by height).
+    void build(const std::vector<Point>& pointOfRank);
     size_t size() const { return used_.size(); }
     void markUsed(uint32_t rank) { used_[rank] = 1; }
 
-    // The lowest unused rank in (lo, hi) whose x lies in [xmin, xmax] and for which
-    // inside(rank) holds; inside is called on candidates in increasing rank. -1 if none.
+    // The lowest unused rank in (lo, hi) within `region` for which inside(rank) holds;
+    // -1 if none. `inside` is only called on candidates in the region.
     template <class Inside>
-    int64_t lowest(int64_t lo, int64_t hi, double xmin, double xmax, Inside&& inside);
+    int64_t lowest(int64_t lo, int64_t hi, const Region& region, Inside&& inside);
 
 private:
-    struct Cursor {
-        uint32_t pos, end;  // into levels_[level]
-        uint32_t level;
+    struct Node {
+        double xMin, xMax, yMin, yMax;
+        uint32_t rankMin, rankMax;
+        uint32_t begin, end;          // range of items_
+        uint32_t left = 0, right = 0;  // children (0: leaf)
     };
-    void blocks(uint32_t i, uint32_t j);  // fills cursors_ for positions [i, j) of byX_
-    std::vector<double> sortedX_;               // x of byX_ order
-    std::vector<std::vector<uint32_t>> levels_;  // levels_[l]: ranks sorted in blocks of 2^l
+    struct Item {
+        Point p;
+        uint32_t rank;
+    };
+    uint32_t buildNode(uint32_t begin, uint32_t end, int depth);
+    bool outside(const Node& n, const Region& r) const;
+    static bool mayContain(const Region& r, Point p);
+    std::vector<Node> nodes_;
+    std::vector<Item> items_;
     std::vector<uint8_t> used_;
-    std::vector<Cursor> cursors_;  // scratch, reused by every search
+    std::vector<uint32_t> stack_;  // scratch, reused by every search
 };
 
 template <class Inside>
-int64_t SagIndex::lowest(int64_t lo, int64_t hi, double xmin, double xmax, Inside&& inside) {
-    if (used_.empty() || hi <= lo + 1) return -1;
-    uint32_t i = uint32_t(std::lower_bound(sortedX_.begin(), sortedX_.end(), xmin) - sortedX_.begin());
-    uint32_t j = uint32_t(std::upper_bound(sortedX_.begin(), sortedX_.end(), xmax) - sortedX_.begin());
-    if (i >= j) return -1;
-    blocks(i, j);
-    for (Cursor& c : cursors_) {
-        const std::vector<uint32_t>& a = levels_[c.level];
-        if (lo >= 0)
-            c.pos = uint32_t(std::upper_bound(a.begin() + c.pos, a.begin() + c.end, uint32_t(lo)) - a.begin());
-    }
-    // Merge the blocks by rank; there are at most 2 log S of them, so a linear pick is fine.
-    for (;;) {
-        Cursor* best = nullptr;
-        uint32_t bestRank = 0;
-        for (Cursor& c : cursors_) {
-            if (c.pos >= c.end) continue;
-            uint32_t r = levels_[c.level][c.pos];
-            if (!best || r < bestRank) best = &c, bestRank = r;
+int64_t SagIndex::lowest(int64_t lo, int64_t hi, const Region& region, Inside&& inside) {
+    if (items_.empty() || hi <= lo + 1) return -1;
+    int64_t best = hi;  // candidates must beat this
+    stack_.assign(1, 0);
+    while (!stack_.empty()) {
+        const Node& n = nodes_[stack_.back()];
+        stack_.pop_back();
+        if (int64_t(n.rankMax) <= lo || int64_t(n.rankMin) >= best || outside(n, region)) continue;
+        if (n.left == 0) {
+            for (uint32_t i = n.begin; i < n.end; ++i) {
+                uint32_t r = items_[i].rank;
+                if (int64_t(r) <= lo || int64_t(r) >= best || used_[r]) continue;
+                if (!mayContain(region, items_[i].p)) continue;
+                if (inside(r)) best = r;
+            }
+            continue;
         }
-        if (!best || int64_t(bestRank) >= hi) return -1;
-        ++best->pos;
-        if (!used_[bestRank] && inside(bestRank)) return bestRank;
+        // Visit the child with the lower ranks first: it is likelier to hold the answer.
+        uint32_t a = n.left, b = n.right;
+        if (nodes_[b].rankMin < nodes_[a].rankMin) std::swap(a, b);
+        stack_.push_back(b);
+        stack_.push_back(a);
     }
+    return best < hi ? best : -1;
 }
 
 }  // namespace flood

@@ -28,6 +28,8 @@ Trace record(const Polygon& polygon, const Options& options) {
     t.polygon = polygon;
     Recorder rec;
     rec.events = &t.events;
+    // Runs take about 1.5 events per vertex: reserve once rather than regrow (and copy) the log.
+    t.events.reserve(polygon.vertices.size() + polygon.vertices.size() / 2 + 64);
     FloodResult r = triangulate(t.polygon, &rec, options);
     t.triangles = std::move(r.triangles);
     t.diagnostic = r.diagnostic;

@@ -1,4 +1,5 @@
-// The `flood` command-line tool: triangulate, trace, transcript, verify, bench.
+// The `flood` command-line tool: triangulate, trace, transcript, verify, bench, generate,
+// shrink.
 //
 // Command-line parsing uses CLI11: a Debian package (libcli11-dev), header-only, with
 // subcommands and generated --help, so no hand-written argument parsing.
@@ -16,9 +17,12 @@
 #include <sstream>
 
 #include "checker.h"
+#include "generate.h"
 #include "flood.h"
 #include "io.h"
+#include "narrate.h"
 #include "replay.h"
+#include "shrink.h"
 #include "trace_io.h"
 #include "transcript.h"
 #include "verify.h"
@@ -30,14 +34,16 @@ using namespace flood;
 int code(Status s) { return int(s); }
 
 // Reads and validates; on failure prints the diagnostic and returns its status.
-Status prepare(const std::string& path, Polygon& polygon) {
+// With `check` false (--no-validate) validation is skipped, so the flood machine itself
+// diagnoses invalid input (docs/ERRORS.md, forbidden transitions).
+Status prepare(const std::string& path, Polygon& polygon, bool check = true) {
     ReadResult rr = readPolygonFile(path);
     for (const std::string& w : rr.warnings) std::cerr << "warning: " << w << "\n";
     if (!rr.diagnostic.ok()) {
         std::cerr << "error: " << rr.diagnostic.message << "\n";
         return rr.diagnostic.status;
     }
-    Diagnostic d = validate(rr.polygon, path == "-" ? "<stdin>" : path);
+    Diagnostic d = check ? validate(rr.polygon, path == "-" ? "<stdin>" : path) : Diagnostic{};
     if (!d.ok()) {
         std::cerr << "error: invalid polygon: " << d.message << "\n";
         return d.status;
@@ -95,9 +101,9 @@ void addUp(CLI::App* cmd, std::string& up) {
 }
 
 int cmdTriangulate(const std::string& in, const std::string& out, std::string format,
-                   const std::string& up) {
+                   const std::string& up, bool check) {
     Polygon polygon;
-    Status s = prepare(in, polygon);
+    Status s = prepare(in, polygon, check);
     if (s != Status::Ok) return code(s);
     FloodResult r = triangulate(polygon, nullptr, makeOptions(up));
     s = judge(polygon, r.triangles, r.diagnostic);
@@ -116,9 +122,9 @@ int cmdTriangulate(const std::string& in, const std::string& out, std::string fo
     return code(writeOut(out, ss.str()));
 }
 
-int cmdTrace(const std::string& in, const std::string& out, const std::string& up) {
+int cmdTrace(const std::string& in, const std::string& out, const std::string& up, bool check) {
     Polygon polygon;
-    Status s = prepare(in, polygon);
+    Status s = prepare(in, polygon, check);
     if (s != Status::Ok) return code(s);
     Trace t = record(polygon, makeOptions(up));
     s = judge(polygon, t.triangles, t.diagnostic);
@@ -131,9 +137,9 @@ int cmdTrace(const std::string& in, const std::string& out, const std::string& u
     return code(s != Status::Ok ? s : w);
 }
 
-int cmdTranscript(const std::string& in, bool narrate, const std::string& up) {
+int cmdTranscript(const std::string& in, bool narrate, const std::string& up, bool check) {
     Polygon polygon;
-    Status s = prepare(in, polygon);
+    Status s = prepare(in, polygon, check);
     if (s != Status::Ok) return code(s);
     Trace t = record(polygon, makeOptions(up));
     Status j = judge(polygon, t.triangles, t.diagnostic);
@@ -141,17 +147,10 @@ int cmdTranscript(const std::string& in, bool narrate, const std::string& up) {
     if (!narrate) {
         std::cout << transcript(t.events) << "\n";
     } else {
-        auto f = [](Index i) { return i == kNone ? std::string("-") : std::to_string(i); };
-        for (const Event& e : t.events) {
-            std::cout << "step " << e.step << ": " << actionName(e.action) << " (part " << e.part
-                      << ", " << (e.side == Side::Left ? "Left" : "Right") << ")  fingers L "
-                      << f(e.after.left) << " R " << f(e.after.right) << " NL "
-                      << f(e.after.nextLeft) << " NR " << f(e.after.nextRight);
-            if (e.triangleCount)
-                std::cout << "  triangles " << triangleRange(e.firstTriangle, e.triangleCount);
-            if (e.action == Action::Forbidden) std::cout << "  " << forbiddenText(e.reason);
-            std::cout << "  -- " << actionMeaning(e.action) << "\n";
-        }
+        // One numbered sentence per event in the flood metaphor (core/narrate.h).
+        for (const Event& e : t.events)
+            std::cout << "step " << e.step << ": " << actionName(e.action) << ": "
+                      << flood::narrate(polygon, e) << "\n";
     }
     return code(j);
 }
@@ -187,6 +186,58 @@ double medianNs(int repeat, F&& run) {
     return t[t.size() / 2];
 }
 
+// Writes a generated polygon: ring array (one part) or GeoJSON MultiPolygon, streamed so a
+// 10^7-vertex file needs no second copy in memory.
+int cmdGenerate(const std::string& family, size_t size, uint64_t seed, const std::string& out) {
+    auto names = familyNames();
+    if (std::find(names.begin(), names.end(), family) == names.end()) {
+        std::cerr << "error: unknown family \"" << family << "\"; families:";
+        for (const std::string& n : names) std::cerr << " " << n;
+        std::cerr << "\n";
+        return code(Status::Usage);
+    }
+    Polygon p = generate(family, seed, size);
+    if (out == "-") {
+        writePolygonJson(std::cout, p);
+        return code(std::cout.flush() ? Status::Ok : Status::Malformed);
+    }
+    std::ofstream f(out, std::ios::binary);
+    writePolygonJson(f, p);
+    f.close();
+    if (!f) {
+        std::cerr << "error: " << out << ": cannot write output file\n";
+        return code(Status::Malformed);
+    }
+    return code(Status::Ok);
+}
+
+// Shrinks a failing polygon (validation skipped; see core/shrink.h) and writes the result.
+int cmdShrink(const std::string& in, const std::string& out, const std::string& up,
+              unsigned timeout) {
+    Polygon polygon;
+    Status s = prepare(in, polygon, false);
+    if (s != Status::Ok) return code(s);
+    ShrinkOptions o;
+    o.flood = makeOptions(up);
+    o.timeoutSeconds = timeout;
+    ShrinkResult r = shrink(polygon, o);
+    if (r.failure.kind == Failure::Kind::None) {
+        std::cerr << "error: nothing to shrink: " << in
+                  << " triangulates (validation skipped) and the exact checker accepts it\n";
+        return code(Status::Usage);
+    }
+    std::ostringstream ss;
+    writePolygonJson(ss, r.polygon);
+    std::string kind = failureKindName(r.failure.kind);
+    if (r.failure.kind == Failure::Kind::Forbidden) kind += std::string(" ") + forbiddenName(r.failure.reason);
+    std::cerr << "shrink: " << kind << (r.inputValid ? " (input valid, kept valid)" : "")
+              << ": " << polygon.vertices.size() << " vertices in " << polygon.rings.size()
+              << " rings -> " << r.polygon.vertices.size() << " vertices in "
+              << r.polygon.rings.size() << " rings (" << r.tries << " runs)\n";
+    if (!r.failure.message.empty()) std::cerr << "shrink: " << r.failure.message << "\n";
+    return code(writeOut(out, ss.str()));
+}
+
 struct Recording : Listener {
     std::vector<Event> events;
     void onEvent(const Event& e) override { events.push_back(e); }
@@ -202,16 +253,27 @@ int cmdBench(const std::string& in, int repeat, const std::string& up) {
     if (s != Status::Ok) return code(s);
     size_t sink = 0;
     double plain = medianNs(repeat, [&] { sink += triangulate(polygon, nullptr, o).triangles.size(); });
-    Recording rec;
+    // Full trace recording into a fresh log each run (what `flood trace` and the viewer pay),
+    // then into one log whose capacity is kept (clear()): the difference is first-touch memory.
+    size_t events = 0;
     double recorded = medianNs(repeat, [&] {
+        Recording fresh;
+        sink += triangulate(polygon, &fresh, o).triangles.size();
+        events = fresh.events.size();
+    });
+    Recording rec;
+    double reused = medianNs(repeat, [&] {
         rec.events.clear();
         sink += triangulate(polygon, &rec, o).triangles.size();
     });
     double n = double(std::max<size_t>(1, polygon.vertices.size()));
-    std::printf("vertices %zu, triangles %zu, events %zu, repeat %d\n", polygon.vertices.size(),
-                first.triangles.size(), rec.events.size(), repeat);
-    std::printf("no listener:        %12.0f ns  %8.1f ns/vertex\n", plain, plain / n);
-    std::printf("recording listener: %12.0f ns  %8.1f ns/vertex\n", recorded, recorded / n);
+    std::printf("vertices %zu, triangles %zu, events %zu, repeat %d (median time, reading excluded)\n",
+                polygon.vertices.size(), first.triangles.size(), events, repeat);
+    std::printf("no listener:                    %12.0f ns  %8.1f ns/vertex\n", plain, plain / n);
+    std::printf("recording listener, fresh log:  %12.0f ns  %8.1f ns/vertex  (x%.2f)\n", recorded,
+                recorded / n, recorded / plain);
+    std::printf("recording listener, reused log: %12.0f ns  %8.1f ns/vertex  (x%.2f)\n", reused,
+                reused / n, reused / plain);
     return sink == 0 && !first.triangles.empty() ? code(Status::Internal) : 0;
 }
 
@@ -221,7 +283,16 @@ int main(int argc, char** argv) {
     CLI::App app{"flood: triangulate polygons with holes by flooding (Ronfard & Rossignac 1994)"};
     app.require_subcommand(1);
     std::string in, out = "-", format, up = "+y";
-    bool narrate = false;
+    bool narrate = false, noValidate = false;
+    std::string family;
+    size_t size = 0;
+    uint64_t seed = 1;
+    unsigned timeout = 10;
+    auto addNoValidate = [&](CLI::App* cmd) {
+        cmd->add_flag("--no-validate", noValidate,
+                      "Skip validation: feed the polygon to the flood machine as is, so invalid "
+                      "input is diagnosed by the machine's forbidden transitions (docs/ERRORS.md)");
+    };
     int repeat = 5;
 
     auto* tri = app.add_subcommand("triangulate", "Triangulate a polygon and write the result");
@@ -230,16 +301,19 @@ int main(int argc, char** argv) {
     tri->add_option("--format", format, "json, svg or obj (default: from the output extension, else json)")
         ->check(CLI::IsMember({"json", "svg", "obj"}));
     addUp(tri, up);
+    addNoValidate(tri);
 
     auto* trace = app.add_subcommand("trace", "Flood and write the event trace (JSON Lines)");
     trace->add_option("IN", in, "Input polygon (- for stdin)")->required();
     trace->add_option("-o,--output", out, "Output trace file (- for stdout, the default)");
     addUp(trace, up);
+    addNoValidate(trace);
 
     auto* tr = app.add_subcommand("transcript", "Print the paper-style transcript (Fig. 7)");
     tr->add_option("IN", in, "Input polygon (- for stdin)")->required();
-    tr->add_flag("--narrate", narrate, "One line per event: step, action, fingers, triangles");
+    tr->add_flag("--narrate", narrate, "One numbered sentence per event: what happened and why");
     addUp(tr, up);
+    addNoValidate(tr);
 
     auto* ver = app.add_subcommand("verify", "Triangulate and check the result exactly");
     ver->add_option("IN", in, "Input polygon (- for stdin)")->required();
@@ -250,6 +324,19 @@ int main(int argc, char** argv) {
     bench->add_option("--repeat", repeat, "Number of timed runs (default 5)")
         ->check(CLI::Range(1, 1000000));
     addUp(bench, up);
+
+    auto* gen = app.add_subcommand("generate", "Write a generated valid polygon (core/generate.h)");
+    gen->add_option("FAMILY", family, "Polygon family (see the error message for the list)")->required();
+    gen->add_option("SIZE", size, "Approximate vertex count")->required()->check(CLI::Range(size_t(3), size_t(1) << 31));
+    gen->add_option("-o,--output", out, "Output file (- for stdout, the default)");
+    gen->add_option("--seed", seed, "Random seed (default 1)");
+
+    auto* shr = app.add_subcommand("shrink", "Shrink a failing polygon to a small one that fails the same way");
+    shr->add_option("IN", in, "Input polygon (- for stdin)")->required();
+    shr->add_option("-o,--output", out, "Output file for the minimal polygon (- for stdout, the default)");
+    shr->add_option("--timeout", timeout, "Seconds before a run counts as a hang (default 10)")
+        ->check(CLI::Range(1u, 3600u));
+    addUp(shr, up);
 
     try {
         app.parse(argc, argv);
@@ -262,9 +349,11 @@ int main(int argc, char** argv) {
         return code(Status::Usage);
     }
     try {
-        if (tri->parsed()) return cmdTriangulate(in, out, format, up);
-        if (trace->parsed()) return cmdTrace(in, out, up);
-        if (tr->parsed()) return cmdTranscript(in, narrate, up);
+        if (tri->parsed()) return cmdTriangulate(in, out, format, up, !noValidate);
+        if (trace->parsed()) return cmdTrace(in, out, up, !noValidate);
+        if (tr->parsed()) return cmdTranscript(in, narrate, up, !noValidate);
+        if (gen->parsed()) return cmdGenerate(family, size, seed, out);
+        if (shr->parsed()) return cmdShrink(in, out, up, timeout);
         if (ver->parsed()) return cmdVerify(in, up);
         if (bench->parsed()) return cmdBench(in, repeat, up);
     } catch (const std::exception& e) {

@@ -189,6 +189,21 @@ ReadResult parseJson(std::string_view text, const std::string& name) {
         rr.diagnostic = {Status::Malformed,
                          where(name, text, off) + ": JSON syntax error: " + jsonReason(e.what())};
         return rr;
+    } catch (const json::out_of_range& e) {
+        // A number literal beyond the double range (e.g. 1e999): nlohmann gives no position,
+        // only the literal in quotes; find it in the text (found by fuzz_read).
+        std::string w = e.what();
+        size_t q1 = w.find('\''), q2 = q1 == std::string::npos ? q1 : w.find('\'', q1 + 1);
+        std::string literal = q2 == std::string::npos ? "" : w.substr(q1 + 1, q2 - q1 - 1);
+        size_t at = literal.empty() ? std::string_view::npos : text.find(literal);
+        rr.diagnostic = {Status::Malformed,
+                         (at == std::string_view::npos ? name : where(name, text, at)) +
+                             ": number out of range: " + (literal.empty() ? w : literal) +
+                             " does not fit a double"};
+        return rr;
+    } catch (const json::exception& e) {  // any other nlohmann failure: never escape
+        rr.diagnostic = {Status::Malformed, name + ": JSON error: " + jsonReason(e.what())};
+        return rr;
     }
     try {
         int polygonCount = 0;

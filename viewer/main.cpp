@@ -3,6 +3,8 @@
 // Without a display it prints a summary of the run instead and says how to get pictures.
 #include <imgui.h>
 
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -25,6 +27,7 @@ struct Args {
     long step = -1;  // -1: where the model lands by itself
     std::string screenshot;
     int width = 1280, height = 800;
+    bool bench = false;  // measure open, seek and frame times, print them, exit
 };
 
 const char* const kUsage =
@@ -33,6 +36,7 @@ const char* const kUsage =
     "  --step N          show the state after N events\n"
     "  --screenshot OUT  render once in a hidden window, write OUT as PNG and exit\n"
     "  --size WxH        window size in pixels (default 1280x800)\n"
+    "  --bench           time opening, seeking and drawing (hidden window), print, exit\n"
     "keys in the viewer: F1 or ?\n";
 
 // Returns 0 to go on, or an exit code + 1 (so 1 means "exit 0", e.g. after --help).
@@ -56,6 +60,8 @@ int parseArgs(int argc, char** argv, Args& a) {
                 if (v) std::fprintf(stderr, "flood-viewer: --step wants a number >= 0, got '%s'\n", v);
                 return 2 + 1;
             }
+        } else if (s == "--bench") {
+            a.bench = true;
         } else if (s == "--screenshot") {
             const char* v = value("--screenshot");
             if (!v) return 2 + 1;
@@ -110,6 +116,49 @@ int printSummary(const std::string& why, Model& model, const Args& args) {
     return 0;
 }
 
+double now() {  // seconds; works before the window system is up
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+// --bench: what a user waits for on a big polygon, in milliseconds.
+struct BenchStats {
+    double openMs = 0;
+    std::vector<double> seeks, frames;  // seconds
+    uint64_t rng = 0x9E3779B97F4A7C15ull;
+    uint32_t steps = 0;
+    uint32_t nextStep() {
+        rng = rng * 6364136223846793005ull + 1442695040888963407ull;
+        return steps ? uint32_t((rng >> 33) % (steps + 1)) : 0;
+    }
+    static double pct(std::vector<double> v, double q) {
+        if (v.empty()) return 0;
+        std::sort(v.begin(), v.end());
+        return v[std::min(v.size() - 1, size_t(q * double(v.size())))] * 1e3;
+    }
+    void print(const Model& model) const {
+        std::printf("bench: %s: %zu vertices, %u events, %zu triangles\n", model.path().c_str(),
+                    model.polygon().vertices.size(), steps, model.trace().triangles.size());
+        std::printf("bench: open (read, validate, flood with trace, replay keyframes): %.0f ms\n", openMs);
+        std::printf("bench: seek to a random step: median %.3f ms, 99%% %.3f ms, max %.3f ms (%zu seeks)\n",
+                    pct(seeks, 0.5), pct(seeks, 0.99), pct(seeks, 1.0), seeks.size());
+        std::printf("bench: frame CPU time at full zoom-out, new step every frame: median %.2f ms, max %.2f ms (%zu frames)\n",
+                    pct(frames, 0.5), pct(frames, 1.0), frames.size());
+    }
+};
+
+BenchStats benchOpenAndSeek(Model& model, double openSeconds) {
+    BenchStats b;
+    b.openMs = openSeconds * 1e3;
+    b.steps = model.steps();
+    for (int i = 0; i < 1000; ++i) {
+        uint32_t step = b.nextStep();
+        double t0 = now();
+        model.seek(step);
+        b.seeks.push_back(now() - t0);
+    }
+    return b;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -127,13 +176,17 @@ int main(int argc, char** argv) {
         else if (home && *home) recentFile = std::string(home) + "/.config/flood-viewer/recent.txt";
         if (!recentFile.empty()) model.loadRecent(recentFile);
     }
+    double openStart = now();
     if (!args.file.empty()) model.open(args.file);
+    double openSeconds = now() - openStart;
     if (args.step >= 0) model.seek(uint32_t(std::min<long>(args.step, model.steps())));
+    BenchStats bench;
+    if (args.bench) bench = benchOpenAndSeek(model, openSeconds);
 
     std::string error;
     if (!platform::initialize(&error)) return printSummary(error, model, args);
 
-    const bool shot = !args.screenshot.empty();
+    const bool shot = !args.screenshot.empty() || args.bench;
     platform::WindowOptions wo;
     wo.width = args.width, wo.height = args.height, wo.hidden = shot;
     wo.title = "flood-viewer — " + (model.path().empty() ? std::string("no polygon") : model.path());
@@ -180,6 +233,8 @@ int main(int argc, char** argv) {
         Vec2 size = platform::windowSize();
         ui.layout = computeLayout(size.x, size.y, scale);
 
+        double frameStart = now();
+        if (args.bench && frame > 0) model.seek(bench.nextStep());  // a new scene every frame
         if (!shot) handleShortcuts(ui);
         drawCanvas(ui);
         drawTimeline(ui);
@@ -197,8 +252,16 @@ int main(int argc, char** argv) {
         renderer.render(size, fbW, fbH, ui.layout.canvas, palette::kBackground);
         imguiGlRender();
 
+        if (args.bench) {
+            // CPU time to build and submit the frame (the swap waits for the GPU).
+            if (frame >= 3) bench.frames.push_back(now() - frameStart);
+            if (frame == 3 + 60) {
+                bench.print(model);
+                platform::requestClose();
+            }
+        }
         // ImGui places windows on the 2nd frame; the 3rd is the first settled one.
-        std::string png = shot && frame == 2 ? args.screenshot : ui.pngRequest;
+        std::string png = !args.bench && shot && frame == 2 ? args.screenshot : ui.pngRequest;
         if (!png.empty()) {
             std::vector<uint8_t> pixels;
             bool ok = renderer.readPixels(fbW, fbH, pixels) && writePng(png, fbW, fbH, pixels, &error);

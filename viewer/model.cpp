@@ -11,6 +11,8 @@
 #include <limits>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "io.h"
 #include "predicates.h"
 #include "transcript.h"
@@ -435,10 +437,29 @@ std::vector<std::string> listPolygonFiles(const std::string& dir) {
     std::error_code ec;
     for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
         std::string ext = entry.path().extension().string();
-        if (entry.is_regular_file(ec) && (ext == ".json" || ext == ".wkt"))
+        // gallery.json is the index of the teaching gallery, not a polygon (see Gallery).
+        if (entry.is_regular_file(ec) && (ext == ".json" || ext == ".wkt") &&
+            entry.path().filename() != "gallery.json")
             out.push_back(entry.path().string());
     }
     std::sort(out.begin(), out.end());
+    return out;
+}
+
+std::vector<GalleryEntry> readGallery(const std::string& dir) {
+    std::vector<GalleryEntry> out;
+    std::ifstream in(dir + "/gallery.json");
+    if (!in) return out;
+    nlohmann::json j = nlohmann::json::parse(in, nullptr, /*allow_exceptions=*/false);
+    if (!j.is_array()) return out;
+    for (const auto& e : j) {
+        if (!e.is_object() || !e.contains("file") || !e["file"].is_string()) continue;
+        GalleryEntry g;
+        g.file = dir + "/" + e["file"].get<std::string>();
+        g.title = e.value("title", e["file"].get<std::string>());
+        g.description = e.value("description", "");
+        out.push_back(std::move(g));
+    }
     return out;
 }
 

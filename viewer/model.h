@@ -165,7 +165,15 @@ std::string polygonsDir();
 // polygons/FLOOD_VIEWER_DEFAULT_POLYGON (CMake cache, default paper-figure-7.json) if it
 // exists, else the first polygon file, else "". FLOOD_POLYGONS_DIR overrides the directory.
 std::string defaultPolygonPath();
-// *.json and *.wkt files of a directory, sorted by name.
+// *.json and *.wkt files of a directory, sorted by name (gallery.json is not a polygon).
 std::vector<std::string> listPolygonFiles(const std::string& dir);
+
+// The teaching gallery, dir/gallery.json: a list of {"file", "title", "description"} in
+// teaching order, files relative to dir. Missing or malformed: empty (the Open panel then
+// lists the files only).
+struct GalleryEntry {
+    std::string file, title, description;  // file: full path
+};
+std::vector<GalleryEntry> readGallery(const std::string& dir);
 
 }  // namespace flood::view

@@ -1,7 +1,8 @@
 // The decision path of the current event: which tests of the Fig. 9 tree ran, in order, and
-// how each came out, ending in the action taken.
+// how each came out, ending in the action taken; above them, the event narrated in a sentence.
 #include <imgui.h>
 
+#include "narrate.h"
 #include "panels.h"
 
 namespace flood::view {
@@ -19,6 +20,9 @@ void drawDecision(Ui& ui) {
         return;
     }
     ImGui::PushTextWrapPos(0);
+    // What happened and why, in one sentence of the flood metaphor (core/narrate.h).
+    ImGui::TextUnformatted(narrate(m.polygon(), *e).c_str());
+    ImGui::Separator();
     for (int i = 0; i < int(Test::Count); ++i) {
         Test t = Test(i);
         if (!e->didTest(t)) {

@@ -1,4 +1,5 @@
-// Opening polygons: the files of polygons/ (the same ones the tests and benchmarks use),
+// Opening polygons: the teaching gallery (polygons/gallery.json) with its descriptions, then
+// the files of polygons/ (the same ones the tests and benchmarks use),
 // recently opened files, and any path typed in. Files can also be dropped on the window.
 #include <imgui.h>
 
@@ -30,6 +31,23 @@ void drawOpen(Ui& ui) {
             if (ImGui::Selectable(f.c_str(), f == m.path())) chosen = f;
 
     std::string dir = polygonsDir();
+    // The teaching gallery first (polygons/gallery.json, docs/TUTORIAL.md), in teaching order,
+    // each with its one-line description. Read once: it changes with the sources only.
+    static const std::vector<GalleryEntry> gallery = readGallery(dir);
+    if (!gallery.empty() && ImGui::CollapsingHeader("Gallery", ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::PushTextWrapPos(0);
+        for (size_t i = 0; i < gallery.size(); ++i) {
+            const GalleryEntry& g = gallery[i];
+            std::string label = std::to_string(i + 1) + ". " + g.title + "##gallery" + std::to_string(i);
+            if (ImGui::Selectable(label.c_str(), g.file == m.path())) chosen = g.file;
+            if (!g.description.empty()) {
+                ImGui::Indent();
+                ImGui::TextDisabled("%s", g.description.c_str());
+                ImGui::Unindent();
+            }
+        }
+        ImGui::PopTextWrapPos();
+    }
     if (ImGui::CollapsingHeader(("Polygons in " + dir).c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
         // Listing a directory every frame is cheap next to a frame, and stays current while the
         // polygons change on disk.

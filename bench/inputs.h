@@ -1,0 +1,40 @@
+// Benchmark inputs: earcut's fixtures and seeded generated families, stored as small binary
+// files so the C++ driver and the Python earcut driver read exactly the same vertices.
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "polygon.h"
+
+namespace bench {
+
+// One row of the manifest written by `flood-bench dump`.
+struct InputInfo {
+    std::string name;      // "fixture/water-huge", "circle-smooth/1000000"
+    std::string family;    // "fixture" or the generated family
+    size_t size = 0;       // requested size (fixtures: vertex count)
+    size_t vertices = 0;
+    size_t holes = 0;
+    bool valid = true;     // Flood's validate() verdict
+    std::string verdict;   // validate()'s message when invalid
+    std::string path;      // the .poly file
+};
+
+// The generated families of the benchmark and the sizes they are run at.
+std::vector<std::string> benchFamilies();
+std::vector<size_t> benchSizes();
+
+// Generates a family: the core generator's families, plus "circle-sqrt-holes" (a circle with
+// K = sqrt(N)/2 circular holes, the definition), built here.
+flood::Polygon benchGenerate(const std::string& family, uint64_t seed, size_t size);
+
+// Binary .poly: "FLPOLY1\n", u64 ring count, per ring (u64 vertex count, u64 outer flag),
+// then x, y as float64 pairs for every vertex in order. Little-endian, as the machine.
+void writePoly(const std::string& path, const flood::Polygon& p);
+flood::Polygon readPoly(const std::string& path);
+
+void writeManifest(const std::string& path, const std::vector<InputInfo>& rows);
+std::vector<InputInfo> readManifest(const std::string& path);
+
+}  // namespace bench

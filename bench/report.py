@@ -1,0 +1,458 @@
+#!/usr/bin/python3
+"""Writes docs/BENCHMARKS.md and docs/bench.svg from the results of scripts/bench.sh.
+
+Usage: report.py DATA_DIR BENCHMARKS.md PLOT.svg [README.md]
+
+Standard library only. Everything in the output is computed from DATA_DIR (results.tsv,
+memory.tsv, manifest.tsv, earcut-overhead.txt, machine.txt); nothing is typed in by hand. When
+README.md holds the markers <!-- bench:begin --> and <!-- bench:end -->, the summary between
+them is replaced too.
+"""
+import csv
+import math
+import os
+import sys
+from collections import defaultdict
+
+TRIANGULATORS = ["flood", "flood-rec", "earcut", "glu", "cgal", "geos"]
+PEERS = ["earcut", "glu", "cgal", "geos"]
+LABEL = {"flood": "Flood", "flood-rec": "Flood + trace", "earcut": "earcut", "glu": "GLU",
+         "cgal": "CGAL CDT", "geos": "GEOS CDT"}
+COLOR = {"flood": "#d62728", "flood-rec": "#ff9896", "earcut": "#1f77b4", "glu": "#2ca02c",
+         "cgal": "#9467bd", "geos": "#8c564b"}
+TIMED = {"valid", "invalid", "count-differs", "adds-vertices", "refused"}
+MARK = {"valid": "", "invalid": " ✗", "count-differs": " #", "adds-vertices": " +",
+        "refused": " R", "error": "E", "timeout": "T", "crash": "C", "skipped": "S", "missing": "–"}
+
+
+def read_tsv(path):
+    if not os.path.exists(path):
+        return []
+    with open(path, newline="") as f:
+        return list(csv.DictReader(f, delimiter="\t", quoting=csv.QUOTE_NONE))
+
+
+def fmt(x):
+    if x is None:
+        return "–"
+    if x >= 100:
+        return "{:,.0f}".format(x)
+    if x >= 10:
+        return "%.1f" % x
+    return "%.2f" % x
+
+
+def fit(points):
+    """Least-squares slope and constant of log T = log c + A log N."""
+    if len(points) < 2:
+        return None, None
+    xs = [math.log(n) for n, _ in points]
+    ys = [math.log(t) for _, t in points]
+    mx, my = sum(xs) / len(xs), sum(ys) / len(ys)
+    sxx = sum((x - mx) ** 2 for x in xs)
+    a = sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx
+    return a, math.exp(my - a * mx)
+
+
+class Data:
+    def __init__(self, d):
+        self.rows = read_tsv(os.path.join(d, "results.tsv"))
+        self.memory = read_tsv(os.path.join(d, "memory.tsv"))
+        self.inputs = []  # in manifest order
+        self.info = {}
+        for r in read_tsv(os.path.join(d, "manifest.tsv")):
+            self.inputs.append(r["name"])
+            self.info[r["name"]] = r
+        self.cell = {}
+        for r in self.rows:
+            self.cell[(r["name"], r["triangulator"])] = r
+        p = os.path.join(d, "earcut-overhead.txt")
+        self.overhead = float(open(p).read()) if os.path.exists(p) else None
+        p = os.path.join(d, "machine.txt")
+        self.machine = open(p).read().strip().splitlines() if os.path.exists(p) else []
+        self.families = []
+        for n in self.inputs:
+            fam = self.info[n]["family"]
+            if fam != "fixture" and fam not in self.families:
+                self.families.append(fam)
+
+    def get(self, name, who):
+        return self.cell.get((name, who))
+
+    def nsv(self, name, who):
+        """ns per vertex, or None when not timed."""
+        r = self.get(name, who)
+        if not r or r["status"] not in TIMED:
+            return None
+        return float(r["ns"]) / max(1, int(r["vertices"]))
+
+    def cell_text(self, name, who):
+        r = self.get(name, who)
+        if not r:
+            return "–"
+        v = self.nsv(name, who)
+        if v is None:
+            return MARK.get(r["status"], r["status"])
+        return fmt(v) + MARK.get(r["status"], " ?")
+
+    def by_family(self, fam):
+        return [n for n in self.inputs if self.info[n]["family"] == fam]
+
+    def exponent(self, fam, who):
+        pts, clean = [], True
+        for n in self.by_family(fam):
+            r = self.get(n, who)
+            v = self.nsv(n, who)
+            if v is not None:
+                pts.append((int(r["vertices"]), float(r["ns"])))
+                clean = clean and r["status"] == "valid"
+        a, _ = fit(pts)
+        return a, len(pts), clean
+
+
+def status_legend():
+    return ("Cells are ns per vertex (median time / input vertices). Marks: ✗ output fails the exact "
+            "checker, # triangle count differs from n + 2h − 2 (e.g. dropped collinear or duplicate "
+            "vertices), + output has points that are not input vertices, R Flood refused the input "
+            "(forbidden transition), T timeout, S skipped (timed out at a smaller size, or its time "
+            "predicted from the two smaller sizes is over the limit), C crash, E the peer reported an "
+            "error. Unmarked: valid by the exact checker.")
+
+
+def targets(D):
+    out = []
+    # 1. Flood <= earcut on the fixtures of >= 1000 vertices.
+    big = [n for n in D.inputs if D.info[n]["family"] == "fixture" and int(D.info[n]["vertices"]) >= 1000]
+    lines, wins, total = [], 0, 0
+    for n in big:
+        f, e = D.nsv(n, "flood"), D.nsv(n, "earcut")
+        valid = D.info[n]["valid"] == "1"
+        fr = D.get(n, "flood")
+        if not valid:
+            lines.append("%s (invalid input: Flood %s)" % (n.split("/")[1], fr["status"] if fr else "–"))
+            continue
+        if f is None or e is None:
+            lines.append("%s: not timed" % n.split("/")[1])
+            continue
+        total += 1
+        wins += f <= e
+        lines.append("%s %s vs %s ns/v (×%.2f)" % (n.split("/")[1], fmt(f), fmt(e), f / e))
+    out.append(("Flood ≤ earcut on the valid fixtures of ≥ 1,000 vertices",
+                "%d of %d: " % (wins, total) + "; ".join(lines), total > 0 and wins == total))
+    # 2. Faster than every peer at the largest size of every family.
+    lines, ok = [], True
+    for fam in D.families:
+        n = D.by_family(fam)[-1]
+        f = D.nsv(n, "flood")
+        peers = [(D.nsv(n, p), p) for p in PEERS if D.nsv(n, p) is not None]
+        if f is None:
+            ok = False
+            r = D.get(n, "flood")
+            lines.append("%s: Flood %s" % (n, r["status"] if r else "–"))
+            continue
+        best = min(peers) if peers else None
+        if best and best[0] < f:
+            ok = False
+            lines.append("%s: Flood %s vs %s %s ns/v (×%.2f)" % (n, fmt(f), LABEL[best[1]], fmt(best[0]), f / best[0]))
+        else:
+            lines.append("%s: Flood %s, best peer %s" % (n, fmt(f), (LABEL[best[1]] + " " + fmt(best[0])) if best else "none finished"))
+    out.append(("Faster than every peer at the largest N, every family", "; ".join(lines), ok))
+    # 3. A <= 1.1 for Flood on every family.
+    lines, ok = [], True
+    for fam in D.families:
+        a, k, _ = D.exponent(fam, "flood")
+        last = D.get(D.by_family(fam)[-1], "flood")
+        complete = last is not None and last["status"] in TIMED
+        if a is None or a > 1.1 or not complete:
+            ok = False
+        lines.append("%s %s%s" % (fam, "–" if a is None else "%.2f" % a, "" if complete else " (largest size not timed)"))
+    out.append(("Flood's fitted exponent A ≤ 1.1 on every family", "; ".join(lines), ok))
+    # 4. Recording overhead <= 1.5x.
+    ratios = []
+    for n in D.inputs:
+        if D.info[n]["family"] == "fixture" or int(D.info[n]["vertices"]) < 10000:
+            continue
+        f, r = D.nsv(n, "flood"), D.nsv(n, "flood-rec")
+        if f and r:
+            ratios.append((r / f, n))
+    reused = []
+    for n in D.inputs:
+        rr = D.get(n, "flood-rec")
+        f = D.nsv(n, "flood")
+        if rr and f and D.info[n]["family"] != "fixture" and int(D.info[n]["vertices"]) >= 10000 and "reused_ns=" in rr["extra"]:
+            reused.append(float(rr["extra"].split("reused_ns=")[1]) / int(rr["vertices"]) / f)
+    reused.sort()
+    if ratios:
+        ratios.sort()
+        med = ratios[len(ratios) // 2][0]
+        out.append(("Trace recording ≤ 1.5× the time without a listener (generated inputs, N ≥ 10⁴)",
+                    "fresh log: median ×%.2f, worst ×%.2f (%s)" % (med, ratios[-1][0], ratios[-1][1]) +
+                    ("; log reused: median ×%.2f, worst ×%.2f" % (reused[len(reused) // 2], reused[-1]) if reused else ""),
+                    ratios[-1][0] <= 1.5))
+    return out
+
+
+def table(header, rows):
+    s = "| " + " | ".join(header) + " |\n|" + "|".join("---" for _ in header) + "|\n"
+    for r in rows:
+        s += "| " + " | ".join(str(x) for x in r) + " |\n"
+    return s
+
+
+def summary_table(D):
+    rows = []
+    for fam in D.families:
+        n = D.by_family(fam)[-1]
+        f = D.nsv(n, "flood")
+        peers = [(D.nsv(n, p), p) for p in PEERS if D.nsv(n, p) is not None]
+        best = min(peers) if peers else None
+        a, _, _ = D.exponent(fam, "flood")
+        rows.append([fam, D.info[n]["vertices"]] + [D.cell_text(n, w) for w in TRIANGULATORS] +
+                    ["%.2f" % (f / best[0]) if f and best else "–", "–" if a is None else "%.2f" % a])
+    return table(["family", "N"] + [LABEL[w] for w in TRIANGULATORS] + ["Flood / best peer", "A (Flood)"], rows)
+
+
+def markdown(D, svg_name):
+    s = ["# Benchmarks: Flood against the peer triangulators\n",
+         "Generated by `scripts/bench.sh` (bench/report.py) from the measurements of one run; do not "
+         "edit by hand, rerun the command. Machine: " + "; ".join(D.machine) + ".\n\n"]
+    s.append("\n## Method\n\n")
+    s.append(
+        "- One driver process (`flood-bench run`) reads every input once and measures each "
+        "(input, triangulator) in a forked child with a time limit, so a crash or a hang costs one "
+        "row. Time is the **median** of ≥ 3 runs (until ~0.5 s are spent, at most 21; one run when a "
+        "run takes over 10 s). The machine has 2 cores and other jobs ran beside the benchmark: "
+        "treat differences under ~1.5× on small inputs as noise.\n"
+        "- **Flood**: `triangulate(polygon)` without a listener; validation is not included (its "
+        "cost is listed separately). **Flood + trace**: the same with a listener that appends every "
+        "event to a fresh `std::vector<Event>` (full trace recording, as `record()` does).\n"
+        "- **GLU** (libglu1-mesa): `gluTess*`, `GLU_TESS_WINDING_ODD`, normal +z, edge-flag callback "
+        "installed so only triangles come out; timed from building the coordinate array to "
+        "`gluDeleteTess`.\n"
+        "- **CGAL CDT** (libcgal-dev): `Constrained_Delaunay_triangulation_2` (Epick, "
+        "`Exact_predicates_tag`), points with their index inserted in bulk (spatially sorted), every "
+        "ring edge inserted as a constraint, faces marked inside by nesting level; timed whole, "
+        "including collecting the inside triangles.\n"
+        "- **GEOS CDT** (libgeos 3.11 C API): `GEOSConstrainedDelaunayTriangulation_r` on the polygon "
+        "built with `GEOSCoordSeq_copyFromBuffer_r`; timed from building the geometry to destroying "
+        "the result. Its output coordinates are mapped back to input indices by exact lookup in an "
+        "untimed extra run.\n"
+        "- **earcut**: earcut.hpp as compiled in Debian's `python3-mapbox-earcut`, called through "
+        "its numpy API `triangulate_float64(vertices, ring_end_indices)` from `bench/earcut_bench.py` "
+        "on the same vertex files. The measured Python call overhead (a 3-vertex triangle) is "
+        "**%s ns per call**; it is included in earcut's times, not subtracted (≤ 0.8 ns/vertex at "
+        "N ≥ 1,000).\n" % (fmt(D.overhead) if D.overhead is not None else "–") +
+        "- **Validity**: every output goes through Flood's exact checker (`core/checker.h`). Peer "
+        "triangles are mapped to input vertices by exact coordinates and oriented "
+        "counter-clockwise first (orientation is a convention); a triangle count different from "
+        "n + 2h − 2 − 2d is reported as such (earcut drops collinear and duplicate vertices).\n"
+        "- **Inputs**: earcut's 59 fixtures (`../shared/peers/earcut`, consecutive duplicate points "
+        "removed by Flood's reader; validity by Flood's `validate()`), and seeded generated families "
+        "at N = 10³…10⁶ (seed 1): `circle-sqrt-holes` is the issue's circle with K ≈ √N/2 circular "
+        "holes (built in bench/inputs.cpp); `circle-holes` is the core generator's (K ≈ N/24 small "
+        "holes); the others are the core generator's families.\n")
+    s.append("\n## Targets\n\n")
+    rows = [[t, ("**met**" if ok else "**not met**"), detail] for t, detail, ok in targets(D)]
+    s.append(table(["target", "", "measured"], rows))
+    s.append("\nReading the targets: (1) the load average above was measured at the end of the run; other "
+             "builds and tests shared the 2 cores, so absolute times are inflated (CGAL, for instance, "
+             "is slower here than the ~1,100 ns/vertex the issue quotes) and ratios near 1 are within "
+             "noise. (2) Flood's growth above A = 1 comes from the flood machine itself (the sag search "
+             "and its index, core/sag_index.h, core/flood.cpp; radial jagged fans are the known worst "
+             "case), not from the peers' harness: every Flood output on a valid input is checked exact. "
+             "(3) The recording overhead with a fresh log is first-touch memory (page faults) for the "
+             "~80 B events; with a reused log the listener costs at most the ratio given.\n")
+    s.append("\n## Largest size per family (ns per vertex)\n\n")
+    s.append(status_legend() + "\n\n")
+    s.append(summary_table(D))
+    s.append("\n![log-log plot of time against N per family](%s)\n" % svg_name)
+    s.append("\n## Fitted exponent A (T = c·N^A, least squares on log T vs log N)\n\n")
+    s.append("Over the sizes that finished (number of points in brackets); * = some points are not "
+             "valid triangulations. The paper reports A between 0.9 and 1.4.\n\n")
+    rows = []
+    for fam in D.families:
+        r = [fam]
+        for w in TRIANGULATORS:
+            a, k, clean = D.exponent(fam, w)
+            r.append("–" if a is None else "%.2f (%d)%s" % (a, k, "" if clean else "*"))
+        rows.append(r)
+    s.append(table(["family"] + [LABEL[w] for w in TRIANGULATORS], rows))
+    s.append("\n## Generated families (ns per vertex; Flood / peer in brackets)\n\n")
+    rows = []
+    for fam in D.families:
+        for n in D.by_family(fam):
+            f = D.nsv(n, "flood")
+            r = [n, D.info[n]["vertices"], D.info[n]["holes"]]
+            for w in TRIANGULATORS:
+                t = D.cell_text(n, w)
+                v = D.nsv(n, w)
+                if w in PEERS and f and v:
+                    t += " (%.2f)" % (f / v)
+                r.append(t)
+            rows.append(r)
+    s.append(table(["input", "n", "holes"] + [LABEL[w] for w in TRIANGULATORS], rows))
+    s.append("\n## earcut's fixtures (ns per vertex)\n\n")
+    s.append("Input validity is Flood's `validate()`; invalid inputs are run anyway, and every "
+             "triangulator's output is judged. Flood / earcut is given where both are valid.\n\n")
+    rows = []
+    for n in D.inputs:
+        if D.info[n]["family"] != "fixture":
+            continue
+        f, e = D.nsv(n, "flood"), D.nsv(n, "earcut")
+        fv = D.get(n, "flood")
+        ev = D.get(n, "earcut")
+        ratio = "%.2f" % (f / e) if f and e and fv["status"] == "valid" and ev["status"] == "valid" else "–"
+        rows.append([n.split("/")[1], D.info[n]["vertices"], D.info[n]["holes"],
+                     "yes" if D.info[n]["valid"] == "1" else "**no**"] +
+                    [D.cell_text(n, w) for w in TRIANGULATORS] + [ratio])
+    s.append(table(["fixture", "n", "holes", "valid input"] + [LABEL[w] for w in TRIANGULATORS] +
+                   ["Flood / earcut"], rows))
+    s.append("\n## Trace recording overhead and validation cost\n\n")
+    s.append("*Fresh log*: a new `std::vector<Event>` per run (what `flood trace` and the viewer "
+             "pay; the vector grows to ~80 B per event on memory the kernel must first touch). "
+             "*Log reused*: one vector cleared between runs, keeping its capacity. The gap between "
+             "them is page-fault cost, large on this virtual machine; the rest is the listener "
+             "itself.\n\n")
+    rows = []
+    for n in D.inputs:
+        if D.info[n]["family"] == "fixture":
+            continue
+        f, r = D.nsv(n, "flood"), D.nsv(n, "flood-rec")
+        fr = D.get(n, "flood")
+        rr = D.get(n, "flood-rec")
+        extra = dict(kv.split("=", 1) for kv in rr["extra"].split(";") if "=" in kv) if rr else {}
+        ev = extra.get("events")
+        reused = float(extra["reused_ns"]) / max(1, int(rr["vertices"])) if "reused_ns" in extra else None
+        val = None
+        if fr and fr["extra"].startswith("validate_ns="):
+            val = float(fr["extra"].split("=")[1]) / max(1, int(fr["vertices"]))
+        rows.append([n, fmt(f), fmt(r), "%.2f" % (r / f) if f and r else "–", fmt(reused),
+                     "%.2f" % (reused / f) if f and reused else "–",
+                     "%.2f" % (int(ev) / int(D.info[n]["vertices"])) if ev else "–", fmt(val)])
+    s.append(table(["input", "Flood ns/v", "+ trace ns/v (fresh log)", "ratio", "+ trace ns/v (log reused)", "ratio", "events / vertex", "validate() ns/v"], rows))
+    s.append("\n## Peak memory of Flood\n\n")
+    s.append("One process per measurement (`flood-bench memory`, started from the shell): the input "
+             "is read from its binary file, then triangulated once. *Extra* is the growth of "
+             "`ru_maxrss` during `triangulate()` (working memory plus the output triangles, 12 B "
+             "each); *total* is the process peak, including the input (16 B per vertex) and the "
+             "program itself. Sizes under 10⁵ are dominated by page granularity.\n\n")
+    rows = []
+    mem = defaultdict(dict)
+    for m in D.memory:
+        mem[m["name"]][m["mode"]] = m
+    for n in D.inputs:
+        if n not in mem:
+            continue
+        r = [n]
+        for mode in ("plain", "record"):
+            m = mem[n].get(mode)
+            if not m or m["status"] != "ok":
+                r += ["–", "–"]
+                continue
+            v = int(m["vertices"])
+            extra = (int(m["maxrss_peak_kb"]) - int(m["maxrss_loaded_kb"])) * 1024 / v
+            total = int(m["maxrss_peak_kb"]) * 1024 / v
+            r += [fmt(extra), fmt(total)]
+        rows.append(r)
+    s.append(table(["input", "extra B/vertex", "total B/vertex", "extra B/vertex (trace)",
+                    "total B/vertex (trace)"], rows))
+    s.append("\n## Every result that is not a valid triangulation\n\n")
+    rows = []
+    for r in D.rows:
+        if r["status"] == "valid":
+            continue
+        rows.append([r["name"], LABEL[r["triangulator"]], r["status"],
+                     "%s / %s" % (r["triangles"], r["expected"]), r["detail"].replace("|", "\\|")])
+    s.append(table(["input", "triangulator", "status", "triangles / expected", "detail"], rows))
+    return "".join(s)
+
+
+def svg(D):
+    fams = D.families
+    cols, pw, ph, m = 4, 300, 230, 50
+    rows_ = (len(fams) + 1 + cols - 1) // cols
+    W, H = cols * pw, rows_ * ph + 30
+    out = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" font-size="11">' % (W, H),
+           '<rect width="100%" height="100%" fill="white"/>',
+           '<text x="%d" y="18" font-size="14" text-anchor="middle">Time T (s) against input size N, log-log, per family (hollow = output not valid)</text>' % (W / 2)]
+    ts = [float(r["ns"]) * 1e-9 for r in D.rows if r["status"] in TIMED and r["family"] != "fixture"]
+    ns = [int(r["vertices"]) for r in D.rows if r["family"] != "fixture"]
+    if not ts:
+        return "\n".join(out + ["</svg>"])
+    lt0, lt1 = math.floor(math.log10(min(ts))), math.ceil(math.log10(max(ts)))
+    ln0, ln1 = math.floor(math.log10(min(ns))), math.ceil(math.log10(max(ns)))
+    for i, fam in enumerate(fams + ["legend"]):
+        ox, oy = (i % cols) * pw, 30 + (i // cols) * ph
+        x0, x1, y0, y1 = ox + m, ox + pw - 12, oy + ph - 35, oy + 18
+        if fam == "legend":
+            for j, w in enumerate(TRIANGULATORS):
+                y = oy + 30 + j * 22
+                out.append('<line x1="%d" y1="%d" x2="%d" y2="%d" stroke="%s" stroke-width="2"/>' % (ox + 30, y, ox + 60, y, COLOR[w]))
+                out.append('<text x="%d" y="%d">%s</text>' % (ox + 68, y + 4, LABEL[w]))
+            out.append('<text x="%d" y="%d" fill="#555">dashed grey: slope 1 (T ∝ N)</text>' % (ox + 30, oy + 30 + len(TRIANGULATORS) * 22))
+            continue
+        X = lambda n: x0 + (math.log10(n) - ln0) / (ln1 - ln0) * (x1 - x0)
+        Y = lambda t: y0 - (math.log10(t) - lt0) / (lt1 - lt0) * (y0 - y1)
+        out.append('<rect x="%d" y="%d" width="%d" height="%d" fill="none" stroke="#999"/>' % (x0, y1, x1 - x0, y0 - y1))
+        out.append('<text x="%d" y="%d" font-weight="bold" text-anchor="middle">%s</text>' % ((x0 + x1) / 2, y1 - 4, fam))
+        for e in range(ln0, ln1 + 1):
+            out.append('<text x="%.1f" y="%d" text-anchor="middle">10^%d</text>' % (X(10 ** e), y0 + 13, e))
+            out.append('<line x1="%.1f" y1="%d" x2="%.1f" y2="%d" stroke="#eee"/>' % (X(10 ** e), y0, X(10 ** e), y1))
+        for e in range(lt0, lt1 + 1, 2 if lt1 - lt0 > 6 else 1):
+            out.append('<text x="%d" y="%.1f" text-anchor="end">1e%d</text>' % (x0 - 3, Y(10 ** e) + 4, e))
+            out.append('<line x1="%d" y1="%.1f" x2="%d" y2="%.1f" stroke="#eee"/>' % (x0, Y(10 ** e), x1, Y(10 ** e)))
+        out.append('<text x="%d" y="%d" text-anchor="middle" fill="#555">N</text>' % ((x0 + x1) / 2, y0 + 26))
+        # slope-1 reference through Flood's first point
+        first = D.by_family(fam)[0]
+        f = D.get(first, "flood")
+        if f and f["status"] in TIMED:
+            n1, t1 = int(f["vertices"]), float(f["ns"]) * 1e-9
+            n2 = 10 ** ln1
+            out.append('<line x1="%.1f" y1="%.1f" x2="%.1f" y2="%.1f" stroke="#888" stroke-dasharray="4,3"/>' % (X(n1), Y(t1), X(n2), Y(t1 * n2 / n1)))
+        for w in TRIANGULATORS:
+            pts = []
+            for n in D.by_family(fam):
+                r = D.get(n, w)
+                if r and r["status"] in TIMED:
+                    pts.append((X(int(r["vertices"])), Y(float(r["ns"]) * 1e-9), r["status"] == "valid"))
+            if len(pts) > 1:
+                out.append('<polyline fill="none" stroke="%s" stroke-width="1.6" points="%s"/>' % (COLOR[w], " ".join("%.1f,%.1f" % (x, y) for x, y, _ in pts)))
+            for x, y, ok in pts:
+                out.append('<circle cx="%.1f" cy="%.1f" r="3" fill="%s" stroke="%s"/>' % (x, y, COLOR[w] if ok else "white", COLOR[w]))
+    out.append("</svg>")
+    return "\n".join(out)
+
+
+def readme_summary(D, svg_rel):
+    s = ["Measured by `scripts/bench.sh` (" + next((l for l in D.machine if l.startswith("date")), "") +
+         "); the full tables, the method and every failure are in [docs/BENCHMARKS.md](docs/BENCHMARKS.md). "
+         "ns per vertex at the largest size of each family (S skipped: predicted or timed out over 60 s at a smaller N; T timeout; ✗ invalid output):\n\n", summary_table(D), "\n"]
+    for t, detail, ok in targets(D):
+        s.append("- %s: **%s**.\n" % (t, "met" if ok else "not met"))
+    s.append("\n![benchmark plot](%s)\n" % svg_rel)
+    return "".join(s)
+
+
+def main():
+    if len(sys.argv) < 4:
+        sys.exit("usage: report.py DATA_DIR BENCHMARKS.md PLOT.svg [README.md]")
+    D = Data(sys.argv[1])
+    md_path, svg_path = sys.argv[2], sys.argv[3]
+    with open(svg_path, "w") as f:
+        f.write(svg(D))
+    with open(md_path, "w") as f:
+        f.write(markdown(D, os.path.relpath(svg_path, os.path.dirname(md_path))))
+    if len(sys.argv) > 4 and os.path.exists(sys.argv[4]):
+        readme = open(sys.argv[4]).read()
+        b, e = "<!-- bench:begin -->", "<!-- bench:end -->"
+        if b in readme and e in readme:
+            head, rest = readme.split(b, 1)
+            _, tail = rest.split(e, 1)
+            rel = os.path.relpath(svg_path, os.path.dirname(os.path.abspath(sys.argv[4])))
+            with open(sys.argv[4], "w") as f:
+                f.write(head + b + "\n" + readme_summary(D, rel) + e + tail)
+    print("report: wrote %s and %s" % (md_path, svg_path))
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,314 @@
+// The shrinker (see shrink.h): failure classification in a forked child, then greedy
+// reduction of parts, holes, vertices and coordinate precision.
+#include "shrink.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <csignal>
+#include <cstdlib>
+#include <ostream>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include "checker.h"
+#include "io.h"
+
+namespace flood {
+
+const char* failureKindName(Failure::Kind k) {
+    switch (k) {
+        case Failure::Kind::None: return "none";
+        case Failure::Kind::Forbidden: return "forbidden transition";
+        case Failure::Kind::CheckerRejects: return "exact checker rejects the triangulation";
+        case Failure::Kind::Crash: return "crash";
+        case Failure::Kind::Hang: return "hang";
+    }
+    return "?";
+}
+
+namespace {
+
+// [SECTION] classification ----------------------------------------------------------------
+
+Failure classifyHere(const Polygon& polygon, const ShrinkOptions& o) {
+    FloodResult r = triangulate(polygon, nullptr, o.flood);
+    Failure f;
+    if (!r.diagnostic.ok()) {
+        f.kind = Failure::Kind::Forbidden;
+        f.reason = r.failure.reason;
+        f.message = r.diagnostic.message;
+        return f;
+    }
+    if (o.corrupt) o.corrupt(r.triangles);
+    CheckResult c = checkTriangulation(polygon, r.triangles);
+    if (!c.ok) {
+        f.kind = Failure::Kind::CheckerRejects;
+        f.message = c.reason;
+    }
+    return f;
+}
+
+// Child exit codes: 0 ok, 100 + reason forbidden, 120 checker rejects. Anything else,
+// including a sanitizer's exit code 1 and a signal, is a crash; SIGALRM is a hang.
+constexpr int kForbiddenBase = 100, kCheckerCode = 120;
+
+Failure classifyInChild(const Polygon& polygon, const ShrinkOptions& o) {
+    pid_t pid = fork();
+    if (pid < 0) return classifyHere(polygon, o);  // no fork available: run in process
+    if (pid == 0) {
+        alarm(o.timeoutSeconds);
+        Failure f = classifyHere(polygon, o);
+        int code = f.kind == Failure::Kind::Forbidden ? kForbiddenBase + int(f.reason)
+                   : f.kind == Failure::Kind::CheckerRejects ? kCheckerCode
+                                                             : 0;
+        _exit(code);
+    }
+    int status = 0;
+    while (waitpid(pid, &status, 0) < 0) {
+        if (errno != EINTR) return {Failure::Kind::Crash, Forbidden::None, "waitpid failed"};
+    }
+    Failure f;
+    if (WIFSIGNALED(status)) {
+        int sig = WTERMSIG(status);
+        f.kind = sig == SIGALRM ? Failure::Kind::Hang : Failure::Kind::Crash;
+        f.message = sig == SIGALRM ? "no result within " + std::to_string(o.timeoutSeconds) + " s"
+                                   : "killed by signal " + std::to_string(sig) + " (" +
+                                         strsignal(sig) + ")";
+        return f;
+    }
+    int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    if (code == 0) return f;
+    if (code == kCheckerCode) {
+        f.kind = Failure::Kind::CheckerRejects;
+    } else if (code > kForbiddenBase && code < kForbiddenBase + int(Forbidden::Count)) {
+        f.kind = Failure::Kind::Forbidden;
+        f.reason = Forbidden(code - kForbiddenBase);
+    } else {
+        f.kind = Failure::Kind::Crash;
+        f.message = "exited with code " + std::to_string(code);
+        return f;
+    }
+    // The child only reports the class; recompute the message in-process only when safe,
+    // i.e. for classes that are not crashes (the run finished normally there).
+    f.message = classifyHere(polygon, o).message;
+    return f;
+}
+
+// [SECTION] the polygon as editable rings -------------------------------------------------
+
+using Rings = std::vector<std::vector<Point>>;
+using Parts = std::vector<Rings>;
+
+Parts toParts(const Polygon& p) {
+    Parts parts;
+    for (const Part& part : p.parts) {
+        Rings rings;
+        for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) {
+            const Ring& ring = p.rings[r];
+            rings.emplace_back(p.vertices.begin() + ring.first,
+                               p.vertices.begin() + ring.first + ring.count);
+        }
+        parts.push_back(std::move(rings));
+    }
+    return parts;
+}
+
+Polygon toPolygon(const Parts& parts) {
+    Polygon p;
+    for (const Rings& rings : parts)
+        for (size_t r = 0; r < rings.size(); ++r) p.addRing(rings[r], r == 0);
+    return p;
+}
+
+// Rounds x to `bits` significant bits (bits >= 1), exactly representable.
+double roundBits(double x, int bits) {
+    if (!std::isfinite(x) || x == 0) return x;
+    int e;
+    std::frexp(x, &e);
+    return std::ldexp(std::nearbyint(std::ldexp(x, bits - e)), e - bits);
+}
+
+class Shrinker {
+public:
+    Shrinker(const Polygon& input, const ShrinkOptions& o) : o_(o) {
+        result_.inputValid = validate(input, "shrink").ok();
+        result_.failure = test(input);
+        result_.polygon = input;
+        best_ = toParts(input);
+    }
+
+    ShrinkResult run() {
+        if (result_.failure.kind == Failure::Kind::None) return result_;
+        bool progress = true;
+        while (progress && result_.tries < o_.maxTries) {
+            progress = false;
+            progress |= removeRings();
+            progress |= removeVertices();
+            progress |= reducePrecision();
+        }
+        result_.polygon = toPolygon(best_);
+        return result_;
+    }
+
+private:
+    Failure test(const Polygon& p) {
+        ++result_.tries;
+        return o_.fork ? classifyInChild(p, o_) : classifyHere(p, o_);
+    }
+
+    // Keeps `candidate` if it fails the same way (and stays valid when the input was).
+    bool accept(const Parts& candidate) {
+        if (result_.tries >= o_.maxTries) return false;
+        Polygon p = toPolygon(candidate);
+        if (p.rings.empty()) return false;
+        if (result_.inputValid && !validate(p, "shrink").ok()) return false;
+        Failure f = test(p);
+        if (!f.sameClass(result_.failure)) return false;
+        best_ = candidate;
+        result_.failure = f;
+        return true;
+    }
+
+    bool removeRings() {
+        bool any = false;
+        // Whole parts, last first, while more than one remains.
+        for (size_t i = best_.size(); i-- > 0 && best_.size() > 1;) {
+            Parts c = best_;
+            c.erase(c.begin() + long(i));
+            any |= accept(c);
+        }
+        // Holes; then an outer ring, its first hole becoming the outer ring.
+        for (size_t pi = best_.size(); pi-- > 0;) {
+            for (size_t r = best_[pi].size(); r-- > 0;) {
+                if (pi >= best_.size() || r >= best_[pi].size() || best_[pi].size() < 2) continue;
+                Parts c = best_;
+                c[pi].erase(c[pi].begin() + long(r));
+                any |= accept(c);
+            }
+        }
+        return any;
+    }
+
+    bool removeVertices() {
+        bool any = false;
+        for (size_t pi = 0; pi < best_.size(); ++pi) {
+            for (size_t r = 0; r < best_[pi].size(); ++r) {
+                for (size_t chunk = std::max<size_t>(1, best_[pi][r].size() / 2);; chunk /= 2) {
+                    // Remove each run of `chunk` vertices in turn, keeping at least 3.
+                    for (size_t start = 0; start < best_[pi][r].size();) {
+                        size_t n = best_[pi][r].size();
+                        size_t end = std::min(n, start + chunk);
+                        if (n - (end - start) < 3) break;
+                        Parts c = best_;
+                        auto& cr = c[pi][r];
+                        cr.erase(cr.begin() + long(start), cr.begin() + long(end));
+                        if (accept(c)) any = true;  // the same start now names the next run
+                        else start += chunk;
+                    }
+                    if (chunk <= 1) break;
+                }
+            }
+        }
+        return any;
+    }
+
+    template <typename F>
+    Parts mapped(F&& f) const {
+        Parts c = best_;
+        for (Rings& rings : c)
+            for (auto& ring : rings)
+                for (Point& p : ring) p = {f(p.x), f(p.y)};
+        return c;
+    }
+
+    bool reducePrecision() {
+        bool any = false;
+        Parts ints = mapped([](double x) { return std::isfinite(x) ? std::nearbyint(x) : x; });
+        if (ints != best_ && accept(ints)) any = true;
+        // The fewest significant bits that keep the failure (binary search over 1..52 is not
+        // monotone in general; scan upwards and stop at the first that works).
+        for (int bits = 1; bits < 53; ++bits) {
+            Parts c = mapped([bits](double x) { return roundBits(x, bits); });
+            if (c == best_) break;  // already this coarse
+            if (accept(c)) {
+                any = true;
+                break;
+            }
+        }
+        // Vertex by vertex to integers (when the global rounding changed the failure).
+        for (size_t pi = 0; pi < best_.size(); ++pi)
+            for (size_t r = 0; r < best_[pi].size(); ++r)
+                for (size_t v = 0; v < best_[pi][r].size(); ++v) {
+                    Point q = best_[pi][r][v];
+                    if (!std::isfinite(q.x) || !std::isfinite(q.y)) continue;
+                    Point rq{std::nearbyint(q.x), std::nearbyint(q.y)};
+                    if (rq == q) continue;
+                    Parts c = best_;
+                    c[pi][r][v] = rq;
+                    any |= accept(c);
+                }
+        return any;
+    }
+
+    ShrinkOptions o_;
+    ShrinkResult result_;
+    Parts best_;
+};
+
+void writeNumber(std::ostream& out, double x) {
+    if (!std::isfinite(x)) {  // JSON has no NaN/inf; WKT would, but keep one output format
+        out << (std::isnan(x) ? "null" : x > 0 ? "1e999" : "-1e999");
+        return;
+    }
+    char buf[32];
+    auto r = std::to_chars(buf, buf + sizeof buf, x);
+    out.write(buf, r.ptr - buf);
+}
+
+void writeRings(std::ostream& out, const Polygon& p, const Part& part) {
+    out << '[';
+    for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) {
+        const Ring& ring = p.rings[r];
+        out << (r == part.firstRing ? "" : ",\n ") << '[';
+        for (Index i = 0; i <= ring.count; ++i) {  // closed: the first point again
+            const Point& q = p.vertices[ring.first + (i == ring.count ? 0 : i)];
+            if (ring.count == 0) break;
+            out << (i ? "," : "") << '[';
+            writeNumber(out, q.x);
+            out << ',';
+            writeNumber(out, q.y);
+            out << ']';
+        }
+        out << ']';
+    }
+    out << ']';
+}
+
+}  // namespace
+
+Failure classify(const Polygon& polygon, const ShrinkOptions& options) {
+    return options.fork ? classifyInChild(polygon, options) : classifyHere(polygon, options);
+}
+
+ShrinkResult shrink(const Polygon& polygon, const ShrinkOptions& options) {
+    return Shrinker(polygon, options).run();
+}
+
+void writePolygonJson(std::ostream& out, const Polygon& polygon) {
+    if (polygon.parts.size() == 1) {
+        writeRings(out, polygon, polygon.parts[0]);
+    } else {
+        out << "{\"type\":\"MultiPolygon\",\"coordinates\":[";
+        for (size_t i = 0; i < polygon.parts.size(); ++i) {
+            if (i) out << ",\n";
+            writeRings(out, polygon, polygon.parts[i]);
+        }
+        out << "]}";
+    }
+    out << '\n';
+}
+
+}  // namespace flood

@@ -1,0 +1,66 @@
+// The shrinker behind `flood shrink`: given a polygon that fails, find a small polygon that
+// fails the same way. Failures are classified by running the flood machine with validation
+// skipped, in a forked child so that a crash or a hang is a failure class, not our death.
+//
+// Greedy, to a fixed point: remove parts and holes, then runs of vertices (halving the run
+// length down to one), then coordinate precision (all coordinates rounded to integers, then
+// to fewer significant bits, then vertex by vertex to integers). A candidate is kept when its
+// failure has the same class (and the same forbidden reason) as the original and, when the
+// original was valid per validate(), the candidate is still valid.
+#pragma once
+#include <functional>
+#include <iosfwd>
+#include <string>
+#include <vector>
+
+#include "events.h"
+#include "flood.h"
+#include "polygon.h"
+
+namespace flood {
+
+struct Failure {
+    enum class Kind : uint8_t {
+        None,            // triangulates and the exact checker accepts: nothing to shrink
+        Forbidden,       // the machine stopped in a forbidden state (`reason`)
+        CheckerRejects,  // the machine finished but the exact checker rejects its triangles
+        Crash,           // the child died (signal, sanitizer report, exception)
+        Hang             // the child did not finish within the time limit
+    };
+    Kind kind = Kind::None;
+    Forbidden reason = Forbidden::None;  // Kind::Forbidden only
+    std::string message;                 // human-readable, one line
+
+    bool sameClass(const Failure& o) const { return kind == o.kind && reason == o.reason; }
+};
+
+const char* failureKindName(Failure::Kind k);
+
+struct ShrinkOptions {
+    Options flood;                  // the vertical
+    bool fork = true;               // classify in a child process (crash/hang become classes)
+    unsigned timeoutSeconds = 10;   // child time limit (a hang), with fork only
+    size_t maxTries = 20000;        // classifications allowed during shrinking
+    // Test-only hook: applied to the machine's triangles before the exact check, so a test
+    // can plant a checker failure. Null in normal use.
+    std::function<void(std::vector<Triangle>&)> corrupt;
+};
+
+// Runs the machine (validation skipped) and the exact checker on `polygon`.
+Failure classify(const Polygon& polygon, const ShrinkOptions& options);
+
+struct ShrinkResult {
+    Polygon polygon;        // the smallest failing polygon found (the input if none smaller)
+    Failure failure;        // its failure (same class as the input's)
+    bool inputValid = false;  // validate() accepted the input, so every candidate was kept valid
+    size_t tries = 0;       // classifications made
+};
+
+// Shrinks a failing polygon. If `polygon` does not fail, returns it with Failure::Kind::None.
+ShrinkResult shrink(const Polygon& polygon, const ShrinkOptions& options);
+
+// Writes a polygon as a bare ring array [[[x,y],...],...] (one part) or a GeoJSON
+// MultiPolygon (several parts), coordinates in shortest round-trip form, rings closed.
+void writePolygonJson(std::ostream& out, const Polygon& polygon);
+
+}  // namespace flood

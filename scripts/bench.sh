@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Runs the peer benchmarks (issue 4) and writes docs/BENCHMARKS.md and docs/bench.svg.
+#   scripts/bench.sh                  everything: deps, build, inputs, earcut, peers, memory, report
+#   scripts/bench.sh --report-only    rewrite the report from the last results in build-bench/bench
+# Environment: BENCH_TIMEOUT (seconds per input and triangulator, default 60),
+#              BENCH_MAX_SIZE (largest generated size, default 1000000), BENCH_SEED (default 1).
+# About 15 minutes on 2 cores. Builds into build-bench with -DFLOOD_BENCH=ON.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="$root/build-bench"
+data="$build/bench"
+fixtures="$root/../shared/peers/earcut/fixtures"
+timeout="${BENCH_TIMEOUT:-60}"
+maxsize="${BENCH_MAX_SIZE:-1000000}"
+seed="${BENCH_SEED:-1}"
+py=/usr/bin/python3   # Debian's python: python3-numpy and python3-mapbox-earcut live there
+
+if [ "${1:-}" != "--report-only" ]; then
+  "$root/scripts/install-deps.sh"
+  "$root/scripts/install-bench-deps.sh"
+  cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DFLOOD_BENCH=ON \
+        -DFLOOD_VIEWER=OFF -DFLOOD_TESTS=OFF >/dev/null
+  cmake --build "$build" -j2 --target flood-bench flood
+  rm -rf "$data" && mkdir -p "$data"
+  [ -d "$fixtures" ] || echo "bench: $fixtures not found: running without earcut's fixtures"
+  echo "== inputs";  "$build/flood-bench" dump "$data" "$fixtures" --seed "$seed" --max-size "$maxsize"
+  echo "== earcut";  "$py" "$root/bench/earcut_bench.py" "$data" --timeout "$timeout"
+  echo "== peers";   "$build/flood-bench" run "$data" --timeout "$timeout" --out "$data/results.tsv"
+  echo "== memory"
+  printf 'name\tmode\tstatus\tvertices\tmaxrss_loaded_kb\tmaxrss_peak_kb\ttriangles\tevents\n' > "$data/memory.tsv"
+  tail -n +2 "$data/manifest.tsv" | while IFS=$'\t' read -r name family size vertices holes valid path verdict; do
+    [ "$family" = fixture ] && continue
+    for mode in plain record; do
+      flag=""; [ $mode = record ] && flag=--record
+      # One process per measurement, started from this small shell: ru_maxrss is its own peak.
+      if out=$(timeout "$timeout" "$build/flood-bench" memory "$path" $flag); then
+        printf '%s\t%s\tok\t%s\n' "$name" "$mode" "$out" >> "$data/memory.tsv"
+      else
+        printf '%s\t%s\tfailed\t%s\t0\t0\t0\t0\n' "$name" "$mode" "$vertices" >> "$data/memory.tsv"
+      fi
+    done
+  done
+  echo "== machine"
+  { echo "cpu: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')";
+    echo "cores: $(nproc)"; echo "kernel: $(uname -r)";
+    echo "compiler: $(c++ --version | head -1)";
+    echo "cgal: $(dpkg-query -W -f='${Version}' libcgal-dev)";
+    echo "geos: $(dpkg-query -W -f='${Version}' libgeos-dev)";
+    echo "glu: $(dpkg-query -W -f='${Version}' libglu1-mesa-dev)";
+    echo "earcut: python3-mapbox-earcut $(dpkg-query -W -f='${Version}' python3-mapbox-earcut)";
+    echo "date: $(date -u +%Y-%m-%d)";
+    echo "load: $(cut -d' ' -f1-3 /proc/loadavg)"; } > "$data/machine.txt"
+fi
+echo "== report"
+"$py" "$root/bench/report.py" "$data" "$root/docs/BENCHMARKS.md" "$root/docs/bench.svg" "$root/README.md"

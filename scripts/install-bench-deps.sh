@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the peer benchmarks need (bench/, -DFLOOD_BENCH=ON): the peer
+# triangulators CGAL, GEOS, the GLU tessellator and earcut (as compiled in python3-mapbox-earcut,
+# driven through numpy). Idempotent: installs only what is missing, with apt-get only.
+# The plot is written by bench/report.py with the Python standard library: no matplotlib.
+set -euo pipefail
+packages=(
+  libcgal-dev libgmp-dev libmpfr-dev libboost-dev     # CGAL constrained Delaunay (header-only)
+  libgeos-dev                                         # GEOS 3.11 C API
+  libglu1-mesa-dev                                    # GLU tessellator (gluTess*)
+  python3 python3-numpy python3-mapbox-earcut         # earcut.hpp via its numpy binding
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-bench-deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+echo "install-bench-deps: installing ${missing[*]}"
+SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
+$SUDO apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

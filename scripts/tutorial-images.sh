@@ -1,0 +1,56 @@
+#!/usr/bin/env bash
+# Regenerates the images of docs/TUTORIAL.md with the viewer's own --screenshot, never by hand:
+#
+#   scripts/tutorial-images.sh [BUILD_DIR]      (default: build; needs xvfb-run without a display)
+#
+# Each image is the viewer at the step just after the N-th event of a kind, found with
+# `flood transcript --narrate`, so the pictures follow the machine if it changes.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+BUILD=${1:-build}
+FLOOD=$BUILD/flood
+VIEWER=$BUILD/flood-viewer
+[ -x "$FLOOD" ] && [ -x "$VIEWER" ] || {
+  echo "build first: cmake -S . -B $BUILD && cmake --build $BUILD (flood and flood-viewer)" >&2
+  exit 2
+}
+RUN=()
+if [ -z "${DISPLAY:-}" ]; then RUN=(xvfb-run -a -s "-screen 0 1280x800x24"); fi
+mkdir -p docs/img
+
+# step_after FILE ACTION N: the viewer step showing the N-th ACTION event (1-based; 0 = last
+# event of the run).
+step_after() {
+  { "$FLOOD" transcript --narrate --no-validate "polygons/$1" 2>/dev/null || true; } |
+    awk -v a="$2" -v n="$3" '
+      { split($2, s, ":"); last = s[1] + 1 }
+      $3 == a":" && ++k == n { print $2 + 1; found = 1; exit }
+      END { if (!found && n == 0) print last }' | tr -d ':'
+}
+
+# shot NAME FILE ACTION N
+shot() {
+  local step
+  step=$(step_after "$2" "$3" "$4")
+  [ -n "$step" ] || { echo "no $3 #$4 in $2" >&2; exit 1; }
+  "${RUN[@]}" "$VIEWER" "polygons/$2" --step "$step" --screenshot "docs/img/$1.png" --size 900x600
+}
+
+shot monotone-fill            monotone.json         Fill   1
+shot two-gorges-spill         two-gorges.json       Spill  1
+shot two-gorges-jump          two-gorges.json       Jump   1
+shot sag-bridge               sag.json              Bridge 1
+shot pending-bottoms          pending-bottoms.json  Bridge 2
+shot hole-spill               hole.json             Spill  1
+shot hole-jump                hole.json             Jump   1
+shot touching-hole            touching-hole.json    Fill   2
+shot horizontal               horizontal.json       Jump   1
+shot figure7-1-spill          paper-figure-7.json   Spill  1
+shot figure7-2-jump           paper-figure-7.json   Jump   1
+shot figure7-3-jump           paper-figure-7.json   Jump   2
+shot figure7-4-bridge         paper-figure-7.json   Bridge 2
+shot figure7-5-fill           paper-figure-7.json   Fill   2
+shot figure7-6-end            paper-figure-7.json   Fill   3
+shot fig11-a                  invalid/fig11-a-sag-start.json Forbidden 1
+shot fig11-b                  invalid/fig11-b-ceiling.json   Forbidden 1
+echo "docs/img: $(ls docs/img/*.png | wc -l) images"

@@ -49,6 +49,8 @@ enum class Test : uint8_t {
 // Why the machine stopped in a forbidden state. X(name, explanation in flood vocabulary)
 #define FLOOD_FORBIDDEN(X)                                                                     \
     X(None, "")                                                                                \
+    X(NotFinite, "a coordinate is not a finite number: heights cannot be compared")             \
+    X(ShortLoop, "a ring has fewer than three vertices: it bounds no area and makes no loop")     \
     X(StartNotBottom,                                                                          \
       "the lowest vertex of the outer loop is not a bottom: the loop is not a simple polygon " \
       "boundary (Fig. 11-A)")                                                                  \
@@ -59,8 +61,6 @@ enum class Test : uint8_t {
       "the water reached a top from the bank it spilled from: banks cross")                     \
     X(SpillNoBottom,                                                                           \
       "spilling over a top found no bottom to flood: the loop folds over itself")              \
-    X(SpillOntoHeld,                                                                           \
-      "spilling over a top ran into a gorge that waits for a jump: the boundary crosses")      \
     X(BadTriangle,                                                                             \
       "a triangle to be cut is inverted or flat: an edge crosses the gorge")                   \
     X(FillOpen,                                                                                \

@@ -127,6 +127,20 @@ private:
         partNodes_ = 0;
         const uint32_t partFirstNode = uint32_t(nodes_.size());
         std::vector<uint32_t> partVertices;
+        for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
+            if (!std::isfinite(pts_[v].x) || !std::isfinite(pts_[v].y)) {
+                Event f = begin(Action::Forbidden);
+                return forbid(f, Forbidden::NotFinite, kNil, kNil, v);
+            }
+        }
+        for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
+            if (poly_.rings[r].count < 3) {
+                Event f = begin(Action::Forbidden);
+                Index v = poly_.rings[r].first;
+                f.culprit = poly_.rings[r].count ? v : kNone;
+                return forbidShortRing(f, r);
+            }
+        }
         for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
             const Ring& ring = poly_.rings[r];
             // Orient loops so the interior is on the left: outer counter-clockwise, holes
@@ -326,16 +340,32 @@ private:
             listener_->onEvent(e);
         }
     }
-    void forbid(Event& e, Forbidden why, uint32_t a, uint32_t b) {
+    Index partEnd(const Part& pa) const {
+        const Ring& last = poly_.rings[pa.firstRing + pa.ringCount - 1];
+        return last.first + last.count;
+    }
+    // `vertex`: a culprit given as a vertex index rather than a node (before loops exist).
+    void forbid(Event& e, Forbidden why, uint32_t a, uint32_t b, Index vertex = kNone) {
         e.action = Action::Forbidden;
         e.reason = why;
-        e.culprit = a == kNil ? kNone : nodes_[a].v;
+        e.culprit = a == kNil ? vertex : nodes_[a].v;
         e.culprit2 = b == kNil ? kNone : nodes_[b].v;
         if (!listener_) e.before = fingers();
         emit(e);
         e.after = fingers();
         result_.failure = e;
         result_.diagnostic = {Status::Forbidden, describeForbidden(poly_, e)};
+        left_ = right_ = kNil;
+    }
+    // A ring of fewer than three vertices bounds no area: no loop can be built from it.
+    void forbidShortRing(Event& e, Index ring) {
+        e.action = Action::Forbidden;
+        e.reason = Forbidden::ShortLoop;
+        emit(e);
+        result_.failure = e;
+        result_.diagnostic = {Status::Forbidden, describeForbidden(poly_, e) + " (ring " +
+                                                     std::to_string(ring) + " has " +
+                                                     std::to_string(poly_.rings[ring].count) + " vertices)"};
         left_ = right_ = kNil;
     }
     static void mark(Event& e, Test t, bool r) {
@@ -423,9 +453,11 @@ private:
 
     // Raise: Next joins the chain; the wedge of chain nodes it sees is cut off (Fig. 2).
     void raise(Event& e, Side side) {
+        uint32_t guard = partNodes_ + 2;  // a walk longer than the part means broken loops
         if (side == Side::Left) {
             uint32_t nl = prev(left_), c = left_;
             while (c != right_ && turn(nl, c, next(c)) > 0) {
+                if (guard-- == 0 || !nodes_[c].alive) return forbid(e, Forbidden::NoProgress, c, nl);
                 uint32_t n = next(c);
                 cutTriangle(nl, c, n);
                 unlink(c);
@@ -436,6 +468,7 @@ private:
         } else {
             uint32_t nr = next(right_), c = right_;
             while (c != left_ && turn(prev(c), c, nr) > 0) {
+                if (guard-- == 0 || !nodes_[c].alive) return forbid(e, Forbidden::NoProgress, c, nr);
                 uint32_t p = prev(c);
                 cutTriangle(p, c, nr);
                 unlink(c);
@@ -471,8 +504,9 @@ private:
         partNodes_ += 2;
         uint32_t right2 = (right_ == c) ? c2 : right_;
         // Left half: Left .. c, s. Cut while the node before s is convex.
-        uint32_t x = c, before = cut_;
+        uint32_t x = c, before = cut_, guard = partNodes_ + 2;
         while (x != left_ && turn(prev(x), x, s) > 0) {
+            if (guard-- == 0 || !nodes_[x].alive) return forbid(e, Forbidden::NoProgress, x, s);
             uint32_t p = prev(x);
             cutTriangle(p, x, s);
             unlink(x);
@@ -482,6 +516,7 @@ private:
         before = cut_;
         uint32_t y = c2;
         while (y != right2 && turn(s2, y, next(y)) > 0) {
+            if (guard-- == 0 || !nodes_[y].alive) return forbid(e, Forbidden::NoProgress, y, s);
             uint32_t n = next(y);
             cutTriangle(s2, y, n);
             unlink(y);
@@ -572,8 +607,10 @@ private:
         e.action = Action::Fill;
         uint32_t apex = prev(left_);
         if (left_ == right_) return forbid(e, Forbidden::FillOpen, apex, left_);
+        uint32_t guard = partNodes_ + 2;
         for (uint32_t c = left_; c != right_;) {
             uint32_t n = next(c);
+            if (guard-- == 0) return forbid(e, Forbidden::FillOpen, apex, c);  // Right unreachable
             if (turn(apex, c, n) <= 0) return forbid(e, Forbidden::BadTriangle, c, n);
             c = n;
         }

@@ -121,8 +121,11 @@ std::string forbidden(const Polygon& polygon, const Event& e) {
         case Forbidden::SpillNoBottom:
             what = "The water spills over the top " + at + " but finds no gorge to flood";
             break;
-        case Forbidden::SpillOntoHeld:
-            what = "The water spilling over the top " + at + " runs into a held gorge";
+        case Forbidden::NotFinite:
+            what = "The vertex " + at + " has a coordinate that is not a finite number, so no height can be compared";
+            break;
+        case Forbidden::ShortLoop:
+            what = "A ring with fewer than three vertices bounds no area and cannot be flooded";
             break;
         case Forbidden::BadTriangle:
             what = "The triangle at " + at + " and " + vertex(polygon, e.culprit2) +

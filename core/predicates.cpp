@@ -90,7 +90,9 @@ struct Mpq {
     Mpq() { mpq_init(q); }
     explicit Mpq(double d) {
         mpq_init(q);
-        mpq_set_d(q, d);
+        // GMP aborts on inf/NaN. Non-finite input is outside the predicates' contract (callers
+        // validate first); it gets an unspecified sign here, never a crash.
+        if (std::isfinite(d)) mpq_set_d(q, d);
     }
     Mpq(const Mpq&) = delete;
     Mpq& operator=(const Mpq&) = delete;

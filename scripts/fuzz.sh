@@ -6,6 +6,8 @@
 # input), leak or UB stops the run, leaves the input in build-fuzz/artifacts/ and fails.
 # FUZZ_FLAGS adds libFuzzer flags, e.g. FUZZ_FLAGS="-fork=1 -ignore_crashes=1
 # -ignore_timeouts=1" keeps going past findings; FUZZ_ONLY="read trace" picks harnesses.
+# FUZZ_SEED=N fixes libFuzzer's random seed: with a fresh corpus the run is then a prefix of
+# any longer run with the same seed, which is how CI keeps its pass reproducible.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 SECONDS_EACH="${1:-60}"
@@ -21,7 +23,8 @@ for h in ${FUZZ_ONLY:-read flood trace}; do
   log="$B/fuzz_$h.log"
   if ASAN_OPTIONS=detect_leaks=1 "$B/fuzz/fuzz_$h" "$B/corpus/$h" "$B/seeds/$h" \
       -max_total_time="$SECONDS_EACH" -timeout=10 -rss_limit_mb=2048 -max_len=65536 \
-      -print_final_stats=1 -artifact_prefix="$B/artifacts/$h-" ${FUZZ_FLAGS:-} >"$log" 2>&1; then
+      -print_final_stats=1 -artifact_prefix="$B/artifacts/$h-" ${FUZZ_SEED:+-seed=$FUZZ_SEED} \
+      ${FUZZ_FLAGS:-} >"$log" 2>&1; then
     result=ok
   else
     result=FAILED

@@ -3,12 +3,18 @@
 // crash or a hang fails the test instead of killing the suite.
 //   - A file must never crash or hang: the machine ends in a Forbidden diagnostic or an exact
 //     triangulation; if validate() accepts it, an exact triangulation.
+//   - `*.fuzz` files are raw fuzz_flood inputs (byte encoding of fuzz/fuzz_poly.h) for polygons
+//     no file format can carry (e.g. zero-length edges, which readers drop).
 //   - `open-*` files are known open bugs of the flood machine (core/flood.cpp), with the
 //     failure class in the name (open-crash-*, open-hang-*, or open-empty-ring: crash). The
 //     test asserts they still fail that way and says so; when the machine is fixed this
 //     test fails: rename the file without `open-` and it joins the must-not-fail set.
 #include <gtest/gtest.h>
 
+#include <fstream>
+#include <iterator>
+
+#include "../fuzz/fuzz_poly.h"
 #include "shrink.h"
 #include "test_support.h"
 
@@ -24,11 +30,19 @@ bool startsWith(const std::string& s, const std::string& p) { return s.compare(0
 TEST(Regress, NoCrashNoHangOnRegressionInputs) {
     auto files = filesIn(sourcePath("polygons/regress"), ".json");
     ASSERT_FALSE(files.empty()) << "polygons/regress/ holds the regression inputs";
+    for (const std::string& f : filesIn(sourcePath("polygons/regress"), ".fuzz")) files.push_back(f);
     ShrinkOptions o;
     o.timeoutSeconds = 10;  // generous for sanitizer builds; a real hang never ends
     for (const std::string& path : files) {
         std::string name = std::filesystem::path(path).filename().string();
-        ReadResult rr = readPolygonFile(path);
+        ReadResult rr;
+        if (path.size() > 5 && path.compare(path.size() - 5, 5, ".fuzz") == 0) {
+            std::ifstream in(path, std::ios::binary);
+            std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            rr.polygon = fuzzpoly::decode(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()).polygon;
+        } else {
+            rr = readPolygonFile(path);
+        }
         ASSERT_TRUE(rr.diagnostic.ok()) << name << ": " << rr.diagnostic.message;
         bool valid = validate(rr.polygon, name).ok();
         Failure f = classify(rr.polygon, o);
@@ -52,11 +66,15 @@ TEST(Regress, NoCrashNoHangOnRegressionInputs) {
 
 // Empty rings reach the machine only with validation skipped; validation must name them.
 TEST(Regress, ValidationRejectsEmptyAndShortRings) {
-    ReadResult rr = readPolygonFile(sourcePath("polygons/regress/open-empty-ring.json"));
+    ReadResult rr = readPolygonFile(sourcePath("polygons/regress/empty-ring-no-validate.json"));
     ASSERT_TRUE(rr.diagnostic.ok());
     Diagnostic d = validate(rr.polygon, "e");
     EXPECT_EQ(d.status, Status::Invalid);
     EXPECT_NE(d.message.find("ring 1: ring is empty"), std::string::npos) << d.message;
+    // Unvalidated, the machine refuses it too (it used to divide by zero).
+    FloodResult r = triangulate(rr.polygon);
+    EXPECT_EQ(r.diagnostic.status, Status::Forbidden);
+    EXPECT_EQ(r.failure.reason, Forbidden::ShortLoop);
 }
 
 // JSON nested far deeper than the limit must be refused quickly, without recursion.

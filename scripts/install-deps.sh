@@ -9,6 +9,7 @@ packages=(
   libglfw3-dev libglm-dev libimgui-dev libstb-dev     # viewer
   python3-glad python3-jinja2                         # GL loader generated at build time
   xvfb xauth                                          # headless GUI tests
+  clang libclang-rt-14-dev python3                    # fuzzing pass and sanitizers in CI
 )
 missing=()
 for p in "${packages[@]}"; do

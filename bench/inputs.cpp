@@ -20,64 +20,8 @@ std::vector<std::string> benchFamilies() {
 
 std::vector<size_t> benchSizes() { return {1000, 10000, 100000, 1000000}; }
 
-namespace {
-
-uint64_t splitmix(uint64_t& s) {
-    uint64_t z = (s += 0x9e3779b97f4a7c15ULL);
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-double unit(uint64_t& s) { return double(splitmix(s) >> 11) * 0x1p-53; }
-
-// Regular n-gon around c with radius r (counter-clockwise): convex, hence simple.
-std::vector<Point> regular(Point c, double r, size_t n, double phase) {
-    std::vector<Point> ring(n);
-    for (size_t i = 0; i < n; ++i) {
-        double a = phase + 2 * M_PI * double(i) / double(n);
-        ring[i] = {c.x + r * std::cos(a), c.y + r * std::sin(a)};
-    }
-    return ring;
-}
-
-// Circle (1% radial noise, star-shaped around the origin, hence simple) with K = sqrt(N)/2
-// regular holes, one per cell of a square grid, each cell well inside the circle.
-Polygon circleSqrtHoles(uint64_t seed, size_t size) {
-    size_t k = std::max<size_t>(1, size_t(std::lround(std::sqrt(double(size)) / 2)));
-    size_t outerN = std::max<size_t>(8, size / 2);
-    size_t holeN = std::max<size_t>(3, (size - outerN) / k);
-    std::vector<Point> outer(outerN);
-    for (size_t i = 0; i < outerN; ++i) {
-        double a = 2 * M_PI * double(i) / double(outerN), r = 1.0 + 0.01 * unit(seed);
-        outer[i] = {r * std::cos(a), r * std::sin(a)};
-    }
-    Polygon p;
-    p.addRing(outer, true);
-    std::vector<Point> cells;
-    double cell = 0;
-    for (int g = 2;; ++g) {
-        cells.clear();
-        cell = 2.0 / g;
-        for (int i = 0; i < g; ++i)
-            for (int j = 0; j < g; ++j) {
-                Point c{-1 + cell * (i + 0.5), -1 + cell * (j + 0.5)};
-                if (std::hypot(c.x, c.y) + cell * 0.75 < 0.95) cells.push_back(c);
-            }
-        if (cells.size() >= k) break;
-    }
-    while (cells.size() > k) cells.erase(cells.begin() + long(splitmix(seed) % cells.size()));
-    for (Point c : cells) {
-        std::vector<Point> hole = regular(c, cell * 0.5 * (0.4 + 0.5 * unit(seed)), holeN,
-                                          2 * M_PI * unit(seed));
-        p.addRing(hole, false);
-    }
-    return p;
-}
-
-}  // namespace
 
 Polygon benchGenerate(const std::string& family, uint64_t seed, size_t size) {
-    if (family == "circle-sqrt-holes") return circleSqrtHoles(seed, size);
     return flood::generate(family, seed, size);
 }
 

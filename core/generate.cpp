@@ -182,9 +182,10 @@ Polygon circleJagged(Rng& rng, size_t size) {
 }
 
 // Circle with K circular holes, one per grid cell well inside the circle.
-Polygon circleHoles(Rng& rng, size_t size) {
+// A circle (outer radius 1 + noise·U[0,1)) with k circular holes, one per cell of a square
+// grid, each cell well inside the circle.
+Polygon circleWithHoles(Rng& rng, size_t size, size_t k, double noise) {
     size_t outerN = std::max<size_t>(8, size / 2);
-    size_t k = std::max<size_t>(1, size / 24);
     size_t holeN = std::max<size_t>(3, (size / 2) / k);
     // Inner radius of the outer polygon, with margin.
     double safe = 0.95 * std::cos(kPi / double(outerN));
@@ -202,13 +203,21 @@ Polygon circleHoles(Rng& rng, size_t size) {
     }
     while (cells.size() > k) cells.erase(cells.begin() + long(rng.next() % cells.size()));
     Polygon p;
-    p.addRing(radialRing({0, 0}, outerN, [](size_t) { return 1.0; }), true);
+    p.addRing(radialRing({0, 0}, outerN, [&](size_t) { return 1.0 + noise * rng.unit(); }), true);
     for (Point c : cells) {
         double r = cell * 0.5 * (0.4 + 0.5 * rng.unit());
         Pts hole = radialRing(c, holeN, [&](size_t) { return r; }, rng.unit());
         if (hole.size() >= 3) p.addRing(hole, false);
     }
     return p;
+}
+
+Polygon circleHoles(Rng& rng, size_t size) { return circleWithHoles(rng, size, std::max<size_t>(1, size / 24), 0); }
+
+// The benchmark family of the issue: K = sqrt(N)/2 holes in a 1%-noisy circle.
+Polygon circleSqrtHoles(Rng& rng, size_t size) {
+    size_t k = std::max<size_t>(1, size_t(std::lround(std::sqrt(double(size)) / 2)));
+    return circleWithHoles(rng, size, k, 0.01);
 }
 
 // Square with a k x k grid of holes (squares, triangles, diamonds) in 2 x 2 cells.
@@ -470,6 +479,7 @@ const Family kFamilies[] = {
     {"circle-smooth", "circle with 1% radial noise, double coordinates", circleSmooth},
     {"circle-jagged", "circle with alternating long and short random radii", circleJagged},
     {"circle-holes", "circle with K circular holes, one per grid cell inside it", circleHoles},
+    {"circle-sqrt-holes", "1%-noisy circle with sqrt(N)/2 circular holes (the benchmark's)", circleSqrtHoles},
     {"grid-holes", "square with a grid of square, triangle and diamond holes", gridHoles},
     {"comb", "zigzag comb: teeth down (bottoms, ceilings) and up (tops, sags)",
      [](Rng& r, size_t s) { return comb(r, s, 6); }},

@@ -10,15 +10,4 @@ packages=(
   libglu1-mesa-dev                                    # GLU tessellator (gluTess*)
   python3 python3-numpy python3-mapbox-earcut         # earcut.hpp via its numpy binding
 )
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-bench-deps: all ${#packages[@]} packages present"
-  exit 0
-fi
-echo "install-bench-deps: installing ${missing[*]}"
-SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
-$SUDO apt-get update -qq
-DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+FLOOD_INSTALL_LABEL=install-bench-deps exec "$(dirname "$0")/install-deps.sh" "${packages[@]}"

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs every Debian package the build, tests and viewer need. Idempotent: installs only
+# Installs every Debian package the build, tests and viewer need — or, given package names as
+# arguments, those instead (scripts/install-bench-deps.sh does that). Idempotent: installs only
 # what is missing, with apt-get only. Run as root (or with sudo available).
 set -euo pipefail
 packages=(
@@ -11,15 +12,17 @@ packages=(
   xvfb xauth                                          # headless GUI tests
   clang libclang-rt-14-dev python3                    # fuzzing pass and sanitizers in CI
 )
+label=install-deps
+if [ $# -gt 0 ]; then packages=("$@"); label="${FLOOD_INSTALL_LABEL:-install-deps}"; fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -eq 0 ]; then
-  echo "install-deps: all ${#packages[@]} packages present"
+  echo "$label: all ${#packages[@]} packages present"
   exit 0
 fi
-echo "install-deps: installing ${missing[*]}"
+echo "$label: installing ${missing[*]}"
 SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO=sudo
 $SUDO apt-get update -qq
 DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"

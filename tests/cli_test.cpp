@@ -2,30 +2,18 @@
 // input in polygons/invalid/, and the happy paths of each command.
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <array>
 #include <cstdio>
 #include <string>
 #include <sys/wait.h>
 
+using namespace flood::testing;
+
 namespace {
 
-struct RunResult {
-    int code = -1;
-    std::string out;  // stdout and stderr together
-};
-
-RunResult run(const std::string& args) {
-    std::string cmd = std::string(FLOOD_CLI) + " " + args + " 2>&1";
-    RunResult r;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf;
-    size_t n;
-    while ((n = fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-    int status = pclose(p);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+RunResult run(const std::string& args) { return runCli(args); }
 
 std::string src(const std::string& rel) { return std::string(FLOOD_SOURCE_DIR) + "/" + rel; }
 

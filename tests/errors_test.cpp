@@ -5,12 +5,16 @@
 // (FLOOD_FORBIDDEN in core/events.h) and every validation rule has a row.
 #include <gtest/gtest.h>
 
+#include "test_support.h"
+
 #include <array>
 #include <cstdio>
 #include <string>
 #include <sys/wait.h>
 
 #include "events.h"
+
+using namespace flood::testing;
 
 namespace {
 
@@ -64,22 +68,7 @@ const Row kCatalogue[] = {
     {"", "frobnicate", 2, "A subcommand is required"},
 };
 
-struct RunResult {
-    int code = -1;
-    std::string out;
-};
-
-RunResult run(const std::string& args) {
-    std::string cmd = std::string(FLOOD_CLI) + " " + args + " 2>&1";
-    RunResult r;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    std::array<char, 4096> buf;
-    for (size_t n; (n = fread(buf.data(), 1, buf.size(), p)) > 0;) r.out.append(buf.data(), n);
-    int status = pclose(p);
-    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    return r;
-}
+RunResult run(const std::string& args) { return runCli(args); }
 
 }  // namespace
 

@@ -2,6 +2,10 @@
 #pragma once
 #include <gtest/gtest.h>
 
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -25,6 +29,23 @@ inline std::vector<std::string> filesIn(const std::string& dir, const std::strin
             out.push_back(e.path().string());
     std::sort(out.begin(), out.end());
     return out;
+}
+
+// Runs the `flood` command line with `args`; stdout and stderr together, and the exit code.
+struct RunResult {
+    int code = -1;
+    std::string out;
+};
+inline RunResult runCli(const std::string& args) {
+    std::string cmd = std::string(FLOOD_CLI) + " " + args + " 2>&1";
+    RunResult r;
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return r;
+    std::array<char, 4096> buf;
+    for (size_t n; (n = fread(buf.data(), 1, buf.size(), p)) > 0;) r.out.append(buf.data(), n);
+    int status = pclose(p);
+    r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return r;
 }
 
 inline Polygon readOrFail(const std::string& path) {

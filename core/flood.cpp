@@ -308,7 +308,10 @@ private:
             if (o < 0) return 0;
             if (o == 0) {
                 // Same direction as `from` counts as a full turn (last); opposite is pi.
-                bool same = (d.x - c.x) * (from.x - c.x) + (d.y - c.y) * (from.y - c.y) > 0;
+                // Collinear: the same ray iff each coordinate lies on the same side of c
+                // (comparisons only, so exact where a dot product would round).
+                auto side = [](double v, double o) { return (v > o) - (v < o); };
+                bool same = side(d.x, c.x) == side(from.x, c.x) && side(d.y, c.y) == side(from.y, c.y);
                 return same ? 2 : 1;
             }
             return 1;
@@ -556,8 +559,12 @@ private:
                 return emit(e);
             }
             if (nd.gorgeLeft != kNil || nd.gorgeRight != kNil || x == t) break;
+            // Only extremes matter to the walk; the orientation test is spent on them alone.
+            bool minimum = isMinimum(x);
+            bool maximum = !minimum && lower(prev(x), x) && lower(next(x), x);
+            if (!minimum && !(maximum && drops > 0)) continue;
             bool convexHere = turn(prev(x), x, next(x)) > 0;
-            if (isMinimum(x)) {
+            if (minimum) {
                 if (!convexHere) {
                     ++drops;
                 } else if (drops > 0) {
@@ -568,7 +575,7 @@ private:
                     startGorge(x);
                     return emit(e);
                 }
-            } else if (convexHere && drops > 0 && lower(prev(x), x) && lower(next(x), x)) {
+            } else if (convexHere) {
                 --drops;  // a ceiling roofs the basin under the last sag
             }
         }

@@ -2,14 +2,17 @@
 // reported, naming the rule, the triangle number and the vertex indices):
 //   1. every triangle index is in range;
 //   2. the three vertices of a triangle belong to one part; per part, the triangle count is
-//      n + 2h - 2 - 2d (n vertices, h holes, d = vertices whose point repeats an earlier vertex
-//      of the part: by Euler's formula F = 2V - n - 2*chi with V = n - d distinct points and
-//      chi = 1 - h, so each point where rings touch removes two triangles);
+//      n + 2h - 2 - 2d - j - p (n vertices, h holes, d = vertices whose point repeats an
+//      earlier vertex of the part: by Euler's formula F = 2V - n - 2*chi with V = n - d
+//      distinct points and chi = 1 - h, so each point where rings touch removes two
+//      triangles; j T-junctions, each a boundary node more at a point already counted; p holes
+//      that are single points, which add two triangles where a ring of one vertex would add 3);
 //   3. every triangle is counter-clockwise and non-degenerate (exact orient > 0);
 //   4. no directed edge appears in two triangles;
 //   5. every boundary edge, directed with the interior on its left (outer ring
 //      counter-clockwise, holes clockwise, whatever the input orientation), appears exactly once
-//      as a directed triangle edge, and its reverse never;
+//      as a directed triangle edge, and its reverse never; an edge with T-junctions
+//      (Polygon::splits, each checked to lie strictly inside its edge) counts as its pieces;
 //   6. every other directed triangle edge (a, b) has its twin (b, a) in another triangle;
 //   7. the exact sum of the doubled triangle areas equals the exact doubled polygon area.
 // Vertex identity is by index: coincident copies of a point are different vertices, and a
@@ -134,9 +137,12 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
         for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) partOfRing[r] = p;
     }
     std::vector<Index> partOfVertex(n, kNone);
+    auto isPointHole = [&](Index r) {
+        return polygon.rings[r].count == 1 && partOfRing[r] != kNone && polygon.parts[partOfRing[r]].firstRing != r;
+    };
     for (Index r = 0; r < polygon.rings.size(); ++r) {
         const Ring& ring = polygon.rings[r];
-        if (ring.count < 3) {
+        if (ring.count < 3 && !isPointHole(r)) {
             std::ostringstream o;
             o << "ring-too-short: ring " << r << " has " << ring.count << " vertices";
             return fail(o.str());
@@ -168,18 +174,38 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
     std::vector<size_t> copiesOfPart(polygon.parts.size(), 0);  // d: repeated points per part
     for (Index v = 0; v < n; ++v)
         if (C[v] != v) copiesOfPart[partOfVertex[v]]++;
+    // j + p: T-junctions and point holes per part. A split must lie strictly inside its edge.
+    std::vector<size_t> lessOfPart(polygon.parts.size(), 0);
+    for (const EdgeSplit& sp : polygon.splits) {
+        bool inRange = sp.edge < n && sp.vertex < n;
+        Index r = inRange ? polygon.ringOf(sp.edge) : 0;
+        Index b = inRange ? (sp.edge + 1 == polygon.rings[r].first + polygon.rings[r].count ? polygon.rings[r].first
+                                                                                             : sp.edge + 1)
+                          : 0;
+        if (!inRange || partOfVertex[sp.vertex] != partOfVertex[sp.edge] ||
+            !insideSegment(V[sp.edge], V[b], V[sp.vertex])) {
+            std::ostringstream o;
+            o << "bad-split: vertex " << sp.vertex << " does not lie strictly inside edge (" << sp.edge
+              << ", " << b << ")";
+            return fail(o.str());
+        }
+        lessOfPart[partOfVertex[sp.edge]]++;
+    }
+    for (Index r = 0; r < polygon.rings.size(); ++r)
+        if (isPointHole(r)) lessOfPart[partOfRing[r]]++;
     for (Index p = 0; p < polygon.parts.size(); ++p) {
         const Part& part = polygon.parts[p];
         size_t verts = 0;
         for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r)
             verts += polygon.rings[r].count;
         size_t d = copiesOfPart[p];
-        size_t expected = verts + 2 * (part.ringCount - 1) - 2 - 2 * d;
+        size_t expected = verts + 2 * (part.ringCount - 1) - 2 - 2 * d - lessOfPart[p];
         if (countOfPart[p] != expected) {
             std::ostringstream o;
             o << "triangle-count: part " << p << " has " << countOfPart[p]
-              << " triangles, expected n + 2h - 2 - 2d = " << expected << " (n = " << verts
-              << ", h = " << part.ringCount - 1 << ", d = " << d << " repeated points)";
+              << " triangles, expected n + 2h - 2 - 2d - j - p = " << expected << " (n = " << verts
+              << ", h = " << part.ringCount - 1 << ", d = " << d << " repeated points, j + p = "
+              << lessOfPart[p] << " T-junctions and point holes)";
             return fail(o.str());
         }
     }
@@ -208,11 +234,18 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
         }
     }
 
-    // Ring orientations and the polygon's doubled area.
+    // Ring orientations, the polygon's doubled area, and the directed boundary edges: each
+    // ring edge, cut at its T-junctions, with the interior on its left.
+    struct BoundaryEdge {
+        Index a, b, ring;
+    };
+    std::vector<BoundaryEdge> boundaryEdges;
+    boundaryEdges.reserve(n + polygon.splits.size());
     ExactSum polygonArea;
-    EdgeTable boundary(n);
+    auto split = polygon.splits.begin();
     for (Index r = 0; r < polygon.rings.size(); ++r) {
         const Ring& ring = polygon.rings[r];
+        if (isPointHole(r)) continue;  // no edges, no area; rule 2 counted its triangles
         ExactSum ringArea;
         for (Index i = 0; i < ring.count; ++i)
             ringArea.addCross(V[ring.first + i], V[ring.first + (i + 1) % ring.count]);
@@ -227,29 +260,38 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
         bool forward = outer ? s > 0 : s < 0;
         polygonArea.add(ringArea, forward ? 1 : -1);
         for (Index i = 0; i < ring.count; ++i) {
-            Index a = ring.first + i, b = ring.first + (i + 1) % ring.count;
-            if (!forward) std::swap(a, b);
-            uint32_t dummy;
-            if (!boundary.insert(edgeKey(C[a], C[b]), r, dummy)) {
-                std::ostringstream o;
-                o << "boundary-edge-shared: rings " << dummy << " and " << r
-                  << " share the boundary segment (" << a << ", " << b << ")";
-                return fail(o.str());
+            const Index edge = ring.first + i, to = ring.first + (i + 1) % ring.count;
+            Index from = edge;
+            while (split != polygon.splits.end() && split->edge < edge) ++split;
+            for (; split != polygon.splits.end() && split->edge == edge; ++split) {
+                boundaryEdges.push_back(forward ? BoundaryEdge{from, split->vertex, r}
+                                                : BoundaryEdge{split->vertex, from, r});
+                from = split->vertex;
             }
-            // Rule 5.
-            if (edges.find(edgeKey(C[b], C[a]), dummy)) {
-                std::ostringstream o;
-                o << "boundary-edge-reversed: " << triName(dummy, triangles[dummy])
-                  << " uses boundary edge (" << b << ", " << a << ") of ring " << r
-                  << " from outside";
-                return fail(o.str());
-            }
-            if (!edges.contains(edgeKey(C[a], C[b]))) {
-                std::ostringstream o;
-                o << "boundary-edge-missing: no triangle has boundary edge (" << a << ", " << b
-                  << ") of ring " << r;
-                return fail(o.str());
-            }
+            boundaryEdges.push_back(forward ? BoundaryEdge{from, to, r} : BoundaryEdge{to, from, r});
+        }
+    }
+    EdgeTable boundary(boundaryEdges.size());
+    for (auto [a, b, r] : boundaryEdges) {
+        uint32_t dummy;
+        if (!boundary.insert(edgeKey(C[a], C[b]), r, dummy)) {
+            std::ostringstream o;
+            o << "boundary-edge-shared: rings " << dummy << " and " << r
+              << " share the boundary segment (" << a << ", " << b << ")";
+            return fail(o.str());
+        }
+        // Rule 5.
+        if (edges.find(edgeKey(C[b], C[a]), dummy)) {
+            std::ostringstream o;
+            o << "boundary-edge-reversed: " << triName(dummy, triangles[dummy])
+              << " uses boundary edge (" << b << ", " << a << ") of ring " << r << " from outside";
+            return fail(o.str());
+        }
+        if (!edges.contains(edgeKey(C[a], C[b]))) {
+            std::ostringstream o;
+            o << "boundary-edge-missing: no triangle has boundary edge (" << a << ", " << b
+              << ") of ring " << r;
+            return fail(o.str());
         }
     }
 

@@ -126,7 +126,8 @@ private:
         part_ = part;
         partNodes_ = 0;
         const uint32_t partFirstNode = uint32_t(nodes_.size());
-        std::vector<uint32_t> partVertices;
+        std::vector<uint32_t> partVertices;  // nodes of the part's loops
+        std::vector<uint32_t> points;        // one-node loops: Steiner points
         for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
             if (!std::isfinite(pts_[v].x) || !std::isfinite(pts_[v].y)) {
                 Event f = begin(Action::Forbidden);
@@ -134,31 +135,44 @@ private:
             }
         }
         for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
-            if (poly_.rings[r].count < 3) {
+            bool steiner = poly_.rings[r].count == 1 && r != pa.firstRing;  // a point hole
+            if (poly_.rings[r].count < 3 && !steiner) {
                 Event f = begin(Action::Forbidden);
                 Index v = poly_.rings[r].first;
                 f.culprit = poly_.rings[r].count ? v : kNone;
                 return forbidShortRing(f, r);
             }
         }
+        // T-junctions of the part (validate() found them): each adds a node on its edge.
+        auto split = std::lower_bound(poly_.splits.begin(), poly_.splits.end(), poly_.rings[pa.firstRing].first,
+                                      [](const EdgeSplit& s, Index v) { return s.edge < v; });
+        uint32_t outerNodes = 0;
+        std::vector<Index> loop;
         for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
             const Ring& ring = poly_.rings[r];
+            loop.clear();
+            for (Index v = ring.first; v < ring.first + ring.count; ++v) {
+                loop.push_back(v);
+                for (; split != poly_.splits.end() && split->edge == v; ++split) loop.push_back(split->vertex);
+            }
             // Orient loops so the interior is on the left: outer counter-clockwise, holes
             // clockwise, whatever the file said.
             bool wantCcw = (r == pa.firstRing);
-            bool reverse = (ringTurn(ring) > 0) != wantCcw;
-            uint32_t base = uint32_t(nodes_.size());
-            for (Index i = 0; i < ring.count; ++i) {
+            bool reverse = ring.count >= 3 && (ringTurn(ring) > 0) != wantCcw;
+            const uint32_t base = uint32_t(nodes_.size()), count = uint32_t(loop.size());
+            for (uint32_t i = 0; i < count; ++i) {
                 Node nd;
-                nd.v = ring.first + i;
-                uint32_t p = base + (i + ring.count - 1) % ring.count;
-                uint32_t q = base + (i + 1) % ring.count;
+                nd.v = loop[i];
+                uint32_t p = base + (i + count - 1) % count;
+                uint32_t q = base + (i + 1) % count;
                 nd.prev = reverse ? q : p;
                 nd.next = reverse ? p : q;
                 nodes_.push_back(nd);
-                partVertices.push_back(base + i);
+                if (count > 1) partVertices.push_back(base + i);
+                else points.push_back(base + i);
             }
-            partNodes_ += ring.count;
+            partNodes_ += count;
+            if (r == pa.firstRing) outerNodes = count;
         }
         mergeTouchingLoops(partVertices);
 
@@ -166,6 +180,8 @@ private:
         sags_.clear();
         for (uint32_t n : partVertices)
             if (isSag(n)) sags_.push_back(n);
+        // A point hole is a hole whose lowest vertex is its only one: a sag.
+        sags_.insert(sags_.end(), points.begin(), points.end());
         std::sort(sags_.begin(), sags_.end(), [&](uint32_t a, uint32_t b) { return lower(a, b); });
         std::vector<Point> pointOfRank(sags_.size());
         sagKeys_.resize(sags_.size());
@@ -184,9 +200,8 @@ private:
         bottomCursor_ = 0;
 
         // The lowest node of the outer ring is where the water starts.
-        const Ring& outer = poly_.rings[pa.firstRing];
         uint32_t start = kNil;
-        for (uint32_t i = 0; i < outer.count; ++i) {
+        for (uint32_t i = 0; i < outerNodes; ++i) {
             uint32_t n = partVertices[i];
             if (start == kNil || lower(n, start)) start = n;
         }
@@ -487,6 +502,10 @@ private:
     // internal edge, doubled into two references each (Fig. 4). The gorge splits in two: the
     // left half stays active, the right half goes on the to-do list. The wedges the sag sees
     // on either side are cut at once, so both half-chains stay reflex (invariant 2).
+    //
+    // A Steiner point (a one-node loop) bounds nothing, so it splits nothing: the diagonal is
+    // an antenna c -> s -> c' into the gorge, s stays inside the chain as the water node
+    // (reflex: the whole gorge above it is open), and no gorge is pushed.
     void bridge(Event& e, uint32_t s) {
         e.action = Action::Bridge;
         uint32_t c = water_;
@@ -497,14 +516,16 @@ private:
             for (uint32_t x = left_; x != c && i <= partNodes_ * 2; x = next(x)) ++i;
             e.chainIndex = i;
         }
-        uint32_t s2 = uint32_t(nodes_.size()), c2 = s2 + 1;
-        nodes_.push_back(Node{nodes_[s].v, prev(s), c2});
+        const bool point = prev(s) == s;
+        uint32_t s2 = point ? s : uint32_t(nodes_.size()), c2 = uint32_t(nodes_.size()) + !point;
+        if (!point) nodes_.push_back(Node{nodes_[s].v, prev(s), c2});
         nodes_.push_back(Node{nodes_[c].v, s2, next(c)});
-        nodes_[prev(s)].next = s2;
+        if (!point) nodes_[prev(s)].next = s2;
         nodes_[next(c)].prev = c2;
         nodes_[c].next = s;
         nodes_[s].prev = c;
-        partNodes_ += 2;
+        nodes_[s2].next = c2;
+        partNodes_ += point ? 1 : 2;
         uint32_t right2 = (right_ == c) ? c2 : right_;
         // Left half: Left .. c, s. Cut while the node before s is convex.
         uint32_t x = c, before = cut_, guard = partNodes_ + 2;
@@ -526,8 +547,12 @@ private:
             y = n;
         }
         e.cutRight = cut_ - before;
-        e.gorgePushed = pushGorge(s2, right2, s2, false, kNone);
-        right_ = s;
+        if (point) {
+            right_ = right2;
+        } else {
+            e.gorgePushed = pushGorge(s2, right2, s2, false, kNone);
+            right_ = s;
+        }
         water_ = s;
         nodes_[s].wet = nodes_[s2].wet = true;
         emit(e);

@@ -12,6 +12,7 @@
 #include <cassert>
 #include <cmath>
 
+#include "io.h"
 #include "predicates.h"
 
 namespace flood {
@@ -453,6 +454,64 @@ Polygon rooms(Rng& rng, size_t size) {
     return p;
 }
 
+// T-junctions: triangular holes whose apex lies inside an edge of the outer parallelogram
+// (bottom, top and the 45-degree left side), and a middle row of square holes, each touched
+// inside its right edge by the apex of a triangle hole. Integer coordinates, exact on the
+// edges. validate() records the splits (see generate()).
+Polygon tJunctions(Rng& rng, size_t size) {
+    int k = std::max(2, int(size / 16));
+    double W = 4.0 * k + 4, H = 12, S = H;
+    Polygon p;
+    p.addRing({{0, 0}, {W, 0}, {W + S, H}, {S, H}}, true);
+    for (int i = 1; i <= k; ++i) {
+        double x = 4 * i;
+        if (rng.range(0, 3) != 0) {  // apex inside the bottom edge
+            double h = rng.range(1, 2);
+            p.addRing({{x, 0}, {x + 1, h}, {x - 1, h}}, false);
+        }
+        if (rng.range(0, 3) != 0) {  // apex inside the top edge
+            double h = rng.range(1, 2), xt = x + S;
+            p.addRing({{xt, H}, {xt - 1, H - h}, {xt + 1, H - h}}, false);
+        }
+        // A square at height 5..7, a triangle touching its right edge at height 5, 6 or 7 -
+        // only strictly inside the edge, so 6 unless the square is taller.
+        double x0 = x + 5, top = 7 + rng.range(0, 1);
+        p.addRing({{x0, 5}, {x0 + 1, 5}, {x0 + 1, top}, {x0, top}}, false);
+        if (rng.range(0, 2) != 0) {
+            double ay = 6 + (top > 7 ? rng.range(0, 1) : 0);
+            p.addRing({{x0 + 1, ay}, {x0 + 2.5, ay - 0.5}, {x0 + 2.5, ay + 0.5}}, false);
+        }
+    }
+    // On the left side (t, t), clear of the other holes: a triangle with its apex inside it.
+    if (rng.range(0, 1)) p.addRing({{4, 4}, {5.5, 4}, {5.5, 5}}, false);
+    return p;
+}
+
+// Steiner points: a square of cells, each empty, a square hole, or up to three single-point
+// holes at distinct integer points (many equal heights).
+Polygon steinerPoints(Rng& rng, size_t size) {
+    int k = std::max(2, int(std::sqrt(double(size) / 2.5)));
+    Polygon p;
+    p.addRing({{0, 0}, {4.0 * k, 0}, {4.0 * k, 4.0 * k}, {0, 4.0 * k}}, true);
+    for (int i = 0; i < k; ++i)
+        for (int j = 0; j < k; ++j) {
+            double x = 4 * i, y = 4 * j;
+            int kind = rng.range(0, 3);
+            if (kind == 0) {
+                p.addRing({{x + 1, y + 1}, {x + 3, y + 1}, {x + 3, y + 3}, {x + 1, y + 3}}, false);
+                continue;
+            }
+            bool used[3][3] = {};
+            for (int m = 0; m < kind; ++m) {
+                int a = rng.range(0, 2), b = rng.range(0, 2);
+                if (used[a][b]) continue;
+                used[a][b] = true;
+                p.addRing({{x + 1 + a, y + 1 + b}}, false);
+            }
+        }
+    return p;
+}
+
 // Several separate parts in a row, each a square, most with a square hole.
 Polygon islands(Rng& rng, size_t size) {
     int k = std::max(2, int(size / 8));
@@ -498,6 +557,10 @@ const Family kFamilies[] = {
      touchingHoles},
     {"rooms", "floor plan: plus-shaped wall holes, wall stubs on the outer ring", rooms},
     {"islands", "several separate square parts, most with a square hole", islands},
+    {"t-junctions", "holes touching the outer ring and each other inside edges (T-junctions)",
+     tJunctions},
+    {"steiner", "single-point holes (Steiner points) and square holes on a grid of cells",
+     steinerPoints},
 };
 
 }  // namespace
@@ -518,7 +581,9 @@ Polygon generate(const std::string& family, uint64_t seed, size_t size) {
     for (const Family& f : kFamilies)
         if (family == f.name) {
             Rng rng(seed * 0x2545f4914f6cdd1dULL + 0x1234567);
-            return f.make(rng, size);
+            Polygon p = f.make(rng, size);
+            validate(p, family);  // records the T-junctions (Polygon::splits), if any
+            return p;
         }
     assert(false && "generate(): unknown family; see familyNames()");
     return {};
@@ -538,6 +603,8 @@ Polygon transform(const Polygon& polygon, int rotation90, bool mirror, bool reve
         if (reverse) std::reverse(first, last);
         if (r.count > 0) std::rotate(first, first + long(shift % r.count), last);
     }
+    // Vertex indices moved: find the T-junctions again.
+    if (!out.splits.empty() && (reverse || shift != 0)) validate(out, "transform");
     return out;
 }
 

@@ -32,8 +32,9 @@ void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Poi
     pts.reserve(raw.size());
     for (size_t i = 0; i < raw.size(); ++i) {
         if (!pts.empty() && raw[i] == pts.back()) {
-            // The last point repeating the first is a closing point, not a duplicate.
-            if (i + 1 == raw.size() && pts.size() > 1 && raw[i] == pts.front()) continue;
+            // The last point repeating the first is a closing point, not a duplicate (also
+            // of a point hole, written [p, p]).
+            if (i + 1 == raw.size() && (pts.size() > 1 || i == 1) && raw[i] == pts.front()) continue;
             rr.warnings.push_back(name + ": ring " + std::to_string(ring) + " vertex " +
                                   std::to_string(i) + " " + formatPoint(raw[i]) +
                                   ": repeated point dropped");

@@ -65,6 +65,10 @@ std::string bridge(const Polygon& polygon, const Event& e) {
     else
         why = "Sag " + vertex(polygon, e.sag) + " hangs in the gorge above the water and below " +
               fingerName(e.side) + " (" + vertex(polygon, finger(e.before, e.side)) + ")";
+    if (e.gorgePushed == kNone)  // a Steiner point bounds nothing: nothing to split
+        return why + ": it is a single point; a bridge joins it to the water at " +
+               vertex(polygon, e.bridgeTo) + " and the chain runs on through it" +
+               cutting(e, "", " (the wedge the point sees)") + ".";
     return why + ": a bridge joins it to the water at " + vertex(polygon, e.bridgeTo) +
            " and splits the gorge; the left half floods on, the right half waits on the to-do "
            "list" +

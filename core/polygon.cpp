@@ -24,7 +24,12 @@ size_t Polygon::expectedTriangles() const {
                   [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
         size_t copies = 0;
         for (size_t i = 1; i < pts.size(); ++i) copies += pts[i] == pts[i - 1];
-        t += n + 2 * (p.ringCount - 1) - 2 - 2 * copies;
+        // A T-junction adds a boundary node at a point that is already a vertex: one node
+        // more, one copy more. A single-point hole has one vertex but turns by 0, not 2pi.
+        size_t junctions = 0, points = 0;
+        for (const EdgeSplit& s : splits) junctions += s.edge >= first && s.edge < first + n;
+        for (Index r = p.firstRing + 1; r < p.firstRing + p.ringCount; ++r) points += rings[r].count == 1;
+        t += n + 2 * (p.ringCount - 1) - 2 - 2 * copies - junctions - points;
     }
     return t;
 }

@@ -28,16 +28,27 @@ struct Part {
     Index ringCount = 0;
 };
 
+// A T-junction: `vertex` (of one ring) lies strictly inside the edge `edge` -> next(edge) of
+// another ring of its part. The rings touch there at a single point (§1's non-manifold
+// vertices), so the boundary passes through that vertex twice: the flood machine and the
+// checker split the edge there. validate() finds them; nothing else adds any.
+struct EdgeSplit {
+    Index edge = 0;    // first vertex of the split edge
+    Index vertex = 0;  // the touching vertex
+};
+
 // Vertices of all rings concatenated in file order (closing points dropped).
 struct Polygon {
     std::vector<Point> vertices;
     std::vector<Ring> rings;
     std::vector<Part> parts;
+    std::vector<EdgeSplit> splits;  // T-junction touches, sorted by edge (see validate())
 
     Index ringOf(Index v) const;  // ring containing vertex v (binary search)
     size_t holeCount() const { return rings.size() - parts.size(); }
     // n + 2h - 2 per part, summed: the triangle count of any triangulation (§1); two fewer
-    // for each extra copy of a point where rings touch.
+    // for each extra copy of a point where rings touch, one fewer for each T-junction and
+    // for each hole that is a single point (a Steiner point).
     size_t expectedTriangles() const;
     // Adds a ring; starts a new part when `outer` is true.
     void addRing(const std::vector<Point>& pts, bool outer);

@@ -22,6 +22,14 @@ inline bool below(Point a, Point b) { return a.y < b.y || (a.y == b.y && a.x < b
 // left, is strictly convex (turns left). Collinear corners count as not convex.
 inline bool convex(Point prev, Point v, Point next) { return orient(prev, v, next) > 0; }
 
+// c lies on the segment a-b strictly between its ends (a T-junction). Exact: one orient and
+// coordinate comparisons.
+inline bool insideSegment(Point a, Point b, Point c) {
+    if (c == a || c == b || orient(a, b, c) != 0) return false;
+    if (a.x != b.x) return (a.x < c.x && c.x < b.x) || (b.x < c.x && c.x < a.x);
+    return (a.y < c.y && c.y < b.y) || (b.y < c.y && c.y < a.y);
+}
+
 // inside(s, left, right, nextRight, nextLeft): s lies strictly inside the quadrangle
 // Left, Right, NextRight, NextLeft (counter-clockwise in that order), the region of the
 // active gorge between the water level and the next water level (§5, Fig. 4).

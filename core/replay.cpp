@@ -78,14 +78,20 @@ void Replay::apply(const Event& e) {
         case Action::Bridge: {
             size_t i = std::min<size_t>(e.chainIndex, chain.empty() ? 0 : chain.size() - 1);
             size_t keepLeft = i + 1 >= e.cutLeft ? i + 1 - e.cutLeft : 0;
-            Gorge other;
-            other.id = e.gorgePushed;
-            other.chain.push_back(e.sag);
-            other.chain.insert(other.chain.end(), chain.begin() + long(std::min(chain.size(), i + e.cutRight)),
-                               chain.end());
+            // What stays right of the sag: the copy of the chain vertex and the chain after
+            // it, less the wedge cut there.
+            std::vector<Index> rightPart(chain.begin() + long(std::min(chain.size(), i + e.cutRight)), chain.end());
             chain.resize(keepLeft);
             chain.push_back(e.sag);
-            s.dormant.push_back(std::move(other));
+            if (e.gorgePushed == kNone) {  // a Steiner point: the chain runs on through it
+                chain.insert(chain.end(), rightPart.begin(), rightPart.end());
+            } else {
+                Gorge other;
+                other.id = e.gorgePushed;
+                other.chain.push_back(e.sag);
+                other.chain.insert(other.chain.end(), rightPart.begin(), rightPart.end());
+                s.dormant.push_back(std::move(other));
+            }
             s.bridges.emplace_back(e.sag, e.bridgeTo);
             break;
         }

@@ -134,9 +134,11 @@ double roundBits(double x, int bits) {
 class Shrinker {
 public:
     Shrinker(const Polygon& input, const ShrinkOptions& o) : o_(o) {
-        result_.inputValid = validate(input, "shrink").ok();
-        result_.failure = test(input);
-        result_.polygon = input;
+        Polygon checked = input;  // validate() records the T-junctions the flood needs
+        result_.inputValid = validate(checked, "shrink").ok();
+        if (!result_.inputValid) checked.splits = input.splits;
+        result_.failure = test(checked);
+        result_.polygon = checked;
         best_ = toParts(input);
     }
 

@@ -200,6 +200,13 @@ void parseHeader(const json& h, Polygon& p) {
         next += count;
     }
     if (next != p.rings.size()) throw Bad{"parts do not cover all rings"};
+    // T-junctions (optional: only written when there are any).
+    if (h.contains("splits"))
+        for (auto [edge, vertex] : pairs("splits")) {
+            if (edge >= p.vertices.size() || vertex >= p.vertices.size())
+                throw Bad{"\"splits\" names a vertex beyond the vertex list"};
+            p.splits.push_back({edge, vertex});
+        }
 }
 
 }  // namespace
@@ -215,6 +222,11 @@ void writeTrace(std::ostream& out, const Trace& trace) {
                    {"vertices", vertices},
                    {"rings", rings},
                    {"parts", parts}};
+    if (!p.splits.empty()) {
+        json splits = json::array();
+        for (const EdgeSplit& sp : p.splits) splits.push_back({sp.edge, sp.vertex});
+        header["splits"] = splits;
+    }
     out << header.dump() << "\n";
     for (const Event& e : trace.events) out << eventJson(e).dump() << "\n";
     json tris = json::array();

@@ -3,21 +3,22 @@
 // Checks, in this order; the first failing check is reported, and within a check the problem
 // with the lowest vertex (or edge) index, so the message does not depend on grid sizes:
 //   1. every coordinate is finite;
-//   2. every ring has at least 3 distinct points and no zero-length edge;
+//   2. every ring has at least 3 distinct points and no zero-length edge — except a hole of
+//      exactly one point, a Steiner point the triangulation must use;
 //   3. every ring has a non-zero signed area (exact, ExactSum);
-//   4. no two edges of the polygon (all parts) cross, overlap collinearly, or have a vertex
-//      lying in the interior of another edge; a spike (an edge folding back on the previous
-//      one) counts as an overlap;
-//   5. where rings meet at a shared vertex (the same coordinates appear as a vertex more than
-//      once, in two rings or twice in one ring) they touch without crossing: around the shared
-//      point the wedges of the rings do not interleave;
+//   4. no two edges of the polygon (all parts) cross or overlap collinearly; a spike (an edge
+//      folding back on the previous one) counts as an overlap. A vertex lying in the interior
+//      of an edge of another ring of its part is a touch (a T-junction): it is recorded in
+//      Polygon::splits, and the loops pass through it twice like at a shared vertex. On its own
+//      ring's edge it is refused (a ring must be simple); a point hole may touch nothing;
+//   5. where rings meet — a shared vertex (the same coordinates appear as a vertex more than
+//      once) or a T-junction — they touch without crossing: around the point the wedges of
+//      the rings do not interleave; and the touches keep the interior connected (no ring
+//      touching itself, no cycle of touching rings);
 //   6. each hole lies inside its outer ring, and not inside another hole of its part
 //      (with 4 and 5, this means hole interiors do not overlap).
-// Not detected (documented in docs/ERRORS.md): an interior disconnected by a chain of
-// touching holes (GEOS "Interior is disconnected"); a ring touching itself at a vertex is
-// accepted (GEOS calls it "Ring Self-intersection"); a part lying inside another part of a
-// multipolygon. Rings touching at a point that is a vertex of one ring but interior to an
-// edge of the other are rejected (GEOS accepts them): the flood machine needs shared vertices.
+// Not detected (documented in docs/ERRORS.md): a part lying inside another part of a
+// multipolygon.
 //
 // All decisions use the exact flood::orient() and coordinate comparisons; no floating-point
 // arithmetic decides anything. Cost: O(n log n) — a sort of the vertices for the sweep, a
@@ -40,6 +41,7 @@ using io_detail::formatPoint;
 struct Validator {
     const Polygon& P;
     const std::string& name;
+    std::vector<EdgeSplit> splits;  // T-junctions found by the sweep (check 4)
     size_t n = 0;
     std::vector<Index> ringOfV;  // ring of each vertex
     std::vector<int> ringSign;   // orientation of each ring: +1 counter-clockwise, -1 clockwise
@@ -56,6 +58,8 @@ struct Validator {
         return v == r.first ? r.first + r.count - 1 : v - 1;
     }
     Point pt(Index v) const { return P.vertices[v]; }
+    // A hole of a single point (a Steiner point): no edges, no area.
+    bool isPoint(Index v) const { return P.rings[ringOfV[v]].count == 1; }
 
     // "ring R vertex V (x, y)" for global vertex v.
     std::string at(Index v) const {
@@ -67,6 +71,13 @@ struct Validator {
         return {Status::Invalid, name + ": " + at(v) + ": " + reason + " (global vertex " +
                                      std::to_string(v) + ")"};
     }
+    // "ring R edge A-B (x, y)-(x, y)" for the edge e -> next(e).
+    std::string edgeText(Index e) const {
+        Index r = ringOfV[e];
+        return "ring " + std::to_string(r) + " edge " + std::to_string(e - P.rings[r].first) +
+               "-" + std::to_string(next(e) - P.rings[r].first) + " " + formatPoint(pt(e)) +
+               "-" + formatPoint(pt(next(e)));
+    }
 
     Diagnostic run();
     Diagnostic checkRings();
@@ -77,9 +88,21 @@ struct Validator {
 
     // Vertices sorted by coordinates; groups of equal coordinates with more than one member.
     std::vector<Index> byCoord;
-    std::vector<std::pair<Index, Index>> groups;  // [begin, end) ranges into byCoord
-    std::vector<Index> groupOf;                   // group of each vertex, or kNone
+    std::vector<Index> groupOf;  // touch point (index into touchPoints) of each vertex, or kNone
     std::vector<Index> enclosing;  // innermost ring whose interior contains each ring
+
+    // Where rings touch (check 5): every ring passing through one point, as the wedge of its
+    // two rays there. A vertex occurrence has owner = its vertex; a T-junction's edge has
+    // owner = n + its index in `splits`.
+    struct Occurrence {
+        Index owner, ring;
+        Point from, to;  // the ring arrives from `from` and leaves towards `to`
+    };
+    std::vector<std::vector<Occurrence>> touchPoints;
+    void collectTouchPoints();
+    std::string occurrenceText(const Occurrence& o) const {
+        return o.owner < n ? at(o.owner) : "edge " + edgeText(splits[o.owner - n].edge);
+    }
 };
 
 // --- exact geometric helpers -------------------------------------------------------------
@@ -98,13 +121,6 @@ bool sameDirection(Point p, Point a, Point b) {
     return half(p, a) == half(p, b) && orient(p, a, b) == 0;
 }
 
-// c lies on segment a-b strictly between its ends; requires orient(a, b, c) == 0.
-bool strictlyBetween(Point a, Point b, Point c) {
-    if (c == a || c == b) return false;
-    if (a.x != b.x) return (a.x < c.x && c.x < b.x) || (b.x < c.x && c.x < a.x);
-    return (a.y < c.y && c.y < b.y) || (b.y < c.y && c.y < a.y);
-}
-
 // --- checks 1 to 3: coordinates and rings ------------------------------------------------
 
 Diagnostic Validator::checkRings() {
@@ -117,6 +133,8 @@ Diagnostic Validator::checkRings() {
         if (ring.count == 0)
             return {Status::Invalid, name + ": ring " + std::to_string(r) +
                                          ": ring is empty, it needs at least 3 distinct points"};
+        bool outer = P.parts[partOfRing[r]].firstRing == r;
+        if (ring.count == 1 && !outer) continue;  // a Steiner point
         tmp.assign(P.vertices.begin() + ring.first, P.vertices.begin() + ring.first + ring.count);
         std::sort(tmp.begin(), tmp.end(),
                   [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
@@ -124,7 +142,8 @@ Diagnostic Validator::checkRings() {
         if (distinct < 3)
             return fail(ring.first, "ring has " + std::to_string(distinct) +
                                         " distinct point" + (distinct == 1 ? "" : "s") +
-                                        ", at least 3 are needed");
+                                        ", at least 3 are needed" +
+                                        (outer ? "" : " (or exactly one, a point hole)"));
         for (Index v = ring.first; v < ring.first + ring.count; ++v)
             if (pt(v) == pt(next(v)))
                 return fail(v, "repeated consecutive point (zero-length edge)");
@@ -132,6 +151,7 @@ Diagnostic Validator::checkRings() {
     ringSign.assign(P.rings.size(), 0);
     for (Index r = 0; r < P.rings.size(); ++r) {
         const Ring& ring = P.rings[r];
+        if (ring.count == 1) continue;  // a point hole (an outer ring of one point failed above)
         ExactSum area;
         for (Index v = ring.first; v < ring.first + ring.count; ++v) area.addCross(pt(v), pt(next(v)));
         ringSign[r] = area.sign();
@@ -190,15 +210,26 @@ Diagnostic Validator::checkEdges() {
     });
 
     std::optional<std::pair<Index, std::string>> problem;  // vertex to report, reason
-    auto edgeText = [&](Index e) {
-        Index r = ringOfV[e];
-        return "ring " + std::to_string(r) + " edge " + std::to_string(e - P.rings[r].first) +
-               "-" + std::to_string(next(e) - P.rings[r].first) + " " + formatPoint(pt(e)) +
-               "-" + formatPoint(pt(next(e)));
+    // `vertex` lies strictly inside `edge`: a touch between rings of one part (recorded),
+    // nothing between parts (they are flooded apart), refused on its own ring or for a point.
+    auto onEdge = [&](Index vertex, Index edge) {
+        if (isPoint(vertex))
+            problem.emplace(vertex, "point hole lies on edge " + edgeText(edge) +
+                                        " (a Steiner point must be strictly inside the polygon)");
+        else if (ringOfV[vertex] == ringOfV[edge])
+            problem.emplace(vertex, "the ring touches itself here: the vertex lies on its own edge " +
+                                        edgeText(edge) + " (a ring must be simple)");
+        else if (partOfRing[ringOfV[vertex]] == partOfRing[ringOfV[edge]])
+            splits.push_back({edge, vertex});
     };
     auto testPair = [&](Index e, Index f) {
         if (problem || e == f) return;
+        if (isPoint(f)) std::swap(e, f);
         Point a = pt(e), b = pt(next(e)), c = pt(f), d = pt(next(f));
+        if (isPoint(e)) {  // a point against an edge (or another point: met in check 5)
+            if (!isPoint(f) && insideSegment(c, d, a)) onEdge(e, f);
+            return;
+        }
         // Adjacent edges of one ring meet at their shared vertex; only a spike is wrong.
         bool adjacent = false;
         for (int k = 0; k < 2; ++k) {
@@ -229,14 +260,10 @@ Diagnostic Validator::checkEdges() {
                                         edgeText(hi));
             return;
         }
-        auto onEdge = [&](Index vertex, Index edge) {
-            problem.emplace(vertex, "vertex lies on the interior of edge " + edgeText(edge) +
-                                        " (rings may only touch at shared vertices)");
-        };
-        if (o1 == 0 && strictlyBetween(a, b, c)) onEdge(f, e);
-        else if (o2 == 0 && strictlyBetween(a, b, d)) onEdge(next(f), e);
-        else if (o3 == 0 && strictlyBetween(c, d, a)) onEdge(e, f);
-        else if (o4 == 0 && strictlyBetween(c, d, b)) onEdge(next(e), f);
+        if (o1 == 0 && insideSegment(a, b, c)) onEdge(f, e);
+        else if (o2 == 0 && insideSegment(a, b, d)) onEdge(next(f), e);
+        else if (o3 == 0 && insideSegment(c, d, a)) onEdge(e, f);
+        else if (o4 == 0 && insideSegment(c, d, b)) onEdge(next(e), f);
     };
 
     using Tree = std::set<Index, SweepOrder>;
@@ -244,15 +271,27 @@ Diagnostic Validator::checkEdges() {
     std::vector<Tree::iterator> where(n, active.end());
     enclosing.assign(P.rings.size(), kNone);
     std::vector<char> ringSeen(P.rings.size(), 0);
-    std::vector<Index> ending, starting, newRings;
+    std::vector<Index> ending, starting, points, newRings;
+    // The ring whose interior holds what is just right of the active edge before `it`.
+    auto enclosingAt = [&](Tree::iterator it) {
+        if (it == active.begin()) return kNone;  // nothing to the left: outside everything
+        const Segment& t = segs[*std::prev(it)];
+        Index tr = ringOfV[t.e];
+        bool rightIsInside = t.up ? ringSign[tr] < 0 : ringSign[tr] > 0;
+        return rightIsInside ? tr : enclosing[tr];
+    };
     for (size_t i = 0; i < n && !problem;) {
         size_t j = i;
         Point p = pt(events[i]);
-        ending.clear(), starting.clear(), newRings.clear();
+        ending.clear(), starting.clear(), points.clear(), newRings.clear();
         for (; j < n && pt(events[j]) == p; ++j) {
             Index v = events[j];
-            for (Index e : {prev(v), v}) (segs[e].hi == p ? ending : starting).push_back(e);
             Index r = ringOfV[v];
+            if (isPoint(v)) {
+                points.push_back(v);
+                continue;
+            }
+            for (Index e : {prev(v), v}) (segs[e].hi == p ? ending : starting).push_back(e);
             if (!ringSeen[r]) ringSeen[r] = 1, newRings.push_back(r);
         }
         i = j;
@@ -271,6 +310,15 @@ Diagnostic Validator::checkEdges() {
             if (it != active.begin()) testPair(e, *std::prev(it));
             if (std::next(it) != active.end()) testPair(e, *std::next(it));
         }
+        // A point hole is an edge of no length: placed in the active edges for an instant,
+        // its neighbours tell whether it lies on an edge and which ring encloses it.
+        for (Index v : points) {
+            auto it = active.insert(v).first;
+            if (it != active.begin()) testPair(v, *std::prev(it));
+            if (std::next(it) != active.end()) testPair(v, *std::next(it));
+            enclosing[ringOfV[v]] = enclosingAt(it);
+            active.erase(it);
+        }
         if (problem) break;
         // Rings whose lowest vertex is p, left to right: the edge just left of a ring's
         // leftmost edge bounds the face the ring lies in.
@@ -285,22 +333,30 @@ Diagnostic Validator::checkEdges() {
         std::sort(leftmost.begin(), leftmost.end(), [&](auto a, auto b) {
             return active.key_comp()(a.first, b.first);
         });
-        for (auto [e, r] : leftmost) {
-            auto it = where[e];
-            if (it == active.begin()) continue;  // nothing to the left: outside everything
-            const Segment& t = segs[*std::prev(it)];
-            Index tr = ringOfV[t.e];
-            bool rightIsInside = t.up ? ringSign[tr] < 0 : ringSign[tr] > 0;
-            enclosing[r] = rightIsInside ? tr : enclosing[tr];
-        }
+        for (auto [e, r] : leftmost) enclosing[r] = enclosingAt(where[e]);
     }
     if (problem) return fail(problem->first, problem->second);
+    // One split per edge and point, ordered by edge, then along the edge from its start
+    // (the order the flood machine and the checker walk it in).
+    std::sort(splits.begin(), splits.end(), [&](const EdgeSplit& s, const EdgeSplit& t) {
+        if (s.edge != t.edge) return s.edge < t.edge;
+        Point a = pt(s.edge), b = pt(next(s.edge)), p = pt(s.vertex), q = pt(t.vertex);
+        if (p != q) return a.x != b.x ? (a.x < b.x ? p.x < q.x : p.x > q.x) : (a.y < b.y ? p.y < q.y : p.y > q.y);
+        return s.vertex < t.vertex;
+    });
+    splits.erase(std::unique(splits.begin(), splits.end(),
+                             [&](const EdgeSplit& s, const EdgeSplit& t) {
+                                 return s.edge == t.edge && pt(s.vertex) == pt(t.vertex);
+                             }),
+                 splits.end());
     return {};
 }
 
-// --- check 5: rings meeting at shared vertices -------------------------------------------
+// --- check 5: rings meeting at a point ---------------------------------------------------
 
-Diagnostic Validator::checkSharedVertices() {
+// Groups the ring passages through each touching point: coincident vertices, plus the edge
+// of every T-junction, which passes straight through its vertex's point.
+void Validator::collectTouchPoints() {
     byCoord.resize(n);
     for (Index v = 0; v < n; ++v) byCoord[v] = v;
     std::sort(byCoord.begin(), byCoord.end(), [&](Index a, Index b) {
@@ -308,35 +364,55 @@ Diagnostic Validator::checkSharedVertices() {
         return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && a < b)));
     });
     groupOf.assign(n, kNone);
+    auto vertexOccurrence = [&](Index v) { return Occurrence{v, ringOfV[v], pt(prev(v)), pt(next(v))}; };
     for (Index i = 0; i < n;) {
         Index j = i + 1;
         while (j < n && pt(byCoord[j]) == pt(byCoord[i])) ++j;
         if (j - i > 1) {
-            for (Index k = i; k < j; ++k) groupOf[byCoord[k]] = Index(groups.size());
-            groups.push_back({i, j});
+            std::vector<Occurrence> occ;
+            for (Index k = i; k < j; ++k) {
+                groupOf[byCoord[k]] = Index(touchPoints.size());
+                occ.push_back(vertexOccurrence(byCoord[k]));
+            }
+            touchPoints.push_back(std::move(occ));
         }
         i = j;
     }
-    // Around each shared point, every occurrence contributes a wedge of two rays (to its
-    // previous and next vertex). The rings cross there exactly when two wedges interleave.
+    for (Index k = 0; k < splits.size(); ++k) {
+        Index v = splits[k].vertex, e = splits[k].edge;
+        if (groupOf[v] == kNone) {
+            groupOf[v] = Index(touchPoints.size());
+            touchPoints.push_back({vertexOccurrence(v)});
+        }
+        touchPoints[groupOf[v]].push_back({Index(n + k), ringOfV[e], pt(e), pt(next(e))});
+    }
+}
+
+Diagnostic Validator::checkSharedVertices() {
+    collectTouchPoints();
+    // Around each touching point, every passage contributes a wedge of two rays (to where it
+    // comes from and goes to). The rings cross there exactly when two wedges interleave.
     struct Ray {
         Point to;
-        Index owner;  // the vertex occurrence whose wedge this ray bounds
+        Index owner;  // the passage whose wedge this ray bounds
         bool after;   // the polygon's interior lies just counter-clockwise of this ray
     };
     std::vector<Ray> rays;
     std::vector<Index> stack;
-    for (auto [gb, ge] : groups) {
-        Point p = pt(byCoord[gb]);
+    for (const std::vector<Occurrence>& occ : touchPoints) {
+        Point p = pt(occ[0].owner);
+        for (const Occurrence& o : occ)
+            if (o.owner < n && isPoint(o.owner))
+                return fail(o.owner, "point hole coincides with " +
+                                         occurrenceText(o.owner == occ[0].owner ? occ[1] : occ[0]) +
+                                         " (a Steiner point must be strictly inside the polygon)");
         rays.clear();
-        for (Index k = gb; k < ge; ++k) {
-            Index v = byCoord[k];
-            Index r = ringOfV[v];
-            // Walking prev -> v -> next, the ring's inside is on the left for a
-            // counter-clockwise ring; the polygon's interior is the other side for a hole.
-            bool nextAfter = (ringSign[r] > 0) != (P.parts[partOfRing[r]].firstRing != r);
-            rays.push_back({pt(prev(v)), v, !nextAfter});
-            rays.push_back({pt(next(v)), v, nextAfter});
+        for (const Occurrence& o : occ) {
+            // Walking from -> p -> to, the ring's inside is on the left for a counter-clockwise
+            // ring; the polygon's interior is the other side for a hole.
+            bool nextAfter = (ringSign[o.ring] > 0) != (P.parts[partOfRing[o.ring]].firstRing != o.ring);
+            rays.push_back({o.from, o.owner, !nextAfter});
+            rays.push_back({o.to, o.owner, nextAfter});
         }
         std::sort(rays.begin(), rays.end(),
                   [&](const Ray& a, const Ray& b) { return angleLess(p, a.to, b.to); });
@@ -345,6 +421,15 @@ Diagnostic Validator::checkSharedVertices() {
             if (!stack.empty() && stack.back() == r.owner) stack.pop_back();
             else stack.push_back(r.owner);
         }
+        auto text = [&](Index owner) {
+            for (const Occurrence& o : occ)
+                if (o.owner == owner) return occurrenceText(o);
+            return std::string();
+        };
+        // Messages name a vertex: the lowest one among the passages involved.
+        auto vertexOf = [&](Index owner) { return owner < n ? owner : splits[owner - n].vertex; };
+        bool junction = std::any_of(occ.begin(), occ.end(), [&](const Occurrence& o) { return o.owner >= n; });
+        const std::string here = junction ? "at this touching point" : "at this shared vertex";
         if (stack.empty()) {
             // Sectors between consecutive rays must alternate interior / exterior; otherwise
             // two loops overlap here (a loop nested in another with the same orientation,
@@ -354,34 +439,35 @@ Diagnostic Validator::checkSharedVertices() {
                 const Ray& b = rays[(i + 1) % rays.size()];
                 if (a.after == b.after) {
                     Index u = std::min(a.owner, b.owner), w = std::max(a.owner, b.owner);
-                    return fail(u, "the interior overlaps itself at this shared vertex (" +
-                                       (u == w ? std::string("a ring") : at(w)) +
-                                       " touches here from the inside, with the orientation "
-                                       "of a nested loop or hole)");
+                    return fail(vertexOf(u), "the interior overlaps itself " + here + " (" +
+                                                 (u == w ? std::string("a ring") : text(w)) +
+                                                 " touches here from the inside, with the "
+                                                 "orientation of a nested loop or hole)");
                 }
             }
             continue;
         }
-        // Find the interleaving pair with the lowest vertex ids, for a stable message.
-        std::vector<Index> occ;
-        for (Index k = gb; k < ge; ++k) occ.push_back(byCoord[k]);
-        std::sort(occ.begin(), occ.end());
+        // Find the interleaving pair with the lowest owners, for a stable message.
+        std::vector<Index> owners;
+        for (const Occurrence& o : occ) owners.push_back(o.owner);
+        std::sort(owners.begin(), owners.end());
         auto position = [&](Index owner, int which) {
             int seen = 0;
             for (size_t i = 0; i < rays.size(); ++i)
                 if (rays[i].owner == owner && seen++ == which) return i;
             return rays.size();
         };
-        for (size_t i = 0; i < occ.size(); ++i)
-            for (size_t j = i + 1; j < occ.size(); ++j) {
-                size_t a0 = position(occ[i], 0), a1 = position(occ[i], 1);
-                size_t b0 = position(occ[j], 0), b1 = position(occ[j], 1);
+        for (size_t i = 0; i < owners.size(); ++i)
+            for (size_t j = i + 1; j < owners.size(); ++j) {
+                size_t a0 = position(owners[i], 0), a1 = position(owners[i], 1);
+                size_t b0 = position(owners[j], 0), b1 = position(owners[j], 1);
                 bool inB0 = a0 < b0 && b0 < a1, inB1 = a0 < b1 && b1 < a1;
                 if (inB0 != inB1)
-                    return fail(occ[i], "the boundary crosses itself at this shared vertex (" +
-                                            at(occ[j]) + " passes through to the other side)");
+                    return fail(vertexOf(owners[i]), "the boundary crosses itself " + here + " (" +
+                                                         text(owners[j]) +
+                                                         " passes through to the other side)");
             }
-        return fail(occ[0], "the boundary crosses itself at this shared vertex");
+        return fail(vertexOf(owners[0]), "the boundary crosses itself " + here);
     }
     return checkTouchTopology();
 }
@@ -396,19 +482,19 @@ Diagnostic Validator::checkTouchTopology() {
         while (parent[r] != r) r = parent[r] = parent[parent[r]];
         return r;
     };
-    for (auto [gb, ge] : groups) {
-        std::vector<Index> occ(byCoord.begin() + gb, byCoord.begin() + ge);
-        std::sort(occ.begin(), occ.end());
+    for (std::vector<Occurrence> occ : touchPoints) {
+        std::sort(occ.begin(), occ.end(), [](const Occurrence& a, const Occurrence& b) { return a.owner < b.owner; });
         for (size_t i = 1; i < occ.size(); ++i) {
-            Index a = occ[i - 1], b = occ[i];
-            if (ringOfV[a] == ringOfV[b])
-                return fail(b, "the ring touches itself here (it also passes through " + at(a) +
-                                   "): a ring must be simple");
-            if (partOfRing[ringOfV[a]] != partOfRing[ringOfV[b]]) continue;
-            Index ra = find(ringOfV[a]), rb = find(ringOfV[b]);
+            const Occurrence &a = occ[i - 1], &b = occ[i];
+            Index at = b.owner < n ? b.owner : splits[b.owner - n].vertex;
+            if (a.ring == b.ring)
+                return fail(at, "the ring touches itself here (it also passes through " +
+                                    occurrenceText(a) + "): a ring must be simple");
+            if (partOfRing[a.ring] != partOfRing[b.ring]) continue;
+            Index ra = find(a.ring), rb = find(b.ring);
             if (ra == rb)
-                return fail(b, "rings touching here and elsewhere enclose part of the interior: "
-                               "the interior is disconnected");
+                return fail(at, "rings touching here and elsewhere enclose part of the interior: "
+                                "the interior is disconnected");
             parent[ra] = rb;
         }
     }
@@ -464,8 +550,11 @@ Diagnostic Validator::run() {
 
 }  // namespace
 
-Diagnostic validate(const Polygon& polygon, const std::string& name) {
-    return Validator(polygon, name).run();
+Diagnostic validate(Polygon& polygon, const std::string& name) {
+    Validator v(polygon, name);
+    Diagnostic d = v.run();
+    polygon.splits = d.ok() ? std::move(v.splits) : std::vector<EdgeSplit>{};
+    return d;
 }
 
 }  // namespace flood

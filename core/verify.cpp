@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io.h"
+
 namespace flood {
 
 Polygon complementOf(const Polygon& polygon) {
@@ -24,8 +26,13 @@ Polygon complementOf(const Polygon& polygon) {
     Polygon c;
     c.addRing({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, true);
     for (const Part& part : polygon.parts) c.addRing(ring(part.firstRing), false);
+    // Holes become parts; a point hole bounds no area, so it has no complement.
     for (const Part& part : polygon.parts)
-        for (Index r = part.firstRing + 1; r < part.firstRing + part.ringCount; ++r) c.addRing(ring(r), true);
+        for (Index r = part.firstRing + 1; r < part.firstRing + part.ringCount; ++r)
+            if (polygon.rings[r].count > 1) c.addRing(ring(r), true);
+    // Parts that touched at a T-junction are now holes of the box touching there: validation
+    // records the splits the flood needs (an invalid input leaves none; its flood will fail).
+    validate(c, "complement");
     return c;
 }
 

@@ -10,7 +10,8 @@
 namespace flood {
 
 // The region between a box strictly containing `polygon` and the polygon: the box with every
-// outer ring as a hole, plus every hole of the polygon as an island part of its own.
+// outer ring as a hole, plus every hole of the polygon (but point holes) as an island part of
+// its own; its T-junctions recorded by validate().
 Polygon complementOf(const Polygon& polygon);
 
 struct Verification {

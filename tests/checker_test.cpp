@@ -20,6 +20,12 @@ Polygon square() {
     return p;
 }
 
+Polygon square4() {
+    Polygon p;
+    p.addRing({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, true);
+    return p;
+}
+
 // Regular-ish convex hexagon on integer coordinates, counter-clockwise.
 Polygon hexagon() {
     Polygon p;
@@ -233,4 +239,31 @@ TEST(Checker, MillionTrianglesFast) {
     EXPECT_LT(seconds, 5.0);
     std::swap(t[1000][1], t[1000][2]);
     EXPECT_FALSE(checkTriangulation(p, t).ok);
+}
+
+// A hole touching the square's bottom edge inside it (a T-junction at vertex 4): the edge
+// counts as two boundary edges, 0-4 and 4-1, and the triangle count is one less.
+TEST(Checker, SplitsBoundaryEdgesAtTJunctions) {
+    Polygon p = square4();
+    p.addRing({{2, 0}, {3, 1}, {1, 1}}, false);
+    const std::vector<Triangle> t = {{0, 4, 6}, {4, 1, 5}, {1, 2, 5}, {5, 2, 3}, {5, 3, 6}, {6, 3, 0}};
+    EXPECT_TRUE(rejected(p, t, "triangle-count"));  // without the split: n + 2h - 2 = 7 expected
+    p.splits = {{0, 4}};
+    EXPECT_TRUE(accepted(p, t));
+    p.splits = {{1, 5}};  // (3, 1) is not on the edge (4, 0)-(4, 4)
+    EXPECT_TRUE(rejected(p, t, "bad-split"));
+    p.splits = {{0, 9}};
+    EXPECT_TRUE(rejected(p, t, "bad-split"));
+}
+
+// A single-point hole (a Steiner point) must be a vertex of the triangulation.
+TEST(Checker, PointHolesMustBeUsed) {
+    Polygon p = square4();
+    p.addRing({{1, 1}}, false);
+    EXPECT_TRUE(accepted(p, {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 0, 4}}));
+    EXPECT_TRUE(rejected(p, {{0, 1, 2}, {0, 2, 3}}, "triangle-count"));
+    EXPECT_TRUE(rejected(p, {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {3, 4, 0}}, "clockwise"));
+    Polygon outerPoint;  // an outer ring of one point is no polygon
+    outerPoint.addRing({{1, 1}}, true);
+    EXPECT_TRUE(rejected(outerPoint, {}, "ring-too-short"));
 }

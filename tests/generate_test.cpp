@@ -70,9 +70,15 @@ std::string validity(const Polygon& p) {
         nextRing += part.ringCount;
     }
     if (nextRing != p.rings.size()) return "rings not covered by parts";
-    for (const flood::Ring& ring : p.rings) {
+    std::vector<Index> partOf(p.rings.size());
+    std::vector<bool> isPoint(p.rings.size());  // a hole of one vertex: a Steiner point
+    for (Index pi = 0; pi < p.parts.size(); ++pi)
+        for (Index r = p.parts[pi].firstRing; r < p.parts[pi].firstRing + p.parts[pi].ringCount; ++r)
+            partOf[r] = pi, isPoint[r] = p.rings[r].count == 1 && r != p.parts[pi].firstRing;
+    for (Index r = 0; r < p.rings.size(); ++r) {
+        const flood::Ring& ring = p.rings[r];
         if (ring.first != nextVertex) return "ring bookkeeping";
-        if (ring.count < 3) return "ring with fewer than 3 vertices";
+        if (ring.count < 3 && !isPoint[r]) return "ring with fewer than 3 vertices";
         nextVertex += ring.count;
     }
     if (nextVertex != p.vertices.size()) return "vertices not covered by rings";
@@ -81,6 +87,7 @@ std::string validity(const Polygon& p) {
 
     // Nonzero area, distinct points within a ring.
     for (Index r = 0; r < p.rings.size(); ++r) {
+        if (isPoint[r]) continue;
         flood::ExactSum area;
         const flood::Ring& ring = p.rings[r];
         for (Index i = 0; i < ring.count; ++i)
@@ -94,7 +101,9 @@ std::string validity(const Polygon& p) {
             if (pts[i] == pts[i - 1]) return "ring repeats a point";
     }
 
-    // Edges: any two meet at most at a point that is an endpoint of both.
+    // Edges: any two meet at most at a point that is an endpoint of both, or at a vertex of one
+    // inside the other when their rings differ but share a part (a T-junction, a touch).
+    std::vector<std::pair<Index, Index>> touches;  // rings touching at a T-junction
     struct Edge {
         Point a, b;
         Index ring;
@@ -102,7 +111,7 @@ std::string validity(const Polygon& p) {
     std::vector<Edge> edges;
     for (Index r = 0; r < p.rings.size(); ++r) {
         const flood::Ring& ring = p.rings[r];
-        for (Index i = 0; i < ring.count; ++i)
+        for (Index i = 0; i < ring.count && !isPoint[r]; ++i)
             edges.push_back({p.vertices[ring.first + i],
                              p.vertices[ring.first + (i + 1) % ring.count], r});
     }
@@ -117,18 +126,36 @@ std::string validity(const Polygon& p) {
                 return err.str();
             }
             auto endpointOf = [](Point s, const Edge& g) { return s == g.a || s == g.b; };
+            bool junctionAllowed = e.ring != f.ring && partOf[e.ring] == partOf[f.ring];
             for (Point s : {f.a, f.b})
                 if (onClosedSegment(s, e.a, e.b) && !endpointOf(s, e)) {
+                    if (junctionAllowed && !onClosedSegment(s == f.a ? f.b : f.a, e.a, e.b)) {
+                        touches.push_back({e.ring, f.ring});
+                        continue;
+                    }
                     err << "vertex (" << s.x << ", " << s.y << ") of edge " << j << " touches edge " << i;
                     return err.str();
                 }
             for (Point s : {e.a, e.b})
                 if (onClosedSegment(s, f.a, f.b) && !endpointOf(s, f)) {
+                    if (junctionAllowed && !onClosedSegment(s == e.a ? e.b : e.a, f.a, f.b)) {
+                        touches.push_back({e.ring, f.ring});
+                        continue;
+                    }
                     err << "vertex (" << s.x << ", " << s.y << ") of edge " << i << " touches edge " << j;
                     return err.str();
                 }
             if ((e.a == f.a && e.b == f.b) || (e.a == f.b && e.b == f.a)) return "repeated edge";
         }
+
+    // Steiner points: strictly inside the outer ring, on no ring (checked below: not inside a
+    // hole), at no other vertex.
+    for (Index r = 0; r < p.rings.size(); ++r) {
+        if (!isPoint[r]) continue;
+        Point s = p.vertices[p.rings[r].first];
+        for (Index g = 0; g < p.rings.size(); ++g)
+            if (g != r && onRing(s, p, g)) return "point hole on a ring";
+    }
 
     // Nesting: holes inside their outer ring and outside each other; parts outside each other.
     for (Index pi = 0; pi < p.parts.size(); ++pi) {
@@ -162,11 +189,16 @@ std::string validity(const Polygon& p) {
             at[{v.x + 0.0, v.y + 0.0}].push_back(r);
         }
     for (auto& [point, rings] : at)
-        for (size_t k = 1; k < rings.size(); ++k) {
-            Index a = find(rings[0]), b = find(rings[k]);
-            if (a == b) return "rings touch in a cycle";
-            parent[a] = b;
-        }
+        for (size_t k = 1; k < rings.size(); ++k) touches.push_back({rings[0], rings[k]});
+    // A T-junction at a shared vertex of its edge's ring is one touch, counted once.
+    std::sort(touches.begin(), touches.end());
+    touches.erase(std::unique(touches.begin(), touches.end()), touches.end());
+    for (auto [ra, rb] : touches) {
+        if (partOf[ra] != partOf[rb]) continue;
+        Index a = find(ra), b = find(rb);
+        if (a == b) return "rings touch in a cycle";
+        parent[a] = b;
+    }
     return "";
 }
 
@@ -176,10 +208,21 @@ TEST(Generate, ValidatorRejectsBadPolygons) {
     Polygon bowtie;
     bowtie.addRing({{0, 0}, {2, 2}, {2, 0}, {0, 2}}, true);
     EXPECT_NE(validity(bowtie), "");
-    Polygon touching;  // vertex on another ring's edge interior
+    Polygon touching;  // vertex on another ring's edge interior: a T-junction, fine
     touching.addRing({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, true);
     touching.addRing({{2, 0}, {3, 1}, {1, 1}}, false);
+    EXPECT_EQ(validity(touching), "");
+    touching.addRing({{2, 4}, {1, 3}, {3, 1}}, false);  // touching both closes a cycle
     EXPECT_NE(validity(touching), "");
+    Polygon selfTouching;  // vertex on its own ring's edge interior
+    selfTouching.addRing({{0, 0}, {10, 0}, {10, 10}, {6, 3}, {5, 0}, {4, 3}, {0, 10}}, true);
+    EXPECT_NE(validity(selfTouching), "");
+    Polygon steiner;
+    steiner.addRing({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, true);
+    steiner.addRing({{1, 1}}, false);
+    EXPECT_EQ(validity(steiner), "");
+    steiner.addRing({{4, 2}}, false);  // on the outer ring
+    EXPECT_NE(validity(steiner), "");
     Polygon sharedVertex;  // the same at a shared vertex is fine
     sharedVertex.addRing({{0, 0}, {2, 0}, {4, 0}, {4, 4}, {0, 4}}, true);
     sharedVertex.addRing({{2, 0}, {3, 1}, {1, 1}}, false);

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "checker.h"
 #include "io.h"
 #include "replay.h"
 #include "trace_io.h"
@@ -33,6 +34,22 @@ Polygon square(double s = 10) {
 }
 
 }  // namespace
+
+// A Steiner point is written as a closed ring of one point, [p, p] (WKT (x y, x y)): read as a
+// one-vertex hole, without a warning about the closing point.
+TEST(IoRead, PointHoles) {
+    for (const char* text : {"[[[0,0],[4,0],[4,4],[0,4]],[[1,1],[1,1]],[[2,3]]]",
+                             "POLYGON((0 0,4 0,4 4,0 4,0 0),(1 1,1 1),(2 3))"}) {
+        ReadResult r = parsePolygon(text, "p");
+        ASSERT_TRUE(r.diagnostic.ok()) << r.diagnostic.message;
+        EXPECT_TRUE(r.warnings.empty()) << text << ": " << r.warnings[0];
+        ASSERT_EQ(r.polygon.rings.size(), 3u);
+        EXPECT_EQ(r.polygon.rings[1].count, 1u);
+        EXPECT_EQ(r.polygon.rings[2].count, 1u);
+        EXPECT_TRUE(validate(r.polygon, "p").ok());
+        EXPECT_EQ(r.polygon.expectedTriangles(), 6u);
+    }
+}
 
 TEST(IoRead, RingArrayAndClosingPointAndDuplicates) {
     ReadResult r = parsePolygon("[[[0,0],[10,0],[10,0],[10,10],[0,10],[0,0]],"
@@ -112,13 +129,45 @@ TEST(IoRead, MalformedMessages) {
 }
 
 TEST(Validate, AcceptsSimpleAndTouching) {
-    EXPECT_TRUE(validate(square(), "sq").ok());
+    Polygon sq = square();
+    EXPECT_TRUE(validate(sq, "sq").ok());
+    EXPECT_TRUE(sq.splits.empty());
     Polygon p = square();
     p.addRing({{0, 0}, {2, 3}, {3, 2}}, false);   // hole touching the outer ring at a corner
     p.addRing({{5, 5}, {6, 5}, {6, 6}, {5, 6}}, false);
     p.addRing({{6, 6}, {7, 6}, {7, 7}}, false);   // holes touching each other at a vertex
     Diagnostic d = validate(p, "t");
     EXPECT_TRUE(d.ok()) << d.message;
+    EXPECT_TRUE(p.splits.empty());
+}
+
+// A hole vertex inside an outer edge (a T-junction) touches like a shared vertex: accepted and
+// recorded as a split of that edge; so is a single-point hole (a Steiner point).
+TEST(Validate, AcceptsTJunctionsAndPointHoles) {
+    Polygon p;
+    p.addRing({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, true);
+    p.addRing({{5, 0}, {6, 1}, {4, 1}}, false);       // vertex 4 on edge 0-1
+    p.addRing({{2, 5}, {3, 6}, {2, 7}, {1, 6}}, false);
+    p.addRing({{3, 6}, {10, 8}, {4, 5}}, false);      // touches ring 2 at (3, 6), ring 0 inside edge 1-2
+    p.addRing({{8, 2}}, false);                       // a Steiner point
+    Diagnostic d = validate(p, "t");
+    ASSERT_TRUE(d.ok()) << d.message;
+    ASSERT_EQ(p.splits.size(), 2u);
+    EXPECT_EQ(p.splits[0].edge, 0u);
+    EXPECT_EQ(p.splits[0].vertex, 4u);
+    EXPECT_EQ(p.splits[1].edge, 1u);
+    EXPECT_EQ(p.splits[1].vertex, 12u);
+    // n + 2h - 2 = 15 + 8 - 2, minus 2 for the shared point, 1 per T-junction, 1 per point.
+    EXPECT_EQ(p.expectedTriangles(), 21u - 2 - 2 - 1);
+    // Several vertices on one edge are ordered along the edge's direction.
+    Polygon q;
+    q.addRing({{10, 0}, {10, 10}, {0, 10}, {0, 0}}, true);
+    q.addRing({{3, 10}, {4, 9}, {2, 9}}, false);
+    q.addRing({{7, 10}, {8, 9}, {6, 9}}, false);
+    ASSERT_TRUE(validate(q, "q").ok());
+    ASSERT_EQ(q.splits.size(), 2u);
+    EXPECT_EQ(q.splits[0].vertex, 7u);  // (7, 10) comes first walking from (10, 10) to (0, 10)
+    EXPECT_EQ(q.splits[1].vertex, 4u);
 }
 
 struct InvalidCase {
@@ -139,8 +188,19 @@ TEST(Validate, RejectsEachClassWithPosition) {
         {"few", poly({{{0, 0}, {1, 0}, {0, 0}, {1, 0}}}), "N: ring 0 vertex 0 (0, 0): ring has 2 distinct points"},
         {"zero", poly({{{0, 0}, {1, 1}, {2, 2}}}), "ring 0 vertex 0 (0, 0): ring has zero area"},
         {"cross", poly({{{0, 0}, {10, 10}, {10, 0}, {0, 12}}}), "ring 0 vertex 0 (0, 0): edge ring 0 edge 0-1"},
-        {"on edge", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{5, 0}, {6, 1}, {4, 1}}}),
-         "ring 1 vertex 0 (5, 0): vertex lies on the interior of edge ring 0 edge 0-1"},
+        {"on own edge", poly({{{0, 0}, {10, 0}, {10, 10}, {6, 3}, {5, 0}, {4, 3}, {0, 10}}}),
+         "ring 0 vertex 4 (5, 0): the ring touches itself here: the vertex lies on its own edge ring 0 edge 0-1"},
+        {"T-junction crossing", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{5, 0}, {6, 1}, {4, -2}}}),
+         "cross"},
+        {"point on edge", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{5, 0}}}),
+         "ring 1 vertex 0 (5, 0): point hole lies on edge ring 0 edge 0-1"},
+        {"point on vertex", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{10, 10}}}),
+         "point hole coincides with ring 0 vertex 2"},
+        {"point outside", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{20, 5}}}),
+         "ring 1 vertex 0 (20, 5): hole (ring 1) lies outside its outer ring (ring 0)"},
+        {"point outer ring", poly({{{1, 1}}}), "ring has 1 distinct point, at least 3 are needed"},
+        {"two-point hole", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{2, 2}, {3, 3}}}),
+         "ring has 2 distinct points, at least 3 are needed (or exactly one, a point hole)"},
         {"overlap", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{2, 0}, {4, 0}, {3, 1}}}),
          "edge ring 0 edge 0-1 (0, 0)-(10, 0)"},
         {"overlap at shared vertex", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{0, 0}, {0, 4}, {1, 1}}}),
@@ -166,10 +226,11 @@ TEST(Validate, RejectsEachClassWithPosition) {
     cases.erase(fanCase);
     // A ring touching itself at a vertex (an hourglass of two lobes) is not simple: GEOS
     // calls it a ring self-intersection, and so do we.
-    Diagnostic bow = validate(poly({{{0, 0}, {2, 2}, {0, 4}, {4, 4}, {2, 2}, {4, 0}}}), "N");
+    Polygon bowTie = poly({{{0, 0}, {2, 2}, {0, 4}, {4, 4}, {2, 2}, {4, 0}}});
+    Diagnostic bow = validate(bowTie, "N");
     EXPECT_EQ(bow.status, Status::Invalid);
     EXPECT_TRUE(contains(bow.message, "touches itself")) << bow.message;
-    for (const InvalidCase& c : cases) {
+    for (InvalidCase& c : cases) {
         Diagnostic d = validate(c.polygon, "N");
         EXPECT_EQ(d.status, Status::Invalid) << c.what;
         EXPECT_TRUE(contains(d.message, c.expect)) << c.what << ": " << d.message;
@@ -203,12 +264,12 @@ TEST(Validate, EarcutFixturesMatchGeos) {
         if (ok != geosValid[stem]) disagreements.push_back(stem);
     }
     EXPECT_EQ(files, 59u);
-    // validate() accepts exactly GEOS's valid fixtures but two known gaps (docs/ERRORS.md):
-    // steiner's single-point "holes" and touching2's hole vertex inside an outer edge.
+    // validate() accepts exactly GEOS's valid fixtures (touching2's T-junction and steiner's
+    // single-point holes included).
     std::sort(disagreements.begin(), disagreements.end());
     std::string list;
     for (auto& s : disagreements) list += s + " ";
-    EXPECT_EQ(list, "steiner touching2 ") << "validate() disagrees with GEOS on: " << list;
+    EXPECT_EQ(list, "") << "validate() disagrees with GEOS on: " << list;
 }
 
 TEST(IoWrite, JsonRoundTripsExactly) {
@@ -276,6 +337,22 @@ TEST(TraceIo, RoundTripAndErrors) {
     }
     EXPECT_EQ(back.triangles, t.triangles);
     EXPECT_EQ(back.polygon.vertices.size(), t.polygon.vertices.size());
+    // T-junctions travel with the polygon.
+    ReadResult tjRead = readPolygonFile(source("polygons/t-junction.json"));
+    Polygon& tj = tjRead.polygon;
+    ASSERT_TRUE(validate(tj, "tj").ok());
+    ASSERT_FALSE(tj.splits.empty());
+    Trace withSplits = record(tj);
+    std::ostringstream tjOut;
+    writeTrace(tjOut, withSplits);
+    Trace tjBack;
+    ASSERT_TRUE(parseTrace(tjOut.str(), "tj.jsonl", tjBack).ok());
+    ASSERT_EQ(tjBack.polygon.splits.size(), tj.splits.size());
+    for (size_t i = 0; i < tj.splits.size(); ++i) {
+        EXPECT_EQ(tjBack.polygon.splits[i].edge, tj.splits[i].edge);
+        EXPECT_EQ(tjBack.polygon.splits[i].vertex, tj.splits[i].vertex);
+    }
+    EXPECT_TRUE(checkTriangulation(tjBack.polygon, tjBack.triangles).ok);
     // Damage: wrong version, bad line, truncated, index out of range.
     std::string text = out.str();
     std::string v2 = text;

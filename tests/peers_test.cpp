@@ -25,10 +25,6 @@ std::map<std::string, std::string> geosVerdicts() {
     return verdicts;
 }
 
-// Known gap: a vertex of one ring lying inside an edge of another (not at a shared vertex)
-// is refused by validation for now (docs/ALGORITHM.md, "Touching rings").
-const char* const kRefusedButGeosValid[] = {"touching2", "steiner"};
-
 TEST(Peers, GeosValidFixturesTriangulateExactly) {
     auto verdicts = geosVerdicts();
     if (verdicts.empty()) GTEST_SKIP() << sharedPath("peers/earcut") << " is absent";
@@ -40,20 +36,14 @@ TEST(Peers, GeosValidFixturesTriangulateExactly) {
         std::string path = sharedPath("peers/earcut/fixtures/" + name + ".json");
         ReadResult rr = readPolygonFile(path);
         ASSERT_TRUE(rr.diagnostic.ok()) << rr.diagnostic.message;
-        bool knownGap = std::find(std::begin(kRefusedButGeosValid), std::end(kRefusedButGeosValid), name) !=
-                        std::end(kRefusedButGeosValid);
         Diagnostic d = validate(rr.polygon, path);
-        if (knownGap) {
-            EXPECT_EQ(d.status, Status::Invalid) << name;
-            EXPECT_NE(d.message.find(name), std::string::npos) << d.message;
-            continue;
-        }
         ASSERT_TRUE(d.ok()) << d.message;
         expectTriangulates(rr.polygon, name);
         ++checked;
     }
+    // touching2 (a T-junction) and steiner (point holes) among them.
+    EXPECT_EQ(checked, 32u);
     EXPECT_EQ(valid, 32u);
-    EXPECT_EQ(checked, 30u);
 }
 
 TEST(Peers, InvalidFixturesAreRefusedOrCleaned) {

@@ -48,9 +48,12 @@ inline RunResult runCli(const std::string& args) {
     return r;
 }
 
+// Reads a polygon, and validates it as the CLI does, so a valid one carries its T-junctions
+// (Polygon::splits); an invalid one is returned as read, for the machine to diagnose.
 inline Polygon readOrFail(const std::string& path) {
     ReadResult r = readPolygonFile(path);
     EXPECT_TRUE(r.diagnostic.ok()) << r.diagnostic.message;
+    validate(r.polygon, path);
     return r.polygon;
 }
 

@@ -44,17 +44,15 @@ std::vector<VertexClass> classifyVertices(const Polygon& polygon) {
     const auto& v = polygon.vertices;
     for (size_t r = 0; r < polygon.rings.size(); ++r) {
         const Ring& ring = polygon.rings[r];
+        if (ring.count == 1) out[ring.first] = VertexClass::Sag;  // a Steiner point: a hole's bottom
         if (ring.count < 3) continue;
         // The file may list a ring either way; the predicates want the interior on the left.
         // Outer rings of a part come first: holes must turn the other way.
         bool isOuter = false;
         for (const Part& p : polygon.parts) isOuter |= (p.firstRing == r);
-        double area2 = 0;
-        for (Index i = 0; i < ring.count; ++i) {
-            Point a = v[ring.first + i], b = v[ring.first + (i + 1) % ring.count];
-            area2 += a.x * b.y - a.y * b.x;
-        }
-        bool reversed = isOuter ? area2 < 0 : area2 > 0;
+        ExactSum area2;
+        for (Index i = 0; i < ring.count; ++i) area2.addCross(v[ring.first + i], v[ring.first + (i + 1) % ring.count]);
+        bool reversed = isOuter ? area2.sign() < 0 : area2.sign() > 0;
         for (Index i = 0; i < ring.count; ++i) {
             Point prev = v[ring.first + (i + ring.count - 1) % ring.count];
             Point cur = v[ring.first + i];

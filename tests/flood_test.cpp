@@ -46,7 +46,7 @@ TEST(Flood, LargeGeneratedPolygons) {
 }
 
 TEST(Flood, EveryChosenVerticalGivesAValidTriangulation) {
-    for (const std::string& family : {"comb", "spiral", "touching-holes", "rooms"}) {
+    for (const char* family : {"comb", "spiral", "touching-holes", "rooms"}) {
         Polygon p = generate(family, 3, 200);
         for (Up up : {Up::PlusY, Up::MinusY, Up::PlusX, Up::MinusX})
             expectTriangulates(p, std::string(family) + " up " + std::to_string(int(up)), Options{up});

@@ -61,8 +61,11 @@ TEST(Replay, SeekEqualsSteppingForwardAndBackward) {
         for (uint32_t k = 0; k <= stepper.size(); ++k) forward.push_back(stepper.seek(k));
         for (uint32_t k = seeker.size() + 1; k-- > 0;)
             ASSERT_TRUE(sameState(seeker.seek(k), forward[k])) << "backward seek to " << k;
-        for (uint32_t k : {7u, 3u, 40u, 0u, 99u, 12u})
-            if (k <= seeker.size()) ASSERT_TRUE(sameState(seeker.seek(k), forward[k])) << "seek " << k;
+        for (uint32_t k : {7u, 3u, 40u, 0u, 99u, 12u}) {
+            if (k <= seeker.size()) {
+                ASSERT_TRUE(sameState(seeker.seek(k), forward[k])) << "seek " << k;
+            }
+        }
     }
 }
 

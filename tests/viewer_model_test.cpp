@@ -168,6 +168,30 @@ TEST(ViewerModel, LongRunsReplayAcrossKeyframes) {
     }
 }
 
+TEST(ViewerModel, KeyframesStaySmallAndSeekExactly) {
+    // Many dormant gorges at once (circle-sqrt-holes) and a long active chain (comb): the
+    // keyframes share dormant chains and are spaced by their size, yet every seek is exact.
+    for (const char* family : {"circle-sqrt-holes", "comb", "circle-holes"}) {
+        Trace t = record(generate(family, 3, 4000));
+        ASSERT_TRUE(t.diagnostic.ok()) << family << ": " << t.diagnostic.message;
+        Replay stepper(t, 1u << 30);  // the first keyframe only: pure stepping
+        for (uint32_t interval : {4u, 256u}) {
+            Replay seeker(t, interval);
+            SCOPED_TRACE(std::string(family) + " interval " + std::to_string(interval));
+            EXPECT_GT(seeker.keyframeCount(), t.events.size() / (256 * Replay::kMaxWorkFactor));
+            // Full copies (every dormant chain, every bridge) would cost ~1 kB per event here.
+            EXPECT_LT(seeker.keyframeBytes(), 128 * t.events.size() + 512 * seeker.keyframeCount());
+            const uint32_t n = seeker.size();
+            for (uint32_t s = 0; s <= n; ++s) {
+                uint32_t target = uint32_t((uint64_t(s) * 7919u) % (n + 1));
+                ReplayState want = stepper.seek(target);
+                expectSame(seeker.seek(target), want, "seek " + std::to_string(target));
+                if (HasFailure()) return;
+            }
+        }
+    }
+}
+
 TEST(ViewerModel, PlaybackStopsAtBreakpointAndEnd) {
     Model m;
     m.openPolygon(generate("comb", 3, 60), "comb", {});

@@ -49,6 +49,8 @@ void canvasInput(Ui& ui) {
         if (v == f.nextLeft) ImGui::TextColored(toImVec4(palette::kNextLeft), "NextLeft");
         if (v == f.nextRight) ImGui::TextColored(toImVec4(palette::kNextRight), "NextRight");
         if (v == m.state().water) ImGui::Text("water level");
+        for (auto [top, to] : m.state().jumps)
+            if (top == v) ImGui::TextColored(toImVec4(palette::kJump), "jump pointer -> %u", to);
         ImGui::TextDisabled("right-click: break when it becomes Left/Right/Next");
         ImGui::EndTooltip();
         if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {

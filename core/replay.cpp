@@ -21,6 +21,20 @@ std::vector<Index> takeGorge(std::vector<Gorge>& gorges, uint32_t id) {
     }
     return chain;
 }
+
+// What apply() moves for `e` on state `s`, in indices (a memmove of 64 costs about one
+// event): only keyframe spacing uses it, so a rough bound is enough.
+uint64_t movedByApply(const Event& e, const ReplayState& s) {
+    switch (e.action) {
+        case Action::Raise: return e.side == Side::Left ? s.chain.size() : e.triangleCount;
+        case Action::Bridge:  // the part right of the bridge is copied to the new gorge
+            return s.chain.size() - std::min<uint64_t>(s.chain.size(), uint64_t(e.chainIndex) + e.cutRight);
+        case Action::Jump: return s.chain.size() + 4 * s.dormant.size();
+        case Action::Spill:
+        case Action::Fill: return e.gorgePopped != kNone ? 4 * s.dormant.size() : 0;
+        default: return 0;
+    }
+}
 }  // namespace
 
 Trace record(const Polygon& polygon, const Options& options) {
@@ -38,18 +52,124 @@ Trace record(const Polygon& polygon, const Options& options) {
 
 Replay::Replay(const Trace& trace, uint32_t keyframeInterval)
     : trace_(&trace), interval_(std::max<uint32_t>(1, keyframeInterval)) {
-    keyframes_.push_back(state_);
+    // Work is counted in 64ths of an event: an event costs 64 plus what apply() moves.
+    const uint64_t budget = uint64_t(interval_) * 64;
+    uint64_t work = 0, events = 0, fresh = 0;  // fresh: indices of chains pushed since, a bound
+    std::vector<uint32_t> pushed;  // gorges pushed since the last keyframe: their chains are new
+    addKeyframe(pushed);
     for (const Event& e : trace.events) {
+        work += 64 + movedByApply(e, state_);
+        ++events;
         apply(e);
-        if (state_.step % interval_ == 0) keyframes_.push_back(state_);
+        if (e.action == Action::Bridge || e.action == Action::Spill) {
+            pushed.push_back(e.gorgePushed);
+            if (!state_.dormant.empty()) fresh += state_.dormant.back().chain.size();
+        }
+        if (work < budget) continue;
+        // A big state (a long chain, thousands of dormant gorges) waits for enough work that
+        // its copy stays a fixed fraction of the log: memory O(events), seek O(state size).
+        uint64_t own = 16 + state_.chain.size() + 2 * state_.jumps.size() +
+                       4 * state_.dormant.size() + fresh;
+        if (own > kKeyframeRatio * events && work < kMaxWorkFactor * budget) continue;
+        addKeyframe(pushed);
+        pushed.clear();
+        work = events = fresh = 0;
     }
-    state_ = keyframes_.front();
+    bridges_ = std::move(state_.bridges);  // every state's bridges are a prefix of the last's
+    state_.bridges.clear();
+    for (auto& slot : slots_) std::vector<int32_t>().swap(slot);
+    restore(keyframes_.front());
+}
+
+void Replay::addKeyframe(const std::vector<uint32_t>& pushedSince) {
+    Keyframe k;
+    std::vector<Gorge> dormant = std::move(state_.dormant);
+    std::vector<std::pair<Index, Index>> bridges = std::move(state_.bridges);
+    k.head = state_;
+    k.bridgeCount = uint32_t(bridges.size());
+    state_.dormant = std::move(dormant);
+    state_.bridges = std::move(bridges);
+
+    // A gorge keeps its chain while dormant: share it with the previous keyframe when its id
+    // is unique in both and it was not pushed again since. Ids index a table, so huge ids
+    // (only in hand-made traces) are simply not shared.
+    const size_t maxId = 4 * trace_->events.size() + 64;
+    const int32_t kAbsent = -1, kTwice = -2;
+    auto mark = [&](const std::vector<Keyframe::Dormant>& list, std::vector<int32_t>& slot) {
+        for (size_t i = 0; i < list.size(); ++i) {
+            if (list[i].id >= maxId) continue;
+            if (slot.size() <= list[i].id) slot.resize(list[i].id + 1, kAbsent);
+            int32_t& s = slot[list[i].id];
+            s = s == kAbsent ? int32_t(i) : kTwice;
+        }
+    };
+    std::vector<int32_t>& prevSlot = slots_[0];
+    std::vector<int32_t>& curSlot = slots_[1];
+    const Keyframe* prev = keyframes_.empty() ? nullptr : &keyframes_.back();
+    k.dormant.resize(state_.dormant.size());
+    for (size_t i = 0; i < state_.dormant.size(); ++i)
+        k.dormant[i] = {state_.dormant[i].id, state_.dormant[i].top, 0, state_.dormant[i].held};
+    if (prev) mark(prev->dormant, prevSlot);
+    mark(k.dormant, curSlot);
+    for (uint32_t id : pushedSince)
+        if (id < prevSlot.size()) prevSlot[id] = kTwice;
+    for (size_t i = 0; i < k.dormant.size(); ++i) {
+        uint32_t id = k.dormant[i].id;
+        bool shared = id < prevSlot.size() && prevSlot[id] >= 0 && curSlot[id] >= 0;
+        if (shared) {
+            k.dormant[i].chain = prev->dormant[size_t(prevSlot[id])].chain;
+        } else {
+            k.dormant[i].chain = uint32_t(chains_.size());
+            chains_.push_back(state_.dormant[i].chain);
+        }
+    }
+    // Leave the tables all absent for the next keyframe, touching only what was marked.
+    using List = const std::vector<Keyframe::Dormant>*;
+    for (List list : {prev ? &prev->dormant : List(nullptr), List(&k.dormant)})
+        if (list)
+            for (const auto& d : *list)
+                for (auto* slot : {&prevSlot, &curSlot})
+                    if (d.id < slot->size()) (*slot)[d.id] = kAbsent;
+    for (uint32_t id : pushedSince)
+        if (id < prevSlot.size()) prevSlot[id] = kAbsent;
+    keyframeSteps_.push_back(state_.step);
+    keyframes_.push_back(std::move(k));
+}
+
+void Replay::restore(const Keyframe& k) {
+    std::vector<Gorge> dormant = std::move(state_.dormant);
+    std::vector<std::pair<Index, Index>> bridges = std::move(state_.bridges);
+    state_ = k.head;
+    if (bridges.size() > k.bridgeCount) bridges.resize(k.bridgeCount);
+    else bridges.insert(bridges.end(), bridges_.begin() + long(bridges.size()),
+                        bridges_.begin() + long(k.bridgeCount));
+    dormant.resize(k.dormant.size());
+    for (size_t i = 0; i < dormant.size(); ++i) {
+        const Keyframe::Dormant& d = k.dormant[i];
+        dormant[i].id = d.id, dormant[i].held = d.held, dormant[i].top = d.top;
+        dormant[i].chain = chains_[d.chain];
+    }
+    state_.dormant = std::move(dormant);
+    state_.bridges = std::move(bridges);
+}
+
+size_t Replay::keyframeBytes() const {
+    size_t bytes = keyframes_.capacity() * sizeof(Keyframe) + bridges_.capacity() * sizeof(bridges_[0]) +
+                   chains_.capacity() * sizeof(chains_[0]);
+    for (const auto& c : chains_) bytes += c.capacity() * sizeof(Index);
+    for (const Keyframe& k : keyframes_)
+        bytes += k.head.chain.capacity() * sizeof(Index) +
+                 k.head.jumps.capacity() * sizeof(k.head.jumps[0]) +
+                 k.dormant.capacity() * sizeof(Keyframe::Dormant);
+    return bytes;
 }
 
 const ReplayState& Replay::seek(uint32_t step) {
     step = std::min(step, size());
-    // Stepping forward from where we are is cheapest; otherwise start at a keyframe.
-    if (step < state_.step || step - state_.step > interval_) state_ = keyframes_[step / interval_];
+    size_t k = size_t(std::upper_bound(keyframeSteps_.begin(), keyframeSteps_.end(), step) -
+                      keyframeSteps_.begin()) - 1;
+    // Stepping forward from where we are is cheapest unless a keyframe lies in between.
+    if (step < state_.step || keyframeSteps_[k] > state_.step) restore(keyframes_[k]);
     while (state_.step < step) apply(trace_->events[state_.step]);
     return state_;
 }

@@ -7,6 +7,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "canvas_geometry.h"
 #include "generate.h"
 #include "model.h"
 #include "scene.h"
@@ -168,6 +169,30 @@ TEST(ViewerModel, LongRunsReplayAcrossKeyframes) {
     }
 }
 
+TEST(ViewerModel, KeyframesStaySmallAndSeekExactly) {
+    // Many dormant gorges at once (circle-sqrt-holes) and a long active chain (comb): the
+    // keyframes share dormant chains and are spaced by their size, yet every seek is exact.
+    for (const char* family : {"circle-sqrt-holes", "comb", "circle-holes"}) {
+        Trace t = record(generate(family, 3, 4000));
+        ASSERT_TRUE(t.diagnostic.ok()) << family << ": " << t.diagnostic.message;
+        Replay stepper(t, 1u << 30);  // the first keyframe only: pure stepping
+        for (uint32_t interval : {4u, 256u}) {
+            Replay seeker(t, interval);
+            SCOPED_TRACE(std::string(family) + " interval " + std::to_string(interval));
+            EXPECT_GT(seeker.keyframeCount(), t.events.size() / (256 * Replay::kMaxWorkFactor));
+            // Full copies (every dormant chain, every bridge) would cost ~1 kB per event here.
+            EXPECT_LT(seeker.keyframeBytes(), 128 * t.events.size() + 512 * seeker.keyframeCount());
+            const uint32_t n = seeker.size();
+            for (uint32_t s = 0; s <= n; ++s) {
+                uint32_t target = uint32_t((uint64_t(s) * 7919u) % (n + 1));
+                ReplayState want = stepper.seek(target);
+                expectSame(seeker.seek(target), want, "seek " + std::to_string(target));
+                if (HasFailure()) return;
+            }
+        }
+    }
+}
+
 TEST(ViewerModel, PlaybackStopsAtBreakpointAndEnd) {
     Model m;
     m.openPolygon(generate("comb", 3, 60), "comb", {});
@@ -283,5 +308,69 @@ TEST(ViewerModel, SceneShowsTheStateOfTheStep) {
         EXPECT_EQ(text.rfind("<svg", 0), 0u) << f;
         EXPECT_EQ(count, m.state().triangleCount) << f << ": one SVG polygon per triangle";
     }
+}
+TEST(ViewerModel, CanvasBuffersDrawWhatTheSceneDraws) {
+    // The GPU path (static buffers + per-step overlay) against buildScene, which the SVG
+    // export uses: same primitives at every step, the step's triangles a prefix.
+    for (const auto& f : polygonFiles()) {
+        Model m;
+        m.open(f);
+        CanvasGeometry g = buildCanvasGeometry(m);
+        ASSERT_EQ(g.positions.size(), 2 * m.polygon().vertices.size()) << f;
+        ASSERT_EQ(g.triangles.size(), 3 * m.trace().triangles.size()) << f;
+        EXPECT_EQ(g.classes.size() + g.regular.size(), m.polygon().vertices.size()) << f;
+        for (uint32_t s = 0; s <= m.steps(); ++s) {
+            m.seek(s);
+            SCOPED_TRACE(f + " step " + std::to_string(s));
+            Scene full = buildScene(m);
+            CanvasOverlay ov = buildCanvasOverlay(m, {}, g.origin);
+            uint32_t n = m.state().triangleCount;
+            ASSERT_EQ(full.water.size() + full.current.size(), n);
+            size_t bridges = m.state().bridges.size();
+            ASSERT_LE(bridges, g.bridges.size());
+            EXPECT_EQ(full.lines.size(), 3 * n + g.boundary.size() + bridges + ov.lines.size());
+            EXPECT_EQ(full.markers.size(), g.classes.size() + g.regular.size() + ov.markers.size());
+            for (size_t i = 0; i < bridges; ++i) {
+                Point sag = m.polygon().vertices[m.state().bridges[i].first];
+                EXPECT_FLOAT_EQ(g.bridges[i].ax, float(sag.x - g.origin.x));
+                EXPECT_FLOAT_EQ(g.bridges[i].ay, float(sag.y - g.origin.y));
+            }
+            // The water is the prefix before the current event's triangles.
+            const Event* e = m.currentEvent();
+            EXPECT_EQ(full.water.size(), e ? e->firstTriangle : n);
+            for (uint32_t t = 0; t < n && t < 3; ++t) {
+                Point a = m.polygon().vertices[g.triangles[3 * t]];
+                const Scene::Tri& st = t < full.water.size() ? full.water[t] : full.current[t - full.water.size()];
+                EXPECT_EQ(a, st.a);
+            }
+            if (HasFailure()) return;
+        }
+    }
+}
+
+TEST(ViewerModel, TriangleGridFindsTheCutTrianglesInAView) {
+    Model m;
+    m.openPolygon(generate("circle-holes", 5, 3000), "circle-holes", {});
+    TriangleGrid grid;
+    grid.build(m.polygon(), m.trace().triangles);
+    const auto& tris = m.trace().triangles;
+    ASSERT_GT(tris.size(), 1000u);
+    Point lo{-0.3, -0.2}, hi{0.25, 0.4};
+    for (uint32_t count : {0u, 17u, uint32_t(tris.size() / 2), uint32_t(tris.size())}) {
+        std::vector<uint32_t> got, want;
+        EXPECT_TRUE(grid.forEach(lo, hi, count, tris.size(), [&](uint32_t t) { got.push_back(t); }));
+        for (uint32_t t = 0; t < count; ++t) {
+            Point c = grid.centroid(t);
+            if (c.x >= lo.x && c.x <= hi.x && c.y >= lo.y && c.y <= hi.y) want.push_back(t);
+        }
+        if (count == tris.size()) EXPECT_GT(want.size(), 50u) << "the box must hold triangles";
+        std::sort(got.begin(), got.end());
+        // Cells cover the box, so the grid may offer a few neighbours: never miss one.
+        EXPECT_TRUE(std::includes(got.begin(), got.end(), want.begin(), want.end())) << count;
+        for (uint32_t t : got) EXPECT_LT(t, count);
+    }
+    size_t calls = 0;
+    EXPECT_FALSE(grid.forEach({-10, -10}, {10, 10}, uint32_t(tris.size()), 50, [&](uint32_t) { ++calls; }));
+    EXPECT_EQ(calls, 0u) << "over the cap: nothing drawn";
 }
 #endif

@@ -10,6 +10,7 @@
 #include <cstring>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "model.h"
 #include "transcript.h"
@@ -25,6 +26,7 @@ namespace {
 struct Args {
     std::string file;
     long step = -1;  // -1: where the model lands by itself
+    std::vector<uint32_t> steps;  // every --step in order: one frame at each before the last
     std::string screenshot;
     int width = 1280, height = 800;
     bool bench = false;  // measure open, seek and frame times, print them, exit
@@ -33,7 +35,8 @@ struct Args {
 const char* const kUsage =
     "usage: flood-viewer [FILE] [--step N] [--screenshot OUT.png] [--size WxH]\n"
     "  FILE              polygon (GeoJSON, ring arrays or WKT); default: polygons/paper-figure-7.json\n"
-    "  --step N          show the state after N events\n"
+    "  --step N          show the state after N events (repeat it to draw each in turn:\n"
+    "                    --step 40 --step 5 shows 5 after a frame at 40)\n"
     "  --screenshot OUT  render once in a hidden window, write OUT as PNG and exit\n"
     "  --size WxH        window size in pixels (default 1280x800)\n"
     "  --bench           time opening, seeking and drawing (hidden window), print, exit\n"
@@ -60,6 +63,7 @@ int parseArgs(int argc, char** argv, Args& a) {
                 if (v) std::fprintf(stderr, "flood-viewer: --step wants a number >= 0, got '%s'\n", v);
                 return 2 + 1;
             }
+            a.steps.push_back(uint32_t(std::min<long>(a.step, ~0u)));
         } else if (s == "--bench") {
             a.bench = true;
         } else if (s == "--screenshot") {
@@ -120,12 +124,20 @@ double now() {  // seconds; works before the window system is up
     return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
 
-// --bench: what a user waits for on a big polygon, in milliseconds.
+// --bench: what a user waits for on a big polygon, in milliseconds. Frames are timed in three
+// parts: build (the viewer's own CPU work: model, overlay, labels, ImGui panels), submit
+// (the GL calls; under Mesa llvmpipe this includes the software vertex processing, done in
+// the calling thread) and all (after glFinish: the rasteriser threads are done too).
 struct BenchStats {
-    double openMs = 0;
-    std::vector<double> seeks, frames;  // seconds
+    double openMs = 0, firstFrameMs = 0;
+    size_t keyframes = 0, keyframeBytes = 0;
+    std::vector<double> seeks;                    // seconds
+    struct Frames {
+        std::vector<double> build, submit, all;  // seconds, from the frame's start
+    } step, pan;  // a new random step every frame; the same step while the camera moves
     uint64_t rng = 0x9E3779B97F4A7C15ull;
     uint32_t steps = 0;
+    static constexpr int kFrames = 60;
     uint32_t nextStep() {
         rng = rng * 6364136223846793005ull + 1442695040888963407ull;
         return steps ? uint32_t((rng >> 33) % (steps + 1)) : 0;
@@ -135,14 +147,22 @@ struct BenchStats {
         std::sort(v.begin(), v.end());
         return v[std::min(v.size() - 1, size_t(q * double(v.size())))] * 1e3;
     }
+    static void frames(const char* what, const Frames& f) {
+        std::printf("bench: frame, %s (%zu frames), median / max ms:\n"
+                    "bench:   build (viewer CPU) %.2f / %.2f; + GL submit %.2f / %.2f; + glFinish %.2f / %.2f\n",
+                    what, f.build.size(), pct(f.build, 0.5), pct(f.build, 1.0), pct(f.submit, 0.5),
+                    pct(f.submit, 1.0), pct(f.all, 0.5), pct(f.all, 1.0));
+    }
     void print(const Model& model) const {
         std::printf("bench: %s: %zu vertices, %u events, %zu triangles\n", model.path().c_str(),
                     model.polygon().vertices.size(), steps, model.trace().triangles.size());
         std::printf("bench: open (read, validate, flood with trace, replay keyframes): %.0f ms\n", openMs);
+        std::printf("bench: keyframes: %zu, %.1f MB\n", keyframes, keyframeBytes / 1e6);
+        std::printf("bench: first frame (canvas buffers built and uploaded): %.0f ms\n", firstFrameMs);
         std::printf("bench: seek to a random step: median %.3f ms, 99%% %.3f ms, max %.3f ms (%zu seeks)\n",
                     pct(seeks, 0.5), pct(seeks, 0.99), pct(seeks, 1.0), seeks.size());
-        std::printf("bench: frame CPU time at full zoom-out, new step every frame: median %.2f ms, max %.2f ms (%zu frames)\n",
-                    pct(frames, 0.5), pct(frames, 1.0), frames.size());
+        frames("full zoom-out, new random step every frame", step);
+        frames("full zoom-out, panning at a fixed step", pan);
     }
 };
 
@@ -150,6 +170,8 @@ BenchStats benchOpenAndSeek(Model& model, double openSeconds) {
     BenchStats b;
     b.openMs = openSeconds * 1e3;
     b.steps = model.steps();
+    b.keyframes = model.keyframeCount();
+    b.keyframeBytes = model.keyframeBytes();
     for (int i = 0; i < 1000; ++i) {
         uint32_t step = b.nextStep();
         double t0 = now();
@@ -179,7 +201,7 @@ int main(int argc, char** argv) {
     double openStart = now();
     if (!args.file.empty()) model.open(args.file);
     double openSeconds = now() - openStart;
-    if (args.step >= 0) model.seek(uint32_t(std::min<long>(args.step, model.steps())));
+    if (!args.steps.empty()) model.seek(args.steps.front());
     BenchStats bench;
     if (args.bench) bench = benchOpenAndSeek(model, openSeconds);
 
@@ -234,7 +256,11 @@ int main(int argc, char** argv) {
         ui.layout = computeLayout(size.x, size.y, scale);
 
         double frameStart = now();
-        if (args.bench && frame > 0) model.seek(bench.nextStep());  // a new scene every frame
+        // Bench: frames 3..62 step to a random step, 63..122 pan by a pixel at a fixed one.
+        const int benchPhase = frame < 3 ? 0 : (frame - 3) / BenchStats::kFrames + 1;
+        if (shot && size_t(frame) < args.steps.size()) model.seek(args.steps[size_t(frame)]);
+        if (args.bench && benchPhase == 1) model.seek(bench.nextStep());
+        if (args.bench && benchPhase == 2) model.camera.pan(frame % 2 ? 1 : -1, 0);
         if (!shot) handleShortcuts(ui);
         drawCanvas(ui);
         drawTimeline(ui);
@@ -247,21 +273,28 @@ int main(int argc, char** argv) {
         drawHelp(ui);
         ImGui::Render();
 
+        double built = now() - frameStart;
         int fbW = 0, fbH = 0;
         platform::framebufferSize(&fbW, &fbH);
-        renderer.render(size, fbW, fbH, ui.layout.canvas, palette::kBackground);
+        renderer.render(size, fbW, fbH, ui.layout.canvas, palette::kBackground, ui.canvas.view);
         imguiGlRender();
 
         if (args.bench) {
-            // CPU time to build and submit the frame (the swap waits for the GPU).
-            if (frame >= 3) bench.frames.push_back(now() - frameStart);
-            if (frame == 3 + 60) {
+            double submitted = now() - frameStart;
+            renderer.finish();
+            double all = now() - frameStart;
+            if (frame == 0) bench.firstFrameMs = all * 1e3;
+            for (auto* f : {benchPhase == 1 ? &bench.step : benchPhase == 2 ? &bench.pan : nullptr})
+                if (f) f->build.push_back(built), f->submit.push_back(submitted), f->all.push_back(all);
+            if (benchPhase == 3) {
                 bench.print(model);
                 platform::requestClose();
             }
         }
         // ImGui places windows on the 2nd frame; the 3rd is the first settled one.
-        std::string png = !args.bench && shot && frame == 2 ? args.screenshot : ui.pngRequest;
+        // Each extra --step adds a frame.
+        const int shotFrame = 2 + int(args.steps.empty() ? 0 : args.steps.size() - 1);
+        std::string png = !args.bench && shot && frame == shotFrame ? args.screenshot : ui.pngRequest;
         if (!png.empty()) {
             std::vector<uint8_t> pixels;
             bool ok = renderer.readPixels(fbW, fbH, pixels) && writePng(png, fbW, fbH, pixels, &error);

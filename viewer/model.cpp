@@ -228,7 +228,9 @@ std::vector<TranscriptItem> buildTranscript(const Trace& trace) {
 
 // ========================================================================================
 // [SECTION] Model
-Model::Model() : trace_(std::make_unique<Trace>()), replay_(std::make_unique<Replay>(*trace_)) {}
+Model::Model() : trace_(std::make_unique<Trace>()), replay_(std::make_unique<Replay>(*trace_)) {
+    verdict_ = computeVerdict();
+}
 Model::~Model() = default;
 
 void Model::open(const std::string& path) {
@@ -250,6 +252,7 @@ void Model::open(const std::string& path) {
 void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic input,
                         std::vector<std::string> warnings) {
     playing = false;
+    ++generation_;
     path_ = name;
     input_ = std::move(input);
     warnings_ = std::move(warnings);
@@ -274,6 +277,7 @@ void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic inp
              t < e.firstTriangle + e.triangleCount && t < triangleStep_.size(); ++t)
             triangleStep_[t] = e.step + 1;
     computeOffenders();
+    verdict_ = computeVerdict();  // a scan of the log: once, not every frame
     needsFit = true;
     step_ = 0;
     replay_->seek(0);
@@ -307,7 +311,7 @@ void Model::computeOffenders() {
     offenders_.erase(std::unique(offenders_.begin(), offenders_.end()), offenders_.end());
 }
 
-std::string Model::verdict() const {
+std::string Model::computeVerdict() const {
     if (!input_.ok() && trace_->polygon.vertices.empty()) return input_.message;
     std::string s;
     if (!input_.ok()) s = "invalid input: " + input_.message + "\n";

@@ -55,6 +55,7 @@ public:
     void pan(double dx, double dy);                 // by screen pixels
     void zoomAt(Vec2 screen, double factor);         // keeps the world point under `screen`
     double scale() const { return scale_; }          // pixels per world unit
+    Point center() const { return {cx_, cy_}; }      // world point at the viewport centre
     const Rect& viewport() const { return viewport_; }
 
 private:
@@ -100,6 +101,7 @@ public:
                      std::vector<std::string> warnings = {});
 
     const std::string& path() const { return path_; }
+    uint64_t generation() const { return generation_; }  // changes with every open
     const Trace& trace() const { return *trace_; }
     const Polygon& polygon() const { return trace_->polygon; }
     const Diagnostic& inputDiagnostic() const { return input_; }
@@ -110,12 +112,14 @@ public:
     const std::vector<std::string>& recentFiles() const { return recent_; }
     void loadRecent(const std::string& file);  // one path per line; missing file: no-op
     void saveRecent(const std::string& file) const;
-    std::string verdict() const;  // "ok: 64 triangles" / "Forbidden at step 12: ..."
+    const std::string& verdict() const { return verdict_; }  // "ok: 64 triangles" / "Forbidden at step 12: ..."
 
     // Time.
     uint32_t steps() const { return uint32_t(trace_->events.size()); }
     uint32_t step() const { return step_; }
     const ReplayState& state() const { return replay_->state(); }
+    size_t keyframeCount() const { return replay_->keyframeCount(); }
+    size_t keyframeBytes() const { return replay_->keyframeBytes(); }
     const Event* currentEvent() const;
     void seek(uint32_t step);  // clamps to [0, steps()]
     void stepForward() { seek(step_ + 1); }
@@ -146,6 +150,7 @@ public:
 
 private:
     void computeOffenders();
+    std::string computeVerdict() const;
     std::unique_ptr<Trace> trace_;    // owned here, at a stable address for Replay
     std::unique_ptr<Replay> replay_;
     std::string path_;
@@ -154,10 +159,12 @@ private:
     std::vector<VertexClass> classes_;
     std::vector<Index> offenders_;
     std::vector<TranscriptItem> transcript_;
+    std::string verdict_;
     std::vector<uint32_t> triangleStep_;
     std::vector<std::string> recent_;
     uint32_t step_ = 0;
     double playClock_ = 0;
+    uint64_t generation_ = 0;
 };
 
 // Where to look for polygons: FLOOD_SOURCE_DIR/polygons unless overridden.

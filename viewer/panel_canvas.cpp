@@ -1,7 +1,11 @@
-// The polygon canvas: the scene goes to the renderer (GL, under ImGui); text labels and
-// tooltips go to ImGui's background draw list, clipped to the canvas rectangle.
+// The polygon canvas: static world-space buffers uploaded once per trace, the per-step
+// overlay uploaded when the step changes, the camera handed to the renderer as a uniform
+// (GL, under ImGui); text labels and tooltips go to ImGui's background draw list, clipped to
+// the canvas rectangle. Labels are culled through a grid so a huge polygon costs what is
+// on screen.
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -22,8 +26,16 @@ void canvasInput(Ui& ui) {
         m.camera.pan(io.MouseDelta.x, io.MouseDelta.y);
     if (io.MouseWheel != 0) m.camera.zoomAt(mouse, std::pow(1.15, double(io.MouseWheel)));
 
-    Index v = m.pickVertex(mouse, 7 * ui.scale);
-    int64_t t = v == kNone ? m.pickTriangle(mouse) : -1;
+    CanvasState& cs = ui.canvas;
+    std::array<double, 6> key{mouse.x, mouse.y, m.camera.center().x, m.camera.center().y,
+                              m.camera.scale(), double(m.step())};
+    if (key != cs.pickKey) {
+        cs.pickKey = key;
+        cs.pickedVertex = m.pickVertex(mouse, 7 * ui.scale);
+        cs.pickedTriangle = cs.pickedVertex == kNone ? m.pickTriangle(mouse) : -1;
+    }
+    Index v = cs.pickedVertex;
+    int64_t t = cs.pickedTriangle;
     if (v != kNone) {
         const Polygon& p = m.polygon();
         Index ring = p.ringOf(v);
@@ -37,6 +49,8 @@ void canvasInput(Ui& ui) {
         if (v == f.nextLeft) ImGui::TextColored(toImVec4(palette::kNextLeft), "NextLeft");
         if (v == f.nextRight) ImGui::TextColored(toImVec4(palette::kNextRight), "NextRight");
         if (v == m.state().water) ImGui::Text("water level");
+        for (auto [top, to] : m.state().jumps)
+            if (top == v) ImGui::TextColored(toImVec4(palette::kJump), "jump pointer -> %u", to);
         ImGui::TextDisabled("right-click: break when it becomes Left/Right/Next");
         ImGui::EndTooltip();
         if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {
@@ -60,6 +74,55 @@ void canvasInput(Ui& ui) {
     }
 }
 
+// Uploads what changed since the last frame: the whole geometry after an open, the overlay
+// after a step or a display option changed.
+void syncBuffers(Ui& ui) {
+    Model& m = ui.model;
+    CanvasState& cs = ui.canvas;
+    if (cs.generation != m.generation()) {
+        CanvasGeometry g = buildCanvasGeometry(m);
+        ui.renderer.setGeometry(g);
+        cs.origin = g.origin;
+        std::copy(g.bbox, g.bbox + 4, cs.bbox);
+        cs.grid.build(m.polygon(), m.trace().triangles);
+        cs.generation = m.generation();
+        cs.overlayStep = ~0u;
+    }
+    const SceneOptions& o = ui.sceneOptions;
+    const SceneOptions& was = cs.overlayOptions;
+    if (cs.overlayStep != m.step() || o.dormant != was.dormant || o.jumps != was.jumps) {
+        cs.overlay = buildCanvasOverlay(m, o, cs.origin);
+        ui.renderer.setOverlay(cs.overlay);
+        cs.overlayStep = m.step();
+        cs.overlayOptions = o;
+    }
+}
+
+// Triangle numbers, only when few enough are on screen to read: the grid counts the cut
+// triangles in view first, so a zoomed-out million costs a few hundred cell lookups.
+void triangleLabels(Ui& ui, ImDrawList* dl) {
+    const Model& m = ui.model;
+    const Camera& cam = m.camera;
+    const Rect& area = ui.layout.canvas;
+    const float s = ui.scale;
+    const double minArea = 700 * s * s;  // px², about four times a label's own footprint
+    Point a = cam.toWorld({area.x, area.y + area.h}), b = cam.toWorld({area.x + area.w, area.y});
+    size_t cap = size_t(4 * area.w * area.h / minArea) + 16;
+    uint32_t n = std::min<uint32_t>(m.state().triangleCount, uint32_t(m.trace().triangles.size()));
+    const Event* ev = m.currentEvent();
+    uint32_t curFirst = ev ? ev->firstTriangle : n;
+    double px2 = cam.scale() * cam.scale();
+    char text[16];
+    ui.canvas.grid.forEach(a, b, n, cap, [&](uint32_t t) {
+        if (ui.canvas.grid.area(t) * px2 < minArea) return;
+        Vec2 c = cam.toScreen(ui.canvas.grid.centroid(t));
+        std::snprintf(text, sizeof text, "%u", t);
+        ImVec2 size = ImGui::CalcTextSize(text);
+        Rgba color = t >= curFirst ? Rgba{0, 0, 0, 255} : Rgba{230, 240, 255, 255};
+        dl->AddText(ImVec2(float(c.x) - size.x / 2, float(c.y) - size.y / 2), toImU32(color), text);
+    });
+}
+
 }  // namespace
 
 void drawCanvas(Ui& ui) {
@@ -71,56 +134,63 @@ void drawCanvas(Ui& ui) {
     }
     m.camera.setViewport(area);
     canvasInput(ui);
+    syncBuffers(ui);
 
-    Scene sc = buildScene(m, ui.sceneOptions);
-    Renderer& r = ui.renderer;
+    CanvasState& cs = ui.canvas;
     const Camera& cam = m.camera;
     const float s = ui.scale;
+    const SceneOptions& o = ui.sceneOptions;
+    const uint32_t n = std::min<uint32_t>(m.state().triangleCount, uint32_t(m.trace().triangles.size()));
+    const Event* ev = m.currentEvent();
+    WorldView& w = cs.view;
+    w.center = {cam.center().x - cs.origin.x, cam.center().y - cs.origin.y};
+    w.scale = cam.scale();
+    w.viewport = area;
+    w.waterEnd = ev ? std::min(ev->firstTriangle, n) : n;
+    w.currentEnd = n;
+    // Fold what is denser than a few pixels apart (Tracy's rule): at full zoom-out a million
+    // edges or vertex markers are a smear that costs the rasteriser a million primitives.
+    // Density is the polygon's screen area over the count: uniform spread assumed.
+    const Polygon& poly = m.polygon();
+    double px = 0;
+    if (!poly.vertices.empty()) {
+        Vec2 lo = cam.toScreen({cs.origin.x + cs.bbox[0], cs.origin.y + cs.bbox[1]});
+        Vec2 hi = cam.toScreen({cs.origin.x + cs.bbox[2], cs.origin.y + cs.bbox[3]});
+        px = std::abs(hi.x - lo.x) * std::abs(hi.y - lo.y);  // screen area of the polygon's box
+    }
+    auto sparse = [&](size_t count, double minPx2) { return px >= double(count) * minPx2 * s * s; };
+    w.edgeEnd = o.triangleEdges && sparse(m.trace().triangles.size(), 40) ? n : 0;
+    w.bridgeCount = o.bridges ? uint32_t(m.state().bridges.size()) : 0;
+    w.classes = o.vertexClasses;
+    w.regular = o.vertexClasses && sparse(poly.vertices.size(), 100);
+    w.thinBoundary = !sparse(poly.vertices.size(), 16);
+    w.uiScale = s;
+
+    // Arrowheads depend on the zoom (they are pixels long): the only per-frame geometry.
+    Renderer& r = ui.renderer;
     r.clear();
-    r.setFillColor(palette::kPolygonFill);
-    for (const auto& ring : sc.rings) {
-        std::vector<Vec2> pts;
-        pts.reserve(ring.size());
-        for (Point p : ring) pts.push_back(cam.toScreen(p));
-        r.addRing(pts);
-    }
-    for (const auto& t : sc.water)
-        r.addTriangle(Layer::Water, cam.toScreen(t.a), cam.toScreen(t.b), cam.toScreen(t.c), t.color);
-    for (const auto& t : sc.current)
-        r.addTriangle(Layer::Triangles, cam.toScreen(t.a), cam.toScreen(t.b), cam.toScreen(t.c),
-                      t.color);
-    for (const auto& l : sc.lines) {
-        if (l.arrow)
-            r.addArrow(Layer::Lines, cam.toScreen(l.a), cam.toScreen(l.b), l.width * s, 10 * s,
-                       l.color);
-        else
-            r.addLine(Layer::Lines, cam.toScreen(l.a), cam.toScreen(l.b), l.width * s, l.color);
-    }
-    for (const auto& mk : sc.markers) {
-        Vec2 c = cam.toScreen(mk.p);
-        float rad = mk.radius * s;
-        switch (mk.shape) {
-            case Scene::Shape::Disc: r.addDisc(Layer::Markers, c, rad, mk.color); break;
-            case Scene::Shape::Ring: r.addCircle(Layer::Markers, c, rad, 2 * s, mk.color); break;
-            case Scene::Shape::Finger:
-                // A pointing hand, abstracted: a triangle whose tip touches the vertex from below.
-                r.addTriangle(Layer::Markers, c, {c.x - rad * 0.6, c.y + rad * 1.6},
-                              {c.x + rad * 0.6, c.y + rad * 1.6}, mk.color);
-                break;
-        }
+    for (const auto& l : cs.overlay.arrows) {
+        Vec2 a = cam.toScreen(l.a), b = cam.toScreen(l.b);
+        double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
+        if (len < 1e-9) continue;
+        double head = std::min(10.0 * s, len / 2), ux = dx / len, uy = dy / len;
+        Vec2 base{b.x - ux * head, b.y - uy * head};
+        r.addTriangle(Layer::Lines, b, {base.x - uy * head / 2, base.y + ux * head / 2},
+                      {base.x + uy * head / 2, base.y - ux * head / 2}, l.color);
     }
 
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     dl->PushClipRect(ImVec2(float(area.x), float(area.y)),
                      ImVec2(float(area.x + area.w), float(area.y + area.h)), true);
-    double px2 = cam.scale() * cam.scale();
-    for (const auto& l : sc.labels) {
-        if (l.worldArea > 0 && l.worldArea * px2 < l.minArea * s * s) continue;
+    if (o.triangleNumbers) triangleLabels(ui, dl);
+    // Gorge labels fold away when hundreds are on screen; finger labels always show.
+    size_t crowd = 0;
+    for (const auto& l : cs.overlay.labels) crowd += l.folds && area.contains(cam.toScreen(l.p));
+    for (const auto& l : cs.overlay.labels) {
         Vec2 c = cam.toScreen(l.p);
-        ImVec2 size = ImGui::CalcTextSize(l.text.c_str());
-        ImVec2 at(float(c.x + l.dx * s), float(c.y + l.dy * s));
-        if (l.worldArea > 0) at = ImVec2(float(c.x) - size.x / 2, float(c.y) - size.y / 2);
-        dl->AddText(at, toImU32(l.color), l.text.c_str());
+        if (!area.contains(c) || (l.folds && crowd > 200)) continue;
+        dl->AddText(ImVec2(float(c.x + l.dx * s), float(c.y + l.dy * s)), toImU32(l.color),
+                    l.text.c_str());
     }
     if (m.polygon().vertices.empty()) {
         const char* msg = m.inputDiagnostic().ok() ? "no polygon: open one (Ctrl+O or Open...)"

@@ -46,11 +46,17 @@ void drawStateMachine(Ui& ui) {
     const auto& ev = m.trace().events;
     const Event* cur = m.currentEvent();
 
-    // Transition counts over the whole run, keyed (from, to) by node index.
-    std::map<std::pair<int, int>, int> counts;
-    for (size_t i = 1; i < ev.size(); ++i) {
-        int a = nodeOf(ev[i - 1].action), b = nodeOf(ev[i].action);
-        if (a >= 0 && b >= 0 && a != b) counts[{a, b}]++;
+    // Transition counts over the whole run, keyed (from, to) by node index: a scan of the
+    // log, so once per opened trace.
+    static uint64_t countedFor = ~0ull;
+    static std::map<std::pair<int, int>, int> counts;
+    if (countedFor != m.generation()) {
+        counts.clear();
+        for (size_t i = 1; i < ev.size(); ++i) {
+            int a = nodeOf(ev[i - 1].action), b = nodeOf(ev[i].action);
+            if (a >= 0 && b >= 0 && a != b) counts[{a, b}]++;
+        }
+        countedFor = m.generation();
     }
     int from = -1, to = cur ? nodeOf(cur->action) : -1;
     if (m.step() >= 2) from = nodeOf(ev[m.step() - 2].action);

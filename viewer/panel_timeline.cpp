@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <vector>
 
 #include "panels.h"
 
@@ -46,15 +47,25 @@ void strip(Ui& ui) {
                               toImU32(palette::action(ev[i].action)));
         }
     } else {
+        // Folding scans the whole log: redo it only for a new trace or a new strip width.
+        static uint64_t foldedFor = ~0ull;
+        static std::vector<Action> folded;
         int buckets = int(w / minMark);
+        if (foldedFor != m.generation() || folded.size() != size_t(buckets)) {
+            folded.assign(size_t(buckets), Action::Start);
+            for (int b = 0; b < buckets; ++b) {
+                uint32_t i0 = uint32_t(double(b) / buckets * n), i1 = uint32_t(double(b + 1) / buckets * n);
+                Action best = ev[std::min(i0, n - 1)].action;
+                for (uint32_t i = i0; i < i1 && i < n; ++i)
+                    if (weight(ev[i].action) > weight(best)) best = ev[i].action;
+                folded[size_t(b)] = best;
+            }
+            foldedFor = m.generation();
+        }
         for (int b = 0; b < buckets; ++b) {
-            uint32_t i0 = uint32_t(double(b) / buckets * n), i1 = uint32_t(double(b + 1) / buckets * n);
-            Action best = ev[std::min(i0, n - 1)].action;
-            for (uint32_t i = i0; i < i1 && i < n; ++i)
-                if (weight(ev[i].action) > weight(best)) best = ev[i].action;
             float x0 = p0.x + b * minMark;
             dl->AddRectFilled(ImVec2(x0, p0.y + 3), ImVec2(x0 + minMark - 1, p0.y + h - 3),
-                              toImU32(palette::action(best)));
+                              toImU32(palette::action(folded[size_t(b)])));
         }
     }
     float cx = p0.x + float(m.step() * perEvent);
@@ -140,7 +151,7 @@ void drawTimeline(Ui& ui) {
     } else {
         ImGui::TextDisabled("step 0: before the first event");
     }
-    std::string verdict = m.verdict();
+    const std::string& verdict = m.verdict();
     bool bad = !m.inputDiagnostic().ok() || verdict.rfind("ok:", 0) != 0;
     ImGui::TextColored(bad ? toImVec4(palette::kCulprit) : ImVec4(0.6f, 0.9f, 0.6f, 1), "%s",
                        verdict.c_str());

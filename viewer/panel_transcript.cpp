@@ -2,6 +2,9 @@
 // like text; the item holding the current step is highlighted, and clicking an item goes there.
 #include <imgui.h>
 
+#include <algorithm>
+#include <vector>
+
 #include "panels.h"
 #include "transcript.h"
 
@@ -19,28 +22,50 @@ void drawTranscript(Ui& ui) {
     ImGui::TextDisabled("(%zu items, %u events)", items.size(), m.steps());
     ImGui::BeginChild("text");
     uint32_t curEvent = m.step() == 0 ? ~0u : m.step() - 1;
-    float right = ImGui::GetContentRegionAvail().x;
-    float x = 0, spacing = ImGui::GetStyle().ItemSpacing.x;
-    for (size_t i = 0; i < items.size(); ++i) {
-        const TranscriptItem& it = items[i];
-        ImVec2 size = ImGui::CalcTextSize(it.text.c_str());
-        if (i > 0 && x + size.x <= right) ImGui::SameLine();
-        else x = 0;
-        x += size.x + spacing;
-        bool current = curEvent >= it.firstEvent && curEvent <= it.lastEvent;
-        ImGui::PushID(int(i));
-        const Event& first = m.trace().events[it.firstEvent];
-        ImGui::PushStyleColor(ImGuiCol_Text, toImVec4(palette::action(first.action)));
-        if (ImGui::Selectable(it.text.c_str(), current, 0, size)) m.seek(it.lastEvent + 1);
-        ImGui::PopStyleColor();
-        if (current && ui.transcriptScrolledTo != m.step()) {
-            ImGui::SetScrollHereY(0.5f);
-            ui.transcriptScrolledTo = m.step();
+    float right = ImGui::GetContentRegionAvail().x, spacing = ImGui::GetStyle().ItemSpacing.x;
+    // The text flows into lines; lay them out once per trace and width, then submit only the
+    // visible lines, so a million-event transcript scrolls like a short one.
+    static uint64_t laidFor = ~0ull;
+    static float laidWidth = -1;
+    static std::vector<uint32_t> lineStart;  // first item of each line, then items.size()
+    if (laidFor != m.generation() || laidWidth != right) {
+        lineStart.clear();
+        float x = 0;
+        for (size_t i = 0; i < items.size(); ++i) {
+            float w = ImGui::CalcTextSize(items[i].text.c_str()).x;
+            if (i == 0 || x + w > right) lineStart.push_back(uint32_t(i)), x = 0;
+            x += w + spacing;
         }
-        if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("steps %u-%u", it.firstEvent + 1, it.lastEvent + 1);
-        ImGui::PopID();
+        lineStart.push_back(uint32_t(items.size()));
+        laidFor = m.generation(), laidWidth = right;
     }
+    const float lineH = ImGui::GetTextLineHeightWithSpacing();
+    auto current = std::upper_bound(items.begin(), items.end(), curEvent,
+                                    [](uint32_t e, const TranscriptItem& it) { return e < it.firstEvent; });
+    if (current != items.begin() && ui.transcriptScrolledTo != m.step()) {
+        size_t item = size_t(current - items.begin()) - 1;
+        size_t line = size_t(std::upper_bound(lineStart.begin(), lineStart.end(), item) - lineStart.begin()) - 1;
+        ImGui::SetScrollY(std::max(0.f, line * lineH - ImGui::GetWindowHeight() / 2));
+        ui.transcriptScrolledTo = m.step();
+    }
+    ImGuiListClipper clipper;
+    clipper.Begin(int(lineStart.size()) - 1, lineH);
+    while (clipper.Step())
+        for (int line = clipper.DisplayStart; line < clipper.DisplayEnd; ++line)
+            for (uint32_t i = lineStart[size_t(line)]; i < lineStart[size_t(line) + 1]; ++i) {
+                const TranscriptItem& it = items[i];
+                if (i > lineStart[size_t(line)]) ImGui::SameLine();
+                bool cur = curEvent >= it.firstEvent && curEvent <= it.lastEvent;
+                ImGui::PushID(int(i));
+                const Event& first = m.trace().events[it.firstEvent];
+                ImGui::PushStyleColor(ImGuiCol_Text, toImVec4(palette::action(first.action)));
+                if (ImGui::Selectable(it.text.c_str(), cur, 0, ImGui::CalcTextSize(it.text.c_str())))
+                    m.seek(it.lastEvent + 1);
+                ImGui::PopStyleColor();
+                if (ImGui::IsItemHovered())
+                    ImGui::SetTooltip("steps %u-%u", it.firstEvent + 1, it.lastEvent + 1);
+                ImGui::PopID();
+            }
     ImGui::EndChild();
     ImGui::End();
 }

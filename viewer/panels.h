@@ -3,8 +3,10 @@
 // A new panel: write panel_<name>.cpp with draw<Name>(Ui&), declare it below, call it from the
 // frame in main.cpp, and give it a rectangle of computeLayout() (model.cpp) or let it float.
 #pragma once
+#include <array>
 #include <string>
 
+#include "canvas_geometry.h"
 #include "model.h"
 #include "renderer.h"
 #include "scene.h"
@@ -13,6 +15,23 @@ struct ImVec4;
 
 namespace flood::view {
 
+// What the canvas keeps between frames: which trace and step its GPU buffers hold, and the
+// per-step overlay's labels and arrows (panel_canvas.cpp).
+struct CanvasState {
+    uint64_t generation = ~0ull;  // Model::generation() of the uploaded geometry
+    uint32_t overlayStep = ~0u;
+    SceneOptions overlayOptions;
+    Point origin;
+    float bbox[4] = {0, 0, 0, 0};  // of the polygon, minus the origin
+    TriangleGrid grid;  // triangle labels by cell
+    CanvasOverlay overlay;
+    WorldView view;     // what Renderer::render draws this frame
+    // Hover picking is a scan of the polygon: redo it only when something moved.
+    std::array<double, 6> pickKey{};  // mouse x, y, camera centre x, y, scale, step
+    Index pickedVertex = kNone;
+    int64_t pickedTriangle = -1;
+};
+
 struct Ui {
     Ui(Model& m, Renderer& r) : model(m), renderer(r) {}
     Model& model;
@@ -20,6 +39,7 @@ struct Ui {
     float scale = 1;   // UI scale from the monitor's content scale
     Layout layout;
     SceneOptions sceneOptions;
+    CanvasState canvas;
     bool showHelp = false;
     bool showOpen = false;
     Action seekKind = Action::Bridge;  // "previous/next event of kind" in the timeline

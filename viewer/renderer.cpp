@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 
 #include "shaders.h"  // generated from shaders/ by embed_shaders.cmake
 
@@ -14,9 +15,12 @@ namespace flood::view {
 
 namespace {
 
-GLuint compile(GLenum type, const char* source, const char* name, std::string* error) {
+// Compiles `parts` joined (glShaderSource takes a list: the version line, shared code, body).
+GLuint compile(GLenum type, std::initializer_list<const char*> parts, const char* name,
+               std::string* error) {
     GLuint s = glCreateShader(type);
-    glShaderSource(s, 1, &source, nullptr);
+    std::vector<const char*> src(parts);
+    glShaderSource(s, GLsizei(src.size()), src.data(), nullptr);
     glCompileShader(s);
     GLint ok = 0;
     glGetShaderiv(s, GL_COMPILE_STATUS, &ok);
@@ -30,37 +34,100 @@ GLuint compile(GLenum type, const char* source, const char* name, std::string* e
     return s;
 }
 
+GLuint link(GLuint vs, GLuint fs, const char* name, std::string* error) {
+    if (!vs || !fs) {
+        glDeleteShader(vs), glDeleteShader(fs);
+        return 0;
+    }
+    GLuint p = glCreateProgram();
+    glAttachShader(p, vs);
+    glAttachShader(p, fs);
+    glLinkProgram(p);
+    glDeleteShader(vs);
+    glDeleteShader(fs);
+    GLint ok = 0;
+    glGetProgramiv(p, GL_LINK_STATUS, &ok);
+    if (!ok) {
+        char log[4096];
+        glGetProgramInfoLog(p, sizeof log, nullptr, log);
+        if (error) *error = std::string("shader program ") + name + " failed to link:\n" + log;
+        glDeleteProgram(p);
+        return 0;
+    }
+    return p;
+}
+
+const char* const kVersion = "#version 330 core\n";
+
+// A world-space program: the vertex shader gets the camera (shaders/camera.glsl) prepended.
+GLuint worldProgram(const char* vert, const char* frag, const char* name, std::string* error) {
+    return link(compile(GL_VERTEX_SHADER, {kVersion, kShader_camera_glsl, vert}, name, error),
+                compile(GL_FRAGMENT_SHADER, {frag}, name, error), name, error);
+}
+
+void upload(GLenum target, uint32_t buffer, const void* data, size_t bytes) {
+    glBindBuffer(target, buffer);
+    glBufferData(target, GLsizeiptr(bytes), bytes ? data : nullptr, GL_STATIC_DRAW);
+}
+
+void setColor(int location, Rgba c) {
+    glUniform4f(location, c.r / 255.f, c.g / 255.f, c.b / 255.f, c.a / 255.f);
+}
+
+// Instanced attributes of SegmentVertex (segment.vert) and vertex attributes of
+// MarkerVertex (marker.vert), for the VAO currently bound.
+void segmentAttributes() {
+    const GLsizei stride = sizeof(SegmentVertex);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(SegmentVertex, ax)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride, reinterpret_cast<void*>(offsetof(SegmentVertex, color)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(SegmentVertex, width)));
+    for (GLuint a : {0u, 1u, 2u}) glVertexAttribDivisor(a, 1);
+}
+
+void markerAttributes() {
+    const GLsizei stride = sizeof(MarkerVertex);
+    glEnableVertexAttribArray(0);
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(MarkerVertex, x)));
+    glEnableVertexAttribArray(1);
+    glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride, reinterpret_cast<void*>(offsetof(MarkerVertex, color)));
+    glEnableVertexAttribArray(2);
+    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(MarkerVertex, radius)));
+    glEnableVertexAttribArray(3);
+    glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(MarkerVertex, shape)));
+}
+
 }  // namespace
 
 Renderer::~Renderer() {
     // Only tear down if init() ran: the context may already be gone otherwise.
-    if (!program_) return;
+    if (!screen_.id) return;
     glDeleteBuffers(GLsizei(vbo_.size()), vbo_.data());
     glDeleteVertexArrays(GLsizei(vao_.size()), vao_.data());
-    glDeleteProgram(program_);
+    glDeleteBuffers(GLsizei(buf_.size()), buf_.data());
+    glDeleteVertexArrays(GLsizei(wvao_.size()), wvao_.data());
+    for (Program* p : {&screen_, &world_, &segment_, &marker_}) glDeleteProgram(p->id);
 }
 
 bool Renderer::init(std::string* error) {
-    GLuint vs = compile(GL_VERTEX_SHADER, kShader_canvas_vert, "shaders/canvas.vert", error);
-    GLuint fs = compile(GL_FRAGMENT_SHADER, kShader_canvas_frag, "shaders/canvas.frag", error);
-    if (!vs || !fs) return false;
-    program_ = glCreateProgram();
-    glAttachShader(program_, vs);
-    glAttachShader(program_, fs);
-    glLinkProgram(program_);
-    glDeleteShader(vs);
-    glDeleteShader(fs);
-    GLint ok = 0;
-    glGetProgramiv(program_, GL_LINK_STATUS, &ok);
-    if (!ok) {
-        char log[4096];
-        glGetProgramInfoLog(program_, sizeof log, nullptr, log);
-        if (error) *error = std::string("shader program failed to link:\n") + log;
-        glDeleteProgram(program_);
-        program_ = 0;
-        return false;
+    screen_.id = link(compile(GL_VERTEX_SHADER, {kShader_canvas_vert}, "shaders/canvas.vert", error),
+                      compile(GL_FRAGMENT_SHADER, {kShader_canvas_frag}, "shaders/canvas.frag", error),
+                      "canvas", error);
+    world_.id = worldProgram(kShader_world_vert, kShader_solid_frag, "world + solid", error);
+    segment_.id = worldProgram(kShader_segment_vert, kShader_canvas_frag, "segment", error);
+    marker_.id = worldProgram(kShader_marker_vert, kShader_marker_frag, "marker", error);
+    if (!screen_.id || !world_.id || !segment_.id || !marker_.id) return false;
+    for (Program* p : {&screen_, &world_, &segment_, &marker_}) {
+        p->center = glGetUniformLocation(p->id, "uCenter");
+        p->scale = glGetUniformLocation(p->id, "uScale");
+        p->viewport = glGetUniformLocation(p->id, "uViewport");
+        p->viewSize = glGetUniformLocation(p->id, "uViewSize");
+        p->color = glGetUniformLocation(p->id, "uColor");
+        p->uiScale = glGetUniformLocation(p->id, "uUiScale");
+        p->pixelRatio = glGetUniformLocation(p->id, "uPixelRatio");
     }
-    uViewSize_ = glGetUniformLocation(program_, "uViewSize");
     glGenVertexArrays(GLsizei(vao_.size()), vao_.data());
     glGenBuffers(GLsizei(vbo_.size()), vbo_.data());
     for (size_t i = 0; i < vao_.size(); ++i) {
@@ -73,29 +140,71 @@ bool Renderer::init(std::string* error) {
         glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(Vertex),
                               reinterpret_cast<void*>(offsetof(Vertex, r)));
     }
+
+    glGenBuffers(GLsizei(buf_.size()), buf_.data());
+    glGenVertexArrays(GLsizei(wvao_.size()), wvao_.data());
+    // Triangles, edges and fans index the shared positions; the cover quad has its own.
+    for (Buffer b : {Triangles, Edges, Fans, Cover, BoundaryEdges}) {
+        glBindVertexArray(wvao_[b]);
+        glBindBuffer(GL_ARRAY_BUFFER, buf_[b == Cover ? Cover : Positions]);
+        glEnableVertexAttribArray(0);
+        glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, 2 * sizeof(float), nullptr);
+        if (b != Cover) glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buf_[b]);
+    }
+    for (Buffer b : {Boundary, Bridges, OverlayLines}) {
+        glBindVertexArray(wvao_[b]);
+        glBindBuffer(GL_ARRAY_BUFFER, buf_[b]);
+        segmentAttributes();
+    }
+    for (Buffer b : {Classes, Regular, OverlayMarkers}) {
+        glBindVertexArray(wvao_[b]);
+        glBindBuffer(GL_ARRAY_BUFFER, buf_[b]);
+        markerAttributes();
+    }
     glBindVertexArray(0);
     return true;
 }
 
+void Renderer::setGeometry(const CanvasGeometry& g) {
+    if (!screen_.id) return;
+    auto put = [&](Buffer b, GLenum target, const auto& v, size_t count) {
+        // An element buffer is VAO state: bind it through its own VAO.
+        glBindVertexArray(target == GL_ELEMENT_ARRAY_BUFFER ? wvao_[b] : 0);
+        upload(target, buf_[b], v.data(), v.size() * sizeof(v[0]));
+        count_[b] = count;
+    };
+    put(Positions, GL_ARRAY_BUFFER, g.positions, g.positions.size() / 2);
+    put(Triangles, GL_ELEMENT_ARRAY_BUFFER, g.triangles, g.triangles.size());
+    put(Edges, GL_ELEMENT_ARRAY_BUFFER, g.edges, g.edges.size());
+    put(Fans, GL_ELEMENT_ARRAY_BUFFER, g.fans, g.fans.size());
+    const float* b = g.bbox;
+    std::vector<float> cover{b[0], b[1], b[2], b[1], b[2], b[3], b[0], b[1], b[2], b[3], b[0], b[3]};
+    put(Cover, GL_ARRAY_BUFFER, cover, g.fans.empty() ? 0 : 6);
+    put(Boundary, GL_ARRAY_BUFFER, g.boundary, g.boundary.size());
+    put(Bridges, GL_ARRAY_BUFFER, g.bridges, g.bridges.size());
+    put(Classes, GL_ARRAY_BUFFER, g.classes, g.classes.size());
+    put(Regular, GL_ARRAY_BUFFER, g.regular, g.regular.size());
+    put(BoundaryEdges, GL_ELEMENT_ARRAY_BUFFER, g.boundaryEdges, g.boundaryEdges.size());
+    dryIsUncut_ = g.dryIsUncut;
+    glBindVertexArray(0);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void Renderer::setOverlay(const CanvasOverlay& o) {
+    if (!screen_.id) return;
+    upload(GL_ARRAY_BUFFER, buf_[OverlayLines], o.lines.data(), o.lines.size() * sizeof(o.lines[0]));
+    count_[OverlayLines] = o.lines.size();
+    upload(GL_ARRAY_BUFFER, buf_[OverlayMarkers], o.markers.data(), o.markers.size() * sizeof(o.markers[0]));
+    count_[OverlayMarkers] = o.markers.size();
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
 void Renderer::clear() {
     for (auto& l : layers_) l.clear();
-    ringFans_.clear();
-    bbox_[0] = bbox_[1] = 1e30f;
-    bbox_[2] = bbox_[3] = -1e30f;
 }
 
 void Renderer::push(Layer layer, Vec2 p, Rgba c) {
     layers_[size_t(layer)].push_back({float(p.x), float(p.y), c.r, c.g, c.b, c.a});
-}
-
-void Renderer::addRing(const std::vector<Vec2>& ring) {
-    if (ring.size() < 3) return;
-    auto put = [&](Vec2 p) {
-        ringFans_.push_back({float(p.x), float(p.y), 0, 0, 0, 255});
-        bbox_[0] = std::min(bbox_[0], float(p.x)), bbox_[1] = std::min(bbox_[1], float(p.y));
-        bbox_[2] = std::max(bbox_[2], float(p.x)), bbox_[3] = std::max(bbox_[3], float(p.y));
-    };
-    for (size_t i = 1; i + 1 < ring.size(); ++i) put(ring[0]), put(ring[i]), put(ring[i + 1]);
 }
 
 void Renderer::addTriangle(Layer layer, Vec2 a, Vec2 b, Vec2 c, Rgba color) {
@@ -141,13 +250,92 @@ void Renderer::addCircle(Layer layer, Vec2 c, float radius, float width, Rgba co
     }
 }
 
-void Renderer::render(Vec2 windowSize, int fbW, int fbH, const Rect& clip, Rgba bg) {
+void Renderer::useWorld(const Program& p, const WorldView& v, Vec2 windowSize) {
+    glUseProgram(p.id);
+    glUniform2f(p.center, float(v.center.x), float(v.center.y));
+    glUniform1f(p.scale, float(v.scale));
+    glUniform4f(p.viewport, float(v.viewport.x), float(v.viewport.y), float(v.viewport.w),
+                float(v.viewport.h));
+    glUniform2f(p.viewSize, float(windowSize.x), float(windowSize.y));
+    glUniform1f(p.uiScale, v.uiScale);
+}
+
+void Renderer::drawWorld(const WorldView& v, Vec2 windowSize, float pixelRatio) {
+    auto elements = [&](Buffer b, GLenum mode, size_t first, size_t end) {
+        end = std::min(end, count_[b]);
+        if (first >= end) return;
+        glBindVertexArray(wvao_[b]);
+        glDrawElements(mode, GLsizei(end - first), GL_UNSIGNED_INT,
+                       reinterpret_cast<void*>(first * sizeof(uint32_t)));
+    };
+    auto segments = [&](Buffer b, size_t count) {
+        count = std::min(count, count_[b]);
+        if (!count) return;
+        glBindVertexArray(wvao_[b]);
+        glDrawArraysInstanced(GL_TRIANGLES, 0, 6, GLsizei(count));
+    };
+    auto markers = [&](Buffer b) {
+        if (!count_[b]) return;
+        glBindVertexArray(wvao_[b]);
+        glDrawArrays(GL_POINTS, 0, GLsizei(count_[b]));
+    };
+
+    // Dry land: the triangles not cut yet when they tile the polygon (half the vertices of
+    // the alternative); otherwise fans into the stencil with INVERT (even-odd), then the
+    // cover quad through it.
+    useWorld(world_, v, windowSize);
+    if (dryIsUncut_) {
+        setColor(world_.color, palette::kPolygonFill);
+        elements(Triangles, GL_TRIANGLES, 3 * size_t(v.currentEnd), count_[Triangles]);
+    } else if (count_[Fans]) {
+        glEnable(GL_STENCIL_TEST);
+        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        glStencilFunc(GL_ALWAYS, 0, 0xff);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);
+        elements(Fans, GL_TRIANGLES, 0, count_[Fans]);
+        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        glStencilFunc(GL_NOTEQUAL, 0, 0xff);
+        glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+        setColor(world_.color, palette::kPolygonFill);
+        glBindVertexArray(wvao_[Cover]);
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(count_[Cover]));
+        glDisable(GL_STENCIL_TEST);
+    }
+    // Water, then the triangles of the current step: two ranges of the flood-order buffer.
+    setColor(world_.color, palette::kWater);
+    elements(Triangles, GL_TRIANGLES, 0, 3 * size_t(v.waterEnd));
+    setColor(world_.color, palette::kCurrent);
+    elements(Triangles, GL_TRIANGLES, 3 * size_t(v.waterEnd), 3 * size_t(v.currentEnd));
+    setColor(world_.color, palette::kTriangleEdge);
+    elements(Edges, GL_LINES, 0, 6 * size_t(v.edgeEnd));
+
+    if (v.thinBoundary) {
+        setColor(world_.color, palette::kBoundary);
+        elements(BoundaryEdges, GL_LINES, 0, count_[BoundaryEdges]);
+    }
+
+    useWorld(segment_, v, windowSize);
+    if (!v.thinBoundary) segments(Boundary, count_[Boundary]);
+    segments(Bridges, v.bridgeCount);
+    segments(OverlayLines, count_[OverlayLines]);
+
+    useWorld(marker_, v, windowSize);
+    glUniform1f(marker_.pixelRatio, pixelRatio);
+    glEnable(GL_PROGRAM_POINT_SIZE);
+    if (v.regular) markers(Regular);
+    if (v.classes) markers(Classes);
+    markers(OverlayMarkers);
+    glDisable(GL_PROGRAM_POINT_SIZE);
+}
+
+void Renderer::render(Vec2 windowSize, int fbW, int fbH, const Rect& clip, Rgba bg,
+                      const WorldView& view) {
     glViewport(0, 0, fbW, fbH);
     glDisable(GL_SCISSOR_TEST);
     glClearColor(bg.r / 255.f, bg.g / 255.f, bg.b / 255.f, 1.f);
     glClearStencil(0);
     glClear(GL_COLOR_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
-    if (!program_ || windowSize.x <= 0 || windowSize.y <= 0) return;
+    if (!screen_.id || windowSize.x <= 0 || windowSize.y <= 0) return;
 
     double sx = fbW / windowSize.x, sy = fbH / windowSize.y;
     glEnable(GL_SCISSOR_TEST);
@@ -157,21 +345,10 @@ void Renderer::render(Vec2 windowSize, int fbW, int fbH, const Rect& clip, Rgba 
     glDisable(GL_CULL_FACE);
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glUseProgram(program_);
-    glUniform2f(uViewSize_, float(windowSize.x), float(windowSize.y));
+    drawWorld(view, windowSize, float(sx));
 
-    // Fill layer: fans into the stencil with INVERT (even-odd), then one cover quad.
-    auto& fill = layers_[size_t(Layer::Fill)];
-    fill = ringFans_;
-    size_t fans = fill.size();
-    if (fans) {
-        Rgba c = fillColor_;
-        Vertex q[4] = {{bbox_[0], bbox_[1], c.r, c.g, c.b, c.a},
-                       {bbox_[2], bbox_[1], c.r, c.g, c.b, c.a},
-                       {bbox_[2], bbox_[3], c.r, c.g, c.b, c.a},
-                       {bbox_[0], bbox_[3], c.r, c.g, c.b, c.a}};
-        for (int i : {0, 1, 2, 0, 2, 3}) fill.push_back(q[i]);
-    }
+    glUseProgram(screen_.id);
+    glUniform2f(screen_.viewSize, float(windowSize.x), float(windowSize.y));
     for (size_t i = 0; i < layers_.size(); ++i) {
         const auto& verts = layers_[i];
         if (verts.empty()) continue;
@@ -179,25 +356,14 @@ void Renderer::render(Vec2 windowSize, int fbW, int fbH, const Rect& clip, Rgba 
         glBindBuffer(GL_ARRAY_BUFFER, vbo_[i]);
         glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(verts.size() * sizeof(Vertex)), verts.data(),
                      GL_STREAM_DRAW);
-        if (Layer(i) == Layer::Fill) {
-            glEnable(GL_STENCIL_TEST);
-            glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-            glStencilFunc(GL_ALWAYS, 0, 0xff);
-            glStencilOp(GL_KEEP, GL_KEEP, GL_INVERT);
-            glDrawArrays(GL_TRIANGLES, 0, GLsizei(fans));
-            glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-            glStencilFunc(GL_NOTEQUAL, 0, 0xff);
-            glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-            glDrawArrays(GL_TRIANGLES, GLint(fans), GLsizei(verts.size() - fans));
-            glDisable(GL_STENCIL_TEST);
-        } else {
-            glDrawArrays(GL_TRIANGLES, 0, GLsizei(verts.size()));
-        }
+        glDrawArrays(GL_TRIANGLES, 0, GLsizei(verts.size()));
     }
     glBindVertexArray(0);
     glUseProgram(0);
     glDisable(GL_SCISSOR_TEST);
 }
+
+void Renderer::finish() { glFinish(); }
 
 bool Renderer::readPixels(int width, int height, std::vector<uint8_t>& rgba) const {
     if (width <= 0 || height <= 0) return false;

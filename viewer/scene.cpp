@@ -15,15 +15,6 @@ double area(Point a, Point b, Point c) {
     return std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2;
 }
 
-Rgba classColor(VertexClass c) {
-    switch (c) {
-        case VertexClass::Bottom: return palette::kBottom;
-        case VertexClass::Sag: return palette::kSag;
-        case VertexClass::Top: return palette::kTop;
-        case VertexClass::Ceiling: return palette::kCeiling;
-        default: return palette::kRegular;
-    }
-}
 
 // The horizontal segment at the water vertex's height, from bank to bank of the active gorge:
 // the extreme crossings of that height with the chain and the two finger edges.
@@ -51,6 +42,16 @@ bool waterLevel(const Polygon& poly, const ReplayState& s, Point& a, Point& b) {
 
 }  // namespace
 
+Rgba vertexClassColor(VertexClass c) {
+    switch (c) {
+        case VertexClass::Bottom: return palette::kBottom;
+        case VertexClass::Sag: return palette::kSag;
+        case VertexClass::Top: return palette::kTop;
+        case VertexClass::Ceiling: return palette::kCeiling;
+        default: return palette::kRegular;
+    }
+}
+
 Scene buildScene(const Model& model, const SceneOptions& o) {
     Scene sc;
     const Polygon& poly = model.polygon();
@@ -59,12 +60,13 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
     const auto& v = poly.vertices;
     const Event* ev = model.currentEvent();
 
+    const bool all = !o.perStepOnly;
     for (const Ring& r : poly.rings) {
-        if (r.first + r.count > v.size()) continue;
+        if (!all || r.first + r.count > v.size()) continue;
         sc.rings.emplace_back(v.begin() + r.first, v.begin() + r.first + r.count);
     }
 
-    uint32_t n = std::min<uint32_t>(s.triangleCount, uint32_t(trace.triangles.size()));
+    uint32_t n = all ? std::min<uint32_t>(s.triangleCount, uint32_t(trace.triangles.size())) : 0;
     uint32_t curFirst = ev ? ev->firstTriangle : 0, curEnd = ev ? curFirst + ev->triangleCount : 0;
     for (uint32_t t = 0; t < n; ++t) {
         const Triangle& tri = trace.triangles[t];
@@ -90,7 +92,7 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
         for (size_t i = 0; i < ring.size(); ++i)
             sc.lines.push_back({ring[i], ring[(i + 1) % ring.size()], palette::kBoundary, 1.5f});
 
-    if (o.bridges)
+    if (o.bridges && all)
         for (auto [sag, to] : s.bridges)
             if (valid(poly, sag) && valid(poly, to))
                 sc.lines.push_back({v[sag], v[to], palette::kBridge, 2});
@@ -103,9 +105,10 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
             Index anchor = valid(poly, g.top) ? g.top : (g.chain.empty() ? kNone : g.chain[0]);
             if (valid(poly, anchor)) {
                 sc.markers.push_back({v[anchor], palette::kDormant, 9, Scene::Shape::Ring});
-                sc.labels.push_back({v[anchor],
-                                     (g.held ? "held " : "pending ") + std::to_string(g.id),
-                                     palette::kDormant, 10, 10});
+                Scene::Label l{v[anchor], (g.held ? "held " : "pending ") + std::to_string(g.id),
+                               palette::kDormant, 10, 10};
+                l.folds = true;
+                sc.labels.push_back(std::move(l));
             }
         }
 
@@ -121,10 +124,10 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
     sc.hasWater = waterLevel(poly, s, sc.waterA, sc.waterB);
     if (sc.hasWater) sc.lines.push_back({sc.waterA, sc.waterB, palette::kWaterLevel, 2});
 
-    if (o.vertexClasses)
+    if (o.vertexClasses && all)
         for (Index i = 0; i < v.size() && i < model.classes().size(); ++i) {
             VertexClass c = model.classes()[i];
-            sc.markers.push_back({v[i], classColor(c), c == VertexClass::Regular ? 2.5f : 4.5f});
+            sc.markers.push_back({v[i], vertexClassColor(c), c == VertexClass::Regular ? 2.5f : 4.5f});
         }
 
     for (Index i : model.offenders()) {

@@ -34,6 +34,7 @@ struct Scene {
         float dx = 0, dy = 0;    // screen offset (before UI scale)
         double minArea = 0;      // hide when the owner's screen area (px²) is below this
         double worldArea = 0;    // area of the owning triangle in world units², 0 = always
+        bool folds = false;      // one of many alike (gorge labels): hidden when crowded
     };
     std::vector<std::vector<Point>> rings;  // filled even-odd: holes stay open
     std::vector<Tri> water;                 // flooded triangles
@@ -52,9 +53,13 @@ struct SceneOptions {
     bool jumps = true;
     bool bridges = true;
     bool dormant = true;
+    // Only what changes with the step: no rings, triangles, boundary, bridges or vertex
+    // classes (the canvas keeps those in GPU buffers, see canvas_geometry.h).
+    bool perStepOnly = false;
 };
 
 Scene buildScene(const Model& model, const SceneOptions& options = {});
+Rgba vertexClassColor(VertexClass c);  // the legend's colours
 
 // Writes the scene as a standalone SVG of the given pixel width.
 void writeSceneSvg(std::ostream& out, const Scene& scene, const Polygon& polygon, int width);

@@ -1,7 +1,9 @@
 // GUI test: renders a known polygon with `flood-viewer --screenshot` and checks pixels whose
 // colours are known from the palette: background outside the polygon, water inside a flooded
 // triangle, and the Left marker at the Left vertex. Positions come from the same layout and
-// camera fit the viewer uses. Exit 77 (skipped) without a display, except in CI.
+// camera fit the viewer uses. A second shot draws the last step first and then steps back:
+// the triangles cut after that step must be dry land again (the GPU draws a prefix of the
+// flood-order triangles, which must shrink). Exit 77 (skipped) without a display, except in CI.
 #include <stb_image.h>  // implementation lives in Debian's libstb
 
 #include <cstdio>
@@ -51,6 +53,86 @@ int fail(const char* what, Vec2 p, Rgba want, Rgba seen) {
     return 1;
 }
 
+// Runs flood-viewer headless at `steps` (one or more --step options) into `out`, loads it.
+bool shoot(const std::string& input, const std::string& steps, const std::string& out, int W,
+           int H, Image& img) {
+    std::remove(out.c_str());
+    std::string cmd = std::string("'") + FLOOD_VIEWER + "' '" + input + "' " + steps +
+                      " --screenshot '" + out + "' --size " + std::to_string(W) + "x" +
+                      std::to_string(H);
+    std::printf("%s\n", cmd.c_str());
+    std::fflush(stdout);  // before the child writes to the same stream
+    if (int rc = std::system(cmd.c_str()); rc != 0) {
+        std::fprintf(stderr, "FAIL: flood-viewer exited with %d\n", rc);
+        return false;
+    }
+    int channels = 0;
+    img.px = stbi_load(out.c_str(), &img.w, &img.h, &channels, 4);
+    if (!img.px || img.w != W || img.h != H) {
+        std::fprintf(stderr, "FAIL: %s is missing or not %dx%d\n", out.c_str(), W, H);
+        return false;
+    }
+    return true;
+}
+
+// Probes inside triangle t, away from its centroid label and its edges.
+bool probeTriangle(const Model& model, uint32_t t, const Image& img, Rgba want, Vec2& probe,
+                   Rgba& seen) {
+    const auto& v = model.polygon().vertices;
+    const Triangle& tri = model.trace().triangles[t];
+    Point a = v[tri[0]], b = v[tri[1]], c = v[tri[2]];
+    for (auto [wa, wb, wc] : {std::tuple{0.6, 0.2, 0.2}, {0.2, 0.6, 0.2}, {0.2, 0.2, 0.6}}) {
+        probe = model.camera.toScreen({wa * a.x + wb * b.x + wc * c.x, wa * a.y + wb * b.y + wc * c.y});
+        if (near(img, probe, want, 1, &seen)) return true;
+    }
+    return false;
+}
+
+// The model is at the step shown; `back` shots also check that later triangles are dry.
+int checkShot(const Model& model, const Layout& layout, const Image& img, bool back) {
+    const Camera& cam = model.camera;
+    const char* shot = back ? " (after stepping back)" : "";
+    Rgba seen;
+    Vec2 probe;
+    int failures = 0;
+    Vec2 bg{layout.canvas.x + 0.02 * layout.canvas.w, layout.canvas.y + layout.canvas.h / 2};
+    if (!near(img, bg, palette::kBackground, 0, &seen))
+        failures += fail((std::string("background") + shot).c_str(), bg, palette::kBackground, seen);
+
+    // Water: inside an earlier (not emphasised) flooded triangle.
+    const Event* e = model.currentEvent();
+    bool water = false;
+    for (uint32_t t = 0; t < model.state().triangleCount && !water; ++t)
+        if (t < e->firstTriangle || t >= e->firstTriangle + e->triangleCount)
+            water = probeTriangle(model, t, img, palette::kWater, probe, seen);
+    if (!water)
+        failures += fail((std::string("water in a flooded triangle") + shot).c_str(), probe,
+                         palette::kWater, seen);
+
+    // Dry land: the largest triangle not cut yet is polygon fill, not water.
+    const auto& tris = model.trace().triangles;
+    const auto& v = model.polygon().vertices;
+    int64_t dry = -1;
+    double best = 0;
+    for (uint32_t t = model.state().triangleCount; t < tris.size(); ++t) {
+        Point a = v[tris[t][0]], b = v[tris[t][1]], c = v[tris[t][2]];
+        double area = std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x));
+        if (area > best) best = area, dry = t;
+    }
+    if (back && dry < 0) {
+        std::fprintf(stderr, "FAIL: the test step leaves no triangle to cut\n");
+        ++failures;
+    }
+    if (dry >= 0 && !probeTriangle(model, uint32_t(dry), img, palette::kPolygonFill, probe, seen))
+        failures += fail((std::string("dry land in an uncut triangle") + shot).c_str(), probe,
+                         palette::kPolygonFill, seen);
+
+    Vec2 left = cam.toScreen(v[model.state().fingers.left]);
+    if (!near(img, left, palette::kLeft, 1, &seen))
+        failures += fail((std::string("Left marker") + shot).c_str(), left, palette::kLeft, seen);
+    return failures;
+}
+
 }  // namespace
 
 int main() {
@@ -96,58 +178,21 @@ int main() {
     model.seek(step);
 
     const int W = 1000, H = 700;
-    std::string out = dir + "/screenshot-test.png";
-    std::remove(out.c_str());
-    std::string cmd = std::string("'") + FLOOD_VIEWER + "' '" + input + "' --step " +
-                      std::to_string(step) + " --screenshot '" + out + "' --size " +
-                      std::to_string(W) + "x" + std::to_string(H);
-    std::printf("%s\n", cmd.c_str());
-    std::fflush(stdout);  // before the child writes to the same stream
-    if (int rc = std::system(cmd.c_str()); rc != 0) {
-        std::fprintf(stderr, "FAIL: flood-viewer exited with %d\n", rc);
-        return 1;
-    }
-    Image img;
-    int channels = 0;
-    img.px = stbi_load(out.c_str(), &img.w, &img.h, &channels, 4);
-    if (!img.px || img.w != W || img.h != H) {
-        std::fprintf(stderr, "FAIL: %s is missing or not %dx%d\n", out.c_str(), W, H);
-        return 1;
-    }
-
     // Screenshots are rendered at UI scale 1 (see main.cpp), so logical pixels are pixels.
     Layout layout = computeLayout(W, H, 1);
     model.camera.fit(model.polygon(), layout.canvas);
-    const Camera& cam = model.camera;
-    Rgba seen;
     int failures = 0;
-
-    Vec2 bg{layout.canvas.x + 0.02 * layout.canvas.w, layout.canvas.y + layout.canvas.h / 2};
-    if (!near(img, bg, palette::kBackground, 0, &seen))
-        failures += fail("background", bg, palette::kBackground, seen);
-
-    // Water: sample inside the first flooded triangle away from its centroid label and edges.
-    const Event* e = model.currentEvent();
-    const auto& tris = model.trace().triangles;
-    const auto& v = model.polygon().vertices;
-    bool water = false;
-    Vec2 probe;
-    for (uint32_t t = 0; t < model.state().triangleCount && !water; ++t) {
-        if (t >= e->firstTriangle && t < e->firstTriangle + e->triangleCount) continue;
-        for (auto [wa, wb, wc] : {std::tuple{0.6, 0.2, 0.2}, {0.2, 0.6, 0.2}, {0.2, 0.2, 0.6}}) {
-            Point a = v[tris[t][0]], b = v[tris[t][1]], c = v[tris[t][2]];
-            probe = cam.toScreen({wa * a.x + wb * b.x + wc * c.x, wa * a.y + wb * b.y + wc * c.y});
-            if ((water = near(img, probe, palette::kWater, 1, &seen))) break;
-        }
+    for (bool back : {false, true}) {
+        std::string out = dir + (back ? "/screenshot-test-back.png" : "/screenshot-test.png");
+        std::string steps = (back ? "--step " + std::to_string(model.steps()) + " " : "") +
+                            "--step " + std::to_string(step);
+        Image img;
+        if (!shoot(input, steps, out, W, H, img)) return 1;
+        failures += checkShot(model, layout, img, back);
+        stbi_image_free(img.px);
     }
-    if (!water) failures += fail("water in a flooded triangle", probe, palette::kWater, seen);
-
-    Vec2 left = cam.toScreen(v[model.state().fingers.left]);
-    if (!near(img, left, palette::kLeft, 1, &seen))
-        failures += fail("Left marker", left, palette::kLeft, seen);
-
-    stbi_image_free(img.px);
     if (failures) return 1;
-    std::printf("ok: step %u, background, water and Left marker where expected\n", step);
+    std::printf("ok: step %u, background, water, dry land and Left marker where expected, also "
+                "after stepping back from the end\n", step);
     return 0;
 }

@@ -1,0 +1,100 @@
+// What the canvas uploads to the GPU, as plain arrays (no GL here, so tests can read them).
+// Two parts with different lifetimes:
+// - CanvasGeometry, built once per opened trace: every vertex, every triangle in flood order
+//   (the triangles cut by step s are the prefix [0, triangleCount)), ring fans for the fill,
+//   boundary edges, every bridge in event order (again a prefix per step), vertex classes.
+// - CanvasOverlay, rebuilt only when the step (or a display option) changes: what buildScene
+//   draws for that step alone (chain, dormant gorges, jumps, water level, fingers, culprits).
+// Positions are world coordinates minus `origin`, in float: the camera is a shader uniform,
+// so panning and zooming never re-upload anything.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "model.h"
+#include "palette.h"
+#include "scene.h"
+
+namespace flood::view {
+
+struct SegmentVertex {  // one instance of the thick-line shader
+    float ax, ay, bx, by;
+    Rgba color;
+    float width;  // screen pixels before UI scale
+};
+
+struct MarkerVertex {  // one point sprite
+    float x, y;
+    Rgba color;
+    float radius;  // screen pixels before UI scale
+    float shape;   // Scene::Shape
+};
+
+struct CanvasGeometry {
+    Point origin;                     // subtracted from every position
+    std::vector<float> positions;     // x, y per polygon vertex
+    std::vector<uint32_t> triangles;  // 3 indices per triangle, flood order
+    std::vector<uint32_t> edges;      // 6 per triangle: its edges as GL_LINES
+    std::vector<uint32_t> fans;       // 3 per fan triangle of each ring (even-odd fill)
+    float bbox[4] = {0, 0, 0, 0};     // x0, y0, x1, y1 of the rings
+    std::vector<SegmentVertex> boundary;
+    std::vector<uint32_t> boundaryEdges;  // 2 per edge: the boundary as thin GL_LINES
+    std::vector<SegmentVertex> bridges;  // every Bridge, in event order
+    std::vector<MarkerVertex> classes;   // bottoms, sags, tops and ceilings
+    std::vector<MarkerVertex> regular;   // the other vertices (most of a big polygon)
+    bool dryIsUncut = false;  // the triangles tile the polygon: the untriangulated rest
+                              // is their suffix, no stencil fill needed
+};
+CanvasGeometry buildCanvasGeometry(const Model& model);
+
+struct CanvasOverlay {
+    std::vector<SegmentVertex> lines;     // in buildScene's order
+    std::vector<MarkerVertex> markers;    // in buildScene's order
+    std::vector<Scene::Line> arrows;      // jump pointers: heads are drawn in screen space
+    std::vector<Scene::Label> labels;     // L, R, NL, NR, pending/held gorges
+};
+// The per-step part of buildScene(model, options), as GPU vertices relative to `origin`.
+CanvasOverlay buildCanvasOverlay(const Model& model, const SceneOptions& options, Point origin);
+
+// Triangles bucketed by the grid cell of their centroid, so labels cost what is on screen,
+// not what the polygon holds.
+class TriangleGrid {
+public:
+    void build(const Polygon& polygon, const std::vector<Triangle>& triangles);
+    // Calls f(t) for every triangle t < count whose centroid lies in the world box, in cell
+    // order; returns false (and calls nothing) if more than `cap` would be called.
+    template <class F>
+    bool forEach(Point lo, Point hi, uint32_t count, size_t cap, F f) const;
+    Point centroid(uint32_t t) const { return centroid_[t]; }
+    double area(uint32_t t) const { return area_[t]; }
+
+private:
+    bool cells(Point lo, Point hi, int& i0, int& j0, int& i1, int& j1) const;
+    double x0_ = 0, y0_ = 0, cell_ = 1;
+    int nx_ = 0, ny_ = 0;
+    std::vector<uint32_t> start_, ids_;
+    std::vector<Point> centroid_;
+    std::vector<float> area_;
+};
+
+template <class F>
+bool TriangleGrid::forEach(Point lo, Point hi, uint32_t count, size_t cap, F f) const {
+    int i0, j0, i1, j1;
+    if (!cells(lo, hi, i0, j0, i1, j1)) return true;
+    auto cut = [&](int i, int j, const uint32_t*& b) {  // ids < count: a prefix of the cell
+        size_t c = size_t(j) * nx_ + i;
+        b = ids_.data() + start_[c];
+        return size_t(std::lower_bound(b, ids_.data() + start_[c + 1], count) - b);
+    };
+    size_t total = 0;
+    const uint32_t* b = nullptr;
+    for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i)
+            if ((total += cut(i, j, b)) > cap) return false;
+    for (int j = j0; j <= j1; ++j)
+        for (int i = i0; i <= i1; ++i)
+            for (size_t k = 0, n = cut(i, j, b); k < n; ++k) f(b[k]);
+    return true;
+}
+
+}  // namespace flood::view

@@ -61,7 +61,7 @@ Replay::Replay(const Trace& trace, uint32_t keyframeInterval)
         work += 64 + movedByApply(e, state_);
         ++events;
         apply(e);
-        if (e.action == Action::Bridge || e.action == Action::Spill) {
+        if ((e.action == Action::Bridge || e.action == Action::Spill) && e.gorgePushed != kNone) {  // a Steiner bridge pushes none
             pushed.push_back(e.gorgePushed);
             if (!state_.dormant.empty()) fresh += state_.dormant.back().chain.size();
         }

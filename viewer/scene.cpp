@@ -62,7 +62,8 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
 
     const bool all = !o.perStepOnly;
     for (const Ring& r : poly.rings) {
-        if (!all || r.first + r.count > v.size()) continue;
+        // A Steiner point (a one-point hole) has no boundary: its vertex marker shows it.
+        if (!all || r.first + r.count > v.size() || r.count < 3) continue;
         sc.rings.emplace_back(v.begin() + r.first, v.begin() + r.first + r.count);
     }
 

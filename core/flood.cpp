@@ -104,13 +104,27 @@ private:
         }
     };
     HeightKey key(uint32_t n) const { return {P(n).y, P(n).x, nodes_[n].v, n}; }
+    // Sorts nodes by lower(), comparing contiguous keys rather than chasing node -> vertex
+    // -> point on every comparison; `keys` gets the sorted keys.
+    void sortByHeight(std::vector<uint32_t>& ns, std::vector<HeightKey>& keys) const {
+        keys.resize(ns.size());
+        for (size_t i = 0; i < ns.size(); ++i) keys[i] = key(ns[i]);
+        std::sort(keys.begin(), keys.end());
+        for (size_t i = 0; i < ns.size(); ++i) ns[i] = keys[i].node;
+    }
     // Number of sags strictly below node n, by binary search on the contiguous height keys,
     // remembered per node: the water is usually the previous step's Next.
     uint32_t sagsBelow(uint32_t n) {
         if (n >= sagsBelow_.size()) sagsBelow_.resize(nodes_.size(), kNil);
         uint32_t& r = sagsBelow_[n];
-        if (r == kNil)
-            r = uint32_t(std::lower_bound(sagKeys_.begin(), sagKeys_.end(), key(n)) - sagKeys_.begin());
+        if (r == kNil) {
+            // Search the dense array of heights; break ties on the full keys only if needed.
+            HeightKey k = key(n);
+            size_t a = size_t(std::lower_bound(sagY_.begin(), sagY_.end(), k.y) - sagY_.begin());
+            if (a < sagY_.size() && sagY_[a] == k.y)
+                a = size_t(std::lower_bound(sagKeys_.begin() + long(a), sagKeys_.end(), k) - sagKeys_.begin());
+            r = uint32_t(a);
+        }
         return r;
     }
     int turn(uint32_t a, uint32_t b, uint32_t c) const { return orient(P(a), P(b), P(c)); }
@@ -166,12 +180,12 @@ private:
         sags_.clear();
         for (uint32_t n : partVertices)
             if (isSag(n)) sags_.push_back(n);
-        std::sort(sags_.begin(), sags_.end(), [&](uint32_t a, uint32_t b) { return lower(a, b); });
+        sortByHeight(sags_, sagKeys_);
         std::vector<Point> pointOfRank(sags_.size());
-        sagKeys_.resize(sags_.size());
+        sagY_.resize(sags_.size());
         for (size_t k = 0; k < sags_.size(); ++k) {
-            pointOfRank[k] = P(sags_[k]);
-            sagKeys_[k] = key(sags_[k]);
+            pointOfRank[k] = {sagKeys_[k].x, sagKeys_[k].y};
+            sagY_[k] = sagKeys_[k].y;
         }
         sagIndex_.build(pointOfRank);
         sagsBelow_.assign(nodes_.size(), kNil);
@@ -180,7 +194,7 @@ private:
         bottoms_.clear();
         for (uint32_t n : partVertices)
             if (isMinimum(n) && turn(prev(n), n, next(n)) > 0) bottoms_.push_back(n);
-        std::sort(bottoms_.begin(), bottoms_.end(), [&](uint32_t a, uint32_t b) { return lower(a, b); });
+        sortByHeight(bottoms_, bottomKeys_);
         bottomCursor_ = 0;
 
         // The lowest node of the outer ring is where the water starts.
@@ -436,7 +450,7 @@ private:
         region.lineCount = 2;
         int64_t k = sagIndex_.lowest(lo, hi, region, [&](uint32_t rank) {
             ++e.sagTests;
-            return inside(P(sags_[rank]), l, r, nr, nl);
+            return inside(Point{sagKeys_[rank].x, sagKeys_[rank].y}, l, r, nr, nl);
         });
         if (k < 0) return kNil;
         sagIndex_.markUsed(uint32_t(k));
@@ -684,6 +698,8 @@ private:
     std::vector<uint32_t> sags_;
     SagIndex sagIndex_;  // the sags by height rank, searchable by x
     std::vector<HeightKey> sagKeys_;  // height keys of sags_, for binary search
+    std::vector<double> sagY_;         // their y alone: a denser array for the first search
+    std::vector<HeightKey> bottomKeys_;  // scratch for sorting the bottoms
     std::vector<uint32_t> sagsBelow_;  // per node: sags below it, kNil until asked
     std::vector<uint32_t> bottoms_;  // bottoms, lowest first
     size_t bottomCursor_ = 0;

@@ -20,6 +20,7 @@ LABEL = {"flood": "Flood", "flood-rec": "Flood + trace", "earcut": "earcut", "gl
          "cgal": "CGAL CDT", "geos": "GEOS CDT"}
 COLOR = {"flood": "#d62728", "flood-rec": "#ff9896", "earcut": "#1f77b4", "glu": "#2ca02c",
          "cgal": "#9467bd", "geos": "#8c564b"}
+EVENT_BYTES = 112  # sizeof(flood::Event); main() reads the run's event_bytes.txt
 TIMED = {"valid", "invalid", "count-differs", "adds-vertices", "refused"}
 MARK = {"valid": "", "invalid": " ✗", "count-differs": " #", "adds-vertices": " +",
         "refused": " R", "error": "E", "timeout": "T", "crash": "C", "skipped": "S", "missing": "–"}
@@ -85,6 +86,18 @@ class Data:
         if not r or r["status"] not in TIMED:
             return None
         return float(r["ns"]) / max(1, int(r["vertices"]))
+
+    def rec_extra(self, name):
+        rr = self.get(name, "flood-rec")
+        return dict(kv.split("=", 1) for kv in rr["extra"].split(";") if "=" in kv) if rr else {}
+
+    def rec_base(self, name):
+        """Flood without a listener, ns per vertex, as timed in turn with the recorded runs
+        (same child, same load); the separate Flood row when the pair is missing."""
+        e = self.rec_extra(name)
+        if "paired_plain_ns" in e:
+            return float(e["paired_plain_ns"]) / max(1, int(self.info[name]["vertices"]))
+        return self.nsv(name, "flood")
 
     def cell_text(self, name, who):
         r = self.get(name, who)
@@ -172,13 +185,13 @@ def targets(D):
     for n in D.inputs:
         if D.info[n]["family"] == "fixture" or int(D.info[n]["vertices"]) < 10000:
             continue
-        f, r = D.nsv(n, "flood"), D.nsv(n, "flood-rec")
+        f, r = D.rec_base(n), D.nsv(n, "flood-rec")
         if f and r:
             ratios.append((r / f, n))
     reused = []
     for n in D.inputs:
         rr = D.get(n, "flood-rec")
-        f = D.nsv(n, "flood")
+        f = D.rec_base(n)
         if rr and f and D.info[n]["family"] != "fixture" and int(D.info[n]["vertices"]) >= 10000 and "reused_ns=" in rr["extra"]:
             reused.append(float(rr["extra"].split("reused_ns=")[1]) / int(rr["vertices"]) / f)
     reused.sort()
@@ -186,7 +199,7 @@ def targets(D):
         ratios.sort()
         med = ratios[len(ratios) // 2][0]
         out.append(("Trace recording ≤ 1.5× the time without a listener (generated inputs, N ≥ 10⁴)",
-                    "fresh log: median ×%.2f, worst ×%.2f (%s)" % (med, ratios[-1][0], ratios[-1][1]) +
+                    "record(): median ×%.2f, worst ×%.2f (%s)" % (med, ratios[-1][0], ratios[-1][1]) +
                     ("; log reused: median ×%.2f, worst ×%.2f" % (reused[len(reused) // 2], reused[-1]) if reused else ""),
                     ratios[-1][0] <= 1.5))
     return out
@@ -224,8 +237,9 @@ def markdown(D, svg_name):
         "run takes over 10 s). The machine has 2 cores and other jobs ran beside the benchmark: "
         "treat differences under ~1.5× on small inputs as noise.\n"
         "- **Flood**: `triangulate(polygon)` without a listener; validation is not included (its "
-        "cost is listed separately). **Flood + trace**: the same with a listener that appends every "
-        "event to a fresh `std::vector<Event>` (full trace recording, as `record()` does).\n"
+        "cost is listed separately). **Flood + trace**: `record(polygon)`, full trace recording "
+        "into a fresh `Trace` each run, timed alternately with plain runs in the same child "
+        "(the recording ratio uses those paired plain runs).\n"
         "- **GLU** (libglu1-mesa): `gluTess*`, `GLU_TESS_WINDING_ODD`, normal +z, edge-flag callback "
         "installed so only triangles come out; timed from building the coordinate array to "
         "`gluDeleteTess`.\n"
@@ -260,8 +274,8 @@ def markdown(D, svg_name):
              "noise. (2) Flood's growth above A = 1 comes from the flood machine itself (the sag search "
              "and its index, core/sag_index.h, core/flood.cpp; radial jagged fans are the known worst "
              "case), not from the peers' harness: every Flood output on a valid input is checked exact. "
-             "(3) The recording overhead with a fresh log is first-touch memory (page faults) for the "
-             "~80 B events; with a reused log the listener costs at most the ratio given.\n")
+             "(3) What recording adds beyond the listener call is first-touch memory (page faults) "
+             "for the ~%d B events; with a reused log the listener costs at most the ratio given.\n" % EVENT_BYTES)
     s.append("\n## Largest size per family (ns per vertex)\n\n")
     s.append(status_legend() + "\n\n")
     s.append(summary_table(D))
@@ -308,19 +322,21 @@ def markdown(D, svg_name):
     s.append(table(["fixture", "n", "holes", "valid input"] + [LABEL[w] for w in TRIANGULATORS] +
                    ["Flood / earcut"], rows))
     s.append("\n## Trace recording overhead and validation cost\n\n")
-    s.append("*Fresh log*: a new `std::vector<Event>` per run (what `flood trace` and the viewer "
-             "pay; the vector grows to ~80 B per event on memory the kernel must first touch). "
-             "*Log reused*: one vector cleared between runs, keeping its capacity. The gap between "
-             "them is page-fault cost, large on this virtual machine; the rest is the listener "
-             "itself.\n\n")
+    s.append("*record()*: full trace recording as `flood trace` and the viewer get it, a fresh "
+             "`Trace` per run (the polygon copied, the event log reserved once and advised onto 2 MB "
+             "pages, ~%d B per event, ~1.1–1.5 events per vertex). It is timed in turn with plain "
+             "runs in one child process; *Flood ns/v (paired)* is the median of those plain runs, "
+             "so the ratio compares runs under the same load. *Log reused*: one listener vector "
+             "cleared between runs, keeping its capacity: the gap to *record()* is first-touch "
+             "memory; the rest is the listener itself.\n\n" % EVENT_BYTES)
     rows = []
     for n in D.inputs:
         if D.info[n]["family"] == "fixture":
             continue
-        f, r = D.nsv(n, "flood"), D.nsv(n, "flood-rec")
+        f, r = D.rec_base(n), D.nsv(n, "flood-rec")
         fr = D.get(n, "flood")
         rr = D.get(n, "flood-rec")
-        extra = dict(kv.split("=", 1) for kv in rr["extra"].split(";") if "=" in kv) if rr else {}
+        extra = D.rec_extra(n)
         ev = extra.get("events")
         reused = float(extra["reused_ns"]) / max(1, int(rr["vertices"])) if "reused_ns" in extra else None
         val = None
@@ -329,7 +345,7 @@ def markdown(D, svg_name):
         rows.append([n, fmt(f), fmt(r), "%.2f" % (r / f) if f and r else "–", fmt(reused),
                      "%.2f" % (reused / f) if f and reused else "–",
                      "%.2f" % (int(ev) / int(D.info[n]["vertices"])) if ev else "–", fmt(val)])
-    s.append(table(["input", "Flood ns/v", "+ trace ns/v (fresh log)", "ratio", "+ trace ns/v (log reused)", "ratio", "events / vertex", "validate() ns/v"], rows))
+    s.append(table(["input", "Flood ns/v (paired)", "+ trace ns/v (record())", "ratio", "+ trace ns/v (log reused)", "ratio", "events / vertex", "validate() ns/v"], rows))
     s.append("\n## Peak memory of Flood\n\n")
     s.append("One process per measurement (`flood-bench memory`, started from the shell): the input "
              "is read from its binary file, then triangulated once. *Extra* is the growth of "
@@ -436,7 +452,11 @@ def readme_summary(D, svg_rel):
 def main():
     if len(sys.argv) < 4:
         sys.exit("usage: report.py DATA_DIR BENCHMARKS.md PLOT.svg [README.md]")
+    global EVENT_BYTES
     D = Data(sys.argv[1])
+    eb = os.path.join(sys.argv[1], "event_bytes.txt")
+    if os.path.exists(eb):
+        EVENT_BYTES = int(open(eb).read().strip() or EVENT_BYTES)
     md_path, svg_path = sys.argv[2], sys.argv[3]
     with open(svg_path, "w") as f:
         f.write(svg(D))

@@ -118,14 +118,45 @@ private:
         if (n >= sagsBelow_.size()) sagsBelow_.resize(nodes_.size(), kNil);
         uint32_t& r = sagsBelow_[n];
         if (r == kNil) {
-            // Search the dense array of heights; break ties on the full keys only if needed.
+            // The height bucket bounds the search; break ties on the full keys only if needed.
             HeightKey k = key(n);
-            size_t a = size_t(std::lower_bound(sagY_.begin(), sagY_.end(), k.y) - sagY_.begin());
+            size_t b = heightBucket(k.y);
+            auto first = sagY_.begin() + long(sagBucket_[b]), last = sagY_.begin() + long(sagBucket_[b + 1]);
+            size_t a = size_t(std::lower_bound(first, last, k.y) - sagY_.begin());
             if (a < sagY_.size() && sagY_[a] == k.y)
-                a = size_t(std::lower_bound(sagKeys_.begin() + long(a), sagKeys_.end(), k) - sagKeys_.begin());
+                a = size_t(std::lower_bound(sagKeys_.begin() + long(a), sagKeys_.begin() + long(sagBucket_[b + 1]), k) -
+                           sagKeys_.begin());
             r = uint32_t(a);
         }
         return r;
+    }
+    // Buckets of equal height span over the sags' heights. The bucket of y never decreases
+    // as y grows (rounding is monotone), so the sags of the buckets below y's are all lower
+    // than y and those above all higher: a search for y needs only its own bucket.
+    size_t heightBucket(double y) const {
+        const size_t last = sagBucket_.size() - 2;
+        if (!(y > bucketY0_)) return 0;
+        double b = (y - bucketY0_) * bucketScale_;
+        return b < double(last) ? size_t(b) : last;
+    }
+    // The sags' points for the plane index, their heights, and the height buckets.
+    void indexSags() {
+        const size_t count = sagKeys_.size();
+        std::vector<Point> pointOfRank(count);
+        sagY_.resize(count);
+        for (size_t k = 0; k < count; ++k) {
+            pointOfRank[k] = {sagKeys_[k].x, sagKeys_[k].y};
+            sagY_[k] = sagKeys_[k].y;
+        }
+        sagIndex_.build(pointOfRank);
+        const size_t buckets = count / 2 + 1;
+        bucketY0_ = count ? sagY_.front() : 0;
+        double span = count ? sagY_.back() - bucketY0_ : 0;
+        bucketScale_ = span > 0 && std::isfinite(span) ? double(buckets) / span : 0;
+        sagBucket_.assign(buckets + 1, uint32_t(count));
+        size_t filled = 0;
+        for (size_t k = 0; k < count; ++k)
+            for (size_t b = heightBucket(sagY_[k]); filled <= b;) sagBucket_[filled++] = uint32_t(k);
     }
     int turn(uint32_t a, uint32_t b, uint32_t c) const { return orient(P(a), P(b), P(c)); }
     uint32_t prev(uint32_t n) const { return nodes_[n].prev; }
@@ -181,13 +212,7 @@ private:
         for (uint32_t n : partVertices)
             if (isSag(n)) sags_.push_back(n);
         sortByHeight(sags_, sagKeys_);
-        std::vector<Point> pointOfRank(sags_.size());
-        sagY_.resize(sags_.size());
-        for (size_t k = 0; k < sags_.size(); ++k) {
-            pointOfRank[k] = {sagKeys_[k].x, sagKeys_[k].y};
-            sagY_[k] = sagKeys_[k].y;
-        }
-        sagIndex_.build(pointOfRank);
+        indexSags();
         sagsBelow_.assign(nodes_.size(), kNil);
         // The bottoms, lowest first: every one of them starts a gorge unless the water
         // reaches it first. They are the to-do list of last resort (see nextBottom()).
@@ -699,6 +724,8 @@ private:
     SagIndex sagIndex_;  // the sags by height rank, searchable by x
     std::vector<HeightKey> sagKeys_;  // height keys of sags_, for binary search
     std::vector<double> sagY_;         // their y alone: a denser array for the first search
+    std::vector<uint32_t> sagBucket_;  // first rank of each height bucket (heightBucket())
+    double bucketY0_ = 0, bucketScale_ = 0;
     std::vector<HeightKey> bottomKeys_;  // scratch for sorting the bottoms
     std::vector<uint32_t> sagsBelow_;  // per node: sags below it, kNil until asked
     std::vector<uint32_t> bottoms_;  // bottoms, lowest first

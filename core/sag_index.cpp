@@ -22,6 +22,7 @@ void SagIndex::build(const std::vector<Point>& pointOfRank) {
     const uint32_t n = uint32_t(pointOfRank.size());
     used_.assign(n, 0);
     items_.resize(n);
+    byRank_ = pointOfRank;
     for (uint32_t r = 0; r < n; ++r) items_[r] = {pointOfRank[r], r};
     nodes_.clear();
     if (n == 0) return;

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -55,7 +56,9 @@ private:
     bool outside(const Node& n, const Region& r, const Line* lines) const;
     static bool mayContain(const Region& r, const Line* lines, Point p);
     std::vector<Node> nodes_;
+    static constexpr uint32_t kScanLimit = 16;  // brackets up to this many sags are scanned
     std::vector<Item> items_;
+    std::vector<Point> byRank_;  // the sags' points by rank, for the scan
     std::vector<uint32_t> leafOfRank_;  // rank -> leaf node id
     std::vector<uint8_t> used_;
     std::vector<uint32_t> stack_;  // scratch, reused by every search
@@ -79,6 +82,13 @@ int64_t SagIndex::lowest(int64_t lo, int64_t hi, const Region& region, Inside&& 
         lines[k] = {a.x, a.y, b.x - a.x, b.y - a.y};
     }
     int64_t best = hi;  // candidates must beat this
+    if (hi - lo - 1 <= int64_t(kScanLimit)) {
+        // A thin band holds few sags: scan them in rank order, as the paper does (§4).
+        for (int64_t r = std::max<int64_t>(lo + 1, 0); r < hi && r < int64_t(used_.size()); ++r)
+            if (!used_[size_t(r)] && mayContain(region, lines, byRank_[size_t(r)]) && inside(uint32_t(r)))
+                return r;
+        return -1;
+    }
     stack_.clear();
     stack_.push_back(0);
     while (!stack_.empty()) {

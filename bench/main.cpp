@@ -72,8 +72,9 @@ Timing timeRuns(const std::function<void()>& f) {
     return {t[t.size() / 2], int(t.size())};
 }
 
-// Times `a` and `b` alternately under the same rule as timeRuns, so load from other jobs falls
-// on both alike: their ratio is fairer than one of two medians taken minutes apart.
+// Times `a` and `b` alternately (at least 5 pairs, until ~2 s are spent, at most 21; one pair
+// when `b` takes over 10 s), so load from other jobs falls on both alike: their ratio is fairer
+// than one of two medians taken minutes apart.
 std::pair<Timing, Timing> timePaired(const std::function<void()>& a, const std::function<void()>& b) {
     std::vector<double> ta, tb;
     double total = 0;
@@ -87,7 +88,7 @@ std::pair<Timing, Timing> timePaired(const std::function<void()>& a, const std::
         tb.push_back(once(b));
         total += ta.back() + tb.back();
         if (tb[0] > 10e9) break;
-        if (ta.size() >= 3 && (total > 1e9 || ta.size() >= 21)) break;
+        if (ta.size() >= 5 && (total > 2e9 || ta.size() >= 21)) break;
     }
     std::sort(ta.begin(), ta.end());
     std::sort(tb.begin(), tb.end());

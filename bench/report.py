@@ -238,7 +238,7 @@ def markdown(D, svg_name):
         "treat differences under ~1.5× on small inputs as noise.\n"
         "- **Flood**: `triangulate(polygon)` without a listener; validation is not included (its "
         "cost is listed separately). **Flood + trace**: `record(polygon)`, full trace recording "
-        "into a fresh `Trace` each run, timed alternately with plain runs in the same child "
+        "into a fresh `Trace` each run, timed alternately with plain runs in the same child (≥ 5 pairs) "
         "(the recording ratio uses those paired plain runs).\n"
         "- **GLU** (libglu1-mesa): `gluTess*`, `GLU_TESS_WINDING_ODD`, normal +z, edge-flag callback "
         "installed so only triangles come out; timed from building the coordinate array to "

@@ -157,6 +157,8 @@ private:
         size_t filled = 0;
         for (size_t k = 0; k < count; ++k)
             for (size_t b = heightBucket(sagY_[k]); filled <= b;) sagBucket_[filled++] = uint32_t(k);
+        sagsBelow_.assign(nodes_.size(), kNil);
+        for (size_t k = 0; k < count; ++k) sagsBelow_[sags_[k]] = uint32_t(k);  // a sag's rank
     }
     int turn(uint32_t a, uint32_t b, uint32_t c) const { return orient(P(a), P(b), P(c)); }
     uint32_t prev(uint32_t n) const { return nodes_[n].prev; }
@@ -213,7 +215,6 @@ private:
             if (isSag(n)) sags_.push_back(n);
         sortByHeight(sags_, sagKeys_);
         indexSags();
-        sagsBelow_.assign(nodes_.size(), kNil);
         // The bottoms, lowest first: every one of them starts a gorge unless the water
         // reaches it first. They are the to-do list of last resort (see nextBottom()).
         bottoms_.clear();

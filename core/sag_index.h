@@ -56,7 +56,7 @@ private:
     bool outside(const Node& n, const Region& r, const Line* lines) const;
     static bool mayContain(const Region& r, const Line* lines, Point p);
     std::vector<Node> nodes_;
-    static constexpr uint32_t kScanLimit = 16;  // brackets up to this many sags are scanned
+    static constexpr uint32_t kScanLimit = 48;  // brackets up to this many sags are scanned
     std::vector<Item> items_;
     std::vector<Point> byRank_;  // the sags' points by rank, for the scan
     std::vector<uint32_t> leafOfRank_;  // rank -> leaf node id

@@ -68,8 +68,13 @@ class Machine {
 public:
     Machine(const Polygon& poly, Listener* listener, const Options& opt)
         : poly_(poly), listener_(listener) {
-        pts_.reserve(poly.vertices.size());
-        for (Point p : poly.vertices) pts_.push_back(toUp(p, opt.up));
+        if (opt.up == Up::PlusY) {  // heights are the input's: no copy of the vertices
+            pts_ = poly.vertices.data();
+            return;
+        }
+        rotated_.reserve(poly.vertices.size());
+        for (Point p : poly.vertices) rotated_.push_back(toUp(p, opt.up));
+        pts_ = rotated_.data();
     }
 
     FloodResult run() {
@@ -216,12 +221,12 @@ private:
         sortByHeight(sags_, sagKeys_);
         indexSags();
         // The bottoms, lowest first: every one of them starts a gorge unless the water
-        // reaches it first. They are the to-do list of last resort (see nextBottom()).
+        // reaches it first. They are the to-do list of last resort (see lowestDryBottom()).
         bottoms_.clear();
         for (uint32_t n : partVertices)
             if (isMinimum(n) && turn(prev(n), n, next(n)) > 0) bottoms_.push_back(n);
-        sortByHeight(bottoms_, bottomKeys_);
         bottomCursor_ = 0;
+        bottomScans_ = 0;  // sorted only if the fallback is asked often (takeNextGorge())
 
         // The lowest node of the outer ring is where the water starts.
         const Ring& outer = poly_.rings[pa.firstRing];
@@ -684,14 +689,37 @@ private:
             resumeGorge(g);
             return true;
         }
+        uint32_t b = lowestDryBottom();
+        if (b == kNil) return false;
+        e.bottom = nodes_[b].v;
+        startGorge(b);
+        return true;
+    }
+
+    // The lowest bottom the water has not reached (kNil if none). Most runs ask a few times
+    // (the last time to learn there is none), so the first asks scan the list, dropping the
+    // bottoms reached since (they stay reached); after kBottomScans the list is sorted once
+    // and a cursor walks it, as the paper's sorted list would.
+    static constexpr uint32_t kBottomScans = 4;
+    uint32_t lowestDryBottom() {
+        if (bottomScans_ < kBottomScans) {
+            ++bottomScans_;
+            uint32_t best = kNil;
+            size_t kept = 0;
+            for (uint32_t b : bottoms_) {
+                if (nodes_[b].wet || !nodes_[b].alive) continue;
+                bottoms_[kept++] = b;
+                if (best == kNil || lower(b, best)) best = b;
+            }
+            bottoms_.resize(kept);
+            if (bottomScans_ == kBottomScans) sortByHeight(bottoms_, bottomKeys_);
+            return best;
+        }
         for (; bottomCursor_ < bottoms_.size(); ++bottomCursor_) {
             uint32_t b = bottoms_[bottomCursor_];
-            if (nodes_[b].wet || !nodes_[b].alive) continue;
-            e.bottom = nodes_[b].v;
-            startGorge(b);
-            return true;
+            if (!nodes_[b].wet && nodes_[b].alive) return b;
         }
-        return false;
+        return kNil;
     }
 
     void startGorge(uint32_t bottom) {
@@ -719,7 +747,8 @@ private:
 
     const Polygon& poly_;
     Listener* listener_;
-    std::vector<Point> pts_;
+    std::vector<Point> rotated_;  // the vertices turned so that the chosen vertical is +y
+    const Point* pts_ = nullptr;  // the vertices as the machine sees them (rotated_ or input)
     std::vector<Node> nodes_;
     std::vector<uint32_t> sags_;
     SagIndex sagIndex_;  // the sags by height rank, searchable by x
@@ -729,8 +758,9 @@ private:
     double bucketY0_ = 0, bucketScale_ = 0;
     std::vector<HeightKey> bottomKeys_;  // scratch for sorting the bottoms
     std::vector<uint32_t> sagsBelow_;  // per node: sags below it, kNil until asked
-    std::vector<uint32_t> bottoms_;  // bottoms, lowest first
+    std::vector<uint32_t> bottoms_;  // bottoms; lowest first once sorted (lowestDryBottom())
     size_t bottomCursor_ = 0;
+    uint32_t bottomScans_ = 0;
     std::vector<GorgeRec> gorges_;
     std::vector<uint32_t> todo_;  // pending gorges (ids), last pushed first
     uint32_t left_ = kNil, right_ = kNil, water_ = kNil;

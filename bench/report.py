@@ -192,8 +192,9 @@ def targets(D):
     for n in D.inputs:
         rr = D.get(n, "flood-rec")
         f = D.rec_base(n)
-        if rr and f and D.info[n]["family"] != "fixture" and int(D.info[n]["vertices"]) >= 10000 and "reused_ns=" in rr["extra"]:
-            reused.append(float(rr["extra"].split("reused_ns=")[1]) / int(rr["vertices"]) / f)
+        extra = D.rec_extra(n)
+        if rr and f and D.info[n]["family"] != "fixture" and int(D.info[n]["vertices"]) >= 10000 and "reused_ns" in extra:
+            reused.append(float(extra["reused_ns"]) / int(rr["vertices"]) / f)
     reused.sort()
     if ratios:
         ratios.sort()
@@ -271,9 +272,19 @@ def markdown(D, svg_name):
     s.append("\nReading the targets: (1) the load average above was measured at the end of the run; other "
              "builds and tests shared the 2 cores, so absolute times are inflated (CGAL, for instance, "
              "is slower here than the ~1,100 ns/vertex the issue quotes) and ratios near 1 are within "
-             "noise. (2) Flood's growth above A = 1 comes from the flood machine itself (the sag search "
-             "and its index, core/sag_index.h, core/flood.cpp; radial jagged fans are the known worst "
-             "case), not from the peers' harness: every Flood output on a valid input is checked exact. "
+             "noise. (2) Flood's growth above A = 1 has these causes, measured while tuning (issue 4; "
+             "docs/ALGORITHM.md §8): (a) some families change shape with N — `circle-smooth` and "
+             "`circle-sqrt-holes` keep a fixed 1%% radial noise while the vertex spacing shrinks, so "
+             "the outline zig-zags more: 0.07 bridges and 0.10 sag searches per vertex at 10³, 0.17 "
+             "and 0.49 at 10⁶; (b) at 10⁶ the working arrays leave the caches: the set-up's "
+             "touching-point hash (`mergeTouchingLoops`, one random probe per vertex into a table of "
+             "2n slots) costs ≈ 5 ns/vertex at 10³ and ≈ 60 ns/vertex at 10⁶ on every family — the "
+             "largest single superlinear term (about 40%% of `spiral`'s time at 10⁶) — and the sag "
+             "k-d tree descents (≈ 20 boxes per search at 10⁴, 30–45 at 10⁶) become memory bound; "
+             "(c) on `circle-jagged` the gorges are long slivers, and a sliver crosses O(√S) boxes "
+             "of the k-d tree (≈ 41, 91, 209 boxes per search at 10⁴, 10⁵, 10⁶): the one structural "
+             "superlinearity left; (d) sorting the sags and building their tree, O(S log S). None of "
+             "it is the harness: every Flood output on a valid input is checked exact. "
              "(3) What recording adds beyond the listener call is first-touch memory (page faults) "
              "for the ~%d B events; with a reused log the listener costs at most the ratio given.\n" % EVENT_BYTES)
     s.append("\n## Largest size per family (ns per vertex)\n\n")

@@ -16,12 +16,18 @@ struct Recorder : Listener {
 };
 
 // A large log is fresh memory the kernel maps page by page on first touch; 2 MB pages make
-// that hundreds of times fewer faults (the log is written once, front to back). Advice only.
+// that hundreds of times fewer faults, and mapping them in one call spares the faults while
+// recording (the log is written front to back, into what was reserved). Advice only.
 void backWithHugePages(void* data, size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     const uintptr_t huge = uintptr_t(2) << 20;
     uintptr_t a = (uintptr_t(data) + huge - 1) & ~(huge - 1), e = (uintptr_t(data) + bytes) & ~(huge - 1);
-    if (e > a) madvise(reinterpret_cast<void*>(a), e - a, MADV_HUGEPAGE);
+    if (e <= a) return;
+    madvise(reinterpret_cast<void*>(a), e - a, MADV_HUGEPAGE);
+#if defined(MADV_POPULATE_WRITE)
+    // Map it all in one call (Linux 5.14+) rather than one fault per page while recording.
+    madvise(reinterpret_cast<void*>(a), e - a, MADV_POPULATE_WRITE);
+#endif
 #else
     (void)data, (void)bytes;
 #endif

@@ -68,8 +68,13 @@ class Machine {
 public:
     Machine(const Polygon& poly, Listener* listener, const Options& opt)
         : poly_(poly), listener_(listener) {
-        pts_.reserve(poly.vertices.size());
-        for (Point p : poly.vertices) pts_.push_back(toUp(p, opt.up));
+        if (opt.up == Up::PlusY) {  // heights are the input's: no copy of the vertices
+            pts_ = poly.vertices.data();
+            return;
+        }
+        rotated_.reserve(poly.vertices.size());
+        for (Point p : poly.vertices) rotated_.push_back(toUp(p, opt.up));
+        pts_ = rotated_.data();
     }
 
     FloodResult run() {
@@ -104,14 +109,61 @@ private:
         }
     };
     HeightKey key(uint32_t n) const { return {P(n).y, P(n).x, nodes_[n].v, n}; }
+    // Sorts nodes by lower(), comparing contiguous keys rather than chasing node -> vertex
+    // -> point on every comparison; `keys` gets the sorted keys.
+    void sortByHeight(std::vector<uint32_t>& ns, std::vector<HeightKey>& keys) const {
+        keys.resize(ns.size());
+        for (size_t i = 0; i < ns.size(); ++i) keys[i] = key(ns[i]);
+        std::sort(keys.begin(), keys.end());
+        for (size_t i = 0; i < ns.size(); ++i) ns[i] = keys[i].node;
+    }
     // Number of sags strictly below node n, by binary search on the contiguous height keys,
     // remembered per node: the water is usually the previous step's Next.
     uint32_t sagsBelow(uint32_t n) {
         if (n >= sagsBelow_.size()) sagsBelow_.resize(nodes_.size(), kNil);
         uint32_t& r = sagsBelow_[n];
-        if (r == kNil)
-            r = uint32_t(std::lower_bound(sagKeys_.begin(), sagKeys_.end(), key(n)) - sagKeys_.begin());
+        if (r == kNil) {
+            // The height bucket bounds the search; break ties on the full keys only if needed.
+            HeightKey k = key(n);
+            size_t b = heightBucket(k.y);
+            auto first = sagY_.begin() + long(sagBucket_[b]), last = sagY_.begin() + long(sagBucket_[b + 1]);
+            size_t a = size_t(std::lower_bound(first, last, k.y) - sagY_.begin());
+            if (a < sagY_.size() && sagY_[a] == k.y)
+                a = size_t(std::lower_bound(sagKeys_.begin() + long(a), sagKeys_.begin() + long(sagBucket_[b + 1]), k) -
+                           sagKeys_.begin());
+            r = uint32_t(a);
+        }
         return r;
+    }
+    // Buckets of equal height span over the sags' heights. The bucket of y never decreases
+    // as y grows (rounding is monotone), so the sags of the buckets below y's are all lower
+    // than y and those above all higher: a search for y needs only its own bucket.
+    size_t heightBucket(double y) const {
+        const size_t last = sagBucket_.size() - 2;
+        if (!(y > bucketY0_)) return 0;
+        double b = (y - bucketY0_) * bucketScale_;
+        return b < double(last) ? size_t(b) : last;
+    }
+    // The sags' points for the plane index, their heights, and the height buckets.
+    void indexSags() {
+        const size_t count = sagKeys_.size();
+        std::vector<Point> pointOfRank(count);
+        sagY_.resize(count);
+        for (size_t k = 0; k < count; ++k) {
+            pointOfRank[k] = {sagKeys_[k].x, sagKeys_[k].y};
+            sagY_[k] = sagKeys_[k].y;
+        }
+        sagIndex_.build(pointOfRank);
+        const size_t buckets = count / 2 + 1;
+        bucketY0_ = count ? sagY_.front() : 0;
+        double span = count ? sagY_.back() - bucketY0_ : 0;
+        bucketScale_ = span > 0 && std::isfinite(span) ? double(buckets) / span : 0;
+        sagBucket_.assign(buckets + 1, uint32_t(count));
+        size_t filled = 0;
+        for (size_t k = 0; k < count; ++k)
+            for (size_t b = heightBucket(sagY_[k]); filled <= b;) sagBucket_[filled++] = uint32_t(k);
+        sagsBelow_.assign(nodes_.size(), kNil);
+        for (size_t k = 0; k < count; ++k) sagsBelow_[sags_[k]] = uint32_t(k);  // a sag's rank
     }
     int turn(uint32_t a, uint32_t b, uint32_t c) const { return orient(P(a), P(b), P(c)); }
     uint32_t prev(uint32_t n) const { return nodes_[n].prev; }
@@ -182,22 +234,15 @@ private:
             if (isSag(n)) sags_.push_back(n);
         // A point hole is a hole whose lowest vertex is its only one: a sag.
         sags_.insert(sags_.end(), points.begin(), points.end());
-        std::sort(sags_.begin(), sags_.end(), [&](uint32_t a, uint32_t b) { return lower(a, b); });
-        std::vector<Point> pointOfRank(sags_.size());
-        sagKeys_.resize(sags_.size());
-        for (size_t k = 0; k < sags_.size(); ++k) {
-            pointOfRank[k] = P(sags_[k]);
-            sagKeys_[k] = key(sags_[k]);
-        }
-        sagIndex_.build(pointOfRank);
-        sagsBelow_.assign(nodes_.size(), kNil);
+        sortByHeight(sags_, sagKeys_);
+        indexSags();
         // The bottoms, lowest first: every one of them starts a gorge unless the water
-        // reaches it first. They are the to-do list of last resort (see nextBottom()).
+        // reaches it first. They are the to-do list of last resort (see lowestDryBottom()).
         bottoms_.clear();
         for (uint32_t n : partVertices)
             if (isMinimum(n) && turn(prev(n), n, next(n)) > 0) bottoms_.push_back(n);
-        std::sort(bottoms_.begin(), bottoms_.end(), [&](uint32_t a, uint32_t b) { return lower(a, b); });
         bottomCursor_ = 0;
+        bottomScans_ = 0;  // sorted only if the fallback is asked often (takeNextGorge())
 
         // The lowest node of the outer ring is where the water starts.
         uint32_t start = kNil;
@@ -451,7 +496,7 @@ private:
         region.lineCount = 2;
         int64_t k = sagIndex_.lowest(lo, hi, region, [&](uint32_t rank) {
             ++e.sagTests;
-            return inside(P(sags_[rank]), l, r, nr, nl);
+            return inside(Point{sagKeys_[rank].x, sagKeys_[rank].y}, l, r, nr, nl);
         });
         if (k < 0) return kNil;
         sagIndex_.markUsed(uint32_t(k));
@@ -669,14 +714,37 @@ private:
             resumeGorge(g);
             return true;
         }
+        uint32_t b = lowestDryBottom();
+        if (b == kNil) return false;
+        e.bottom = nodes_[b].v;
+        startGorge(b);
+        return true;
+    }
+
+    // The lowest bottom the water has not reached (kNil if none). Most runs ask a few times
+    // (the last time to learn there is none), so the first asks scan the list, dropping the
+    // bottoms reached since (they stay reached); after kBottomScans the list is sorted once
+    // and a cursor walks it, as the paper's sorted list would.
+    static constexpr uint32_t kBottomScans = 4;
+    uint32_t lowestDryBottom() {
+        if (bottomScans_ < kBottomScans) {
+            ++bottomScans_;
+            uint32_t best = kNil;
+            size_t kept = 0;
+            for (uint32_t b : bottoms_) {
+                if (nodes_[b].wet || !nodes_[b].alive) continue;
+                bottoms_[kept++] = b;
+                if (best == kNil || lower(b, best)) best = b;
+            }
+            bottoms_.resize(kept);
+            if (bottomScans_ == kBottomScans) sortByHeight(bottoms_, bottomKeys_);
+            return best;
+        }
         for (; bottomCursor_ < bottoms_.size(); ++bottomCursor_) {
             uint32_t b = bottoms_[bottomCursor_];
-            if (nodes_[b].wet || !nodes_[b].alive) continue;
-            e.bottom = nodes_[b].v;
-            startGorge(b);
-            return true;
+            if (!nodes_[b].wet && nodes_[b].alive) return b;
         }
-        return false;
+        return kNil;
     }
 
     void startGorge(uint32_t bottom) {
@@ -704,14 +772,20 @@ private:
 
     const Polygon& poly_;
     Listener* listener_;
-    std::vector<Point> pts_;
+    std::vector<Point> rotated_;  // the vertices turned so that the chosen vertical is +y
+    const Point* pts_ = nullptr;  // the vertices as the machine sees them (rotated_ or input)
     std::vector<Node> nodes_;
     std::vector<uint32_t> sags_;
     SagIndex sagIndex_;  // the sags by height rank, searchable by x
     std::vector<HeightKey> sagKeys_;  // height keys of sags_, for binary search
+    std::vector<double> sagY_;         // their y alone: a denser array for the first search
+    std::vector<uint32_t> sagBucket_;  // first rank of each height bucket (heightBucket())
+    double bucketY0_ = 0, bucketScale_ = 0;
+    std::vector<HeightKey> bottomKeys_;  // scratch for sorting the bottoms
     std::vector<uint32_t> sagsBelow_;  // per node: sags below it, kNil until asked
-    std::vector<uint32_t> bottoms_;  // bottoms, lowest first
+    std::vector<uint32_t> bottoms_;  // bottoms; lowest first once sorted (lowestDryBottom())
     size_t bottomCursor_ = 0;
+    uint32_t bottomScans_ = 0;
     std::vector<GorgeRec> gorges_;
     std::vector<uint32_t> todo_;  // pending gorges (ids), last pushed first
     uint32_t left_ = kNil, right_ = kNil, water_ = kNil;

@@ -1,12 +1,15 @@
 // The sorted sag list (§4), indexed in the plane as well, so that a gorge looks only at the
 // sags that could lie in it. The paper scans every sag between the water and Next: O(S·G)
 // over a run (§7), quadratic on jagged outlines. Here the sags also sit in a k-d tree whose
-// boxes are pruned by the gorge's bank lines and the water's height band, so a search visits
-// the sags near the gorge rather than every sag at its height. The exact `inside` test still
-// decides; the pruning only has to be conservative.
+// boxes are pruned by the gorge's bank lines, the water's height band and the sags already
+// used, so a search visits the sags near the gorge rather than every sag at its height. The
+// exact `inside` test still decides; the pruning only has to be conservative.
 #pragma once
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "polygon.h"
@@ -25,7 +28,7 @@ public:
     // pointOfRank[r]: the sag of height rank r (ranks: sags sorted by height).
     void build(const std::vector<Point>& pointOfRank);
     size_t size() const { return used_.size(); }
-    void markUsed(uint32_t rank) { used_[rank] = 1; }
+    void markUsed(uint32_t rank);
 
     // The lowest unused rank in (lo, hi) within `region` for which inside(rank) holds;
     // -1 if none. `inside` is only called on candidates in the region.
@@ -33,45 +36,80 @@ public:
     int64_t lowest(int64_t lo, int64_t hi, const Region& region, Inside&& inside);
 
 private:
+    // Implicit complete tree: node i has children 2i+1, 2i+2; every leaf is at depth depth_.
+    // Boxes are floats rounded outwards (half the bytes of doubles, still conservative).
     struct Node {
-        double xMin, xMax, yMin, yMax;
+        float xMin, xMax, yMin, yMax;
         uint32_t rankMin, rankMax;
-        uint32_t begin, end;          // range of items_
-        uint32_t left = 0, right = 0;  // children (0: leaf)
+        uint32_t begin, unused;  // first item; sags of the subtree not used yet
     };
     struct Item {
         Point p;
         uint32_t rank;
     };
-    uint32_t buildNode(uint32_t begin, uint32_t end, int depth);
-    bool outside(const Node& n, const Region& r) const;
-    static bool mayContain(const Region& r, Point p);
+    // A bank line prepared once per search: left of a->b means cross > margin-scaled error.
+    struct Line {
+        double ax, ay, dx, dy;
+    };
+    void buildNode(uint32_t id, uint32_t begin, uint32_t end, int depth);
+    static bool leftOf(const Line& l, double px, double py);
+    bool outside(const Node& n, const Region& r, const Line* lines) const;
+    static bool mayContain(const Region& r, const Line* lines, Point p);
     std::vector<Node> nodes_;
+    static constexpr uint32_t kScanLimit = 48;  // brackets up to this many sags are scanned
     std::vector<Item> items_;
+    std::vector<Point> byRank_;  // the sags' points by rank, for the scan
+    std::vector<uint32_t> leafOfRank_;  // rank -> leaf node id
     std::vector<uint8_t> used_;
     std::vector<uint32_t> stack_;  // scratch, reused by every search
+    int depth_ = 0;
+    uint32_t firstLeaf_ = 0;
 };
+
+// Might p be strictly left of the line? False only when it is clearly right (error margin).
+inline bool SagIndex::leftOf(const Line& l, double px, double py) {
+    px -= l.ax, py -= l.ay;
+    double a = l.dx * py, b = l.dy * px;
+    return a - b >= -(1e-9 * (std::abs(a) + std::abs(b)) + 1e-300);
+}
 
 template <class Inside>
 int64_t SagIndex::lowest(int64_t lo, int64_t hi, const Region& region, Inside&& inside) {
     if (items_.empty() || hi <= lo + 1) return -1;
+    Line lines[2];
+    for (int k = 0; k < region.lineCount; ++k) {
+        Point a = region.lines[k][0], b = region.lines[k][1];
+        lines[k] = {a.x, a.y, b.x - a.x, b.y - a.y};
+    }
     int64_t best = hi;  // candidates must beat this
-    stack_.assign(1, 0);
+    if (hi - lo - 1 <= int64_t(kScanLimit)) {
+        // A thin band holds few sags: scan them in rank order, as the paper does (§4).
+        for (int64_t r = std::max<int64_t>(lo + 1, 0); r < hi && r < int64_t(used_.size()); ++r)
+            if (!used_[size_t(r)] && mayContain(region, lines, byRank_[size_t(r)]) && inside(uint32_t(r)))
+                return r;
+        return -1;
+    }
+    stack_.clear();
+    stack_.push_back(0);
     while (!stack_.empty()) {
-        const Node& n = nodes_[stack_.back()];
+        uint32_t id = stack_.back();
         stack_.pop_back();
-        if (int64_t(n.rankMax) <= lo || int64_t(n.rankMin) >= best || outside(n, region)) continue;
-        if (n.left == 0) {
-            for (uint32_t i = n.begin; i < n.end; ++i) {
+        const Node& n = nodes_[id];
+        if (n.unused == 0 || int64_t(n.rankMax) <= lo || int64_t(n.rankMin) >= best ||
+            outside(n, region, lines))
+            continue;
+        if (id >= firstLeaf_) {
+            uint32_t end = id + 1 < nodes_.size() ? nodes_[id + 1].begin : uint32_t(items_.size());
+            for (uint32_t i = n.begin; i < end; ++i) {
                 uint32_t r = items_[i].rank;
                 if (int64_t(r) <= lo || int64_t(r) >= best || used_[r]) continue;
-                if (!mayContain(region, items_[i].p)) continue;
+                if (!mayContain(region, lines, items_[i].p)) continue;
                 if (inside(r)) best = r;
             }
             continue;
         }
         // Visit the child with the lower ranks first: it is likelier to hold the answer.
-        uint32_t a = n.left, b = n.right;
+        uint32_t a = 2 * id + 1, b = a + 1;
         if (nodes_[b].rankMin < nodes_[a].rankMin) std::swap(a, b);
         stack_.push_back(b);
         stack_.push_back(a);

@@ -26,11 +26,13 @@ import mapbox_earcut
 def read_poly(path):
     """Returns (xy float64 array (n, 2), list of (count, outer) per ring)."""
     with open(path, "rb") as f:
-        if f.read(8) != b"FLPOLY1\n":
+        if f.read(8) != b"FLPOLY2\n":
             raise ValueError("not a .poly file: " + path)
         (rings,) = struct.unpack("<Q", f.read(8))
         shape = np.frombuffer(f.read(16 * rings), dtype="<u8").reshape(rings, 2)
-        xy = np.fromfile(f, dtype="<f8").reshape(-1, 2)
+        total = int(shape[:, 0].sum()) if rings else 0
+        xy = np.frombuffer(f.read(16 * total), dtype="<f8").reshape(-1, 2)
+        # the T-junction list follows; earcut does not use it
     return xy, [(int(c), bool(o)) for c, o in shape]
 
 

@@ -28,7 +28,7 @@ Polygon benchGenerate(const std::string& family, uint64_t seed, size_t size) {
 void writePoly(const std::string& path, const Polygon& p) {
     std::ofstream out(path, std::ios::binary);
     if (!out) throw std::runtime_error("cannot write " + path);
-    out.write("FLPOLY1\n", 8);
+    out.write("FLPOLY2\n", 8);
     auto u64 = [&](uint64_t v) { out.write(reinterpret_cast<const char*>(&v), 8); };
     u64(p.rings.size());
     for (size_t r = 0; r < p.rings.size(); ++r) {
@@ -40,12 +40,15 @@ void writePoly(const std::string& path, const Polygon& p) {
     static_assert(sizeof(Point) == 16, "Point must be two packed doubles");
     out.write(reinterpret_cast<const char*>(p.vertices.data()),
               std::streamsize(p.vertices.size() * sizeof(Point)));
+    // The T-junctions validate() found (Polygon::splits): the flood and the checker need them.
+    u64(p.splits.size());
+    for (const flood::EdgeSplit& s : p.splits) u64(uint64_t(s.edge) << 32 | s.vertex);
 }
 
 Polygon readPoly(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     char magic[8];
-    if (!in.read(magic, 8) || std::string(magic, 8) != "FLPOLY1\n")
+    if (!in.read(magic, 8) || std::string(magic, 8) != "FLPOLY2\n")
         throw std::runtime_error("not a .poly file: " + path);
     auto u64 = [&] {
         uint64_t v = 0;
@@ -71,6 +74,12 @@ Polygon readPoly(const std::string& path) {
         p.parts.back().ringCount++;
         first += flood::Index(s.first);
     }
+    p.splits.resize(u64());
+    for (flood::EdgeSplit& s : p.splits) {
+        uint64_t v = u64();
+        s = {flood::Index(v >> 32), flood::Index(v)};
+    }
+    if (!in) throw std::runtime_error("truncated .poly file: " + path);
     return p;
 }
 

@@ -29,8 +29,9 @@ std::vector<size_t> benchSizes();
 // K = sqrt(N)/2 circular holes, the definition), built here.
 flood::Polygon benchGenerate(const std::string& family, uint64_t seed, size_t size);
 
-// Binary .poly: "FLPOLY1\n", u64 ring count, per ring (u64 vertex count, u64 outer flag),
-// then x, y as float64 pairs for every vertex in order. Little-endian, as the machine.
+// Binary .poly: "FLPOLY2\n", u64 ring count, per ring (u64 vertex count, u64 outer flag),
+// then x, y as float64 pairs for every vertex in order, then u64 T-junction count and per
+// T-junction u64 (edge << 32 | vertex) (Polygon::splits). Little-endian, as the machine.
 void writePoly(const std::string& path, const flood::Polygon& p);
 flood::Polygon readPoly(const std::string& path);
 

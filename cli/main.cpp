@@ -253,13 +253,13 @@ int cmdBench(const std::string& in, int repeat, const std::string& up) {
     if (s != Status::Ok) return code(s);
     size_t sink = 0;
     double plain = medianNs(repeat, [&] { sink += triangulate(polygon, nullptr, o).triangles.size(); });
-    // Full trace recording into a fresh log each run (what `flood trace` and the viewer pay),
-    // then into one log whose capacity is kept (clear()): the difference is first-touch memory.
+    // Full trace recording as `flood trace` and the viewer do it (record(): a fresh log each
+    // run), then into one log whose capacity is kept (clear()): the difference is fresh memory.
     size_t events = 0;
     double recorded = medianNs(repeat, [&] {
-        Recording fresh;
-        sink += triangulate(polygon, &fresh, o).triangles.size();
-        events = fresh.events.size();
+        Trace t = record(polygon, o);
+        sink += t.triangles.size();
+        events = t.events.size();
     });
     Recording rec;
     double reused = medianNs(repeat, [&] {

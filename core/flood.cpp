@@ -300,36 +300,61 @@ private:
         return kNil;
     }
 
-    // Rings touching at a point become one loop there: arriving at the point, the next edge
-    // is the first one met rotating clockwise from the edge we came along (§1).
-    void mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
-        // Find coincident vertices with an open-addressing table of node ids keyed by the
-        // point (no allocation per vertex); most polygons have none.
-        size_t cap = 16;
-        while (cap < partVertices.size() * 2) cap <<= 1;
-        std::vector<uint32_t> table(cap, kNil);
-        std::vector<std::pair<uint32_t, uint32_t>> copies;  // (first node at the point, node)
-        for (uint32_t n : partVertices) {
-            Point p = P(n);
+    // Pairs (first node at a point, a later node at the same point), in the order of `nodes`;
+    // most polygons have none. Cache-friendly at any size: each node's point is hashed, the
+    // (hash, position) pairs are bucketed by the hash's top bits (a stable counting sort), and
+    // each bucket, small enough for the cache, is searched with its own open-addressing table.
+    std::vector<std::pair<uint32_t, uint32_t>> coincidentNodes(const std::vector<uint32_t>& nodes) const {
+        std::vector<std::pair<uint32_t, uint32_t>> copies;
+        const size_t n = nodes.size();
+        int bits = 0;
+        while (bits < 20 && (size_t(2048) << bits) < n) ++bits;  // about 2048 nodes a bucket
+        std::vector<uint64_t> hash(n);
+        std::vector<uint32_t> start((size_t(1) << bits) + 1, 0);
+        auto bucketOf = [&](uint64_t h) { return bits ? size_t(h >> (64 - bits)) : 0; };
+        for (size_t i = 0; i < n; ++i) {
+            Point p = P(nodes[i]);
             double x = p.x + 0.0, y = p.y + 0.0;  // -0.0 and 0.0 are the same point
             uint64_t a, b;
             std::memcpy(&a, &x, 8);
             std::memcpy(&b, &y, 8);
             uint64_t h = a ^ (b * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull);
-            h = (h ^ (h >> 31)) * 0xBF58476D1CE4E5B9ull;  // mix the high bits down: integer
-            h = (h ^ (h >> 29)) * 0x94D049BB133111EBull;  // coordinates differ only there
-            h ^= h >> 32;
-            for (size_t i = h & (cap - 1);; i = (i + 1) & (cap - 1)) {
-                if (table[i] == kNil) {
-                    table[i] = n;
-                    break;
-                }
-                if (P(table[i]) == p) {
-                    copies.emplace_back(table[i], n);
-                    break;
+            h = (h ^ (h >> 31)) * 0xBF58476D1CE4E5B9ull;  // mix every bit into the top ones:
+            h = (h ^ (h >> 29)) * 0x94D049BB133111EBull;  // integer coordinates differ only in
+            hash[i] = h ^ (h >> 32);                       // their high bits
+            ++start[bucketOf(hash[i]) + 1];
+        }
+        for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
+        std::vector<std::pair<uint64_t, uint32_t>> byBucket(n);  // (hash, position in nodes)
+        std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+        for (size_t i = 0; i < n; ++i) byBucket[fill[bucketOf(hash[i])]++] = {hash[i], uint32_t(i)};
+        std::vector<uint32_t> table;  // positions into byBucket, kNil when empty
+        for (size_t k = 0; k + 1 < start.size(); ++k) {
+            size_t cap = 16;
+            while (cap < size_t(start[k + 1] - start[k]) * 2) cap <<= 1;
+            table.assign(cap, kNil);
+            for (uint32_t j = start[k]; j < start[k + 1]; ++j) {
+                auto [h, i] = byBucket[j];
+                for (size_t t = h & (cap - 1);; t = (t + 1) & (cap - 1)) {
+                    if (table[t] == kNil) {
+                        table[t] = j;
+                        break;
+                    }
+                    auto [h2, i2] = byBucket[table[t]];
+                    if (h2 == h && P(nodes[i2]) == P(nodes[i])) {
+                        copies.emplace_back(nodes[i2], nodes[i]);
+                        break;
+                    }
                 }
             }
         }
+        return copies;
+    }
+
+    // Rings touching at a point become one loop there: arriving at the point, the next edge
+    // is the first one met rotating clockwise from the edge we came along (§1).
+    void mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
+        std::vector<std::pair<uint32_t, uint32_t>> copies = coincidentNodes(partVertices);
         if (copies.empty()) return;
         std::sort(copies.begin(), copies.end());
         std::vector<uint32_t> corner;

@@ -276,11 +276,11 @@ def markdown(D, svg_name):
              "docs/ALGORITHM.md §8): (a) some families change shape with N — `circle-smooth` and "
              "`circle-sqrt-holes` keep a fixed 1%% radial noise while the vertex spacing shrinks, so "
              "the outline zig-zags more: 0.07 bridges and 0.10 sag searches per vertex at 10³, 0.17 "
-             "and 0.49 at 10⁶; (b) at 10⁶ the working arrays leave the caches: the set-up's "
-             "touching-point hash (`mergeTouchingLoops`, one random probe per vertex into a table of "
-             "2n slots) costs ≈ 5 ns/vertex at 10³ and ≈ 60 ns/vertex at 10⁶ on every family — the "
-             "largest single superlinear term (about 40%% of `spiral`'s time at 10⁶) — and the sag "
-             "k-d tree descents (≈ 20 boxes per search at 10⁴, 30–45 at 10⁶) become memory bound; "
+             "and 0.49 at 10⁶; (b) at 10⁶ the working arrays (nodes, points, the sag k-d tree) leave "
+             "the caches, so random accesses become memory accesses: the sag tree's descents (≈ 20 "
+             "boxes per search at 10⁴, 30–45 at 10⁶) and the walks along the loops. (The set-up's "
+             "search for touching points was the largest such term, ≈ 60 ns/vertex at 10⁶ against ≈ 5 "
+             "at 10³; it now buckets the hashes first and stays in cache — docs/ALGORITHM.md §8); "
              "(c) on `circle-jagged` the gorges are long slivers, and a sliver crosses O(√S) boxes "
              "of the k-d tree (≈ 41, 91, 209 boxes per search at 10⁴, 10⁵, 10⁶): the one structural "
              "superlinearity left; (d) sorting the sags and building their tree, O(S log S). None of "
@@ -288,12 +288,10 @@ def markdown(D, svg_name):
              "(3) `record()` reserves its log once (1.5 events per vertex), advises it onto 2 MB pages "
              "and maps it in one call, so what recording adds is the listener's copy of each ~%d B "
              "event, the polygon copy in the `Trace`, and zeroing ~170 B of fresh memory per vertex: "
-             "the *log reused* column is the listener alone (≤ ×1.1 everywhere). At 10⁶ the fresh-memory "
-             "part varies from run to run and its cause is not pinned down: in the full runs "
-             "`comb/1000000` and `circle-smooth/1000000` paid ×1.8, while the same `comb/1000000` "
-             "pair rerun in the same driver (a manifest of two inputs) gave ×1.16–1.23. So the "
-             "recording target is not met in this run at 10⁶ on those two families; the listener "
-             "itself is not the gap, fresh memory is.\n" % EVENT_BYTES)
+             "the *log reused* column is the listener alone. At 10⁶ the fresh-memory part varies from "
+             "run to run (an earlier full run measured ×1.8 on `comb/1000000` and "
+             "`circle-smooth/1000000`, which reran at ×1.16–1.23 in the same driver): read the worst "
+             "ratio with that in mind.\n" % EVENT_BYTES)
     s.append("\n## Largest size per family (ns per vertex)\n\n")
     s.append(status_legend() + "\n\n")
     s.append(summary_table(D))

@@ -24,7 +24,6 @@
 #include "checker.h"
 
 #include <cstdint>
-#include <cstring>
 #include <sstream>
 
 #include "predicates.h"
@@ -93,13 +92,7 @@ std::vector<Index> canonicalVertices(const std::vector<Point>& V, const std::vec
     while (cap < V.size() * 2) cap <<= 1;
     std::vector<Index> slots(cap, kNone), canonical(V.size());
     for (Index v = 0; v < V.size(); ++v) {
-        double x = V[v].x + 0.0, y = V[v].y + 0.0;  // folds -0.0 into 0.0
-        uint64_t bx, by;
-        std::memcpy(&bx, &x, 8);
-        std::memcpy(&by, &y, 8);
-        uint64_t h = bx * 0x9e3779b97f4a7c15ULL ^ (by + 0x632be59bd9b4e019ULL) * 0xbf58476d1ce4e5b9ULL ^
-                     uint64_t(part[v]) * 0x94d049bb133111ebULL;
-        h ^= h >> 31;
+        uint64_t h = pointHash(V[v]) ^ uint64_t(part[v]) * 0x94d049bb133111ebULL;
         for (size_t i = h & (cap - 1);; i = (i + 1) & (cap - 1)) {
             if (slots[i] == kNone) {
                 slots[i] = v;
@@ -177,12 +170,12 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
     // j + p: T-junctions and point holes per part. A split must lie strictly inside its edge.
     std::vector<size_t> lessOfPart(polygon.parts.size(), 0);
     for (const EdgeSplit& sp : polygon.splits) {
-        bool inRange = sp.edge < n && sp.vertex < n;
-        Index r = inRange ? polygon.ringOf(sp.edge) : 0;
-        Index b = inRange ? (sp.edge + 1 == polygon.rings[r].first + polygon.rings[r].count ? polygon.rings[r].first
-                                                                                             : sp.edge + 1)
-                          : 0;
-        if (!inRange || partOfVertex[sp.vertex] != partOfVertex[sp.edge] ||
+        Index b = kNone;  // where the split edge ends
+        if (sp.edge < n && sp.vertex < n) {
+            const Ring& ring = polygon.rings[polygon.ringOf(sp.edge)];
+            b = sp.edge + 1 == ring.first + ring.count ? ring.first : sp.edge + 1;
+        }
+        if (b == kNone || partOfVertex[sp.vertex] != partOfVertex[sp.edge] ||
             !insideSegment(V[sp.edge], V[b], V[sp.vertex])) {
             std::ostringstream o;
             o << "bad-split: vertex " << sp.vertex << " does not lie strictly inside edge (" << sp.edge

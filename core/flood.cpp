@@ -25,7 +25,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <sstream>
 
 #include "predicates.h"
@@ -313,15 +312,7 @@ private:
         std::vector<uint32_t> start((size_t(1) << bits) + 1, 0);
         auto bucketOf = [&](uint64_t h) { return bits ? size_t(h >> (64 - bits)) : 0; };
         for (size_t i = 0; i < n; ++i) {
-            Point p = P(nodes[i]);
-            double x = p.x + 0.0, y = p.y + 0.0;  // -0.0 and 0.0 are the same point
-            uint64_t a, b;
-            std::memcpy(&a, &x, 8);
-            std::memcpy(&b, &y, 8);
-            uint64_t h = a ^ (b * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull);
-            h = (h ^ (h >> 31)) * 0xBF58476D1CE4E5B9ull;  // mix every bit into the top ones:
-            h = (h ^ (h >> 29)) * 0x94D049BB133111EBull;  // integer coordinates differ only in
-            hash[i] = h ^ (h >> 32);                       // their high bits
+            hash[i] = pointHash(P(nodes[i]));
             ++start[bucketOf(hash[i]) + 1];
         }
         for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];

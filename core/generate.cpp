@@ -457,7 +457,7 @@ Polygon rooms(Rng& rng, size_t size) {
 // T-junctions: triangular holes whose apex lies inside an edge of the outer parallelogram
 // (bottom, top and the 45-degree left side), and a middle row of square holes, each touched
 // inside its right edge by the apex of a triangle hole. Integer coordinates, exact on the
-// edges. validate() records the splits (see generate()).
+// edges. validate() records the splits.
 Polygon tJunctions(Rng& rng, size_t size) {
     int k = std::max(2, int(size / 16));
     double W = 4.0 * k + 4, H = 12, S = H;
@@ -484,6 +484,7 @@ Polygon tJunctions(Rng& rng, size_t size) {
     }
     // On the left side (t, t), clear of the other holes: a triangle with its apex inside it.
     if (rng.range(0, 1)) p.addRing({{4, 4}, {5.5, 4}, {5.5, 5}}, false);
+    validate(p, "t-junctions");  // records the T-junctions in p.splits (the only family with any)
     return p;
 }
 
@@ -581,9 +582,7 @@ Polygon generate(const std::string& family, uint64_t seed, size_t size) {
     for (const Family& f : kFamilies)
         if (family == f.name) {
             Rng rng(seed * 0x2545f4914f6cdd1dULL + 0x1234567);
-            Polygon p = f.make(rng, size);
-            validate(p, family);  // records the T-junctions (Polygon::splits), if any
-            return p;
+            return f.make(rng, size);
         }
     assert(false && "generate(): unknown family; see familyNames()");
     return {};

@@ -4,6 +4,7 @@
 #pragma once
 #include <array>
 #include <cstdint>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -14,6 +15,20 @@ struct Point {
 };
 inline bool operator==(Point a, Point b) { return a.x == b.x && a.y == b.y; }
 inline bool operator!=(Point a, Point b) { return !(a == b); }
+
+// A hash of a point's exact coordinates, equal for equal points (-0.0 is 0.0), with every bit
+// mixed into the top ones (integer coordinates differ only in their high bits). For finding
+// coincident points: the flood machine's touching rings, the checker's canonical vertices.
+inline uint64_t pointHash(Point p) {
+    double x = p.x + 0.0, y = p.y + 0.0;
+    uint64_t a, b;
+    std::memcpy(&a, &x, 8);
+    std::memcpy(&b, &y, 8);
+    uint64_t h = a ^ (b * 0x9E3779B97F4A7C15ull + 0x632BE59BD9B4E019ull);
+    h = (h ^ (h >> 31)) * 0xBF58476D1CE4E5B9ull;
+    h = (h ^ (h >> 29)) * 0x94D049BB133111EBull;
+    return h ^ (h >> 32);
+}
 
 using Index = uint32_t;
 constexpr Index kNone = 0xffffffffu;

@@ -60,7 +60,9 @@ TEST(Narrate, RaiseSaysWhichFingerIsLowerAndWhatIsCut) {
             EXPECT_TRUE(has(s, "cutting triangles " + range)) << s;
             sawRange = true;
         }
-        if (e.triangleCount == 0) EXPECT_TRUE(has(s, "cutting no triangle")) << s;
+        if (e.triangleCount == 0) {
+            EXPECT_TRUE(has(s, "cutting no triangle")) << s;
+        }
     }
     EXPECT_TRUE(sawRange);
 }

@@ -19,6 +19,7 @@
 //     rounding errors are normal doubles, and no sum can overflow.
 //  3. GMP rationals otherwise (mpq_set_d is exact for every finite double).
 #include "predicates.h"
+#include "work.h"
 
 #include <gmp.h>
 
@@ -130,6 +131,7 @@ int orient(Point a, Point b, Point c) {
     assert(std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(b.x) &&
            std::isfinite(b.y) && std::isfinite(c.x) && std::isfinite(c.y) &&
            "orient() needs finite coordinates; validate the input first");
+    ++work().orientCalls;
     // Stage 1: filter.
     double detLeft = (a.x - c.x) * (b.y - c.y);
     double detRight = (a.y - c.y) * (b.x - c.x);

@@ -1,0 +1,21 @@
+// Work counters: deterministic measures of how much the validator and the flood machine did,
+// so tests can hold growth to linear without clocks (tests/growth_test.cpp). Counting costs
+// one add; the counters are per thread, so parallel runs do not disturb each other.
+#pragma once
+#include <cstdint>
+
+namespace flood {
+
+struct WorkCounters {
+    uint64_t orientCalls = 0;     // exact orientation tests (every predicate rests on them)
+    uint64_t nodeVisits = 0;      // loop nodes the machine walks (spills, fills, merges)
+    uint64_t sagTests = 0;        // sags the sag search tests with `inside`
+    uint64_t validatorSteps = 0;  // pair tests and wedge comparisons of validate()
+};
+
+inline thread_local WorkCounters tWork;
+
+// This thread's counters; reset with `work() = {}` before the run to be measured.
+inline WorkCounters& work() { return tWork; }
+
+}  // namespace flood

@@ -8,19 +8,20 @@
 //   read (warnings to stderr; Malformed -> exit 3) -> validate (Invalid -> exit 4, nothing
 //   written) -> flood (Forbidden -> exit 5) -> exact check of our own output (failure -> exit 6)
 //   -> write. Exit codes are flood::Status values. "-" means stdin for input, stdout for output.
+// Outputs are written whole or not at all (cli/output.h; a failed write exits 8).
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
-#include <fstream>
 #include <iostream>
-#include <sstream>
 
 #include "checker.h"
 #include "generate.h"
 #include "flood.h"
 #include "io.h"
 #include "narrate.h"
+#include "output.h"
 #include "replay.h"
 #include "shrink.h"
 #include "trace_io.h"
@@ -30,15 +31,29 @@
 namespace {
 
 using namespace flood;
+using cli::Output;
 
 int code(Status s) { return int(s); }
+
+// --max-input-bytes of the subcommand that reads.
+uint64_t maxInputBytes = kDefaultMaxInputBytes;
+
+// 1234567 -> "1,234,567".
+std::string grouped(size_t n) {
+    std::string s = std::to_string(n);
+    for (size_t i = s.size(); i > 3; i -= 3) s.insert(i - 3, ",");
+    return s;
+}
 
 // Reads and validates; on failure prints the diagnostic and returns its status.
 // With `check` false (--no-validate) validation is skipped, so the flood machine itself
 // diagnoses invalid input (docs/ERRORS.md, forbidden transitions).
 Status prepare(const std::string& path, Polygon& polygon, bool check = true) {
-    ReadResult rr = readPolygonFile(path);
+    ReadResult rr = readPolygonFile(path, maxInputBytes);
     for (const std::string& w : rr.warnings) std::cerr << "warning: " << w << "\n";
+    if (rr.warningsOmitted)
+        std::cerr << "warning: " << (path == "-" ? "<stdin>" : path) << ": \u2026 and "
+                  << grouped(rr.warningsOmitted) << " more warnings like these\n";
     if (!rr.diagnostic.ok()) {
         std::cerr << "error: " << rr.diagnostic.message << "\n";
         return rr.diagnostic.status;
@@ -64,22 +79,6 @@ Status judge(const Polygon& polygon, const std::vector<Triangle>& triangles,
         std::cerr << "internal error: the exact checker rejects our triangulation: " << c.reason
                   << "\n";
         return Status::Internal;
-    }
-    return Status::Ok;
-}
-
-// Writes `text` to `path` ("-" is stdout) in one go, so failures leave no partial file.
-Status writeOut(const std::string& path, const std::string& text) {
-    if (path == "-") {
-        std::cout << text << std::flush;
-        return std::cout ? Status::Ok : Status::Malformed;
-    }
-    std::ofstream out(path, std::ios::binary);
-    out << text;
-    out.close();
-    if (!out) {
-        std::cerr << "error: " << path << ": cannot write output file\n";
-        return Status::Malformed;
     }
     return Status::Ok;
 }
@@ -115,11 +114,11 @@ int cmdTriangulate(const std::string& in, const std::string& out, std::string fo
         };
         format = ends(".svg") ? "svg" : ends(".obj") ? "obj" : "json";
     }
-    std::ostringstream ss;
-    if (format == "svg") writeSvg(ss, polygon, r.triangles);
-    else if (format == "obj") writeObj(ss, polygon, r.triangles);
-    else writeJson(ss, polygon, r.triangles);
-    return code(writeOut(out, ss.str()));
+    Output o(out);
+    if (format == "svg") writeSvg(o.stream(), polygon, r.triangles);
+    else if (format == "obj") writeObj(o.stream(), polygon, r.triangles);
+    else writeJson(o.stream(), polygon, r.triangles);
+    return code(o.commit());
 }
 
 int cmdTrace(const std::string& in, const std::string& out, const std::string& up, bool check) {
@@ -131,9 +130,9 @@ int cmdTrace(const std::string& in, const std::string& out, const std::string& u
     // A trace of a forbidden run is exactly what one wants to look at: write it anyway,
     // but still exit with the failure status.
     if (s == Status::Internal) t.diagnostic = {Status::Internal, "the exact checker rejects the result"};
-    std::ostringstream ss;
-    writeTrace(ss, t);
-    Status w = writeOut(out, ss.str());
+    Output o(out);
+    writeTrace(o.stream(), t);
+    Status w = o.commit();
     return code(s != Status::Ok ? s : w);
 }
 
@@ -197,18 +196,9 @@ int cmdGenerate(const std::string& family, size_t size, uint64_t seed, const std
         return code(Status::Usage);
     }
     Polygon p = generate(family, seed, size);
-    if (out == "-") {
-        writePolygonJson(std::cout, p);
-        return code(std::cout.flush() ? Status::Ok : Status::Malformed);
-    }
-    std::ofstream f(out, std::ios::binary);
-    writePolygonJson(f, p);
-    f.close();
-    if (!f) {
-        std::cerr << "error: " << out << ": cannot write output file\n";
-        return code(Status::Malformed);
-    }
-    return code(Status::Ok);
+    Output o(out);
+    writePolygonJson(o.stream(), p);
+    return code(o.commit());
 }
 
 // Shrinks a failing polygon (validation skipped; see core/shrink.h) and writes the result.
@@ -226,8 +216,6 @@ int cmdShrink(const std::string& in, const std::string& out, const std::string& 
                   << " triangulates (validation skipped) and the exact checker accepts it\n";
         return code(Status::Usage);
     }
-    std::ostringstream ss;
-    writePolygonJson(ss, r.polygon);
     std::string kind = failureKindName(r.failure.kind);
     if (r.failure.kind == Failure::Kind::Forbidden) kind += std::string(" ") + forbiddenName(r.failure.reason);
     std::cerr << "shrink: " << kind << (r.inputValid ? " (input valid, kept valid)" : "")
@@ -235,7 +223,9 @@ int cmdShrink(const std::string& in, const std::string& out, const std::string& 
               << " rings -> " << r.polygon.vertices.size() << " vertices in "
               << r.polygon.rings.size() << " rings (" << r.tries << " runs)\n";
     if (!r.failure.message.empty()) std::cerr << "shrink: " << r.failure.message << "\n";
-    return code(writeOut(out, ss.str()));
+    Output file(out);
+    writePolygonJson(file.stream(), r.polygon);
+    return code(file.commit());
 }
 
 struct Recording : Listener {
@@ -267,19 +257,29 @@ int cmdBench(const std::string& in, int repeat, const std::string& up) {
         sink += triangulate(polygon, &rec, o).triangles.size();
     });
     double n = double(std::max<size_t>(1, polygon.vertices.size()));
-    std::printf("vertices %zu, triangles %zu, events %zu, repeat %d (median time, reading excluded)\n",
+    // Formatted into std::cout, which keeps the reason of a failed write (cli/output.h).
+    auto line = [](const char* format, auto... values) {
+        char text[256];
+        std::snprintf(text, sizeof text, format, values...);
+        std::cout << text;
+    };
+    line("vertices %zu, triangles %zu, events %zu, repeat %d (median time, reading excluded)\n",
                 polygon.vertices.size(), first.triangles.size(), events, repeat);
-    std::printf("no listener:                    %12.0f ns  %8.1f ns/vertex\n", plain, plain / n);
-    std::printf("recording listener, fresh log:  %12.0f ns  %8.1f ns/vertex  (x%.2f)\n", recorded,
+    line("no listener:                    %12.0f ns  %8.1f ns/vertex\n", plain, plain / n);
+    line("recording listener, fresh log:  %12.0f ns  %8.1f ns/vertex  (x%.2f)\n", recorded,
                 recorded / n, recorded / plain);
-    std::printf("recording listener, reused log: %12.0f ns  %8.1f ns/vertex  (x%.2f)\n", reused,
+    line("recording listener, reused log: %12.0f ns  %8.1f ns/vertex  (x%.2f)\n", reused,
                 reused / n, reused / plain);
     return sink == 0 && !first.triangles.empty() ? code(Status::Internal) : 0;
 }
 
 }  // namespace
 
-int main(int argc, char** argv) {
+int run(int argc, char** argv) {
+    cli::takeOverStdout();
+    // Past a file-size limit, a write fails with EFBIG instead of killing the process, so the
+    // temporary output is removed and the reason printed.
+    std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"flood: triangulate polygons with holes by flooding (Ronfard & Rossignac 1994)"};
     app.require_subcommand(1);
     std::string in, out = "-", format, up = "+y";
@@ -338,6 +338,30 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1u, 3600u));
     addUp(shr, up);
 
+    for (CLI::App* cmd : {tri, trace, tr, ver, bench, shr})
+        cmd->add_option("--max-input-bytes", maxInputBytes,
+                        "Refuse inputs larger than this (default 4 GiB; suffixes k, M, G: "
+                        "1024-based)")
+            ->transform(CLI::AsSizeValue(false))
+            ->check(CLI::Range(uint64_t(1), UINT64_MAX));
+
+    // CLI11 would say "A subcommand is required" for a misspelt one: name it and the choices.
+    if (argc > 1 && argv[1][0] != '-') {
+        auto cmds = app.get_subcommands([](CLI::App*) { return true; });
+        bool known = false;
+        std::string names;
+        for (CLI::App* c : cmds) {
+            known |= c->get_name() == argv[1];
+            names += (names.empty() ? "" : ", ") + c->get_name();
+        }
+        if (!known) {
+            std::string name = argv[1];
+            if (name.size() > 60) name = name.substr(0, 60) + "\u2026";
+            std::cerr << "error: unknown subcommand '" << name << "'; expected one of " << names
+                      << "\n";
+            return code(Status::Usage);
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
@@ -346,6 +370,13 @@ int main(int argc, char** argv) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         app.exit(e);
+        return code(Status::Usage);
+    }
+    // -o naming the input (shrink IN -o IN) would replace the very file being read.
+    if ((tri->parsed() || trace->parsed() || shr->parsed()) && out != "-" &&
+        cli::sameFile(in, out)) {
+        std::cerr << "error: -o " << out << " is the input file " << (in == "-" ? "<stdin>" : in)
+                  << ": refusing to overwrite the input; write the output elsewhere\n";
         return code(Status::Usage);
     }
     try {
@@ -362,3 +393,5 @@ int main(int argc, char** argv) {
     }
     return code(Status::Usage);
 }
+
+int main(int argc, char** argv) { return flood::cli::finishStdout(run(argc, argv)); }

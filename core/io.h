@@ -1,5 +1,6 @@
 // Reading polygons: GeoJSON, bare ring arrays (earcut fixtures) and WKT; writing results.
 #pragma once
+#include <cstdint>
 #include <iosfwd>
 #include <string>
 #include <string_view>
@@ -10,15 +11,38 @@
 
 namespace flood {
 
+// Inputs larger than this are refused while reading (`--max-input-bytes` changes it): a
+// pipe or /dev/zero has no size to check up front.
+constexpr uint64_t kDefaultMaxInputBytes = uint64_t(4) << 30;  // 4 GiB
+
+// Only the first warnings are kept, the rest counted: 10^6 repeated points must not print
+// 10^6 lines.
+constexpr size_t kMaxWarnings = 10;
+
 struct ReadResult {
     Polygon polygon;
     std::vector<std::string> warnings;  // e.g. repeated consecutive points dropped
+    size_t warningsOmitted = 0;         // warnings beyond the first kMaxWarnings
     Diagnostic diagnostic;              // Ok, or Malformed with "FILE:LINE:COL: ..."
+
+    // `make` builds the message only when it is kept.
+    template <typename Make>
+    void warn(Make&& make) {
+        if (warnings.size() < kMaxWarnings) warnings.push_back(make());
+        else ++warningsOmitted;
+    }
 };
 
 // Detects the format from the content. `name` is used in messages ("-" means stdin).
 ReadResult parsePolygon(std::string_view text, const std::string& name);
-ReadResult readPolygonFile(const std::string& path);  // "-" reads stdin
+ReadResult readPolygonFile(const std::string& path,  // "-" reads stdin
+                           uint64_t maxBytes = kDefaultMaxInputBytes);
+
+// Reads all of `path` ("-" is stdin) into `text`. Malformed, naming the file, when it cannot
+// be opened or read, is a directory, holds a NUL byte (binary data, not `expected`: reading
+// stops there, so /dev/zero ends at once) or grows beyond `maxBytes`.
+Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t maxBytes,
+                         const char* expected);
 
 // Validity rules checked before flooding (docs/ERRORS.md): finite coordinates, rings with at
 // least 3 distinct points (holes may be single Steiner points), non-zero area, no

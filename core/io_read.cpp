@@ -5,13 +5,15 @@
 // JSON goes through nlohmann::json: it is a Debian package (nlohmann-json3-dev), header-only,
 // and its parse errors carry the byte position, which we turn into NAME:LINE:COL.
 // Its parser is recursive, so nesting depth is bounded by a cheap bracket scan first.
-#include <cstdio>
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
 #include <cstring>
-#include <fstream>
-#include <iostream>
-#include <iterator>
+#include <new>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
 #include "io.h"
 #include "io_util.h"
@@ -35,9 +37,10 @@ void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Poi
             // The last point repeating the first is a closing point, not a duplicate (also
             // of a point hole, written [p, p]).
             if (i + 1 == raw.size() && (pts.size() > 1 || i == 1) && raw[i] == pts.front()) continue;
-            rr.warnings.push_back(name + ": ring " + std::to_string(ring) + " vertex " +
-                                  std::to_string(i) + " " + formatPoint(raw[i]) +
-                                  ": repeated point dropped");
+            rr.warn([&] {
+                return name + ": ring " + std::to_string(ring) + " vertex " + std::to_string(i) +
+                       " " + formatPoint(raw[i]) + ": repeated point dropped";
+            });
             continue;
         }
         pts.push_back(raw[i]);
@@ -51,6 +54,7 @@ void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Poi
 namespace {
 
 using nlohmann::json;
+using io_detail::echo;
 using io_detail::kMaxJsonDepth;
 using io_detail::tooDeep;
 using io_detail::where;
@@ -60,22 +64,30 @@ struct BadStructure {
 };
 
 // nlohmann's what() reads "[json.exception.parse_error.101] parse error at line 1, column 5:
-// syntax error ..."; keep only the part after the position, which we print ourselves.
+// syntax error ...; last read: '<token>'"; keep only the part after the position, which we
+// print ourselves, with the echoed token cut.
 std::string jsonReason(const char* what) {
     std::string s = what;
     size_t col = s.find("column ");
-    if (col != std::string::npos) {
-        size_t colon = s.find(": ", col);
-        if (colon != std::string::npos) return s.substr(colon + 2);
-    }
+    size_t colon = col == std::string::npos ? col : s.find(": ", col);
     size_t bracket = s.find("] ");
-    return bracket == std::string::npos ? s : s.substr(bracket + 2);
+    if (colon != std::string::npos) s = s.substr(colon + 2);
+    else if (bracket != std::string::npos) s = s.substr(bracket + 2);
+    const std::string lastRead = "last read: '";
+    size_t q = s.find(lastRead);
+    if (q != std::string::npos) {
+        q += lastRead.size();
+        size_t end = s.rfind('\'');
+        std::string_view token = std::string_view(s).substr(q, end > q ? end - q : std::string::npos);
+        s = s.substr(0, q) + echo(token) + "'";
+    }
+    return s;
 }
 
 Point readVertex(const json& v, const std::string& ctx) {
     if (!v.is_array() || v.size() < 2 || !v[0].is_number() || !v[1].is_number())
-        throw BadStructure{ctx + ": coordinate is not a pair of numbers (got " +
-                           v.dump().substr(0, 60) + ")"};
+        throw BadStructure{ctx + ": coordinate is not a pair of numbers (got " + echo(v.dump()) +
+                           ")"};
     return {v[0].get<double>(), v[1].get<double>()};
 }
 
@@ -96,6 +108,8 @@ void readRings(ReadResult& rr, const std::string& name, const json& rings,
 }
 
 // Depth of nested arrays at the front of `j`: 1 for [x,...], 2 for a ring, 3 for a polygon.
+// An empty array ends the descent early ([] has no rings, [[]] is a ring with no points):
+// such a document is read as a polygon, so the message says what is missing.
 int arrayDepth(const json& j) {
     int d = 0;
     const json* p = &j;
@@ -103,7 +117,7 @@ int arrayDepth(const json& j) {
         ++d;
         p = &(*p)[0];
     }
-    return d;
+    return p->is_array() ? std::max(d, 3) : d;
 }
 
 void readGeometry(ReadResult& rr, const std::string& name, const json& g, const std::string& ctx,
@@ -149,16 +163,17 @@ void readGeometry(ReadResult& rr, const std::string& name, const json& g, const 
             }
             std::string gtype = geom->is_object() && geom->contains("type") &&
                                         (*geom)["type"].is_string()
-                                    ? (*geom)["type"].get<std::string>()
+                                    ? echo((*geom)["type"].get<std::string>())
                                     : std::string();
             bool polygonal = gtype == "Polygon" || gtype == "MultiPolygon" ||
                              gtype == "GeometryCollection" || gtype == "Feature";
             if (!polygonal) {
-                rr.warnings.push_back(name + ": " + ctx + (type == "FeatureCollection"
-                                                               ? "feature "
-                                                               : "geometry ") +
-                                      std::to_string(i) + ": not polygonal (" +
-                                      (gtype.empty() ? "null" : gtype) + "), skipped");
+                rr.warn([&] {
+                    return name + ": " + ctx +
+                           (type == "FeatureCollection" ? "feature " : "geometry ") +
+                           std::to_string(i) + ": not polygonal (" +
+                           (gtype.empty() ? "null" : gtype) + "), skipped";
+                });
                 continue;
             }
             readGeometry(rr, name, *geom,
@@ -167,7 +182,7 @@ void readGeometry(ReadResult& rr, const std::string& name, const json& g, const 
                          polygonCount);
         }
     } else {
-        throw BadStructure{ctx + "unsupported GeoJSON type \"" + type +
+        throw BadStructure{ctx + "unsupported GeoJSON type \"" + echo(type) +
                            "\" (expected Polygon, MultiPolygon, Feature or FeatureCollection)"};
     }
 }
@@ -199,7 +214,7 @@ ReadResult parseJson(std::string_view text, const std::string& name) {
         size_t at = literal.empty() ? std::string_view::npos : text.find(literal);
         rr.diagnostic = {Status::Malformed,
                          (at == std::string_view::npos ? name : where(name, text, at)) +
-                             ": number out of range: " + (literal.empty() ? w : literal) +
+                             ": number out of range: " + echo(literal.empty() ? w : literal) +
                              " does not fit a double"};
         return rr;
     } catch (const json::exception& e) {  // any other nlohmann failure: never escape
@@ -232,6 +247,12 @@ ReadResult parseJson(std::string_view text, const std::string& name) {
 }  // namespace
 
 ReadResult parsePolygon(std::string_view text, const std::string& name) {
+    size_t nul = text.find('\0');
+    if (nul != std::string_view::npos) {
+        ReadResult rr;
+        rr.diagnostic = {Status::Malformed, io_detail::binaryData(name, nul, "GeoJSON or WKT")};
+        return rr;
+    }
     size_t i = 0;
     if (text.substr(0, 3) == "\xEF\xBB\xBF") i = 3;  // UTF-8 byte order mark
     while (i < text.size() && std::strchr(" \t\r\n", text[i])) ++i;
@@ -244,29 +265,67 @@ ReadResult parsePolygon(std::string_view text, const std::string& name) {
     return parseWkt(text, name);
 }
 
-ReadResult readPolygonFile(const std::string& path) {
-    std::string text;
-    std::string name = path == "-" ? "<stdin>" : path;
-    if (path == "-") {
-        text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
-    } else {
-        std::ifstream in(path, std::ios::binary);
-        if (!in) {
-            ReadResult rr;
-            rr.diagnostic = {Status::Malformed,
-                             name + ": cannot open file: " + std::strerror(errno)};
-            return rr;
+// POSIX reads, not iostreams: they give the system's reason (errno) for each failure.
+Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t maxBytes,
+                         const char* expected) {
+    text.clear();
+    const std::string name = path == "-" ? "<stdin>" : path;
+    const int fd = path == "-" ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return {Status::Malformed, name + ": cannot open file: " + std::strerror(errno)};
+    struct Closer {
+        int fd;
+        ~Closer() {
+            if (fd != STDIN_FILENO) ::close(fd);
         }
-        std::ostringstream ss;
-        ss << in.rdbuf();
-        if (in.bad()) {
-            ReadResult rr;
-            rr.diagnostic = {Status::Malformed, name + ": read error"};
-            return rr;
-        }
-        text = ss.str();
+    } closer{fd};
+    struct stat st = {};
+    if (::fstat(fd, &st) == 0) {
+        if (S_ISDIR(st.st_mode)) return {Status::Malformed, name + ": is a directory, not a file"};
+        if (S_ISREG(st.st_mode) && uint64_t(st.st_size) > maxBytes)
+            return {Status::Malformed, name + ": input is larger than the limit of " +
+                                           std::to_string(maxBytes) +
+                                           " bytes (--max-input-bytes)"};
     }
-    return parsePolygon(text, name);
+    try {
+        if (S_ISREG(st.st_mode)) text.reserve(size_t(st.st_size));
+        char buf[1 << 16];
+        for (;;) {
+            ssize_t k = ::read(fd, buf, sizeof buf);
+            if (k < 0 && errno == EINTR) continue;
+            if (k < 0)
+                return {Status::Malformed, name + ": read error after " +
+                                               std::to_string(text.size()) +
+                                               " bytes: " + std::strerror(errno)};
+            if (k == 0) break;
+            if (const void* z = std::memchr(buf, 0, size_t(k)))
+                return {Status::Malformed,
+                        io_detail::binaryData(
+                            name, text.size() + size_t(static_cast<const char*>(z) - buf),
+                            expected)};
+            if (text.size() + uint64_t(k) > maxBytes)
+                return {Status::Malformed, name + ": input is larger than the limit of " +
+                                               std::to_string(maxBytes) +
+                                               " bytes (--max-input-bytes); stopped reading"};
+            text.append(buf, size_t(k));
+        }
+    } catch (const std::bad_alloc&) {
+        size_t got = text.size();
+        text = std::string();
+        return {Status::Malformed, name + ": out of memory after reading " + std::to_string(got) +
+                                       " bytes (a lower --max-input-bytes refuses it sooner)"};
+    }
+    return {};
+}
+
+ReadResult readPolygonFile(const std::string& path, uint64_t maxBytes) {
+    std::string text;
+    Diagnostic d = readInputFile(path, text, maxBytes, "GeoJSON or WKT");
+    if (!d.ok()) {
+        ReadResult rr;
+        rr.diagnostic = d;
+        return rr;
+    }
+    return parsePolygon(text, path == "-" ? "<stdin>" : path);
 }
 
 }  // namespace flood

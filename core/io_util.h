@@ -24,6 +24,22 @@ inline std::string formatPoint(Point p) {
     return "(" + formatDouble(p.x) + ", " + formatDouble(p.y) + ")";
 }
 
+// Input echoed into a message is cut to kEchoChars bytes and an ellipsis: a 10 MB literal
+// must not become a 10 MB message. The cut never splits a UTF-8 sequence.
+constexpr size_t kEchoChars = 60;
+inline std::string echo(std::string_view s) {
+    if (s.size() <= kEchoChars) return std::string(s);
+    size_t n = kEchoChars;
+    while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
+    return std::string(s.substr(0, n)) + "\u2026";
+}
+
+// A NUL byte never occurs in JSON, WKT or a trace: the input is binary.
+inline std::string binaryData(const std::string& name, size_t offset, const char* expected) {
+    return name + ": binary data (a NUL byte at byte " + std::to_string(offset) + "), not " +
+           expected;
+}
+
 // 1-based line and column of byte `offset` in `text` (columns count bytes).
 struct LineCol {
     size_t line = 1, col = 1;

@@ -1,10 +1,14 @@
 // Well-known text: POLYGON((x y, ...), (...)) and MULTIPOLYGON(((...)), ((...))).
 // A small hand-written recursive-descent parser (depth is fixed by the grammar, so no stack
-// risk). Keywords are case-insensitive; "Z", "M", "ZM" dimension tags are accepted and the
-// extra ordinates ignored. Numbers go through strtod, so "nan" and "inf" are read as such and
-// left for validate() to report. Errors name NAME:LINE:COL of the offending token.
+// risk). Keywords are case-insensitive; "Z", "M", "ZM" dimension tags (also run together,
+// POLYGONZM) are accepted, and points of 2 to 4 ordinates with or without a tag, the extra
+// ordinates dropped. EMPTY, as the grammar allows it: a whole POLYGON EMPTY has no rings (an
+// error, as for JSON); an EMPTY hole or MULTIPOLYGON part is dropped with a warning.
+// Numbers go through strtod, so "nan" and "inf" are read as such and left for validate() to
+// report. Errors name NAME:LINE:COL of the offending token; echoed tokens are cut.
 #include <cctype>
 #include <cstdlib>
+#include <cstring>
 #include <string>
 
 #include "io.h"
@@ -26,38 +30,55 @@ struct WktError {
 
 class WktParser {
 public:
-    WktParser(std::string_view text, const std::string& name, ReadResult& rr)
-        : text_(text), name_(name), rr_(rr) {}
+    // `text` is `full` after a byte order mark, for warnings' line and column.
+    WktParser(std::string_view full, std::string_view text, const std::string& name, ReadResult& rr)
+        : full_(full), text_(text), name_(name), rr_(rr) {}
 
     void parse() {
         std::string kw = keyword("POLYGON or MULTIPOLYGON");
+        for (const char* dim : {"ZM", "Z", "M"})  // POLYGONZM, as some writers spell it
+            if (kw.size() > 7 && kw.compare(kw.size() - std::strlen(dim), std::string::npos, dim) == 0) {
+                std::string base = kw.substr(0, kw.size() - std::strlen(dim));
+                if (base == "POLYGON" || base == "MULTIPOLYGON") kw = base;
+                break;
+            }
         bool multi;
         if (kw == "POLYGON") multi = false;
         else if (kw == "MULTIPOLYGON") multi = true;
         else
-            throw WktError{tokStart_, "unsupported WKT geometry \"" + kw +
+            throw WktError{tokStart_, "unsupported WKT geometry \"" + io_detail::echo(kw) +
                                           "\" (expected POLYGON or MULTIPOLYGON)"};
         skipSpace();
         if (peekWord()) {
             size_t at = pos_;
             std::string dim = keyword("");
-            if (dim == "EMPTY") throw WktError{at, "empty geometry, no polygon"};
-            if (dim != "Z" && dim != "M" && dim != "ZM")
-                throw WktError{at, "unexpected \"" + dim + "\" after " + kw};
-            skipSpace();
-            if (peekWord()) {
+            if (dim == "Z" || dim == "M" || dim == "ZM") {
+                skipSpace();
                 at = pos_;
-                if (keyword("") == "EMPTY") throw WktError{at, "empty geometry, no polygon"};
-                throw WktError{at, "expected '('"};
+                dim = peekWord() ? keyword("") : std::string();
             }
+            if (dim == "EMPTY")
+                throw WktError{at, multi ? "MULTIPOLYGON EMPTY: no polygon"
+                                         : "POLYGON EMPTY: polygon has no rings"};
+            if (!dim.empty())
+                throw WktError{at, "unexpected \"" + io_detail::echo(dim) + "\" after " + kw};
         }
         if (multi) {
+            size_t start = pos_;
             expect('(');
-            do polygon();
-            while (accept(','));
+            do {
+                skipSpace();
+                size_t at = pos_;
+                if (!polygon())
+                    rr_.warn([&] { return where(at) + ": WKT: EMPTY polygon dropped"; });
+            } while (accept(','));
             expect(')');
+            if (rr_.polygon.rings.empty())
+                throw WktError{start, "every polygon of the MULTIPOLYGON is EMPTY: no polygon"};
         } else {
-            polygon();
+            skipSpace();
+            size_t at = pos_;
+            if (!polygon()) throw WktError{at, "POLYGON (EMPTY): polygon has no rings"};
         }
         skipSpace();
         if (pos_ < text_.size() && text_[pos_] == ';') ++pos_;
@@ -66,14 +87,42 @@ public:
     }
 
 private:
-    void polygon() {
+    // Reads one polygon; false when it is EMPTY or its outer ring is (nothing was added).
+    bool polygon() {
+        if (acceptEmpty()) return false;
         expect('(');
-        bool outer = true;
-        do {
-            ring(outer);
-            outer = false;
-        } while (accept(','));
+        if (acceptEmpty()) {
+            if (accept(','))
+                throw WktError{pos_, "the outer ring is EMPTY but holes follow: they have no outer ring"};
+            expect(')');
+            return false;
+        }
+        ring(true);
+        while (accept(',')) {
+            skipSpace();
+            size_t at = pos_;
+            if (acceptEmpty())
+                rr_.warn([&] { return where(at) + ": WKT: EMPTY hole dropped"; });
+            else
+                ring(false);
+        }
         expect(')');
+        return true;
+    }
+
+    // Consumes the keyword EMPTY where a ring or polygon may be empty.
+    bool acceptEmpty() {
+        skipSpace();
+        if (!peekWord()) return false;
+        size_t at = pos_;
+        std::string w = keyword("");
+        if (w != "EMPTY")
+            throw WktError{at, "expected '(' or EMPTY, found \"" + io_detail::echo(w) + "\""};
+        return true;
+    }
+
+    std::string where(size_t offset) const {
+        return io_detail::where(name_, full_, offset + (full_.size() - text_.size()));
     }
 
     void ring(bool outer) {
@@ -83,10 +132,12 @@ private:
             Point p;
             p.x = number();
             p.y = number();
-            skipSpace();
-            // Z and M ordinates: read and ignore.
-            for (int extra = 0; extra < 2 && pos_ < text_.size() && startsNumber(); ++extra)
+            // Z and M ordinates: read and dropped.
+            for (int extra = 0; extra < 2; ++extra) {
+                skipSpace();
+                if (pos_ >= text_.size() || !startsNumber()) break;
                 number();
+            }
             raw.push_back(p);
         } while (accept(','));
         expect(')');
@@ -116,7 +167,7 @@ private:
         char* end = nullptr;
         double v = std::strtod(tok.c_str(), &end);
         if (end != tok.c_str() + tok.size())
-            throw WktError{start, "expected a number, found \"" + tok + "\""};
+            throw WktError{start, "expected a number, found \"" + io_detail::echo(tok) + "\""};
         return v;
     }
 
@@ -157,7 +208,7 @@ private:
         ++pos_;
     }
 
-    std::string_view text_;
+    std::string_view full_, text_;
     const std::string& name_;
     ReadResult& rr_;
     size_t pos_ = 0, tokStart_ = 0;
@@ -171,7 +222,7 @@ ReadResult parseWkt(std::string_view text, const std::string& name) {
     size_t skip = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;
     std::string_view body = text.substr(skip);
     try {
-        WktParser(body, name, rr).parse();
+        WktParser(text, body, name, rr).parse();
     } catch (const WktError& e) {
         rr.polygon = Polygon{};
         rr.diagnostic = {Status::Malformed,

@@ -12,6 +12,7 @@ const char* statusName(Status s) {
         case Status::Forbidden: return "forbidden";
         case Status::Internal: return "internal";
         case Status::VerifyFailed: return "verify-failed";
+        case Status::WriteFailed: return "write-failed";
     }
     return "unknown";
 }

@@ -11,7 +11,8 @@ enum class Status : int {
     Invalid = 4,      // the polygon breaks a validity rule (self-intersection, hole outside, ...)
     Forbidden = 5,    // the flood machine hit a forbidden state or transition (§6)
     Internal = 6,     // a bug: the exact checker rejected our own output, or an exception
-    VerifyFailed = 7  // `flood verify`: the result failed a verification
+    VerifyFailed = 7, // `flood verify`: the result failed a verification
+    WriteFailed = 8   // an output (file or stdout) could not be written; nothing half-written kept
 };
 
 const char* statusName(Status s);

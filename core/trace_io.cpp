@@ -2,13 +2,12 @@
 // reads and writes each line; a bracket scan bounds nesting before parsing.
 #include "trace_io.h"
 
+#include <cmath>
 #include <cstring>
-#include <fstream>
-#include <iostream>
-#include <iterator>
+#include <limits>
 #include <nlohmann/json.hpp>
-#include <sstream>
 
+#include "io.h"
 #include "io_util.h"
 
 namespace flood {
@@ -23,6 +22,29 @@ const char* kTestNames[] = {
 };
 
 json indexJson(uint32_t i) { return i == kNone ? json(nullptr) : json(i); }
+
+// JSON has no NaN or infinity (nlohmann would write null, which no reader takes back): an
+// unvalidated run may hold them, so they are written as the strings "NaN", "Infinity",
+// "-Infinity" and read back as the same values.
+json coordinateJson(double v) {
+    if (std::isnan(v)) return "NaN";
+    if (std::isinf(v)) return v > 0 ? "Infinity" : "-Infinity";
+    return v;
+}
+
+bool readCoordinate(const json& j, double& v) {
+    if (j.is_number()) {
+        v = j.get<double>();
+        return true;
+    }
+    if (!j.is_string()) return false;
+    const std::string& s = j.get_ref<const std::string&>();
+    if (s == "NaN") v = std::numeric_limits<double>::quiet_NaN();
+    else if (s == "Infinity") v = std::numeric_limits<double>::infinity();
+    else if (s == "-Infinity") v = -std::numeric_limits<double>::infinity();
+    else return false;
+    return true;
+}
 
 json fingersJson(const Fingers& f) {
     return {{"left", indexJson(f.left)},
@@ -169,9 +191,10 @@ void parseHeader(const json& h, Polygon& p) {
     if (!vs.is_array()) throw Bad{"\"vertices\" is not an array"};
     for (size_t i = 0; i < vs.size(); ++i) {
         const json& v = vs[i];
-        if (!v.is_array() || v.size() != 2 || !v[0].is_number() || !v[1].is_number())
+        Point q;
+        if (!v.is_array() || v.size() != 2 || !readCoordinate(v[0], q.x) || !readCoordinate(v[1], q.y))
             throw Bad{"vertex " + std::to_string(i) + " is not a pair of numbers"};
-        p.vertices.push_back({v[0].get<double>(), v[1].get<double>()});
+        p.vertices.push_back(q);
     }
     auto pairs = [&](const char* key) {
         const json& a = field(h, key);
@@ -214,7 +237,7 @@ void parseHeader(const json& h, Polygon& p) {
 void writeTrace(std::ostream& out, const Trace& trace) {
     const Polygon& p = trace.polygon;
     json vertices = json::array(), rings = json::array(), parts = json::array();
-    for (const Point& v : p.vertices) vertices.push_back({v.x, v.y});
+    for (const Point& v : p.vertices) vertices.push_back({coordinateJson(v.x), coordinateJson(v.y)});
     for (const Ring& r : p.rings) rings.push_back({r.first, r.count});
     for (const Part& q : p.parts) parts.push_back({q.firstRing, q.ringCount});
     json header = {{"format", "flood-trace"},
@@ -316,16 +339,11 @@ Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& tra
 }
 
 Diagnostic readTraceFile(const std::string& path, Trace& trace) {
+    trace = Trace{};
     std::string text;
-    if (path == "-") {
-        text.assign(std::istreambuf_iterator<char>(std::cin), std::istreambuf_iterator<char>());
-        return parseTrace(text, "<stdin>", trace);
-    }
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return {Status::Malformed, path + ": cannot open file: " + std::strerror(errno)};
-    std::ostringstream ss;
-    ss << in.rdbuf();
-    return parseTrace(ss.str(), path, trace);
+    Diagnostic d = readInputFile(path, text, kDefaultMaxInputBytes, "a flood trace");
+    if (!d.ok()) return d;
+    return parseTrace(text, path == "-" ? "<stdin>" : path, trace);
 }
 
 }  // namespace flood

@@ -5,6 +5,8 @@
 // then one object per event with every field of flood::Event (action, side, reason by name;
 // tested and passed as lists of test names; fingers as objects; kNone written as null),
 // then a last line {"triangles":[[a,b,c],...],"status":"ok","message":"..."}.
+// Coordinates are JSON numbers, or "NaN", "Infinity", "-Infinity" (JSON has none of these;
+// an unvalidated run can hold them).
 // Loading checks the format and version and every index; a malformed line becomes a
 // Malformed diagnostic naming the line, never a crash.
 #pragma once

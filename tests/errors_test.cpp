@@ -32,8 +32,13 @@ const Row kCatalogue[] = {
     {"bad-structure.json", "triangulate", 3, "bad-structure.json: polygon 0 ring 0 vertex 2: coordinate is not a pair of numbers"},
     {"number-overflow.json", "triangulate", 3, "number-overflow.json:2:6: number out of range: 1e999 does not fit a double"},
     {"wkt-syntax.wkt", "triangulate", 3, "wkt-syntax.wkt:1:27: WKT: expected ')', found 'x'"},
+    {"wkt-empty.wkt", "triangulate", 3, "wkt-empty.wkt:1:9: WKT: POLYGON EMPTY: polygon has no rings"},
     {"empty-input.json", "triangulate", 3, "empty-input.json:1:1: empty input, no polygon"},
     {"does-not-exist.json", "triangulate", 3, "does-not-exist.json: cannot open file: No such file or directory"},
+    {"nul-bytes.json", "triangulate", 3, "nul-bytes.json: binary data (a NUL byte at byte 0), not GeoJSON or WKT"},
+    {"", "verify /dev/zero", 3, "/dev/zero: binary data (a NUL byte at byte 0), not GeoJSON or WKT"},
+    {"", "triangulate /", 3, "/: is a directory, not a file"},
+    {"malformed-json.json", "verify --max-input-bytes 16", 3, "malformed-json.json: input is larger than the limit of 16 bytes (--max-input-bytes)"},
     // Invalid (4): validation rules, in the order validate() checks them
     {"nan.wkt", "triangulate", 4, "nan.wkt: ring 0 vertex 2 (10, nan): coordinate is not a finite number"},
     {"empty-ring.json", "triangulate", 4, "empty-ring.json: ring 1: ring is empty, it needs at least 3 distinct points"},
@@ -66,7 +71,15 @@ const Row kCatalogue[] = {
     {"checker-rejects.json", "triangulate --no-validate", 6, "the exact checker rejects our triangulation: triangle-count"},
     // Usage (2)
     {"", "triangulate --format png x.json", 2, "--format"},
-    {"", "frobnicate", 2, "A subcommand is required"},
+    // The finding: CLI11 said "A subcommand is required" for a misspelt one.
+    {"", "frobnicate", 2, "unknown subcommand 'frobnicate'; expected one of triangulate, trace, transcript"},
+    // (an input that is refused before any write even without the check: a regression cannot
+    // overwrite the example; tests/cli_test.cpp tries shrink on copies)
+    {"zero-area.json", "triangulate -o " FLOOD_SOURCE_DIR "/polygons/invalid/zero-area.json", 2,
+     "zero-area.json is the input file"},
+    // Write failed (8): the system's reason; an existing output is left as it was
+    {"", "generate circle-jagged 100 -o /dev/full", 8, "/dev/full: cannot write: No space left on device"},
+    {"", "triangulate " FLOOD_SOURCE_DIR "/polygons/hole.json -o /dev/full/x.json", 8, "/dev/full/x.json: cannot write: Not a directory"},
 };
 
 RunResult run(const std::string& args) { return runCli(args); }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -107,6 +108,106 @@ TEST(IoRead, Wkt) {
     EXPECT_EQ(parsePolygon("LINESTRING(0 0, 1 1)", "e").diagnostic.status, Status::Malformed);
     EXPECT_EQ(parsePolygon("POLYGON((0 0, 1 0, 1 1)) extra", "e").diagnostic.status,
               Status::Malformed);
+}
+
+// Z, M and ZM points (3 or 4 ordinates), with the tag, without it, or run together with the
+// keyword: the extra ordinates are dropped. POLYGON ZM with four ordinates used to be refused.
+TEST(IoRead, WktDimensions) {
+    for (const char* text :
+         {"POLYGON ZM ((0 0 1 2, 4 0 1 2, 4 4 1 2, 0 4 1 2, 0 0 1 2))",
+          "POLYGON ((0 0 1 2, 4 0 1 2, 4 4 1 2, 0 4 1 2, 0 0 1 2))",
+          "POLYGON M ((0 0 1, 4 0 1, 4 4 1, 0 4 1, 0 0 1))", "POLYGONZM((0 0 1 2,4 0 1 2,4 4 1 2,0 4 1 2))",
+          "polygonz ((0 0 1, 4 0 1, 4 4 1, 0 4 1))",
+          "MULTIPOLYGON ZM (((0 0 1 2, 4 0 1 2, 4 4 1 2, 0 4 1 2)))"}) {
+        ReadResult r = parsePolygon(text, "z");
+        ASSERT_TRUE(r.diagnostic.ok()) << text << ": " << r.diagnostic.message;
+        ASSERT_EQ(r.polygon.vertices.size(), 4u) << text;
+        EXPECT_EQ(r.polygon.vertices[2], (Point{4, 4})) << text;
+    }
+    ReadResult five = parsePolygon("POLYGON ZM ((0 0 1 2 3, 4 0 1 2, 4 4 1 2))", "f");
+    EXPECT_TRUE(contains(five.diagnostic.message, "f:1:22: WKT: expected ')', found '3'"))
+        << five.diagnostic.message;
+    EXPECT_TRUE(contains(parsePolygon("POLYGON Q ((0 0, 1 0, 1 1))", "q").diagnostic.message,
+                         "q:1:9: WKT: unexpected \"Q\" after POLYGON"));
+}
+
+// EMPTY where the WKT grammar allows it (GEOS's tests use it): an EMPTY hole or part is
+// dropped with a warning naming its place; nothing left is "polygon has no rings", as for
+// JSON. These used to be "expected '(', found 'E'".
+TEST(IoRead, WktEmpty) {
+    ReadResult hole = parsePolygon("POLYGON((0 0,4 0,4 4,0 4,0 0), EMPTY, (1 1,1 2,2 2,1 1))", "h.wkt");
+    ASSERT_TRUE(hole.diagnostic.ok()) << hole.diagnostic.message;
+    EXPECT_EQ(hole.polygon.rings.size(), 2u);
+    ASSERT_EQ(hole.warnings.size(), 1u);
+    EXPECT_EQ(hole.warnings[0], "h.wkt:1:32: WKT: EMPTY hole dropped");
+    ReadResult part = parsePolygon("MULTIPOLYGON(EMPTY, ((0 0,4 0,4 4,0 0)), (EMPTY))", "p.wkt");
+    ASSERT_TRUE(part.diagnostic.ok()) << part.diagnostic.message;
+    EXPECT_EQ(part.polygon.parts.size(), 1u);
+    ASSERT_EQ(part.warnings.size(), 2u);
+    EXPECT_EQ(part.warnings[0], "p.wkt:1:14: WKT: EMPTY polygon dropped");
+    EXPECT_EQ(part.warnings[1], "p.wkt:1:42: WKT: EMPTY polygon dropped");
+    struct Case {
+        const char* text;
+        const char* message;
+    } bad[] = {
+        {"POLYGON EMPTY", "e:1:9: WKT: POLYGON EMPTY: polygon has no rings"},
+        {"POLYGON Z EMPTY", "e:1:11: WKT: POLYGON EMPTY: polygon has no rings"},
+        {"POLYGON(EMPTY)", "e:1:8: WKT: POLYGON (EMPTY): polygon has no rings"},
+        {"MULTIPOLYGON EMPTY", "e:1:14: WKT: MULTIPOLYGON EMPTY: no polygon"},
+        {"MULTIPOLYGON(EMPTY, (EMPTY))", "e:1:13: WKT: every polygon of the MULTIPOLYGON is EMPTY"},
+        {"POLYGON(EMPTY, (0 0, 1 0, 1 1))", "e:1:15: WKT: the outer ring is EMPTY but holes follow"},
+        {"POLYGON((0 0, 1 0, 1 1), EMPTI)", "e:1:26: WKT: expected '(' or EMPTY, found \"EMPTI\""},
+    };
+    for (const Case& c : bad) {
+        ReadResult r = parsePolygon(c.text, "e");
+        EXPECT_EQ(r.diagnostic.status, Status::Malformed) << c.text;
+        EXPECT_TRUE(contains(r.diagnostic.message, c.message)) << c.text << ": " << r.diagnostic.message;
+    }
+}
+
+// An empty array says what is missing: [] has no rings, [[]] is a ring with no points (it used
+// to be told it is not "an array of rings").
+TEST(IoRead, EmptyArrays) {
+    ReadResult none = parsePolygon("[]", "a.json");
+    EXPECT_EQ(none.diagnostic.message, "a.json: polygon 0: polygon has no rings");
+    ReadResult ring = parsePolygon("[[]]", "b.json");
+    ASSERT_TRUE(ring.diagnostic.ok()) << ring.diagnostic.message;
+    Diagnostic v = validate(ring.polygon, "b.json");
+    EXPECT_EQ(v.status, Status::Invalid);
+    EXPECT_TRUE(contains(v.message, "b.json: ring 0: ring is empty")) << v.message;
+    ReadResult point = parsePolygon("[[[]]]", "c.json");
+    EXPECT_TRUE(contains(point.diagnostic.message,
+                         "c.json: polygon 0 ring 0 vertex 0: coordinate is not a pair of numbers (got [])"))
+        << point.diagnostic.message;
+}
+
+// Only the first kMaxWarnings warnings are kept; the rest are counted.
+TEST(IoRead, WarningsCapped) {
+    std::string text = "[[[0,0]";
+    for (int i = 0; i < 1000; ++i) text += ",[0,0]";
+    text += ",[10,0],[10,10],[0,10]]]";
+    ReadResult r = parsePolygon(text, "w");
+    ASSERT_TRUE(r.diagnostic.ok()) << r.diagnostic.message;
+    EXPECT_EQ(r.warnings.size(), kMaxWarnings);
+    EXPECT_EQ(r.warningsOmitted, 1000 - kMaxWarnings);
+    EXPECT_EQ(r.polygon.vertices.size(), 4u);
+}
+
+// NUL bytes are binary data, whatever else the text holds (it used to be "empty input").
+TEST(IoRead, BinaryData) {
+    ReadResult z = parsePolygon(std::string(100, '\0'), "z.bin");
+    EXPECT_EQ(z.diagnostic.message, "z.bin: binary data (a NUL byte at byte 0), not GeoJSON or WKT");
+    ReadResult mid = parsePolygon(std::string("[[[0,0],\0[1,0],[1,1]]]", 22), "m");
+    EXPECT_TRUE(contains(mid.diagnostic.message, "m: binary data (a NUL byte at byte 8)"))
+        << mid.diagnostic.message;
+    std::string text;
+    Diagnostic dir = readInputFile(source("polygons"), text, kDefaultMaxInputBytes, "GeoJSON or WKT");
+    EXPECT_TRUE(contains(dir.message, "polygons: is a directory, not a file")) << dir.message;
+    Diagnostic cap = readInputFile(source("polygons/hole.json"), text, 10, "GeoJSON or WKT");
+    EXPECT_TRUE(contains(cap.message, "hole.json: input is larger than the limit of 10 bytes"))
+        << cap.message;
+    EXPECT_TRUE(readInputFile(source("polygons/hole.json"), text, 1000, "x").ok());
+    EXPECT_TRUE(contains(text, "[[")) << text;
 }
 
 TEST(IoRead, MalformedMessages) {
@@ -376,6 +477,29 @@ TEST(TraceIo, RoundTripAndErrors) {
 }
 
 // Correct at scale (validation's speed is measured in bench/, not here).
+// Non-finite coordinates (only an unvalidated run holds them) are written as "NaN",
+// "Infinity", "-Infinity" and read back as the same values (nlohmann wrote null, unreadable).
+TEST(TraceIo, NonFiniteCoordinatesRoundTrip) {
+    Trace t;
+    double inf = std::numeric_limits<double>::infinity();
+    t.polygon.addRing({{0, 0}, {inf, 0}, {1, std::nan("")}, {-inf, 1}}, true);
+    t.diagnostic = {Status::Forbidden, "forbidden transition NotFinite"};
+    std::ostringstream out;
+    writeTrace(out, t);
+    EXPECT_TRUE(contains(out.str(), R"([[0.0,0.0],["Infinity",0.0],[1.0,"NaN"],["-Infinity",1.0]])"))
+        << out.str();
+    Trace back;
+    Diagnostic d = parseTrace(out.str(), "t.jsonl", back);
+    ASSERT_TRUE(d.ok()) << d.message;
+    ASSERT_EQ(back.polygon.vertices.size(), 4u);
+    EXPECT_EQ(back.polygon.vertices[1].x, inf);
+    EXPECT_TRUE(std::isnan(back.polygon.vertices[2].y));
+    EXPECT_EQ(back.polygon.vertices[3].x, -inf);
+    std::string text = out.str();
+    text.replace(text.find("\"NaN\""), 5, "\"nan\"");
+    EXPECT_TRUE(contains(parseTrace(text, "t", back).message, "t:1: vertex 2 is not a pair of numbers"));
+}
+
 TEST(Validate, OneMillionVerticesAtScale) {
     Polygon p;
     std::vector<Point> ring;

@@ -55,6 +55,7 @@ namespace {
 
 using nlohmann::json;
 using io_detail::echo;
+using io_detail::jsonReason;
 using io_detail::kMaxJsonDepth;
 using io_detail::tooDeep;
 using io_detail::where;
@@ -62,27 +63,6 @@ using io_detail::where;
 struct BadStructure {
     std::string message;
 };
-
-// nlohmann's what() reads "[json.exception.parse_error.101] parse error at line 1, column 5:
-// syntax error ...; last read: '<token>'"; keep only the part after the position, which we
-// print ourselves, with the echoed token cut.
-std::string jsonReason(const char* what) {
-    std::string s = what;
-    size_t col = s.find("column ");
-    size_t colon = col == std::string::npos ? col : s.find(": ", col);
-    size_t bracket = s.find("] ");
-    if (colon != std::string::npos) s = s.substr(colon + 2);
-    else if (bracket != std::string::npos) s = s.substr(bracket + 2);
-    const std::string lastRead = "last read: '";
-    size_t q = s.find(lastRead);
-    if (q != std::string::npos) {
-        q += lastRead.size();
-        size_t end = s.rfind('\'');
-        std::string_view token = std::string_view(s).substr(q, end > q ? end - q : std::string::npos);
-        s = s.substr(0, q) + echo(token) + "'";
-    }
-    return s;
-}
 
 Point readVertex(const json& v, const std::string& ctx) {
     if (!v.is_array() || v.size() < 2 || !v[0].is_number() || !v[1].is_number())

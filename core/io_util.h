@@ -34,6 +34,27 @@ inline std::string echo(std::string_view s) {
     return std::string(s.substr(0, n)) + "\u2026";
 }
 
+// nlohmann's what() reads "[json.exception.parse_error.101] parse error at line 1, column 5:
+// syntax error ...; last read: '<token>'"; keep only the part after the position, which we
+// print ourselves, with the echoed token cut.
+inline std::string jsonReason(const char* what) {
+    std::string s = what;
+    size_t col = s.find("column ");
+    size_t colon = col == std::string::npos ? col : s.find(": ", col);
+    size_t bracket = s.find("] ");
+    if (colon != std::string::npos) s = s.substr(colon + 2);
+    else if (bracket != std::string::npos) s = s.substr(bracket + 2);
+    const std::string lastRead = "last read: '";
+    size_t q = s.find(lastRead);
+    if (q != std::string::npos) {
+        q += lastRead.size();
+        size_t end = s.rfind('\'');
+        std::string_view token = std::string_view(s).substr(q, end > q ? end - q : std::string::npos);
+        s = s.substr(0, q) + echo(token) + "'";
+    }
+    return s;
+}
+
 // A NUL byte never occurs in JSON, WKT or a trace: the input is binary.
 inline std::string binaryData(const std::string& name, size_t offset, const char* expected) {
     return name + ": binary data (a NUL byte at byte " + std::to_string(offset) + "), not " +

@@ -133,7 +133,7 @@ uint8_t tests(const json& o, const char* key) {
         int found = -1;
         for (int i = 0; i < int(Test::Count); ++i)
             if (t.is_string() && t.get<std::string>() == kTestNames[i]) found = i;
-        if (found < 0) throw Bad{"unknown test " + t.dump() + " in \"" + key + "\""};
+        if (found < 0) throw Bad{"unknown test " + io_detail::echo(t.dump()) + " in \"" + key + "\""};
         bits |= uint8_t(1u << found);
     }
     return bits;
@@ -145,7 +145,7 @@ Enum byName(const json& o, const char* key, int count, NameFn name) {
     if (v.is_string())
         for (int i = 0; i < count; ++i)
             if (v.get<std::string>() == name(Enum(i))) return Enum(i);
-    throw Bad{std::string("field \"") + key + "\" has unknown value " + v.dump()};
+    throw Bad{std::string("field \"") + key + "\" has unknown value " + io_detail::echo(v.dump())};
 }
 
 Event parseEvent(const json& o, size_t n) {
@@ -279,7 +279,7 @@ Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& tra
                 o = json::parse(line.begin(), line.end());
             } catch (const json::parse_error& e) {
                 throw Bad{std::string("JSON syntax error at column ") + std::to_string(e.byte) +
-                          ": " + e.what()};
+                          ": " + io_detail::jsonReason(e.what())};
             }
             if (!o.is_object()) throw Bad{"a line must be one JSON object"};
             if (!sawHeader) {
@@ -294,7 +294,7 @@ Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& tra
                     Triangle tri;
                     for (int k = 0; k < 3; ++k) {
                         if (!t[k].is_number_unsigned() || t[k].get<uint64_t>() >= n)
-                            throw Bad{"triangle " + t.dump() + " has a bad vertex index"};
+                            throw Bad{"triangle " + io_detail::echo(t.dump()) + " has a bad vertex index"};
                         tri[k] = t[k].get<Index>();
                     }
                     trace.triangles.push_back(tri);
@@ -306,7 +306,7 @@ Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& tra
                         trace.diagnostic.status = Status(s);
                         known = true;
                     }
-                if (!known) throw Bad{"unknown status " + st.dump()};
+                if (!known) throw Bad{"unknown status " + io_detail::echo(st.dump())};
                 const json& msg = field(o, "message");
                 if (!msg.is_string()) throw Bad{"\"message\" is not a string"};
                 trace.diagnostic.message = msg.get<std::string>();
@@ -333,7 +333,7 @@ Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& tra
                 name + (lineNo ? ":" + std::to_string(lineNo) : std::string()) + ": " + b.message};
     } catch (const json::exception& e) {
         trace = Trace{};
-        return {Status::Malformed, name + ":" + std::to_string(lineNo) + ": " + e.what()};
+        return {Status::Malformed, name + ":" + std::to_string(lineNo) + ": " + io_detail::echo(e.what())};
     }
     return {};
 }

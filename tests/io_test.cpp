@@ -500,6 +500,18 @@ TEST(TraceIo, NonFiniteCoordinatesRoundTrip) {
     EXPECT_TRUE(contains(parseTrace(text, "t", back).message, "t:1: vertex 2 is not a pair of numbers"));
 }
 
+// A long literal in a trace is cut in the message too.
+TEST(TraceIo, LongLiteralsCut) {
+    Trace back;
+    std::string junk(1000000, 'q');
+    for (const std::string& text : {"{\"format\":\"" + junk, "{\"format\":" + junk + "}",
+                                    "[\"" + junk + "\"]"}) {
+        Diagnostic d = parseTrace(text, "t", back);
+        EXPECT_EQ(d.status, Status::Malformed);
+        EXPECT_LT(d.message.size(), 400u) << d.message.substr(0, 400);
+    }
+}
+
 TEST(Validate, OneMillionVerticesAtScale) {
     Polygon p;
     std::vector<Point> ring;

@@ -1,11 +1,12 @@
-// Metamorphic tests: exact transforms of a polygon — scaling by 2^k for k from -1000 to 1000,
-// a quarter turn, a mirror, a shift by 2^40 — must not change any verdict. Every predicate is
+// Metamorphic tests: exact transforms of a polygon — scaling by 2^k for k from -1000 to 1000
+// and to both ends of the double range, a quarter turn, a mirror, a shift by 2^40 — must not change any verdict. Every predicate is
 // exact for every finite double, so validate() must give the same Status, the flood must
 // succeed exactly when it did, and its triangles must pass the exact checker with the same
 // count. Whatever computes with coordinates outside the predicates (the sag index's pruning,
 // the height buckets) may only be conservative; these tests catch one that is not.
 #include <gtest/gtest.h>
 
+#include <climits>
 #include <cmath>
 #include <functional>
 #include <optional>
@@ -59,10 +60,27 @@ struct Variant {
     bool scaleOnly;  // heights keep their order: even an invalid input floods the same way
 };
 
+// The scales tested: the fixed ones, and the two edges of the double range for this input
+// (its largest coordinate just below DBL_MAX, where differences and spans overflow; its
+// smallest nonzero one at the least normal double, where products underflow).
+std::vector<int> scalesFor(const Polygon& p) {
+    std::vector<int> ks(std::begin(kScales), std::end(kScales));
+    int eMax = INT_MIN, eMin = INT_MAX;
+    for (Point v : p.vertices)
+        for (double c : {v.x, v.y})
+            if (c != 0) {
+                int e;
+                std::frexp(c, &e);  // |c| in [2^(e-1), 2^e)
+                eMax = std::max(eMax, e), eMin = std::min(eMin, e);
+            }
+    if (eMax != INT_MIN) ks.push_back(1024 - eMax), ks.push_back(-1021 - eMin);
+    return ks;
+}
+
 // The transformed copies of `p`; `skipped` names the ones that would not be exact.
 std::vector<Variant> variants(const Polygon& p, std::vector<std::string>& skipped) {
     std::vector<Variant> out;
-    for (int k : kScales) {
+    for (int k : scalesFor(p)) {
         std::string s = "2^" + std::to_string(k);
         std::optional<Polygon> q = scaled(p, k);
         if (!q) {

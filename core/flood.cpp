@@ -136,7 +136,10 @@ private:
     }
     // Buckets of equal height span over the sags' heights. The bucket of y never decreases
     // as y grows (rounding is monotone), so the sags of the buckets below y's are all lower
-    // than y and those above all higher: a search for y needs only its own bucket.
+    // than y and those above all higher: a search for y needs only its own bucket. Monotone at
+    // every scale too: a span that overflows gives scale 0, so every height is in bucket 0
+    // except those whose difference is infinite (inf · 0 = NaN: the last bucket); one so small
+    // that the scale is infinite puts every height above the lowest in the last bucket.
     size_t heightBucket(double y) const {
         const size_t last = sagBucket_.size() - 2;
         if (!(y > bucketY0_)) return 0;

@@ -31,6 +31,10 @@ void writeObj(std::ostream& out, const Polygon& p, const std::vector<Triangle>& 
 }
 
 // SVG has y down; we flip it (y_svg = -y) and fit the viewBox to the polygon with a margin.
+// Coordinates are written times 2^shift (exact unless a tiny one goes subnormal): shift is 0
+// unless a coordinate exceeds 2^500 (then the largest becomes ~1) or the extent is below
+// 2^-500 (then it becomes ~1), so the viewBox's sums stay finite and its sizes normal at
+// every extent. The longer side is 800 pixels, the shorter at least 1.
 void writeSvg(std::ostream& out, const Polygon& p, const std::vector<Triangle>& t) {
     double minx = 0, maxx = 1, miny = 0, maxy = 1;
     if (!p.vertices.empty()) {
@@ -41,20 +45,32 @@ void writeSvg(std::ostream& out, const Polygon& p, const std::vector<Triangle>& 
             miny = std::min(miny, v.y), maxy = std::max(maxy, v.y);
         }
     }
-    double w = maxx - minx, h = maxy - miny;
+    // The scale: a power of two, chosen on the exact box.
+    int shift = 0, e = 0;
+    const double big = std::max({std::fabs(minx), std::fabs(maxx), std::fabs(miny), std::fabs(maxy)});
+    if (big > 0x1p500) {
+        std::frexp(big, &e);
+        shift = -e;
+    } else if (double extent = std::max(maxx - minx, maxy - miny); extent > 0 && extent < 0x1p-500) {
+        std::frexp(extent, &e);  // distinct doubles near `big` differ by >= big·2^-53: big stays finite
+        shift = -e;
+    }
+    auto S = [shift](double v) { return std::ldexp(v, shift); };
+    auto flip = [](double y) { return y == 0 ? 0.0 : -y; };  // no "-0"
+    auto X = [&](double x) { return formatDouble(S(x)); };
+    auto Y = [&](double y) { return formatDouble(flip(S(y))); };
+    const double x0 = S(minx), y1 = S(maxy), w = S(maxx) - x0, h = y1 - S(miny);
     double size = std::max(w, h);
-    if (!(size > 0) || !std::isfinite(size)) size = 1;
-    double margin = size * 0.02;
-    double stroke = size * 0.002;
-    auto X = [&](double x) { return formatDouble(x); };
-    auto Y = [&](double y) { return formatDouble(y == 0 ? 0.0 : -y); };  // no "-0"
-    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << X(minx - margin) << " "
-        << Y(maxy + margin) << " " << X(w + 2 * margin) << " " << X(h + 2 * margin)
-        << "\" width=\"800\" height=\"" << int(800 * (h + 2 * margin) / (w + 2 * margin) + 0.5)
-        << "\">\n";
+    if (!(size > 0)) size = 1;
+    const double margin = size * 0.02, stroke = size * 0.002;
+    const double boxW = w + 2 * margin, boxH = h + 2 * margin, longer = std::max(boxW, boxH);
+    auto pixels = [longer](double side) { return std::max(1L, std::lround(800 * (side / longer))); };
+    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << formatDouble(x0 - margin) << " "
+        << formatDouble(flip(y1 + margin)) << " " << formatDouble(boxW) << " " << formatDouble(boxH)
+        << "\" width=\"" << pixels(boxW) << "\" height=\"" << pixels(boxH) << "\">\n";
     // The polygon: one path, rings as subpaths, even-odd fill makes holes empty.
     out << "<path fill=\"#cde\" fill-rule=\"evenodd\" stroke=\"#024\" stroke-width=\""
-        << X(stroke * 2) << "\" d=\"";
+        << formatDouble(stroke * 2) << "\" d=\"";
     for (const Ring& r : p.rings) {
         for (Index i = 0; i < r.count; ++i) {
             const Point& v = p.vertices[r.first + i];
@@ -62,7 +78,7 @@ void writeSvg(std::ostream& out, const Polygon& p, const std::vector<Triangle>& 
         }
         out << "Z ";
     }
-    out << "\"/>\n<g fill=\"none\" stroke=\"#a33\" stroke-width=\"" << X(stroke)
+    out << "\"/>\n<g fill=\"none\" stroke=\"#a33\" stroke-width=\"" << formatDouble(stroke)
         << "\" stroke-linejoin=\"round\">\n";
     for (const Triangle& tr : t) {
         out << "<path d=\"";

@@ -7,15 +7,6 @@ namespace flood {
 
 namespace {
 constexpr uint32_t kLeafSize = 8;
-
-float roundDown(double v) {
-    float f = float(v);
-    return double(f) > v ? std::nextafter(f, -INFINITY) : f;
-}
-float roundUp(double v) {
-    float f = float(v);
-    return double(f) < v ? std::nextafter(f, INFINITY) : f;
-}
 }  // namespace
 
 void SagIndex::build(const std::vector<Point>& pointOfRank) {
@@ -52,8 +43,7 @@ void SagIndex::buildNode(uint32_t id, uint32_t begin, uint32_t end, int depth) {
         n.rankMin = UINT32_MAX, n.rankMax = 0;
         return;
     }
-    n.xMin = roundDown(xMin), n.yMin = roundDown(yMin);
-    n.xMax = roundUp(xMax), n.yMax = roundUp(yMax);
+    n.xMin = xMin, n.yMin = yMin, n.xMax = xMax, n.yMax = yMax;
     n.rankMin = rankMin, n.rankMax = rankMax;
     if (depth == depth_) {
         for (uint32_t i = begin; i < end; ++i) leafOfRank_[items_[i].rank] = id;
@@ -77,24 +67,44 @@ void SagIndex::markUsed(uint32_t rank) {
     }
 }
 
-// Conservative point test: false only when p is clearly outside the region.
-bool SagIndex::mayContain(const Region& r, const Line* lines, Point p) {
-    if (p.x < r.xMin || p.x > r.xMax || p.y < r.yMin || p.y > r.yMax) return false;
+SagIndex::Frame SagIndex::frameOf(const Region& r) {
+    double m = std::max({std::abs(r.xMin), std::abs(r.xMax), std::abs(r.yMin), std::abs(r.yMax)});
     for (int k = 0; k < r.lineCount; ++k)
-        if (!leftOf(lines[k], p.x, p.y)) return false;
+        for (Point p : r.lines[k]) m = std::max({m, std::abs(p.x), std::abs(p.y)});
+    Frame f;
+    if (m > 0 && std::isfinite(m)) {
+        int e;
+        std::frexp(m, &e);  // m in [2^(e-1), 2^e), e in [-1073, 1024]
+        f.scale = std::ldexp(1.0, -50 - e);  // 2^-1074 .. 2^1023: a double
+    }
+    f.lineCount = r.lineCount;
+    for (int k = 0; k < r.lineCount; ++k) {
+        Point a = r.lines[k][0], b = r.lines[k][1];
+        double ax = a.x * f.scale, ay = a.y * f.scale;
+        f.lines[k] = {ax, ay, b.x * f.scale - ax, b.y * f.scale - ay};
+    }
+    return f;
+}
+
+// Conservative point test: false only when p is clearly outside the region.
+bool SagIndex::mayContain(const Region& r, const Frame& f, Point p) {
+    if (p.x < r.xMin || p.x > r.xMax || p.y < r.yMin || p.y > r.yMax) return false;
+    for (int k = 0; k < f.lineCount; ++k)
+        if (!leftOf(f.lines[k], p.x * f.scale, p.y * f.scale)) return false;
     return true;
 }
 
-// True when no point of the node's box can lie in the region. Conservative: the line tests are
-// floating-point with a generous error margin, so a box is pruned only when clearly outside.
-// Only the box corner farthest to the left of a line needs testing.
-bool SagIndex::outside(const Node& n, const Region& r, const Line* lines) const {
+// True when no point of the node's box can lie in the region. The box tests are exact; the
+// line tests need only the corner of the box ∩ region farthest to the left of each line
+// (clamping to the region keeps the tested point inside the frame's bounds).
+bool SagIndex::outside(const Node& n, const Region& r, const Frame& f) {
     if (n.xMax < r.xMin || n.xMin > r.xMax || n.yMax < r.yMin || n.yMin > r.yMax) return true;
-    for (int k = 0; k < r.lineCount; ++k) {
-        const Line& l = lines[k];
+    for (int k = 0; k < f.lineCount; ++k) {
+        const Line& l = f.lines[k];
         // cross = dx·(py − ay) − dy·(px − ax) grows with py when dx > 0, with px when dy < 0.
-        double px = l.dy < 0 ? n.xMax : n.xMin, py = l.dx > 0 ? n.yMax : n.yMin;
-        if (!leftOf(l, px, py)) return true;
+        double px = l.dy < 0 ? std::min(n.xMax, r.xMax) : std::max(n.xMin, r.xMin);
+        double py = l.dx > 0 ? std::min(n.yMax, r.yMax) : std::max(n.yMin, r.yMin);
+        if (!leftOf(l, px * f.scale, py * f.scale)) return true;
     }
     return false;
 }

@@ -3,7 +3,9 @@
 // over a run (§7), quadratic on jagged outlines. Here the sags also sit in a k-d tree whose
 // boxes are pruned by the gorge's bank lines, the water's height band and the sags already
 // used, so a search visits the sags near the gorge rather than every sag at its height. The
-// exact `inside` test still decides; the pruning only has to be conservative.
+// exact `inside` test still decides; the pruning only has to be conservative, at every scale:
+// boxes are exact doubles, and the line tests run on coordinates scaled by a power of two so
+// that nothing overflows or underflows enough to matter, from 2^-1074 to 2^1023.
 #pragma once
 #include <cmath>
 #include <cstddef>
@@ -37,9 +39,10 @@ public:
 
 private:
     // Implicit complete tree: node i has children 2i+1, 2i+2; every leaf is at depth depth_.
-    // Boxes are floats rounded outwards (half the bytes of doubles, still conservative).
+    // Boxes are the exact extremes of their sags (floats would overflow past 3.4e38 and
+    // flush below 1e-38, losing all pruning there).
     struct Node {
-        float xMin, xMax, yMin, yMax;
+        double xMin, xMax, yMin, yMax;
         uint32_t rankMin, rankMax;
         uint32_t begin, unused;  // first item; sags of the subtree not used yet
     };
@@ -47,14 +50,24 @@ private:
         Point p;
         uint32_t rank;
     };
-    // A bank line prepared once per search: left of a->b means cross > margin-scaled error.
+    // A search's bank lines, prepared once, in coordinates multiplied by `scale`: a power of
+    // two (exact, bar underflow) that brings the region's largest |coordinate| into
+    // [2^-51, 2^-50). Every point tested lies in the region's box, so differences stay below
+    // 2^-49 and products below 2^-97: no overflow at any input scale, and underflow only in
+    // components below 2^-1022, whose absolute errors (< 2^-1074 each) the margin covers.
     struct Line {
         double ax, ay, dx, dy;
     };
+    struct Frame {
+        double scale = 1;
+        Line lines[2];
+        int lineCount = 0;
+    };
+    static Frame frameOf(const Region& r);
     void buildNode(uint32_t id, uint32_t begin, uint32_t end, int depth);
     static bool leftOf(const Line& l, double px, double py);
-    bool outside(const Node& n, const Region& r, const Line* lines) const;
-    static bool mayContain(const Region& r, const Line* lines, Point p);
+    static bool outside(const Node& n, const Region& r, const Frame& f);
+    static bool mayContain(const Region& r, const Frame& f, Point p);
     std::vector<Node> nodes_;
     static constexpr uint32_t kScanLimit = 48;  // brackets up to this many sags are scanned
     std::vector<Item> items_;
@@ -66,26 +79,24 @@ private:
     uint32_t firstLeaf_ = 0;
 };
 
-// Might p be strictly left of the line? False only when it is clearly right (error margin).
+// Might the scaled point (px, py) be strictly left of the line? False only when it is clearly
+// right: the cross product's rounding error is below 4·2^-53·(|a| + |b|) plus the underflow
+// errors, both far inside the margin. Written so that a NaN would keep the point.
 inline bool SagIndex::leftOf(const Line& l, double px, double py) {
     px -= l.ax, py -= l.ay;
     double a = l.dx * py, b = l.dy * px;
-    return a - b >= -(1e-9 * (std::abs(a) + std::abs(b)) + 1e-300);
+    return !(a - b < -(1e-9 * (std::abs(a) + std::abs(b)) + 0x1p-1000));
 }
 
 template <class Inside>
 int64_t SagIndex::lowest(int64_t lo, int64_t hi, const Region& region, Inside&& inside) {
     if (items_.empty() || hi <= lo + 1) return -1;
-    Line lines[2];
-    for (int k = 0; k < region.lineCount; ++k) {
-        Point a = region.lines[k][0], b = region.lines[k][1];
-        lines[k] = {a.x, a.y, b.x - a.x, b.y - a.y};
-    }
+    const Frame frame = frameOf(region);
     int64_t best = hi;  // candidates must beat this
     if (hi - lo - 1 <= int64_t(kScanLimit)) {
         // A thin band holds few sags: scan them in rank order, as the paper does (§4).
         for (int64_t r = std::max<int64_t>(lo + 1, 0); r < hi && r < int64_t(used_.size()); ++r)
-            if (!used_[size_t(r)] && mayContain(region, lines, byRank_[size_t(r)]) && inside(uint32_t(r)))
+            if (!used_[size_t(r)] && mayContain(region, frame, byRank_[size_t(r)]) && inside(uint32_t(r)))
                 return r;
         return -1;
     }
@@ -96,14 +107,14 @@ int64_t SagIndex::lowest(int64_t lo, int64_t hi, const Region& region, Inside&& 
         stack_.pop_back();
         const Node& n = nodes_[id];
         if (n.unused == 0 || int64_t(n.rankMax) <= lo || int64_t(n.rankMin) >= best ||
-            outside(n, region, lines))
+            outside(n, region, frame))
             continue;
         if (id >= firstLeaf_) {
             uint32_t end = id + 1 < nodes_.size() ? nodes_[id + 1].begin : uint32_t(items_.size());
             for (uint32_t i = n.begin; i < end; ++i) {
                 uint32_t r = items_[i].rank;
                 if (int64_t(r) <= lo || int64_t(r) >= best || used_[r]) continue;
-                if (!mayContain(region, lines, items_[i].p)) continue;
+                if (!mayContain(region, frame, items_[i].p)) continue;
                 if (inside(r)) best = r;
             }
             continue;

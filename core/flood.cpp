@@ -264,7 +264,7 @@ private:
         stretchRecs_.clear();
         stretchTree_.clear();
         barriers_.clear();
-        for (auto& at : stretchAt_) at.assign(nodes_.size() - partFirstNode_, kNil);
+        for (auto& at : stretchAt_) at.clear();  // grown by the first spill walk (recordAt())
 
         // The lowest node of the outer ring is where the water starts.
         uint32_t start = kNil;
@@ -538,15 +538,28 @@ private:
         region.lines[0][0] = nl, region.lines[0][1] = l;
         region.lines[1][0] = r, region.lines[1][1] = nr;
         region.lineCount = 2;
-        int64_t k = sagIndex_.lowest(lo, hi, region, [&](uint32_t rank) {
+        auto test = [&](uint32_t rank) {
             ++e.sagTests;
             ++work().sagTests;
             return inside(Point{sagKeys_[rank].x, sagKeys_[rank].y}, l, r, nr, nl);
-        });
+        };
+        // The next few ranks first, in order: in a wide gorge (a strip under a row of holes)
+        // the lowest sag is usually the next one up, which the tree would reach only after
+        // visiting every box whose rank range begins below it.
+        int64_t k = -1;
+        for (int64_t end = std::min(hi, lo + 1 + kProbes); lo + 1 < end && k < 0;) {
+            const uint32_t rank = uint32_t(++lo);
+            ++work().nodeVisits;
+            const HeightKey& s = sagKeys_[rank];
+            if (!sagIndex_.used(rank) && s.x >= region.xMin && s.x <= region.xMax && test(rank)) k = rank;
+        }
+        if (k < 0) k = sagIndex_.lowest(lo, hi, region, test);
         if (k < 0) return kNil;
         sagIndex_.markUsed(uint32_t(k));
         return sags_[size_t(k)];
     }
+
+    static constexpr int64_t kProbes = 4;  // ranks findSag tests before the sag tree
 
     // ---- [SECTION] the five actions ----------------------------------------------------------
     void cutTriangle(uint32_t a, uint32_t b, uint32_t c) {
@@ -687,7 +700,7 @@ private:
             if (nd.gorgeLeft != kNil || nd.gorgeRight != kNil || x == t) break;
             // Only extremes matter to the walk; the orientation test is spent on them alone
             // (and on every maximum of a stretch being recorded: a later walk may need it).
-            const uint32_t at = stretchAt(dir, x);
+            const uint32_t at = recordedAt(dir, x);
             const bool fresh = at == kNil && !nd.wet;
             bool minimum = isMinimum(x);
             bool maximum = !minimum && lower(prev(x), x) && lower(next(x), x);
@@ -695,7 +708,7 @@ private:
             bool sag = minimum && !convexHere, sensitive = convexHere;  // ceilings and bottoms
             if (fresh) {
                 int32_t before = stretches_.size() > run ? stretches_.back().drops + stretches_.back().delta : 0;
-                stretchAt(dir, x) = uint32_t(stretches_.size());
+                recordAt(dir, x, uint32_t(stretches_.size()));
                 int8_t delta = sag ? 1 : sensitive ? -1 : 0;
                 stretches_.push_back({x, uint32_t(stretchRecs_.size()), before, delta, sensitive});
             } else {
@@ -845,16 +858,21 @@ private:
     void makeWet(uint32_t n) {
         nodes_[n].wet = true;
         for (int dir = 0; dir < 2; ++dir) {
-            uint32_t at = stretchAt(dir, n);
+            uint32_t at = recordedAt(dir, n);
             if (at == kNil) continue;
             barriers_.insert(at);
             ++work().nodeVisits;
         }
     }
-    uint32_t& stretchAt(int dir, uint32_t n) {
+    // The position of node n in the stretches walked in direction dir; kNil if not recorded.
+    uint32_t recordedAt(int dir, uint32_t n) const {
+        const std::vector<uint32_t>& v = stretchAt_[dir];
+        return n - partFirstNode_ < v.size() ? v[n - partFirstNode_] : kNil;
+    }
+    void recordAt(int dir, uint32_t n, uint32_t position) {
         std::vector<uint32_t>& v = stretchAt_[dir];
         if (n - partFirstNode_ >= v.size()) v.resize(nodes_.size() - partFirstNode_, kNil);
-        return v[n - partFirstNode_];
+        v[n - partFirstNode_] = position;
     }
     // Ends the stretch a walk is recording (positions from `run` on) and builds its tree: a
     // complete binary tree over the positions holding, for bottoms and ceilings, the count's

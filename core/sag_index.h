@@ -29,6 +29,7 @@ public:
     // pointOfRank[r]: the sag of height rank r (ranks: sags sorted by height).
     void build(const std::vector<Point>& pointOfRank);
     size_t size() const { return used_.size(); }
+    bool used(uint32_t rank) const { return used_[rank]; }
     void markUsed(uint32_t rank);
 
     // The lowest unused rank in (lo, hi) within `region` for which inside(rank) holds;

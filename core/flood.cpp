@@ -26,7 +26,6 @@
 #include <algorithm>
 #include <cstdint>
 #include <cmath>
-#include <set>
 #include <sstream>
 
 #include "predicates.h"
@@ -263,7 +262,6 @@ private:
         stretches_.clear();
         stretchRecs_.clear();
         stretchTree_.clear();
-        barriers_.clear();
         for (auto& at : stretchAt_) at.clear();  // grown by the first spill walk (recordAt())
 
         // The lowest node of the outer ring is where the water starts.
@@ -729,16 +727,15 @@ private:
                 // Cross the stretch beyond x in one step, up to the node before the first one
                 // that got wet since (its links may have changed) and before the first bottom
                 // or ceiling the count would reach at zero (it may be the landing): none of
-                // the nodes crossed can end the walk, and the count changes by their sum.
+                // the nodes crossed can end the walk, and the count changes by their sum. The
+                // stretch's tree finds whichever comes first (a wet node holds INT32_MIN).
                 const StretchRec& rec = stretchRecs_[stretches_[at].stretch];
-                uint32_t end = rec.end;
-                auto wet = barriers_.upper_bound(at);
-                ++work().nodeVisits;
-                if (wet != barriers_.end() && *wet < end) end = *wet;
                 const uint32_t a = at + 1;
-                if (a + 2 <= end) {
-                    uint32_t zero = firstAtMost(rec, a - rec.start, int64_t(stretches_[a].drops) - drops) + rec.start;
-                    uint32_t b = std::min(zero, end - 1);  // one past the last node crossed
+                if (a < rec.end) {
+                    uint32_t f = firstAtMost(rec, a - rec.start, int64_t(stretches_[a].drops) - drops) + rec.start;
+                    // One past the last node crossed: a wet node (or the stretch's end) is not
+                    // reached, nor the node before it; a zero-count node is reached live.
+                    uint32_t b = f == rec.end || nodes_[stretches_[f].node].wet ? f - 1 : f;
                     if (b > a && guard + (b - a) <= partNodes_) {
                         drops += stretches_[b].drops - stretches_[a].drops;
                         guard += b - a;
@@ -854,14 +851,19 @@ private:
         makeWet(bottom);
     }
 
-    // A node becomes wet: a stretch holding it can no longer be crossed past it.
+    // A node becomes wet: a stretch holding it can no longer be crossed past it, so its leaf
+    // and their ancestors in the stretch's tree get INT32_MIN, below any count.
     void makeWet(uint32_t n) {
         nodes_[n].wet = true;
         for (int dir = 0; dir < 2; ++dir) {
             uint32_t at = recordedAt(dir, n);
             if (at == kNil) continue;
-            barriers_.insert(at);
-            ++work().nodeVisits;
+            const StretchRec& rec = stretchRecs_[stretches_[at].stretch];
+            int32_t* t = stretchTree_.data() + rec.tree;
+            for (size_t i = rec.leaves + at - rec.start; i >= 1 && t[i] != INT32_MIN; i >>= 1) {
+                t[i] = INT32_MIN;
+                ++work().nodeVisits;
+            }
         }
     }
     // The position of node n in the stretches walked in direction dir; kNil if not recorded.
@@ -946,12 +948,11 @@ private:
     // Spill walks remembered: the dry nodes a walk passed, in its direction (prev-wards or
     // next-wards), with the drop count's change along them. Links between dry nodes do not
     // change (every edit of the loops touches a wet node), so a later walk reaching such a
-    // stretch crosses it in one step up to its first node that got wet since (barriers_).
+    // stretch crosses it in one step up to its first node that got wet since.
     std::vector<Stretch> stretches_;
     std::vector<StretchRec> stretchRecs_;
     std::vector<int32_t> stretchTree_;
     std::vector<uint32_t> stretchAt_[2];  // per node of the part, per direction: its position
-    std::set<uint32_t> barriers_;         // positions whose node got wet after being recorded
     std::vector<uint32_t> todo_;  // pending gorges (ids), last pushed first
     uint32_t left_ = kNil, right_ = kNil, water_ = kNil;
     uint32_t part_ = 0, partNodes_ = 0, partFirstNode_ = 0, cut_ = 0, step_ = 0;

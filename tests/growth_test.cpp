@@ -3,8 +3,8 @@
 // vertex grows with N is super-linear whatever the machine it runs on.
 //
 // Each case runs validate() + triangulate() at N = 10^3, 10^4, 10^5 and asserts that the work
-// per vertex at the larger sizes stays within the case's factor of the 10^3 figure. Linear work
-// would give a constant; the factors allow for what is legitimately O(log n) per vertex (the
+// per vertex at the larger sizes stays within a factor (kFactor) of the 10^3 figure. Linear work
+// would give a constant; the factor allows for what is legitimately O(log n) per vertex (the
 // validator's sweep and sorts, the sag tree's descent), and for generators whose shape changes
 // with N. Under the sanitizers FLOOD_GROWTH_MAX_N caps N (scripts/sanitize.sh).
 #include <gtest/gtest.h>

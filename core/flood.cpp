@@ -24,11 +24,13 @@
 #include "flood.h"
 
 #include <algorithm>
+#include <cstdint>
 #include <cmath>
 #include <sstream>
 
 #include "predicates.h"
 #include "sag_index.h"
+#include "work.h"
 
 namespace flood {
 namespace {
@@ -85,6 +87,18 @@ public:
     }
 
 private:
+    struct Stretch {     // a position of a stretch
+        uint32_t node;
+        uint32_t stretch;  // its StretchRec
+        int32_t drops;     // the count's change from the stretch's start to just before here
+        int8_t delta;      // +1 a sag, -1 a bottom or ceiling (when the count is positive)
+        bool sensitive;    // a convex bottom or ceiling: where a zero count matters
+    };
+    struct StretchRec {
+        uint32_t start, end;  // its positions in stretches_
+        uint32_t tree, leaves;  // its tree in stretchTree_ (firstAtMost()), leaves a power of two
+    };
+
     // ---- [SECTION] predicates on nodes -------------------------------------------------
     Point P(uint32_t n) const { return pts_[nodes_[n].v]; }
     // The paper's below, made a strict total order on nodes: coincident vertices (rings
@@ -119,8 +133,8 @@ private:
     // Number of sags strictly below node n, by binary search on the contiguous height keys,
     // remembered per node: the water is usually the previous step's Next.
     uint32_t sagsBelow(uint32_t n) {
-        if (n >= sagsBelow_.size()) sagsBelow_.resize(nodes_.size(), kNil);
-        uint32_t& r = sagsBelow_[n];
+        if (n - partFirstNode_ >= sagsBelow_.size()) sagsBelow_.resize(nodes_.size() - partFirstNode_, kNil);
+        uint32_t& r = sagsBelow_[n - partFirstNode_];
         if (r == kNil) {
             // The height bucket bounds the search; break ties on the full keys only if needed.
             HeightKey k = key(n);
@@ -164,8 +178,10 @@ private:
         size_t filled = 0;
         for (size_t k = 0; k < count; ++k)
             for (size_t b = heightBucket(sagY_[k]); filled <= b;) sagBucket_[filled++] = uint32_t(k);
-        sagsBelow_.assign(nodes_.size(), kNil);
-        for (size_t k = 0; k < count; ++k) sagsBelow_[sags_[k]] = uint32_t(k);  // a sag's rank
+        // Indexed from the part's first node: per-part work stays proportional to the part.
+        sagsBelow_.assign(nodes_.size() - partFirstNode_, kNil);
+        work().nodeVisits += sagsBelow_.size();
+        for (size_t k = 0; k < count; ++k) sagsBelow_[sags_[k] - partFirstNode_] = uint32_t(k);  // a sag's rank
     }
     int turn(uint32_t a, uint32_t b, uint32_t c) const { return orient(P(a), P(b), P(c)); }
     uint32_t prev(uint32_t n) const { return nodes_[n].prev; }
@@ -179,7 +195,7 @@ private:
         const Part& pa = poly_.parts[part];
         part_ = part;
         partNodes_ = 0;
-        const uint32_t partFirstNode = uint32_t(nodes_.size());
+        partFirstNode_ = uint32_t(nodes_.size());
         std::vector<uint32_t> partVertices;  // nodes of the part's loops
         std::vector<uint32_t> points;        // one-node loops: Steiner points
         for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
@@ -226,6 +242,7 @@ private:
                 else points.push_back(base + i);
             }
             partNodes_ += count;
+            work().nodeVisits += count;
             if (r == pa.firstRing) outerNodes = count;
         }
         mergeTouchingLoops(partVertices);
@@ -245,6 +262,10 @@ private:
             if (isMinimum(n) && turn(prev(n), n, next(n)) > 0) bottoms_.push_back(n);
         bottomCursor_ = 0;
         bottomScans_ = 0;  // sorted only if the fallback is asked often (takeNextGorge())
+        stretches_.clear();
+        stretchRecs_.clear();
+        stretchTree_.clear();
+        for (auto& at : stretchAt_) at.clear();  // grown by the first spill walk (recordAt())
 
         // The lowest node of the outer ring is where the water starts.
         uint32_t start = kNil;
@@ -272,7 +293,7 @@ private:
         // Every node of the part must have been flooded: a loop never reached means a hole
         // outside the outer ring, or loops that cross.
         if (ok()) {
-            uint32_t alive = firstAliveNode(partFirstNode);
+            uint32_t alive = firstAliveNode(partFirstNode_);
             if (alive != kNil) {
                 Event f = begin(Action::Forbidden);
                 return forbid(f, Forbidden::LeftBehind, alive, kNil);
@@ -346,31 +367,43 @@ private:
     }
 
     // Rings touching at a point become one loop there: arriving at the point, the next edge
-    // is the first one met rotating clockwise from the edge we came along (§1).
+    // is the first one met rotating clockwise from the edge we came along (§1). The k passages
+    // through a point are merged in O(k log k): their outgoing edges are sorted once by exact
+    // angle, and each arrival takes the outgoing edge just before its own direction.
     void mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
         std::vector<std::pair<uint32_t, uint32_t>> copies = coincidentNodes(partVertices);
         if (copies.empty()) return;
         std::sort(copies.begin(), copies.end());
-        std::vector<uint32_t> corner;
+        std::vector<uint32_t> corner, newNext;
+        std::vector<std::pair<Point, uint32_t>> outs;  // (where the edge goes, its passage)
         for (size_t g = 0; g < copies.size();) {
             corner.assign(1, copies[g].first);
             size_t e = g;
             for (; e < copies.size() && copies[e].first == copies[g].first; ++e) corner.push_back(copies[e].second);
             g = e;
             std::sort(corner.begin(), corner.end());
-            Point c = P(corner[0]);
-            // Outgoing edges around the point, each with the node it leaves from.
-            const std::vector<uint32_t>& outs = corner;  // node whose `next` edge leaves the point
-            std::vector<uint32_t> newNext(corner.size());
+            const Point c = P(corner[0]);
+            // Counter-clockwise from +x; among edges of one direction the first passage last,
+            // so that the element before any position is the lowest passage of its direction.
+            outs.clear();
+            for (uint32_t i = 0; i < corner.size(); ++i) outs.emplace_back(P(next(corner[i])), i);
+            auto before = [&](const std::pair<Point, uint32_t>& a, const std::pair<Point, uint32_t>& b) {
+                if (angleLess(c, a.first, b.first)) return true;
+                if (angleLess(c, b.first, a.first)) return false;
+                return a.second > b.second;
+            };
+            std::sort(outs.begin(), outs.end(), before);
+            work().nodeVisits += corner.size();
+            newNext.resize(corner.size());
             for (size_t i = 0; i < corner.size(); ++i) {
-                Point back = P(prev(corner[i]));  // direction we came from
-                size_t best = SIZE_MAX;
-                for (size_t j = 0; j < outs.size(); ++j) {
-                    Point d = P(next(outs[j]));
-                    if (best == SIZE_MAX || clockwiseCloser(c, back, d, P(next(outs[best]))))
-                        best = j;
-                }
-                newNext[i] = next(outs[best]);
+                // Clockwise from the arrival's direction: the last edge strictly before it
+                // counter-clockwise, else (wrapping round) the last edge of all.
+                Point back = P(prev(corner[i]));
+                auto at = std::partition_point(outs.begin(), outs.end(), [&](const std::pair<Point, uint32_t>& o) {
+                    return angleLess(c, o.first, back);
+                });
+                const auto& pick = at == outs.begin() ? outs.back() : *(at - 1);
+                newNext[i] = next(corner[pick.second]);
             }
             for (size_t i = 0; i < corner.size(); ++i) {
                 nodes_[corner[i]].next = newNext[i];
@@ -379,25 +412,17 @@ private:
         }
     }
 
-    // Rotating clockwise from direction c->from, is c->a met before c->b? Exact.
-    bool clockwiseCloser(Point c, Point from, Point a, Point b) const {
-        // Clockwise angle from `from` to d in [0, 2pi), compared exactly by half-planes.
-        auto half = [&](Point d) {
-            int o = orient(c, from, d);  // <0: d is clockwise of `from` within pi
-            if (o < 0) return 0;
-            if (o == 0) {
-                // Same direction as `from` counts as a full turn (last); opposite is pi.
-                // Collinear: the same ray iff each coordinate lies on the same side of c
-                // (comparisons only, so exact where a dot product would round).
-                auto side = [](double v, double o) { return (v > o) - (v < o); };
-                bool same = side(d.x, c.x) == side(from.x, c.x) && side(d.y, c.y) == side(from.y, c.y);
-                return same ? 2 : 1;
-            }
-            return 1;
-        };
-        int ha = half(a), hb = half(b);
+    // Direction c->a comes before c->b counter-clockwise from +x, exactly (half-planes, then
+    // orient). A zero-length edge (only in invalid input) comes after every direction, so the
+    // order stays a strict weak order.
+    static int halfPlane(Point c, Point a) {
+        if (a == c) return 2;
+        return (a.y > c.y || (a.y == c.y && a.x > c.x)) ? 0 : 1;
+    }
+    static bool angleLess(Point c, Point a, Point b) {
+        int ha = halfPlane(c, a), hb = halfPlane(c, b);
         if (ha != hb) return ha < hb;
-        return orient(c, a, b) < 0;  // b is clockwise of a: a comes first
+        return ha < 2 && orient(c, a, b) > 0;
     }
 
     // ---- [SECTION] events -----------------------------------------------------------------
@@ -457,6 +482,7 @@ private:
 
     // ---- [SECTION] the decision tree (Fig. 9) ----------------------------------------------
     void step() {
+        work().nodeVisits += 4;  // Left, Right and the fingers
         uint32_t nl = prev(left_), nr = next(right_);
         Event e = begin(Action::Raise);
         bool same = nl == nr;
@@ -513,14 +539,28 @@ private:
         region.lines[0][0] = nl, region.lines[0][1] = l;
         region.lines[1][0] = r, region.lines[1][1] = nr;
         region.lineCount = 2;
-        int64_t k = sagIndex_.lowest(lo, hi, region, [&](uint32_t rank) {
+        auto test = [&](uint32_t rank) {
             ++e.sagTests;
+            ++work().sagTests;
             return inside(Point{sagKeys_[rank].x, sagKeys_[rank].y}, l, r, nr, nl);
-        });
+        };
+        // The next few ranks first, in order: in a wide gorge (a strip under a row of holes)
+        // the lowest sag is usually the next one up, which the tree would reach only after
+        // visiting every box whose rank range begins below it.
+        int64_t k = -1;
+        for (int64_t end = std::min(hi, lo + 1 + kProbes); lo + 1 < end && k < 0;) {
+            const uint32_t rank = uint32_t(++lo);
+            ++work().nodeVisits;
+            const HeightKey& s = sagKeys_[rank];
+            if (!sagIndex_.used(rank) && s.x >= region.xMin && s.x <= region.xMax && test(rank)) k = rank;
+        }
+        if (k < 0) k = sagIndex_.lowest(lo, hi, region, test);
         if (k < 0) return kNil;
         sagIndex_.markUsed(uint32_t(k));
         return sags_[size_t(k)];
     }
+
+    static constexpr int64_t kProbes = 4;  // ranks findSag tests before the sag tree
 
     // ---- [SECTION] the five actions ----------------------------------------------------------
     void cutTriangle(uint32_t a, uint32_t b, uint32_t c) {
@@ -540,24 +580,26 @@ private:
             uint32_t nl = prev(left_), c = left_;
             while (c != right_ && turn(nl, c, next(c)) > 0) {
                 if (guard-- == 0 || !nodes_[c].alive) return forbid(e, Forbidden::NoProgress, c, nl);
+                ++work().nodeVisits;
                 uint32_t n = next(c);
                 cutTriangle(nl, c, n);
                 unlink(c);
                 c = n;
             }
             left_ = water_ = nl;
-            nodes_[nl].wet = true;
+            makeWet(nl);
         } else {
             uint32_t nr = next(right_), c = right_;
             while (c != left_ && turn(prev(c), c, nr) > 0) {
                 if (guard-- == 0 || !nodes_[c].alive) return forbid(e, Forbidden::NoProgress, c, nr);
+                ++work().nodeVisits;
                 uint32_t p = prev(c);
                 cutTriangle(p, c, nr);
                 unlink(c);
                 c = p;
             }
             right_ = water_ = nr;
-            nodes_[nr].wet = true;
+            makeWet(nr);
         }
         emit(e);
     }
@@ -595,6 +637,7 @@ private:
         uint32_t x = c, before = cut_, guard = partNodes_ + 2;
         while (x != left_ && turn(prev(x), x, s) > 0) {
             if (guard-- == 0 || !nodes_[x].alive) return forbid(e, Forbidden::NoProgress, x, s);
+            ++work().nodeVisits;
             uint32_t p = prev(x);
             cutTriangle(p, x, s);
             unlink(x);
@@ -605,6 +648,7 @@ private:
         uint32_t y = c2;
         while (y != right2 && turn(s2, y, next(y)) > 0) {
             if (guard-- == 0 || !nodes_[y].alive) return forbid(e, Forbidden::NoProgress, y, s);
+            ++work().nodeVisits;
             uint32_t n = next(y);
             cutTriangle(s2, y, n);
             unlink(y);
@@ -618,7 +662,8 @@ private:
             right_ = s;
         }
         water_ = s;
-        nodes_[s].wet = nodes_[s2].wet = true;
+        makeWet(s);
+        makeWet(s2);
         emit(e);
     }
 
@@ -638,36 +683,71 @@ private:
         // `drops` counts sags the water fell from whose landing is not settled yet: a sag
         // followed by a ceiling roofs the basin below it (the next bottom is its floor); a
         // sag followed by a top is matched by the bottom of the pocket beyond that top.
-        uint32_t drops = 0;
+        // Stretches already walked are crossed in one step (see Stretch), so walks from the
+        // tops along a spiral arm do not retrace the arm.
+        int64_t drops = 0;
+        const int dir = goPrev ? 0 : 1;
+        size_t run = stretches_.size();  // first position of the stretch this walk records
         for (uint32_t guard = 0; guard <= partNodes_; ++guard, x = goPrev ? prev(x) : next(x)) {
+            ++work().nodeVisits;
             Node& nd = nodes_[x];
             uint32_t g = goPrev ? nd.gorgeRight : nd.gorgeLeft;
             if (g != kNil && !gorges_[g].done && !gorges_[g].held) {
+                closeStretch(run);
                 e.gorgePopped = g;
                 resumeGorge(g);
                 return emit(e);
             }
             if (nd.gorgeLeft != kNil || nd.gorgeRight != kNil || x == t) break;
-            // Only extremes matter to the walk; the orientation test is spent on them alone.
+            // Only extremes matter to the walk; the orientation test is spent on them alone
+            // (and on every maximum of a stretch being recorded: a later walk may need it).
+            const uint32_t at = recordedAt(dir, x);
+            const bool fresh = at == kNil && !nd.wet;
             bool minimum = isMinimum(x);
             bool maximum = !minimum && lower(prev(x), x) && lower(next(x), x);
-            if (!minimum && !(maximum && drops > 0)) continue;
-            bool convexHere = turn(prev(x), x, next(x)) > 0;
-            if (minimum) {
-                if (!convexHere) {
-                    ++drops;
-                } else if (drops > 0) {
-                    --drops;
-                } else if (!nd.wet) {
-                    mark(e, Test::WalkLanded, true);
-                    e.bottom = nd.v;
-                    startGorge(x);
-                    return emit(e);
+            bool convexHere = (minimum || (maximum && (drops > 0 || fresh))) && turn(prev(x), x, next(x)) > 0;
+            bool sag = minimum && !convexHere, sensitive = convexHere;  // ceilings and bottoms
+            if (fresh) {
+                int32_t before = stretches_.size() > run ? stretches_.back().drops + stretches_.back().delta : 0;
+                recordAt(dir, x, uint32_t(stretches_.size()));
+                int8_t delta = sag ? 1 : sensitive ? -1 : 0;
+                stretches_.push_back({x, uint32_t(stretchRecs_.size()), before, delta, sensitive});
+            } else {
+                closeStretch(run);
+            }
+            if (sag) {
+                ++drops;
+            } else if (sensitive && drops > 0) {
+                --drops;  // a bottom beyond a top, or a ceiling roofing the basin under the last sag
+            } else if (minimum && sensitive && !nd.wet) {
+                closeStretch(run);
+                mark(e, Test::WalkLanded, true);
+                e.bottom = nd.v;
+                startGorge(x);
+                return emit(e);
+            }
+            if (!fresh && at != kNil && !nd.wet) {
+                // Cross the stretch beyond x in one step, up to the node before the first one
+                // that got wet since (its links may have changed) and before the first bottom
+                // or ceiling the count would reach at zero (it may be the landing): none of
+                // the nodes crossed can end the walk, and the count changes by their sum. The
+                // stretch's tree finds whichever comes first (a wet node holds INT32_MIN).
+                const StretchRec& rec = stretchRecs_[stretches_[at].stretch];
+                const uint32_t a = at + 1;
+                if (a < rec.end) {
+                    uint32_t f = firstAtMost(rec, a - rec.start, int64_t(stretches_[a].drops) - drops) + rec.start;
+                    // One past the last node crossed: a wet node (or the stretch's end) is not
+                    // reached, nor the node before it; a zero-count node is reached live.
+                    uint32_t b = f == rec.end || nodes_[stretches_[f].node].wet ? f - 1 : f;
+                    if (b > a && guard + (b - a) <= partNodes_) {
+                        drops += stretches_[b].drops - stretches_[a].drops;
+                        guard += b - a;
+                        x = stretches_[b - 1].node;
+                    }
                 }
-            } else if (convexHere) {
-                --drops;  // a ceiling roofs the basin under the last sag
             }
         }
+        closeStretch(run);
         // The walk cannot tell where a drip from a sag lands when the basin below it is
         // bounded by another part of the boundary (a spiral, say). Any gorge not flooded
         // yet will do: flooding it reaches this top from its far side in time.
@@ -707,6 +787,7 @@ private:
         for (uint32_t c = left_; c != right_;) {
             uint32_t n = next(c);
             if (guard-- == 0) return forbid(e, Forbidden::FillOpen, apex, c);  // Right unreachable
+            ++work().nodeVisits;
             if (turn(apex, c, n) <= 0) return forbid(e, Forbidden::BadTriangle, c, n);
             c = n;
         }
@@ -750,6 +831,7 @@ private:
             ++bottomScans_;
             uint32_t best = kNil;
             size_t kept = 0;
+            work().nodeVisits += bottoms_.size();
             for (uint32_t b : bottoms_) {
                 if (nodes_[b].wet || !nodes_[b].alive) continue;
                 bottoms_[kept++] = b;
@@ -760,6 +842,7 @@ private:
             return best;
         }
         for (; bottomCursor_ < bottoms_.size(); ++bottomCursor_) {
+            ++work().nodeVisits;
             uint32_t b = bottoms_[bottomCursor_];
             if (!nodes_[b].wet && nodes_[b].alive) return b;
         }
@@ -768,7 +851,66 @@ private:
 
     void startGorge(uint32_t bottom) {
         left_ = right_ = water_ = bottom;
-        nodes_[bottom].wet = true;
+        makeWet(bottom);
+    }
+
+    // A node becomes wet: a stretch holding it can no longer be crossed past it, so its leaf
+    // and their ancestors in the stretch's tree get INT32_MIN, below any count.
+    void makeWet(uint32_t n) {
+        nodes_[n].wet = true;
+        for (int dir = 0; dir < 2; ++dir) {
+            uint32_t at = recordedAt(dir, n);
+            if (at == kNil) continue;
+            const StretchRec& rec = stretchRecs_[stretches_[at].stretch];
+            int32_t* t = stretchTree_.data() + rec.tree;
+            for (size_t i = rec.leaves + at - rec.start; i >= 1 && t[i] != INT32_MIN; i >>= 1) {
+                t[i] = INT32_MIN;
+                ++work().nodeVisits;
+            }
+        }
+    }
+    // The position of node n in the stretches walked in direction dir; kNil if not recorded.
+    uint32_t recordedAt(int dir, uint32_t n) const {
+        const std::vector<uint32_t>& v = stretchAt_[dir];
+        return n - partFirstNode_ < v.size() ? v[n - partFirstNode_] : kNil;
+    }
+    void recordAt(int dir, uint32_t n, uint32_t position) {
+        std::vector<uint32_t>& v = stretchAt_[dir];
+        if (n - partFirstNode_ >= v.size()) v.resize(nodes_.size() - partFirstNode_, kNil);
+        v[n - partFirstNode_] = position;
+    }
+    // Ends the stretch a walk is recording (positions from `run` on) and builds its tree: a
+    // complete binary tree over the positions holding, for bottoms and ceilings, the count's
+    // change before them (INT32_MAX elsewhere), each inner node the least of its two.
+    void closeStretch(size_t& run) {
+        const uint32_t start = uint32_t(run), end = uint32_t(stretches_.size());
+        run = end;
+        if (start == end) return;
+        uint32_t leaves = 1;
+        while (leaves < end - start) leaves <<= 1;
+        const uint32_t tree = uint32_t(stretchTree_.size());
+        stretchTree_.resize(tree + 2 * size_t(leaves), INT32_MAX);
+        int32_t* t = stretchTree_.data() + tree;
+        for (uint32_t k = start; k < end; ++k)
+            if (stretches_[k].sensitive) t[leaves + k - start] = stretches_[k].drops;
+        for (uint32_t i = leaves; i-- > 1;) t[i] = std::min(t[2 * i], t[2 * i + 1]);
+        work().nodeVisits += 2 * size_t(leaves);
+        stretchRecs_.push_back({start, end, tree, leaves});
+    }
+    // The first position from `from` on (relative to the stretch's start) whose tree value is
+    // at most `limit`; the stretch's length if none. O(log length).
+    uint32_t firstAtMost(const StretchRec& rec, uint32_t from, int64_t limit) const {
+        const int32_t* t = stretchTree_.data() + rec.tree;
+        for (size_t i = rec.leaves + from;;) {
+            ++work().nodeVisits;
+            if (t[i] <= limit) {
+                while (i < rec.leaves) i = t[2 * i] <= limit ? 2 * i : 2 * i + 1;
+                return uint32_t(i - rec.leaves);
+            }
+            for (; i & 1; i >>= 1)
+                if (i == 1) return rec.end - rec.start;  // right edge of the tree: none
+            ++i;
+        }
     }
 
     uint32_t pushGorge(uint32_t l, uint32_t r, uint32_t w, bool held, Index top) {
@@ -801,14 +943,22 @@ private:
     std::vector<uint32_t> sagBucket_;  // first rank of each height bucket (heightBucket())
     double bucketY0_ = 0, bucketScale_ = 0;
     std::vector<HeightKey> bottomKeys_;  // scratch for sorting the bottoms
-    std::vector<uint32_t> sagsBelow_;  // per node: sags below it, kNil until asked
+    std::vector<uint32_t> sagsBelow_;  // per node of the part (from partFirstNode_): sags below it, kNil until asked
     std::vector<uint32_t> bottoms_;  // bottoms; lowest first once sorted (lowestDryBottom())
     size_t bottomCursor_ = 0;
     uint32_t bottomScans_ = 0;
     std::vector<GorgeRec> gorges_;
+    // Spill walks remembered: the dry nodes a walk passed, in its direction (prev-wards or
+    // next-wards), with the drop count's change along them. Links between dry nodes do not
+    // change (every edit of the loops touches a wet node), so a later walk reaching such a
+    // stretch crosses it in one step up to its first node that got wet since.
+    std::vector<Stretch> stretches_;
+    std::vector<StretchRec> stretchRecs_;
+    std::vector<int32_t> stretchTree_;
+    std::vector<uint32_t> stretchAt_[2];  // per node of the part, per direction: its position
     std::vector<uint32_t> todo_;  // pending gorges (ids), last pushed first
     uint32_t left_ = kNil, right_ = kNil, water_ = kNil;
-    uint32_t part_ = 0, partNodes_ = 0, cut_ = 0, step_ = 0;
+    uint32_t part_ = 0, partNodes_ = 0, partFirstNode_ = 0, cut_ = 0, step_ = 0;
     uint64_t budget_ = 0;
     FloodResult result_;
 };

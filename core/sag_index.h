@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "polygon.h"
+#include "work.h"
 
 namespace flood {
 
@@ -30,6 +31,7 @@ public:
     // pointOfRank[r]: the sag of height rank r (ranks: sags sorted by height).
     void build(const std::vector<Point>& pointOfRank);
     size_t size() const { return used_.size(); }
+    bool used(uint32_t rank) const { return used_[rank]; }
     void markUsed(uint32_t rank);
 
     // The lowest unused rank in (lo, hi) within `region` for which inside(rank) holds;
@@ -95,9 +97,11 @@ int64_t SagIndex::lowest(int64_t lo, int64_t hi, const Region& region, Inside&& 
     int64_t best = hi;  // candidates must beat this
     if (hi - lo - 1 <= int64_t(kScanLimit)) {
         // A thin band holds few sags: scan them in rank order, as the paper does (§4).
-        for (int64_t r = std::max<int64_t>(lo + 1, 0); r < hi && r < int64_t(used_.size()); ++r)
+        for (int64_t r = std::max<int64_t>(lo + 1, 0); r < hi && r < int64_t(used_.size()); ++r) {
+            ++work().nodeVisits;
             if (!used_[size_t(r)] && mayContain(region, frame, byRank_[size_t(r)]) && inside(uint32_t(r)))
                 return r;
+        }
         return -1;
     }
     stack_.clear();
@@ -105,6 +109,7 @@ int64_t SagIndex::lowest(int64_t lo, int64_t hi, const Region& region, Inside&& 
     while (!stack_.empty()) {
         uint32_t id = stack_.back();
         stack_.pop_back();
+        ++work().nodeVisits;  // a box of the tree
         const Node& n = nodes_[id];
         if (n.unused == 0 || int64_t(n.rankMax) <= lo || int64_t(n.rankMin) >= best ||
             outside(n, region, frame))
@@ -113,6 +118,7 @@ int64_t SagIndex::lowest(int64_t lo, int64_t hi, const Region& region, Inside&& 
             uint32_t end = id + 1 < nodes_.size() ? nodes_[id + 1].begin : uint32_t(items_.size());
             for (uint32_t i = n.begin; i < end; ++i) {
                 uint32_t r = items_[i].rank;
+                ++work().nodeVisits;
                 if (int64_t(r) <= lo || int64_t(r) >= best || used_[r]) continue;
                 if (!mayContain(region, frame, items_[i].p)) continue;
                 if (inside(r)) best = r;

@@ -8,7 +8,8 @@ namespace flood {
 
 struct WorkCounters {
     uint64_t orientCalls = 0;     // exact orientation tests (every predicate rests on them)
-    uint64_t nodeVisits = 0;      // loop nodes the machine walks (spills, fills, merges)
+    uint64_t nodeVisits = 0;      // nodes the machine touches: loop nodes its set-up, steps, walks,
+                                  // fills, spills and merges visit; sag-tree boxes and sags searched
     uint64_t sagTests = 0;        // sags the sag search tests with `inside`
     uint64_t validatorSteps = 0;  // pair tests and wedge comparisons of validate()
 };

@@ -1,0 +1,128 @@
+// Growth held to linear without clocks (issue 10, issue 13): the work counters of core/work.h
+// (node visits, sag tests, orientation tests) are deterministic, so a family whose work per
+// vertex grows with N is super-linear whatever the machine it runs on.
+//
+// Each case runs validate() + triangulate() at N = 10^3, 10^4, 10^5 and asserts that the work
+// per vertex at the larger sizes stays within a factor (kFactor) of the 10^3 figure. Linear work
+// would give a constant; the factor allows for what is legitimately O(log n) per vertex (the
+// validator's sweep and sorts, the sag tree's descent), and for generators whose shape changes
+// with N. Under the sanitizers FLOOD_GROWTH_MAX_N caps N (scripts/sanitize.sh).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "checker.h"
+#include "flood.h"
+#include "generate.h"
+#include "io.h"
+#include "work.h"
+
+namespace flood {
+namespace {
+
+size_t maxN() {
+    const char* cap = std::getenv("FLOOD_GROWTH_MAX_N");
+    return cap && *cap ? size_t(std::strtoull(cap, nullptr, 10)) : size_t(100000);
+}
+
+uint64_t totalWork() {
+    const WorkCounters& w = work();
+    return w.nodeVisits + w.sagTests + w.orientCalls;
+}
+
+// Work per vertex of validating and flooding p (generation and the exact check not counted).
+double workPerVertex(Polygon p, const std::string& name) {
+    work() = {};
+    Diagnostic d = validate(p, name);
+    EXPECT_TRUE(d.ok()) << name << ": " << d.message;
+    FloodResult r = triangulate(p);
+    EXPECT_TRUE(r.diagnostic.ok()) << name << ": " << r.diagnostic.message;
+    const double perVertex = double(totalWork()) / double(p.vertices.size());
+    CheckResult c = checkTriangulation(p, r.triangles);  // not counted: the test's own proof
+    EXPECT_TRUE(c.ok) << name << ": " << c.reason;
+    return perVertex;
+}
+
+// Runs make(size) for size = base, 10 base, 100 base (up to maxN()) and checks the growth.
+void expectLinear(const std::string& name, const std::function<Polygon(size_t)>& make, double factor,
+                  size_t base = 1000) {
+    double first = 0;
+    for (size_t size = base; size <= 100 * base && size <= maxN(); size *= 10) {
+        double w = workPerVertex(make(size), name + " at " + std::to_string(size));
+        if (size == base) first = w;
+        EXPECT_LE(w, factor * first) << name << " at size " << size << ": " << w
+                                     << " work units per vertex, " << first << " at size " << base;
+    }
+}
+
+// Factor for every case below: what linear work per vertex can grow by from 10^3 to 10^5. The
+// validator's sweep is a balanced tree (~log2 n orientation tests per event: ~10 at 10^3, ~17
+// at 10^5), and the sag tree's descent is O(log S); with the constant per-vertex work of the
+// machine around them, the families measured here grow by 1.0-1.5x. 2x leaves room for the
+// generators' shape drifting with N, while a super-linear family grows by ~10x a decade
+// (ortho-spiral and islands did before their fixes: 1626 and 7635 units per vertex at 10^5
+// against 65 and 112 at 10^3).
+constexpr double kFactor = 2.0;
+
+// Families whose sag search is still super-linear (issue 13, open): their gorges are slivers,
+// and a sliver crosses O(sqrt S) boxes of the sag tree (star: 0.9, 12, 31 tree boxes per
+// vertex at 10^3, 10^4, 10^5; circle-jagged: 3.7, 19, 45). They are run (validated, flooded,
+// checked exact-valid) but left out of the assertion until the search is linear.
+bool sagSearchStillSuperLinear(const std::string& family) {
+    return family == "star" || family == "circle-smooth" || family == "circle-jagged" || family == "collinear";
+}
+
+TEST(Growth, GeneratedFamiliesWorkPerVertexIsLinear) {
+    for (const std::string& family : familyNames()) {
+        auto make = [&](size_t n) { return generate(family, 7, n); };
+        if (sagSearchStillSuperLinear(family)) {
+            for (size_t n = 1000; n <= 100000 && n <= maxN(); n *= 10) workPerVertex(make(n), family);
+            continue;
+        }
+        expectLinear(family, make, kFactor);
+    }
+}
+
+// k triangular holes through one point, in disjoint wedges around it: the loops merge there
+// into one, k passages at a single point (issue 10: O(k^2) merge, 104 s at k = 64,000).
+// Integer coordinates on a circle of radius 2^24: wedges stay disjoint after rounding.
+Polygon ringsThroughOnePoint(size_t k) {
+    const double R = 16777216.0;
+    const double pi = 3.14159265358979323846;
+    Polygon p;
+    p.addRing({{-2 * R, -2 * R}, {2 * R, -2 * R}, {2 * R, 2 * R}, {-2 * R, 2 * R}}, true);
+    auto at = [&](size_t j) {
+        double a = 2 * pi * double(j) / double(2 * k);
+        return Point{std::round(R * std::cos(a)), std::round(R * std::sin(a))};
+    };
+    for (size_t i = 0; i < k; ++i) p.addRing({{0, 0}, at(2 * i), at(2 * i + 1)}, false);
+    return p;
+}
+
+// k = 10^2, 10^3, 10^4 rings. The merge at the point sorts its 2k passages: O(k log k).
+TEST(Growth, RingsThroughOnePointAreLinear) {
+    expectLinear("rings through one point", [](size_t n) { return ringsThroughOnePoint(n / 3); }, kFactor, 300);
+}
+
+// k separate unit squares in a grid (a MultiPolygon of k parts, one sag-free part each):
+// per-part work must be proportional to the part (issue 10: O(k n) in indexSags).
+Polygon gridOfSquares(size_t k) {
+    const size_t side = size_t(std::ceil(std::sqrt(double(k))));
+    Polygon p;
+    for (size_t i = 0; i < k; ++i) {
+        double x = 2.0 * double(i % side), y = 2.0 * double(i / side);
+        p.addRing({{x, y}, {x + 1, y}, {x + 1, y + 1}, {x, y + 1}}, true);
+    }
+    return p;
+}
+
+TEST(Growth, ManySmallPartsAreLinear) {
+    expectLinear("grid of squares", [](size_t n) { return gridOfSquares(n / 4); }, kFactor);
+}
+
+}  // namespace
+}  // namespace flood

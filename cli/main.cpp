@@ -201,14 +201,17 @@ double medianNs(int repeat, F&& run) {
 // Writes a generated polygon: ring array (one part) or GeoJSON MultiPolygon, streamed so a
 // 10^7-vertex file needs no second copy in memory.
 int cmdGenerate(const std::string& family, size_t size, uint64_t seed, const std::string& out) {
-    auto names = familyNames();
-    if (std::find(names.begin(), names.end(), family) == names.end()) {
+    auto names = familyNames(), invalid = invalidFamilyNames();
+    bool isInvalid = std::find(invalid.begin(), invalid.end(), family) != invalid.end();
+    if (!isInvalid && std::find(names.begin(), names.end(), family) == names.end()) {
         std::cerr << "error: unknown family \"" << family << "\"; families:";
         for (const std::string& n : names) std::cerr << " " << n;
+        std::cerr << "; invalid families (validate() refuses them):";
+        for (const std::string& n : invalid) std::cerr << " " << n;
         std::cerr << "\n";
         return code(Status::Usage);
     }
-    Polygon p = generate(family, seed, size);
+    Polygon p = isInvalid ? generateInvalid(family, seed, size) : generate(family, seed, size);
     if (out == "-") {
         writePolygonJson(std::cout, p);
         return code(std::cout.flush() ? Status::Ok : Status::Malformed);
@@ -225,14 +228,20 @@ int cmdGenerate(const std::string& family, size_t size, uint64_t seed, const std
 
 // Shrinks a failing polygon (validation skipped; see core/shrink.h) and writes the result.
 int cmdShrink(const std::string& in, const std::string& out, const std::string& up,
-              unsigned timeout) {
+              unsigned timeout, bool slipping) {
     Polygon polygon;
     Status s = prepare(in, polygon, false);
     if (s != Status::Ok) return code(s);
     ShrinkOptions o;
     o.flood = makeOptions(up);
     o.timeoutSeconds = timeout;
+    o.slipping = slipping;
     ShrinkResult r = shrink(polygon, o);
+    if (r.failure.kind == Failure::Kind::None && slipping) {
+        std::cerr << "error: nothing to shrink: " << in
+                  << " is valid, or the unvalidated verification catches it\n";
+        return code(Status::Usage);
+    }
     if (r.failure.kind == Failure::Kind::None) {
         std::cerr << "error: nothing to shrink: " << in
                   << " triangulates (validation skipped) and the exact checker accepts it\n";
@@ -295,7 +304,7 @@ int main(int argc, char** argv) {
     CLI::App app{"flood: triangulate polygons with holes by flooding (Ronfard & Rossignac 1994)"};
     app.require_subcommand(1);
     std::string in, out = "-", format, up = "+y";
-    bool narrate = false, noValidate = false;
+    bool narrate = false, noValidate = false, slipping = false;
     std::string family;
     size_t size = 0;
     uint64_t seed = 1;
@@ -339,7 +348,7 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 1000000));
     addUp(bench, up);
 
-    auto* gen = app.add_subcommand("generate", "Write a generated valid polygon (core/generate.h)");
+    auto* gen = app.add_subcommand("generate", "Write a generated polygon (core/generate.h): a valid family, or an invalid one");
     gen->add_option("FAMILY", family, "Polygon family (see the error message for the list)")->required();
     gen->add_option("SIZE", size, "Approximate vertex count")->required()->check(CLI::Range(size_t(3), size_t(1) << 31));
     gen->add_option("-o,--output", out, "Output file (- for stdout, the default)");
@@ -350,6 +359,9 @@ int main(int argc, char** argv) {
     shr->add_option("-o,--output", out, "Output file for the minimal polygon (- for stdout, the default)");
     shr->add_option("--timeout", timeout, "Seconds before a run counts as a hang (default 10)")
         ->check(CLI::Range(1u, 3600u));
+    shr->add_flag("--slipping", slipping,
+                  "Shrink an invalid polygon that the unvalidated verification (verify "
+                  "--no-validate) passes, keeping it so (docs/ALGORITHM.md §6)");
     addUp(shr, up);
 
     try {
@@ -367,7 +379,7 @@ int main(int argc, char** argv) {
         if (trace->parsed()) return cmdTrace(in, out, up, !noValidate);
         if (tr->parsed()) return cmdTranscript(in, narrate, up, !noValidate);
         if (gen->parsed()) return cmdGenerate(family, size, seed, out);
-        if (shr->parsed()) return cmdShrink(in, out, up, timeout);
+        if (shr->parsed()) return cmdShrink(in, out, up, timeout, slipping);
         if (ver->parsed()) return cmdVerify(in, up, !noValidate);
         if (bench->parsed()) return cmdBench(in, repeat, up);
     } catch (const std::exception& e) {

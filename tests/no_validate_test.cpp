@@ -46,3 +46,19 @@ TEST(NoValidate, OverlappingPartsAreRefused) {
         EXPECT_NE(r.code, 0) << cmd << "\n" << r.out;
     }
 }
+
+// The conjecture's tools through the command line: an invalid family, and shrinking a slip.
+TEST(NoValidate, GenerateInvalidAndShrinkASlip) {
+    const std::string g = ::testing::TempDir() + "touch-cycle.json", s = ::testing::TempDir() + "slip.json";
+    RunResult r = runCli("generate touch-cycle 40 --seed 2 -o " + g);
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_EQ(runCli("verify " + g).code, 4);
+    EXPECT_EQ(runCli("verify --no-validate " + g).code, 0);
+    RunResult k = runCli("shrink --slipping " + g + " -o " + s);
+    EXPECT_EQ(k.code, 0) << k.out;
+    EXPECT_NE(k.out.find("invalid, yet the unvalidated verification passes it"), std::string::npos) << k.out;
+    EXPECT_EQ(runCli("verify --no-validate " + s).code, 0);
+    RunResult n = runCli("shrink --slipping " + sourcePath("polygons/invalid/self-intersection.json") + " -o " + s);
+    EXPECT_EQ(n.code, 2) << n.out;
+    EXPECT_NE(n.out.find("the unvalidated verification catches it"), std::string::npos) << n.out;
+}

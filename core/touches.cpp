@@ -22,10 +22,11 @@
 namespace flood {
 namespace {
 
-// Default cap: above every generated family up to 10^6 vertices (at most 45 steps per vertex
-// at 10^5, but the long-edged star and circle-jagged, about sqrt(m) per vertex: 290 and 360),
-// a few seconds of work at most per 10^6 vertices.
-uint64_t defaultCap(size_t n) { return (uint64_t(1) << 24) + 1024 * uint64_t(n); }
+// Default cap: a few seconds of work at most per 10^6 vertices. Above every generated family
+// at 10^5 vertices (at most 45 steps per vertex, but 290 and 360 for the long-edged star and
+// circle-jagged, about sqrt(m) per vertex, under the 2^24 constant), and above every family
+// with T-junctions at 10^6 (t-junctions: about 50).
+uint64_t defaultCap(size_t n) { return (uint64_t(1) << 24) + 256 * uint64_t(n); }
 
 struct Spot {  // a distinct point of the part, with the vertices a split there may name
     Point p;

@@ -179,3 +179,12 @@ TEST(Touches, TheCapEndsTheSearch) {
     EXPECT_TRUE(p.splits.empty());
     EXPECT_LE(t.steps, 100u + 2 * p.vertices.size());  // stops within one pass of the cap
 }
+
+// No generated family needs more than the default cap at 10^4 vertices (nor at 10^5, see
+// touches.cpp; too slow for the suite).
+TEST(Touches, EveryFamilyCompletesUnderTheDefaultCap) {
+    for (const std::string& family : familyNames()) {
+        Polygon p = generate(family, 1, 10000);
+        EXPECT_TRUE(findTouches(p).complete) << family;
+    }
+}

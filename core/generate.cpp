@@ -768,6 +768,23 @@ Polygon touchCycle(Rng& rng, size_t size) {
     return polygonOf({rings});
 }
 
+// Random rings on a small integer lattice (crossings, overlaps, touches of every kind, by
+// chance), drawn again until validate() refuses them: 1 to 3 parts of 1 to 3 rings, 3 to 7
+// vertices each, on a lattice of side 8 (larger sizes: more parts, on a larger lattice).
+Polygon randomLattice(Rng& rng, size_t size) {
+    const int side = 8 + int(std::sqrt(double(size))), extra = int(size / 30);
+    for (;;) {
+        std::vector<Rings> parts(size_t(rng.range(1, 3 + extra)));
+        for (Rings& rings : parts) {
+            rings.resize(size_t(rng.range(1, 3)));
+            for (Pts& r : rings)
+                for (int v = 0, n = rng.range(3, 7); v < n; ++v) r.push_back(pt(rng.range(0, side), rng.range(0, side)));
+        }
+        Polygon p = polygonOf(parts);
+        if (!validate(p, "random-lattice").ok()) return p;
+    }
+}
+
 const Family kInvalidFamilies[] = {
     {"bowtie-star", "star with two crossing edges (a bow-tie) out between two vertices", bowtieStar},
     {"self-touching", "star pinched at its centre: the ring passes twice through (0, 0)", selfTouchingStar},
@@ -780,6 +797,7 @@ const Family kInvalidFamilies[] = {
     {"collinear-overlap", "grid-holes with a hole whose edge overlaps the outer ring's", collinearOverlap},
     {"parts-crossing", "islands with a shifted copy of an island crossing it", partsCrossing},
     {"part-inside-part", "islands with a small part on an island's land", partInsidePart},
+    {"random-lattice", "random rings on a small integer lattice, drawn until validate() refuses them", randomLattice},
     {"touch-cycle", "a row of holes touching tip to tip from side to side: the interior cut in two", touchCycle},
 };
 

@@ -29,7 +29,8 @@ Polygon transform(const Polygon& polygon, int rotation90, bool mirror, bool reve
 // Invalid families, for measuring what the verification catches (docs/ALGORITHM.md §6): each
 // a valid family with one seeded defect — crossing edges, a ring touching itself, a spike, a
 // vertex on its own edge, holes crossing, overlapping, nested or outside, collinear overlap,
-// parts crossing or nested, touches cutting the interior in two — that validate() refuses. Same (seed, size) contract as generate().
+// parts crossing or nested, touches cutting the interior in two, random lattice rings — that
+// validate() refuses. Same (seed, size) contract as generate().
 std::vector<std::string> invalidFamilyNames();
 std::string invalidFamilyDescription(const std::string& family);
 Polygon generateInvalid(const std::string& family, uint64_t seed, size_t size);

@@ -71,6 +71,13 @@ std::vector<Index> innermostHoles(const Polygon& P) {
         }
     std::vector<std::vector<Index>> containing(parts);
     if (holes.empty() || parts < 2) return std::vector<Index>(parts, kNone);
+    // A ring with a non-finite coordinate nests nowhere (the floods refuse it).
+    auto finite = [&](Index r) {
+        for (Index v = P.rings[r].first; v < P.rings[r].first + P.rings[r].count; ++v)
+            if (!std::isfinite(P.vertices[v].x) || !std::isfinite(P.vertices[v].y)) return false;
+        return true;
+    };
+    holes.erase(std::remove_if(holes.begin(), holes.end(), [&](Index h) { return !finite(h); }), holes.end());
     std::vector<Box> holeBox(P.rings.size()), partBox(parts);
     for (Index h : holes) holeBox[h] = ringBox(P, P.rings[h]);
     for (Index k = 0; k < parts; ++k) partBox[k] = ringBox(P, P.rings[P.parts[k].firstRing]);
@@ -83,7 +90,7 @@ std::vector<Index> innermostHoles(const Polygon& P) {
     size_t nextHole = 0;
     for (Index k : order) {
         const Box& pb = partBox[k];
-        if (pb.empty()) continue;
+        if (pb.empty() || !finite(P.parts[k].firstRing)) continue;
         while (nextHole < holes.size() && holeBox[holes[nextHole]].x0 <= pb.x0) active.push_back(holes[nextHole++]);
         active.erase(std::remove_if(active.begin(), active.end(), [&](Index h) { return holeBox[h].x1 < pb.x0; }),
                      active.end());

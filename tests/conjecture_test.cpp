@@ -50,6 +50,14 @@ TEST(Conjecture, WhatCatchesEachKind) {
     EXPECT_EQ(unvalidated(generateInvalid("touch-cycle", 1, 300)).caught(), Caught::Nothing);
 }
 
+// Random invalid rings on a small lattice: every one is caught (docs/ALGORITHM.md §7).
+TEST(Conjecture, RandomLatticeInputsAreAllCaught) {
+    for (uint64_t seed = 1; seed <= 1000; ++seed) {
+        Polygon p = generateInvalid("random-lattice", seed, 20);
+        EXPECT_NE(unvalidated(p).caught(), Caught::Nothing) << "seed " << seed;
+    }
+}
+
 TEST(Conjecture, TheSlippingExampleSlips) {
     Polygon p = readPolygonFile(sourcePath("polygons/conjecture/touch-cycle.json")).polygon;
     EXPECT_FALSE(validate(p, "touch-cycle").ok());

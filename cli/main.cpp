@@ -24,6 +24,7 @@
 #include "output.h"
 #include "replay.h"
 #include "shrink.h"
+#include "touches.h"
 #include "trace_io.h"
 #include "transcript.h"
 #include "verify.h"
@@ -47,7 +48,8 @@ std::string grouped(size_t n) {
 
 // Reads and validates; on failure prints the diagnostic and returns its status.
 // With `check` false (--no-validate) validation is skipped, so the flood machine itself
-// diagnoses invalid input (docs/ERRORS.md, forbidden transitions).
+// diagnoses invalid input (docs/ERRORS.md, forbidden transitions); the T-junctions the machine
+// needs are then found by findTouches(), which is safe on invalid input.
 Status prepare(const std::string& path, Polygon& polygon, bool check = true) {
     ReadResult rr = readPolygonFile(path, maxInputBytes);
     for (const std::string& w : rr.warnings) std::cerr << "warning: " << w << "\n";
@@ -63,21 +65,30 @@ Status prepare(const std::string& path, Polygon& polygon, bool check = true) {
         std::cerr << "error: invalid polygon: " << d.message << "\n";
         return d.status;
     }
+    if (!check && !findTouches(rr.polygon).complete)
+        std::cerr << "warning: " << path << ": the search for T-junctions gave up (work cap): "
+                  << "the polygon is flooded without them\n";
     polygon = std::move(rr.polygon);
     return Status::Ok;
 }
 
-// Checks a finished run. Forbidden -> 5 (its explanation), checker rejects -> 6.
+// Checks a finished run. Forbidden -> 5 (its explanation), checker rejects -> 6. The exact
+// check runs with --no-validate too (`validated` false): there it is what catches invalid
+// input the machine cannot see, such as overlapping parts (flooded apart).
 Status judge(const Polygon& polygon, const std::vector<Triangle>& triangles,
-             const Diagnostic& run) {
+             const Diagnostic& run, bool validated = true) {
     if (!run.ok()) {
         std::cerr << "error: flooding stopped in a forbidden state: " << run.message << "\n";
         return run.status;
     }
     CheckResult c = checkTriangulation(polygon, triangles);
     if (!c.ok) {
-        std::cerr << "internal error: the exact checker rejects our triangulation: " << c.reason
-                  << "\n";
+        if (validated)
+            std::cerr << "internal error: the exact checker rejects our triangulation: " << c.reason << "\n";
+        else
+            std::cerr << "error: the exact checker rejects our triangulation: " << c.reason
+                      << " (validation was skipped; the check of the output caught it: the input "
+                         "is probably invalid, run without --no-validate to see why)\n";
         return Status::Internal;
     }
     return Status::Ok;
@@ -105,7 +116,7 @@ int cmdTriangulate(const std::string& in, const std::string& out, std::string fo
     Status s = prepare(in, polygon, check);
     if (s != Status::Ok) return code(s);
     FloodResult r = triangulate(polygon, nullptr, makeOptions(up));
-    s = judge(polygon, r.triangles, r.diagnostic);
+    s = judge(polygon, r.triangles, r.diagnostic, check);
     if (s != Status::Ok) return code(s);
     if (format.empty()) {
         auto ends = [&](const char* ext) {
@@ -126,7 +137,7 @@ int cmdTrace(const std::string& in, const std::string& out, const std::string& u
     Status s = prepare(in, polygon, check);
     if (s != Status::Ok) return code(s);
     Trace t = record(polygon, makeOptions(up));
-    s = judge(polygon, t.triangles, t.diagnostic);
+    s = judge(polygon, t.triangles, t.diagnostic, check);
     // A trace of a forbidden run is exactly what one wants to look at: write it anyway,
     // but still exit with the failure status.
     if (s == Status::Internal) t.diagnostic = {Status::Internal, "the exact checker rejects the result"};
@@ -141,7 +152,7 @@ int cmdTranscript(const std::string& in, bool narrate, const std::string& up, bo
     Status s = prepare(in, polygon, check);
     if (s != Status::Ok) return code(s);
     Trace t = record(polygon, makeOptions(up));
-    Status j = judge(polygon, t.triangles, t.diagnostic);
+    Status j = judge(polygon, t.triangles, t.diagnostic, check);
     if (j == Status::Internal) return code(j);  // never narrate a wrong triangulation
     if (!narrate) {
         std::cout << transcript(t.events) << "\n";
@@ -154,18 +165,19 @@ int cmdTranscript(const std::string& in, bool narrate, const std::string& up, bo
     return code(j);
 }
 
-int cmdVerify(const std::string& in, const std::string& up) {
+int cmdVerify(const std::string& in, const std::string& up, bool check) {
     Polygon polygon;
-    Status s = prepare(in, polygon);
+    Status s = prepare(in, polygon, check);
     if (s != Status::Ok) return code(s);
     // The paper's verification (§6): flood the polygon and its complement in a box, and check
-    // both exactly.
+    // both exactly. Unvalidated, it is the paper's open conjecture at work: say what caught it.
     Verification v = verify(polygon, makeOptions(up));
     std::cout << v.summary() << "\n";
     if (!v.ok()) {
-        std::cout << "verify: FAILED\n";
+        std::cout << "verify: FAILED (caught by: " << caughtName(v.caught()) << ")\n";
         return code(Status::VerifyFailed);
     }
+    if (!check) std::cout << "verify: validation skipped: caught by nothing\n";
     std::cout << "verify: ok: " << polygon.vertices.size() << " vertices in " << polygon.rings.size()
               << " rings\n";
     return code(Status::Ok);
@@ -188,14 +200,17 @@ double medianNs(int repeat, F&& run) {
 // Writes a generated polygon: ring array (one part) or GeoJSON MultiPolygon, streamed so a
 // 10^7-vertex file needs no second copy in memory.
 int cmdGenerate(const std::string& family, size_t size, uint64_t seed, const std::string& out) {
-    auto names = familyNames();
-    if (std::find(names.begin(), names.end(), family) == names.end()) {
+    auto names = familyNames(), invalid = invalidFamilyNames();
+    bool isInvalid = std::find(invalid.begin(), invalid.end(), family) != invalid.end();
+    if (!isInvalid && std::find(names.begin(), names.end(), family) == names.end()) {
         std::cerr << "error: unknown family \"" << family << "\"; families:";
         for (const std::string& n : names) std::cerr << " " << n;
+        std::cerr << "; invalid families (validate() refuses them):";
+        for (const std::string& n : invalid) std::cerr << " " << n;
         std::cerr << "\n";
         return code(Status::Usage);
     }
-    Polygon p = generate(family, seed, size);
+    Polygon p = isInvalid ? generateInvalid(family, seed, size) : generate(family, seed, size);
     Output o(out);
     writePolygonJson(o.stream(), p);
     return code(o.commit());
@@ -203,14 +218,20 @@ int cmdGenerate(const std::string& family, size_t size, uint64_t seed, const std
 
 // Shrinks a failing polygon (validation skipped; see core/shrink.h) and writes the result.
 int cmdShrink(const std::string& in, const std::string& out, const std::string& up,
-              unsigned timeout) {
+              unsigned timeout, bool slipping) {
     Polygon polygon;
     Status s = prepare(in, polygon, false);
     if (s != Status::Ok) return code(s);
     ShrinkOptions o;
     o.flood = makeOptions(up);
     o.timeoutSeconds = timeout;
+    o.slipping = slipping;
     ShrinkResult r = shrink(polygon, o);
+    if (r.failure.kind == Failure::Kind::None && slipping) {
+        std::cerr << "error: nothing to shrink: " << in
+                  << " is valid, or the unvalidated verification catches it\n";
+        return code(Status::Usage);
+    }
     if (r.failure.kind == Failure::Kind::None) {
         std::cerr << "error: nothing to shrink: " << in
                   << " triangulates (validation skipped) and the exact checker accepts it\n";
@@ -283,7 +304,7 @@ int run(int argc, char** argv) {
     CLI::App app{"flood: triangulate polygons with holes by flooding (Ronfard & Rossignac 1994)"};
     app.require_subcommand(1);
     std::string in, out = "-", format, up = "+y";
-    bool narrate = false, noValidate = false;
+    bool narrate = false, noValidate = false, slipping = false;
     std::string family;
     size_t size = 0;
     uint64_t seed = 1;
@@ -291,7 +312,8 @@ int run(int argc, char** argv) {
     auto addNoValidate = [&](CLI::App* cmd) {
         cmd->add_flag("--no-validate", noValidate,
                       "Skip validation: feed the polygon to the flood machine as is, so invalid "
-                      "input is diagnosed by the machine's forbidden transitions (docs/ERRORS.md)");
+                      "input is diagnosed by the machine's forbidden transitions (docs/ERRORS.md); "
+                      "the exact check of the output still runs");
     };
     int repeat = 5;
 
@@ -318,6 +340,7 @@ int run(int argc, char** argv) {
     auto* ver = app.add_subcommand("verify", "Triangulate and check the result exactly");
     ver->add_option("IN", in, "Input polygon (- for stdin)")->required();
     addUp(ver, up);
+    addNoValidate(ver);
 
     auto* bench = app.add_subcommand("bench", "Median in-process triangulation time");
     bench->add_option("IN", in, "Input polygon (- for stdin)")->required();
@@ -325,7 +348,7 @@ int run(int argc, char** argv) {
         ->check(CLI::Range(1, 1000000));
     addUp(bench, up);
 
-    auto* gen = app.add_subcommand("generate", "Write a generated valid polygon (core/generate.h)");
+    auto* gen = app.add_subcommand("generate", "Write a generated polygon (core/generate.h): a valid family, or an invalid one");
     gen->add_option("FAMILY", family, "Polygon family (see the error message for the list)")->required();
     gen->add_option("SIZE", size, "Approximate vertex count")->required()->check(CLI::Range(size_t(3), size_t(1) << 31));
     gen->add_option("-o,--output", out, "Output file (- for stdout, the default)");
@@ -336,6 +359,9 @@ int run(int argc, char** argv) {
     shr->add_option("-o,--output", out, "Output file for the minimal polygon (- for stdout, the default)");
     shr->add_option("--timeout", timeout, "Seconds before a run counts as a hang (default 10)")
         ->check(CLI::Range(1u, 3600u));
+    shr->add_flag("--slipping", slipping,
+                  "Shrink an invalid polygon that the unvalidated verification (verify "
+                  "--no-validate) passes, keeping it so (docs/ALGORITHM.md §6)");
     addUp(shr, up);
 
     for (CLI::App* cmd : {tri, trace, tr, ver, bench, shr})
@@ -384,8 +410,8 @@ int run(int argc, char** argv) {
         if (trace->parsed()) return cmdTrace(in, out, up, !noValidate);
         if (tr->parsed()) return cmdTranscript(in, narrate, up, !noValidate);
         if (gen->parsed()) return cmdGenerate(family, size, seed, out);
-        if (shr->parsed()) return cmdShrink(in, out, up, timeout);
-        if (ver->parsed()) return cmdVerify(in, up);
+        if (shr->parsed()) return cmdShrink(in, out, up, timeout, slipping);
+        if (ver->parsed()) return cmdVerify(in, up, !noValidate);
         if (bench->parsed()) return cmdBench(in, repeat, up);
     } catch (const std::exception& e) {
         std::cerr << "internal error: " << e.what() << "\n";

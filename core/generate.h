@@ -26,4 +26,13 @@ Polygon generate(const std::string& family, uint64_t seed, size_t size);
 // then reverse every ring's orientation, then start every ring `shift` vertices later.
 Polygon transform(const Polygon& polygon, int rotation90, bool mirror, bool reverse, size_t shift);
 
+// Invalid families, for measuring what the verification catches (docs/ALGORITHM.md §6): each
+// a valid family with one seeded defect — crossing edges, a ring touching itself, a spike, a
+// vertex on its own edge, holes crossing, overlapping, nested or outside, collinear overlap,
+// parts crossing or nested, touches cutting the interior in two, random lattice rings — that
+// validate() refuses. Same (seed, size) contract as generate().
+std::vector<std::string> invalidFamilyNames();
+std::string invalidFamilyDescription(const std::string& family);
+Polygon generateInvalid(const std::string& family, uint64_t seed, size_t size);
+
 }  // namespace flood

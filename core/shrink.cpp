@@ -15,6 +15,8 @@
 
 #include "checker.h"
 #include "io.h"
+#include "touches.h"
+#include "verify.h"
 
 namespace flood {
 
@@ -25,6 +27,7 @@ const char* failureKindName(Failure::Kind k) {
         case Failure::Kind::CheckerRejects: return "exact checker rejects the triangulation";
         case Failure::Kind::Crash: return "crash";
         case Failure::Kind::Hang: return "hang";
+        case Failure::Kind::Slips: return "invalid, yet the unvalidated verification passes it";
     }
     return "?";
 }
@@ -33,7 +36,22 @@ namespace {
 
 // [SECTION] classification ----------------------------------------------------------------
 
+// Slipping mode: the candidate is invalid and verify() on the unvalidated path passes it.
+Failure classifySlip(const Polygon& polygon, const ShrinkOptions& o) {
+    Polygon p = polygon;
+    Failure f;
+    Diagnostic d = validate(p, "candidate");
+    if (d.ok()) return f;
+    p.splits.clear();
+    findTouches(p);
+    if (!verify(p, o.flood).ok()) return f;
+    f.kind = Failure::Kind::Slips;
+    f.message = d.message;
+    return f;
+}
+
 Failure classifyHere(const Polygon& polygon, const ShrinkOptions& o) {
+    if (o.slipping) return classifySlip(polygon, o);
     FloodResult r = triangulate(polygon, nullptr, o.flood);
     Failure f;
     if (!r.diagnostic.ok()) {
@@ -51,9 +69,9 @@ Failure classifyHere(const Polygon& polygon, const ShrinkOptions& o) {
     return f;
 }
 
-// Child exit codes: 0 ok, 100 + reason forbidden, 120 checker rejects. Anything else,
+// Child exit codes: 0 ok, 100 + reason forbidden, 120 checker rejects, 121 slips. Anything else,
 // including a sanitizer's exit code 1 and a signal, is a crash; SIGALRM is a hang.
-constexpr int kForbiddenBase = 100, kCheckerCode = 120;
+constexpr int kForbiddenBase = 100, kCheckerCode = 120, kSlipsCode = 121;
 
 Failure classifyInChild(const Polygon& polygon, const ShrinkOptions& o) {
     pid_t pid = fork();
@@ -63,6 +81,7 @@ Failure classifyInChild(const Polygon& polygon, const ShrinkOptions& o) {
         Failure f = classifyHere(polygon, o);
         int code = f.kind == Failure::Kind::Forbidden ? kForbiddenBase + int(f.reason)
                    : f.kind == Failure::Kind::CheckerRejects ? kCheckerCode
+                   : f.kind == Failure::Kind::Slips          ? kSlipsCode
                                                              : 0;
         _exit(code);
     }
@@ -83,6 +102,8 @@ Failure classifyInChild(const Polygon& polygon, const ShrinkOptions& o) {
     if (code == 0) return f;
     if (code == kCheckerCode) {
         f.kind = Failure::Kind::CheckerRejects;
+    } else if (code == kSlipsCode) {
+        f.kind = Failure::Kind::Slips;
     } else if (code > kForbiddenBase && code < kForbiddenBase + int(Forbidden::Count)) {
         f.kind = Failure::Kind::Forbidden;
         f.reason = Forbidden(code - kForbiddenBase);

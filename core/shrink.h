@@ -7,6 +7,11 @@
 // to fewer significant bits, then vertex by vertex to integers). A candidate is kept when its
 // failure has the same class (and the same forbidden reason) as the original and, when the
 // original was valid per validate(), the candidate is still valid.
+//
+// A second mode (ShrinkOptions::slipping) shrinks an input that slips through the paper's
+// verification unvalidated (§6's open conjecture): the kept candidates are those validate()
+// refuses while verify() — the polygon and its complement flooded and checked, T-junctions
+// from findTouches() — passes.
 #pragma once
 #include <functional>
 #include <iosfwd>
@@ -25,7 +30,8 @@ struct Failure {
         Forbidden,       // the machine stopped in a forbidden state (`reason`)
         CheckerRejects,  // the machine finished but the exact checker rejects its triangles
         Crash,           // the child died (signal, sanitizer report, exception)
-        Hang             // the child did not finish within the time limit
+        Hang,            // the child did not finish within the time limit
+        Slips            // slipping mode: validate() refuses it, the unvalidated verify passes
     };
     Kind kind = Kind::None;
     Forbidden reason = Forbidden::None;  // Kind::Forbidden only
@@ -44,6 +50,7 @@ struct ShrinkOptions {
     // Test-only hook: applied to the machine's triangles before the exact check, so a test
     // can plant a checker failure. Null in normal use.
     std::function<void(std::vector<Triangle>&)> corrupt;
+    bool slipping = false;  // classify as Slips or None instead (see above)
 };
 
 // Runs the machine (validation skipped) and the exact checker on `polygon`.

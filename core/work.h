@@ -12,6 +12,7 @@ struct WorkCounters {
                                   // fills, spills and merges visit; sag-tree boxes and sags searched
     uint64_t sagTests = 0;        // sags the sag search tests with `inside`
     uint64_t validatorSteps = 0;  // pair tests and wedge comparisons of validate()
+    uint64_t touchSteps = 0;      // grid cells walked and point-edge tests of findTouches()
 };
 
 inline thread_local WorkCounters tWork;

@@ -14,18 +14,22 @@
 //      as a directed triangle edge, and its reverse never; an edge with T-junctions
 //      (Polygon::splits, each checked to lie strictly inside its edge) counts as its pieces;
 //   6. every other directed triangle edge (a, b) has its twin (b, a) in another triangle;
-//   7. the exact sum of the doubled triangle areas equals the exact doubled polygon area.
+//   7. the exact sum of the doubled triangle areas equals the exact doubled polygon area;
+//   8. with more than one part, triangles of different parts have disjoint interiors (rules
+//      1-7 see one part at a time: overlapping parts would pass them; checker_parts.cpp).
 // Vertex identity is by index: coincident copies of a point are different vertices, and a
 // triangle may use any copy of its part. Edges, however, are matched through a canonical copy
 // (the lowest index of the part with the same coordinates): where a hole touches the outer ring at a point, each wedge
 // of interior around that point is bounded by one edge of each ring, so its fan of triangles
 // must meet both copies' edges. Without repeated coordinates this is plain index identity.
-// Linear time: open-addressing hash tables of directed edges keyed by (a << 32 | b).
+// Rules 1-7 take linear time: open-addressing hash tables of directed edges keyed by
+// (a << 32 | b); rule 8 is a sweep, O(n log n), skipped for a single part.
 #include "checker.h"
 
 #include <cstdint>
 #include <sstream>
 
+#include "checker_parts.h"
 #include "predicates.h"
 
 namespace flood {
@@ -229,9 +233,6 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
 
     // Ring orientations, the polygon's doubled area, and the directed boundary edges: each
     // ring edge, cut at its T-junctions, with the interior on its left.
-    struct BoundaryEdge {
-        Index a, b, ring;
-    };
     std::vector<BoundaryEdge> boundaryEdges;
     boundaryEdges.reserve(n + polygon.splits.size());
     ExactSum polygonArea;
@@ -312,6 +313,12 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
         o << "area-mismatch: triangles cover doubled area " << triangleArea.approx()
           << ", the polygon has " << polygonArea.approx();
         return fail(o.str());
+    }
+
+    // Rule 8: parts do not overlap. A single part has nothing to overlap.
+    if (polygon.parts.size() > 1) {
+        std::string overlap = partsOverlap(V, partOfVertex, boundaryEdges);
+        if (!overlap.empty()) return fail(overlap);
     }
     return {true, ""};
 }

@@ -17,7 +17,9 @@ struct CheckResult {
 // counter-clockwise and non-degenerate with indices in range; every boundary edge covered
 // exactly once on the interior side (outer loop counter-clockwise, holes clockwise, whatever
 // orientation the input rings had); every other edge used by exactly two triangles in
-// opposite directions; the triangle areas sum exactly to the polygon's area.
+// opposite directions; the triangle areas sum exactly to the polygon's area; triangles of
+// different parts have disjoint interiors (parts may touch at points, at a vertex inside
+// another part's edge, along collinear stretches; a part may lie in another's hole).
 CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangle>& triangles);
 
 }  // namespace flood

@@ -13,6 +13,7 @@ struct WorkCounters {
     uint64_t sagTests = 0;        // sags the sag search tests with `inside`
     uint64_t validatorSteps = 0;  // pair tests and wedge comparisons of validate()
     uint64_t touchSteps = 0;      // grid cells walked and point-edge tests of findTouches()
+    uint64_t checkerSteps = 0;    // edges the checker's parts sweep scans, cuts and inserts
 };
 
 inline thread_local WorkCounters tWork;

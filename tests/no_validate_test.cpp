@@ -38,8 +38,6 @@ TEST(NoValidate, TheSelfCheckRunsAndSaysSo) {
 
 // Overlapping parts are flooded apart, so only the exact checker can see them.
 TEST(NoValidate, OverlappingPartsAreRefused) {
-    GTEST_SKIP() << "needs the exact checker's overlapping-parts rule (issue 10 item 1, "
-                    "another helper's core/checker.cpp change): remove this skip at merge";
     for (const char* cmd : {"triangulate --no-validate", "trace --no-validate -o /dev/null",
                             "transcript --no-validate"}) {
         RunResult r = runCli(std::string(cmd) + " " + sourcePath("polygons/invalid/parts-overlapping.json"));

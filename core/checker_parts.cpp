@@ -1,0 +1,199 @@
+// Rule 8 of the exact checker: triangles of different parts have disjoint interiors.
+//
+// Rules 1-7 prove that each part's triangles, all counter-clockwise, have exactly that part's
+// boundary as their boundary, so the number of a part's triangles over a point is the winding
+// number of the part's boundary there. Parts overlap exactly where the winding numbers of all
+// parts sum to more than 1. A sweep finds out. Events are the edges' ends in lexicographic
+// order (x, then y), as if the sweep line were turned slightly, so vertical edges need no
+// special case. The sweep keeps the edges crossing the sweep line bottom to top, and for each
+// the winding sum of the gap just above it: an edge directed from its lexicographically lower
+// end has its part's interior above it (+1), the other way below (-1), so a gap's sum is the
+// one below it plus the sign of the edge between them.
+// The order is sound until two edges cross properly, and Shamos and Hoey's argument holds: the
+// first proper crossing is between edges that were neighbours, so testing each new pair of
+// neighbours finds it. Touching is not crossing: at a point where parts meet (a shared vertex,
+// a vertex inside another part's edge, wedges fanned around one point) the edges ending there
+// leave, the edges passing through are cut there, and they re-enter with the edges starting
+// there in angular order, the winding sums of the new gaps counted up from the gap below the
+// point. Collinear edges along the same stretch (parts touching along it) sort with the
+// interior-below one first, so the count between them never exceeds the sums either side.
+// This checker is an oracle: it uses only the polygon's vertices, its boundary edges and
+// orient(), and deliberately neither calls nor shares code with core/validate.cpp.
+#include "checker_parts.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <set>
+#include <sstream>
+
+#include "predicates.h"
+#include "work.h"
+
+namespace flood {
+
+namespace {
+
+bool lexLess(Point p, Point q) { return p.x < q.x || (p.x == q.x && p.y < q.y); }
+
+struct Segment {
+    Point lo, hi;  // the lexicographically lower and higher end
+    Index a, b;    // the directed boundary edge, for messages
+    Index part;
+    int sign;  // +1: the part's interior lies above the edge (a is lo); -1: below
+};
+
+// Where t lies relative to s's line: from t's start, or along t when t starts on that line.
+// +1 above, -1 below, 0 collinear.
+int side(const Segment& s, const Segment& t) {
+    int o = orient(s.lo, s.hi, t.lo);
+    return o != 0 ? o : orient(s.lo, s.hi, t.hi);
+}
+
+struct At {
+    Point p;  // a lookup key: the event point
+};
+
+// Bottom-to-top order of edges crossing the sweep line at once (so the later start lies
+// within the other edge's span), and of such edges against the event point.
+struct Below {
+    using is_transparent = void;
+    const std::vector<Segment>* segs;
+    bool operator()(Index i, Index j) const {
+        if (i == j) return false;
+        const Segment &s = (*segs)[i], &t = (*segs)[j];
+        int o = lexLess(t.lo, s.lo) ? -side(t, s) : side(s, t);  // > 0: t above s
+        if (o != 0) return o > 0;
+        return s.sign != t.sign ? s.sign < t.sign : i < j;  // collinear: interior-below first
+    }
+    bool operator()(Index i, At k) const {
+        const Segment& s = (*segs)[i];
+        return orient(s.lo, s.hi, k.p) > 0;
+    }
+    bool operator()(At k, Index i) const {
+        const Segment& s = (*segs)[i];
+        return orient(s.lo, s.hi, k.p) < 0;
+    }
+};
+
+// The two edges cross at a single point inside both.
+bool crossProperly(const Segment& s, const Segment& t) {
+    int o1 = orient(s.lo, s.hi, t.lo), o2 = orient(s.lo, s.hi, t.hi);
+    if (o1 == 0 || o2 == 0 || o1 == o2) return false;
+    int o3 = orient(t.lo, t.hi, s.lo), o4 = orient(t.lo, t.hi, s.hi);
+    return o3 != 0 && o4 != 0 && o3 != o4;
+}
+
+std::string edgeName(const Segment& s) {
+    std::ostringstream o;
+    o << "edge (" << s.a << ", " << s.b << ") of part " << s.part;
+    return o.str();
+}
+
+std::string vertexName(const std::vector<Point>& V, Index v) {
+    std::ostringstream o;
+    o.precision(17);
+    o << "vertex " << v << " (" << V[v].x << ", " << V[v].y << ")";
+    return o.str();
+}
+
+std::string crossing(const Segment& s, const Segment& t, const std::string& where) {
+    return "parts-overlap: " + edgeName(s) + " crosses " + edgeName(t) + where;
+}
+
+}  // namespace
+
+std::string partsOverlap(const std::vector<Point>& V, const std::vector<Index>& partOfVertex,
+                         const std::vector<BoundaryEdge>& boundary) {
+    for (Index v = 0; v < V.size(); ++v)
+        if (!std::isfinite(V[v].x) || !std::isfinite(V[v].y))
+            return "non-finite-coordinate: " + vertexName(V, v) + " cannot be swept";
+
+    std::vector<Segment> segs;
+    segs.reserve(boundary.size());
+    for (const BoundaryEdge& e : boundary) {
+        Point pa = V[e.a], pb = V[e.b];
+        if (pa == pb) continue;  // no extent, no side (rule 3 already refuses such edges)
+        bool up = lexLess(pa, pb);
+        segs.push_back({up ? pa : pb, up ? pb : pa, e.a, e.b, partOfVertex[e.a], up ? 1 : -1});
+    }
+    struct End {
+        Point p;
+        Index vertex, seg;
+        bool start;
+    };
+    std::vector<End> ends;
+    ends.reserve(2 * segs.size());
+    for (Index s = 0; s < segs.size(); ++s) {
+        const Segment& g = segs[s];
+        ends.push_back({g.lo, g.sign > 0 ? g.a : g.b, s, true});
+        ends.push_back({g.hi, g.sign > 0 ? g.b : g.a, s, false});
+    }
+    std::sort(ends.begin(), ends.end(), [](const End& e, const End& f) { return lexLess(e.p, f.p); });
+
+    using Status = std::set<Index, Below>;
+    Status status(Below{&segs});
+    std::vector<int> above(segs.size(), 0);  // winding sum of the gap just above each edge
+    std::vector<Index> fan;                  // the edges leaving the event point
+    auto overlapAbove = [&](Status::iterator top, Index vertex) {
+        std::map<Index, int> winding;  // per part, of the gap above `top`: only on failure
+        for (auto it = status.begin();; ++it) {
+            winding[segs[*it].part] += segs[*it].sign;
+            if (it == top) break;
+        }
+        std::vector<Index> covering;
+        for (auto [part, w] : winding)
+            if (w > 0) covering.push_back(part);
+        std::ostringstream o;
+        if (covering.size() >= 2)
+            o << "parts-overlap: parts " << covering[0] << " and " << covering[1] << " overlap";
+        else
+            o << "parts-overlap: part " << (covering.empty() ? kNone : covering[0])
+              << " covers an area twice";
+        o << " beside " << vertexName(V, vertex);
+        return o.str();
+    };
+    for (size_t e0 = 0, e1; e0 < ends.size(); e0 = e1) {
+        const Point p = ends[e0].p;
+        const Index vertex = ends[e0].vertex;
+        fan.clear();
+        for (e1 = e0; e1 < ends.size() && ends[e1].p == p; ++e1)
+            if (ends[e1].start) fan.push_back(ends[e1].seg);
+        // The edges at p, contiguous in the status: those ending there, and those passing
+        // through, to be cut at p.
+        const size_t starting = fan.size();
+        auto first = status.lower_bound(At{p}), last = first;
+        for (; last != status.end() && orient(segs[*last].lo, segs[*last].hi, p) == 0; ++last) {
+            ++work().checkerSteps;
+            if (segs[*last].hi != p) fan.push_back(*last);
+        }
+        // Edges passing through one point cross there unless they are collinear.
+        for (size_t k = starting + 1; k < fan.size(); ++k) {
+            const Segment &s = segs[fan[k - 1]], &t = segs[fan[k]];
+            if (orient(s.lo, s.hi, t.hi) != 0) return crossing(s, t, " at " + vertexName(V, vertex));
+        }
+        int count = first == status.begin() ? 0 : above[*std::prev(first)];
+        status.erase(first, last);
+        std::sort(fan.begin(), fan.end(), status.key_comp());
+        const auto next = last;  // the first edge above p
+        auto lowest = next;      // the lowest edge of the fan once inserted
+        for (size_t k = 0; k < fan.size(); ++k) {
+            ++work().checkerSteps;
+            auto it = status.insert(next, fan[k]);
+            if (k == 0) lowest = it;
+        }
+        for (auto it = lowest; it != next; ++it) {
+            count += segs[*it].sign;
+            above[*it] = count;
+            if (count > 1) return overlapAbove(it, vertex);
+        }
+        // New neighbours: below and above the fan (inside it, edges meet only at p).
+        for (auto upper : {lowest, next})
+            if (upper != status.begin() && upper != status.end() &&
+                crossProperly(segs[*std::prev(upper)], segs[*upper]))
+                return crossing(segs[*std::prev(upper)], segs[*upper], "");
+    }
+    return "";
+}
+
+}  // namespace flood

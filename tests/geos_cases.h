@@ -170,12 +170,14 @@ private:
                 p.vertices[v] = p.vertices[below(n)];
                 break;
             case 1:
-            case 2: {  // onto the middle of an edge (exact: halving a double is exact)
+            case 2: {  // onto an edge at a quarter, half or three quarters: exactly on it for
+                       // small integer coordinates; near it otherwise, judged all the same
                 Index e = Index(below(n));
                 Index r = p.ringOf(e);
                 Index f = e + 1 == p.rings[r].first + p.rings[r].count ? p.rings[r].first : e + 1;
                 Point a = p.vertices[e], b = p.vertices[f];
-                p.vertices[v] = {a.x / 2 + b.x / 2, a.y / 2 + b.y / 2};
+                double t = double(1 + below(3)) / 4;
+                p.vertices[v] = {a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t};
                 break;
             }
             case 3:  // mirror the whole polygon

@@ -87,7 +87,7 @@ TEST(GeosDiff, SameVerdictAsGeosAndAcceptedCasesTriangulate) {
     ASSERT_GE(sampleList.size(), 10u);
     GeosCases cases(seed, sampleList);
     GeosOracle geos;
-    size_t valid = 0, invalid = 0, multi = 0, disagreements = 0;
+    size_t valid = 0, invalid = 0, multi = 0, disagreements = 0, badTriangulations = 0;
     for (uint64_t i = 0; i < count; ++i) {
         GeosCases::Case c = cases.next();
         Polygon p = c.polygon;
@@ -95,8 +95,7 @@ TEST(GeosDiff, SameVerdictAsGeosAndAcceptedCasesTriangulate) {
         GeosOracle::Verdict g = geos.judge(c.polygon);
         (g.valid ? valid : invalid)++;
         multi += c.polygon.parts.size() > 1;
-        if (d.ok() != g.valid) {
-            ++disagreements;
+        if (d.ok() != g.valid && ++disagreements <= 20) {  // the first 20 in full, then a count
             ADD_FAILURE() << "case " << i << " (" << c.family << ", seed " << seed << "): flood says "
                           << (d.ok() ? "valid" : d.message) << "; GEOS says " << g.reason << "\n"
                           << geoJson(c.polygon);
@@ -110,15 +109,15 @@ TEST(GeosDiff, SameVerdictAsGeosAndAcceptedCasesTriangulate) {
         if (d.ok()) {
             FloodResult r = triangulate(p);
             CheckResult chk = checkTriangulation(p, r.triangles);
-            EXPECT_TRUE(r.diagnostic.ok() && chk.ok)
-                << "case " << i << " (" << c.family << "): " << r.diagnostic.message << " "
-                << chk.reason << "\n" << geoJson(c.polygon);
+            if (!(r.diagnostic.ok() && chk.ok) && ++badTriangulations <= 20)
+                ADD_FAILURE() << "case " << i << " (" << c.family << "): " << r.diagnostic.message
+                              << " " << chk.reason << "\n" << geoJson(c.polygon);
         }
-        if (disagreements > 20) break;  // enough to go on
     }
     std::cout << "[ GEOS DIFF ] seed " << seed << ": " << count << " cases, " << valid
               << " valid and " << invalid << " invalid for GEOS, " << multi
-              << " MultiPolygons; disagreements: " << disagreements << "\n";
+              << " MultiPolygons; disagreements: " << disagreements
+              << "; accepted but not triangulated exactly: " << badTriangulations << "\n";
     // The generator must keep producing both kinds, in numbers.
     EXPECT_GE(valid, count / 5);
     EXPECT_GE(invalid, count / 5);

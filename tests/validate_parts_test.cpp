@@ -125,3 +125,19 @@ TEST(ValidateParts, BowTieIsReportedAsACrossing) {
     Polygon q = multi({{{{0, 0}, {5, 5}, {10, 10}, {5, 5}}}});
     EXPECT_NE(validate(q, "flat").message.find("ring has zero area"), std::string::npos);
 }
+
+// Cases the GEOS-differential test found (polygons/regress/geos-VERDICT-*.json, VERDICT being
+// GEOS's: valid or invalid): the same verdict in every quarter turn, mirror and orientation.
+TEST(ValidateParts, GeosFoundCasesKeepGeosVerdictInEveryOrientation) {
+    size_t files = 0;
+    for (const std::string& path : filesIn(sourcePath("polygons/regress"), ".json")) {
+        std::string name = std::filesystem::path(path).filename().string();
+        bool invalid = name.rfind("geos-invalid-", 0) == 0;
+        if (!invalid && name.rfind("geos-valid-", 0) != 0) continue;
+        ReadResult r = readPolygonFile(path);
+        ASSERT_TRUE(r.diagnostic.ok()) << r.diagnostic.message;
+        expectVerdict(r.polygon, !invalid, name);
+        ++files;
+    }
+    EXPECT_GE(files, 7u);
+}

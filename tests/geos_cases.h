@@ -31,7 +31,9 @@ public:
     Case next() {
         for (;;) {
             Case c;
-            switch (below(7)) {
+            switch (below(9)) {
+                case 7: c = {cells(), "cells"}; break;
+                case 8: c = {tinyTriangles(), "tiny"}; break;
                 case 0: c = {fromParts({star(6, 3 + below(5), below(3))}), "star"}; break;
                 case 1: c = {fromParts(someParts(2 + below(2))), "parts"}; break;
                 case 2: c = {lake(), "lake"}; break;
@@ -154,6 +156,34 @@ private:
             return fromParts({a});
         }
         return fromParts({a, {b}});
+    }
+    // Unit cells of a grid, as parts or as holes of a square round them: cells meeting at
+    // corners touch (holes round a cell close a cycle), cells side by side share an edge.
+    Polygon cells() {
+        bool holes = below(2);
+        std::vector<Rings> ps;
+        if (holes) ps.push_back({box(0, 0, 6, 6)});
+        for (int x = 1; x < 5; ++x)
+            for (int y = 1; y < 5; ++y) {
+                if (below(3)) continue;
+                Ring c = box(x, y, x + 1, y + 1);
+                if (holes) ps[0].push_back(c);
+                else ps.push_back({c});
+            }
+        if (ps.empty() || (holes && ps[0].size() == 1)) ps.push_back({box(1, 1, 2, 2)});
+        return fromParts(ps);
+    }
+    // Triangles on a 4 x 4 grid, as parts or as holes of a square round them.
+    Polygon tinyTriangles() {
+        bool holes = below(2);
+        std::vector<Rings> ps;
+        if (holes) ps.push_back({box(-1, -1, 4, 4)});
+        for (size_t i = 0, k = 2 + below(3); i < k; ++i) {
+            Ring t{{coord(0, 3), coord(0, 3)}, {coord(0, 3), coord(0, 3)}, {coord(0, 3), coord(0, 3)}};
+            if (holes) ps[0].push_back(t);
+            else ps.push_back({t});
+        }
+        return fromParts(ps);
     }
     Polygon sample() {
         if (samples_.empty()) return fromParts({star(6, 5, 1)});

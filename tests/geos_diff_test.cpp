@@ -5,7 +5,7 @@
 //
 // Environment (scripts/geos-diff.sh sets them for longer runs):
 //   FLOOD_GEOS_SEED   seed of the generator (default 20261201)
-//   FLOOD_GEOS_CASES  number of cases (default 3000)
+//   FLOOD_GEOS_CASES  number of cases (default 5000)
 //   FLOOD_GEOS_DUMP   a directory: every case GEOS calls invalid is written there as GeoJSON
 //
 // Where flood and GEOS legitimately differ, the generator stays out: a hole of one point
@@ -80,7 +80,7 @@ std::vector<Polygon> samples() {
 
 TEST(GeosDiff, SameVerdictAsGeosAndAcceptedCasesTriangulate) {
     uint64_t seed = envNumber("FLOOD_GEOS_SEED", 20261201);
-    uint64_t count = envNumber("FLOOD_GEOS_CASES", 3000);
+    uint64_t count = envNumber("FLOOD_GEOS_CASES", 5000);
     const char* dumpDir = std::getenv("FLOOD_GEOS_DUMP");
     if (dumpDir && *dumpDir) std::filesystem::create_directories(dumpDir);
     std::vector<Polygon> sampleList = samples();

@@ -141,3 +141,12 @@ TEST(ValidateParts, GeosFoundCasesKeepGeosVerdictInEveryOrientation) {
     }
     EXPECT_GE(files, 7u);
 }
+
+// A hole touching its outer ring at two points cuts the interior in two, also when a vertex of
+// another part sits at one of the touches (the touches of one part used to be linked only
+// between neighbours in vertex order, so the other part's vertex hid this one).
+TEST(ValidateParts, CycleOfTouchesIsFoundWithAnotherPartAtTheTouch) {
+    Polygon p = multi({{{{0, 0}, {8, 0}, {8, 8}, {0, 8}}, {{2, 0}, {4, 3}, {6, 0}, {4, 5}}},
+                       {{{2, 0}, {1, -2}, {3, -2}}}});
+    expectVerdict(p, false, "hole cycle beside another part", "the interior is disconnected");
+}

@@ -31,7 +31,8 @@ public:
     Case next() {
         for (;;) {
             Case c;
-            switch (below(9)) {
+            switch (below(10)) {
+                case 9: c = {crowd(), "crowd"}; break;
                 case 7: c = {cells(), "cells"}; break;
                 case 8: c = {tinyTriangles(), "tiny"}; break;
                 case 0: c = {fromParts({star(6, 3 + below(5), below(3))}), "star"}; break;
@@ -183,6 +184,22 @@ private:
             if (holes) ps[0].push_back(t);
             else ps.push_back({t});
         }
+        return fromParts(ps);
+    }
+    // Rings crowding one point: triangles with their apex there or with the point in the middle
+    // of an edge, as parts or as holes of a square round them, some twice (touching elsewhere
+    // too): crossings, overlaps, T-junctions and cycles at one point, within and between parts.
+    Polygon crowd() {
+        Point p{4, 4};
+        std::vector<Rings> ps{{box(-2, -2, 10, 10)}};
+        bool outerToo = below(2);  // the square is a part; otherwise the rings are all parts
+        for (size_t i = 0, k = 2 + below(4); i < k; ++i) {
+            Point a{coord(0, 8), coord(0, 8)}, b{coord(0, 8), coord(0, 8)};
+            Ring t = below(2) ? Ring{p, a, b} : Ring{{2 * p.x - a.x, 2 * p.y - a.y}, a, b};
+            if (outerToo && below(2)) ps[0].push_back(t);
+            else ps.push_back({t});
+        }
+        if (!outerToo) ps.erase(ps.begin());
         return fromParts(ps);
     }
     Polygon sample() {

@@ -9,11 +9,12 @@
 //   FLOOD_GEOS_DUMP   a directory: every case GEOS calls invalid is written there as GeoJSON
 //
 // Where flood and GEOS legitimately differ, the generator stays out: a hole of one point
-// (flood's Steiner point; GEOS cannot build a ring of fewer than 4 coordinates) and repeated
-// consecutive points (GEOS accepts them, flood's readers drop them before validation). The
-// sample polygons with a point hole are therefore not mutated. No other exclusion is needed:
-// flood follows GEOS 3.11's rules (README "What counts as valid"), including self-touching
-// rings ("inverted holes"), which both refuse.
+// (flood's Steiner point; GEOS cannot build a ring of fewer than 4 coordinates, and calls one
+// point repeated 4 times "Too few points") and repeated consecutive points (GEOS accepts them,
+// flood's readers drop them before validation, and validate() refuses them in a polygon built
+// in code). The sample polygons with a point hole are therefore not mutated. No other exclusion
+// is needed: flood follows GEOS 3.11's rules (README "What counts as valid"), including
+// self-touching rings ("inverted holes"), which both refuse.
 #include <gtest/gtest.h>
 
 #include <cstdio>

@@ -46,11 +46,11 @@ Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t ma
 
 // Validity rules checked before flooding (docs/ERRORS.md): finite coordinates, rings with at
 // least 3 distinct points (holes may be single Steiner points), non-zero area, no
-// self-intersection, holes inside their outer ring and not overlapping. Rings may touch at
-// single points: shared vertices, or a vertex inside another ring's edge (a T-junction, which
-// is recorded in polygon.splits for the flood machine and the checker — so validate before
-// triangulating). Returns Invalid with "NAME: ring R vertex V (x, y): reason" on the first
-// problem found.
+// self-intersection, holes inside their outer ring and not overlapping, parts not overlapping.
+// Rings may touch at single points without crossing: shared vertices, or a vertex inside
+// another ring's edge (a T-junction; within a part it is recorded in polygon.splits for the
+// flood machine and the checker — so validate before triangulating). Returns Invalid with
+// "NAME: ring R vertex V (x, y): reason" on the first problem found.
 Diagnostic validate(Polygon& polygon, const std::string& name);
 
 void writeJson(std::ostream& out, const Polygon& p, const std::vector<Triangle>& t);

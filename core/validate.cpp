@@ -5,24 +5,30 @@
 //   1. every coordinate is finite;
 //   2. every ring has at least 3 distinct points and no zero-length edge — except a hole of
 //      exactly one point, a Steiner point the triangulation must use;
-//   3. every ring has a non-zero signed area (exact, ExactSum);
+//   3. every ring has a non-zero signed area (exact, ExactSum) — reported after check 4 has
+//      looked for a crossing, so a symmetric bow-tie is called a self-crossing;
 //   4. no two edges of the polygon (all parts) cross or overlap collinearly; a spike (an edge
 //      folding back on the previous one) counts as an overlap. A vertex lying in the interior
-//      of an edge of another ring of its part is a touch (a T-junction): it is recorded in
-//      Polygon::splits, and the loops pass through it twice like at a shared vertex. On its own
-//      ring's edge it is refused (a ring must be simple); a point hole may touch nothing;
+//      of an edge of another ring is a touch (a T-junction), checked like a shared vertex in
+//      check 5; between rings of one part it is also recorded in Polygon::splits (the loops
+//      pass through it twice), between parts not (parts are flooded apart). On its own ring's
+//      edge it is refused (a ring must be simple); a point hole may touch nothing;
 //   5. where rings meet — a shared vertex (the same coordinates appear as a vertex more than
-//      once) or a T-junction — they touch without crossing: around the point the wedges of
-//      the rings do not interleave; and the touches keep the interior connected (no ring
-//      touching itself, no cycle of touching rings);
+//      once) or a T-junction, of one part or of several — they touch without crossing: around
+//      the point the wedges of the rings do not interleave and the interiors do not overlap;
+//      and the touches keep each part's interior connected (no ring touching itself, no cycle
+//      of touching rings of one part);
 //   6. each hole lies inside its outer ring, and not inside another hole of its part
-//      (with 4 and 5, this means hole interiors do not overlap).
-// Not detected (documented in docs/ERRORS.md): a part lying inside another part of a
-// multipolygon.
+//      (with 4 and 5, this means hole interiors do not overlap); no outer ring lies inside
+//      another part's outer ring (a part in another part's hole, an island in a lake, is fine).
+// With 4 and 5, parts overlap only if one lies inside the other, which 6 finds: every overlap
+// of parts is detected.
 //
 // All decisions use the exact flood::orient() and coordinate comparisons; no floating-point
 // arithmetic decides anything. Cost: O(n log n) — a sort of the vertices for the sweep, a
-// sort for coincident vertices, and a balanced-tree sweep with O(1) tests per event.
+// sort for coincident vertices, a balanced-tree sweep with O(1) tests per event, and at a point
+// shared by k rings a sort of their 2k rays and O(log k) per ring to find a crossing
+// (validatorSteps in core/work.h counts the work, tests/validate_growth_test.cpp bounds it).
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -32,6 +38,7 @@
 #include "io.h"
 #include "io_util.h"
 #include "predicates.h"
+#include "work.h"
 
 namespace flood {
 namespace {
@@ -41,7 +48,10 @@ using io_detail::formatPoint;
 struct Validator {
     const Polygon& P;
     const std::string& name;
-    std::vector<EdgeSplit> splits;  // T-junctions found by the sweep (check 4)
+    std::vector<EdgeSplit> junctions;  // vertex strictly inside another ring's edge (check 4)
+    std::vector<EdgeSplit> splits;     // the junctions within one part, for the machine
+    std::optional<Index> zeroArea;     // first vertex of the first ring of zero area (check 3)
+    bool edgesCrossed = false;         // check 4's problem is a crossing of two edges
     size_t n = 0;
     std::vector<Index> ringOfV;  // ring of each vertex
     std::vector<int> ringSign;   // orientation of each ring: +1 counter-clockwise, -1 clockwise
@@ -93,7 +103,7 @@ struct Validator {
 
     // Where rings touch (check 5): every ring passing through one point, as the wedge of its
     // two rays there. A vertex occurrence has owner = its vertex; a T-junction's edge has
-    // owner = n + its index in `splits`.
+    // owner = n + its index in `junctions`. Each point's list is sorted by owner.
     struct Occurrence {
         Index owner, ring;
         Point from, to;  // the ring arrives from `from` and leaves towards `to`
@@ -101,7 +111,7 @@ struct Validator {
     std::vector<std::vector<Occurrence>> touchPoints;
     void collectTouchPoints();
     std::string occurrenceText(const Occurrence& o) const {
-        return o.owner < n ? at(o.owner) : "edge " + edgeText(splits[o.owner - n].edge);
+        return o.owner < n ? at(o.owner) : "edge " + edgeText(junctions[o.owner - n].edge);
     }
 };
 
@@ -113,6 +123,7 @@ int half(Point p, Point a) { return (a.y > p.y || (a.y == p.y && a.x > p.x)) ? 0
 
 // Direction p->a comes before p->b counter-clockwise from the +x axis.
 bool angleLess(Point p, Point a, Point b) {
+    ++work().validatorSteps;
     int ha = half(p, a), hb = half(p, b);
     if (ha != hb) return ha < hb;
     return orient(p, a, b) > 0;
@@ -155,7 +166,7 @@ Diagnostic Validator::checkRings() {
         ExactSum area;
         for (Index v = ring.first; v < ring.first + ring.count; ++v) area.addCross(pt(v), pt(next(v)));
         ringSign[r] = area.sign();
-        if (ringSign[r] == 0) return fail(ring.first, "ring has zero area");
+        if (ringSign[r] == 0 && !zeroArea) zeroArea = ring.first;
     }
     return {};
 }
@@ -210,8 +221,8 @@ Diagnostic Validator::checkEdges() {
     });
 
     std::optional<std::pair<Index, std::string>> problem;  // vertex to report, reason
-    // `vertex` lies strictly inside `edge`: a touch between rings of one part (recorded),
-    // nothing between parts (they are flooded apart), refused on its own ring or for a point.
+    // `vertex` lies strictly inside `edge`: a touch between rings (checked in check 5),
+    // refused on its own ring or for a point.
     auto onEdge = [&](Index vertex, Index edge) {
         if (isPoint(vertex))
             problem.emplace(vertex, "point hole lies on edge " + edgeText(edge) +
@@ -219,10 +230,11 @@ Diagnostic Validator::checkEdges() {
         else if (ringOfV[vertex] == ringOfV[edge])
             problem.emplace(vertex, "the ring touches itself here: the vertex lies on its own edge " +
                                         edgeText(edge) + " (a ring must be simple)");
-        else if (partOfRing[ringOfV[vertex]] == partOfRing[ringOfV[edge]])
-            splits.push_back({edge, vertex});
+        else
+            junctions.push_back({edge, vertex});
     };
     auto testPair = [&](Index e, Index f) {
+        ++work().validatorSteps;
         if (problem || e == f) return;
         if (isPoint(f)) std::swap(e, f);
         Point a = pt(e), b = pt(next(e)), c = pt(f), d = pt(next(f));
@@ -247,6 +259,7 @@ Diagnostic Validator::checkEdges() {
         int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
         Index lo = std::min(e, f), hi = std::max(e, f);
         if (o1 * o2 < 0 && o3 * o4 < 0) {
+            edgesCrossed = true;
             problem.emplace(lo, "edge " + edgeText(lo) + " crosses edge " + edgeText(hi));
             return;
         }
@@ -272,6 +285,7 @@ Diagnostic Validator::checkEdges() {
     enclosing.assign(P.rings.size(), kNone);
     std::vector<char> ringSeen(P.rings.size(), 0);
     std::vector<Index> ending, starting, points, newRings;
+    std::vector<Index> leftmostOf(P.rings.size(), kNone);  // of each ring starting at the event
     // The ring whose interior holds what is just right of the active edge before `it`.
     auto enclosingAt = [&](Tree::iterator it) {
         if (it == active.begin()) return kNone;  // nothing to the left: outside everything
@@ -292,7 +306,7 @@ Diagnostic Validator::checkEdges() {
                 continue;
             }
             for (Index e : {prev(v), v}) (segs[e].hi == p ? ending : starting).push_back(e);
-            if (!ringSeen[r]) ringSeen[r] = 1, newRings.push_back(r);
+            if (!ringSeen[r]) ringSeen[r] = 1, newRings.push_back(r);  // 2 once placed
         }
         i = j;
         for (Index e : ending) {
@@ -323,39 +337,40 @@ Diagnostic Validator::checkEdges() {
         // Rings whose lowest vertex is p, left to right: the edge just left of a ring's
         // leftmost edge bounds the face the ring lies in.
         if (newRings.empty()) continue;
-        std::vector<std::pair<Index, Index>> leftmost;  // (leftmost edge, ring)
-        for (Index r : newRings) {
-            Index best = kNone;
-            for (Index e : starting)
-                if (ringOfV[e] == r && (best == kNone || active.key_comp()(e, best))) best = e;
-            leftmost.push_back({best, r});
+        for (Index e : starting) {
+            ++work().validatorSteps;
+            Index r = ringOfV[e], &best = leftmostOf[r];
+            if (ringSeen[r] == 1 && (best == kNone || active.key_comp()(e, best))) best = e;
         }
+        std::vector<std::pair<Index, Index>> leftmost;  // (leftmost edge, ring)
+        for (Index r : newRings) leftmost.push_back({leftmostOf[r], r}), ringSeen[r] = 2;
         std::sort(leftmost.begin(), leftmost.end(), [&](auto a, auto b) {
             return active.key_comp()(a.first, b.first);
         });
         for (auto [e, r] : leftmost) enclosing[r] = enclosingAt(where[e]);
     }
     if (problem) return fail(problem->first, problem->second);
-    // One split per edge and point, ordered by edge, then along the edge from its start
+    // One junction per edge and point, ordered by edge, then along the edge from its start
     // (the order the flood machine and the checker walk it in).
-    std::sort(splits.begin(), splits.end(), [&](const EdgeSplit& s, const EdgeSplit& t) {
+    std::sort(junctions.begin(), junctions.end(), [&](const EdgeSplit& s, const EdgeSplit& t) {
         if (s.edge != t.edge) return s.edge < t.edge;
         Point a = pt(s.edge), b = pt(next(s.edge)), p = pt(s.vertex), q = pt(t.vertex);
         if (p != q) return a.x != b.x ? (a.x < b.x ? p.x < q.x : p.x > q.x) : (a.y < b.y ? p.y < q.y : p.y > q.y);
         return s.vertex < t.vertex;
     });
-    splits.erase(std::unique(splits.begin(), splits.end(),
-                             [&](const EdgeSplit& s, const EdgeSplit& t) {
-                                 return s.edge == t.edge && pt(s.vertex) == pt(t.vertex);
-                             }),
-                 splits.end());
+    junctions.erase(std::unique(junctions.begin(), junctions.end(),
+                                [&](const EdgeSplit& s, const EdgeSplit& t) {
+                                    return s.edge == t.edge && pt(s.vertex) == pt(t.vertex);
+                                }),
+                    junctions.end());
     return {};
 }
 
 // --- check 5: rings meeting at a point ---------------------------------------------------
 
 // Groups the ring passages through each touching point: coincident vertices, plus the edge
-// of every T-junction, which passes straight through its vertex's point.
+// of every T-junction, which passes straight through its vertex's point. Then picks the
+// machine's splits: a junction whose edge's part has a vertex at the point (the lowest one).
 void Validator::collectTouchPoints() {
     byCoord.resize(n);
     for (Index v = 0; v < n; ++v) byCoord[v] = v;
@@ -378,14 +393,64 @@ void Validator::collectTouchPoints() {
         }
         i = j;
     }
-    for (Index k = 0; k < splits.size(); ++k) {
-        Index v = splits[k].vertex, e = splits[k].edge;
+    for (Index k = 0; k < junctions.size(); ++k) {
+        Index v = junctions[k].vertex, e = junctions[k].edge;
         if (groupOf[v] == kNone) {
             groupOf[v] = Index(touchPoints.size());
             touchPoints.push_back({vertexOccurrence(v)});
         }
         touchPoints[groupOf[v]].push_back({Index(n + k), ringOfV[e], pt(e), pt(next(e))});
     }
+    // At most one edge passes through a point (two would cross: check 4), so this is linear.
+    for (const EdgeSplit& j : junctions) {
+        Index part = partOfRing[ringOfV[j.edge]];
+        for (const Occurrence& o : touchPoints[groupOf[j.vertex]]) {
+            ++work().validatorSteps;
+            if (o.owner < n && partOfRing[o.ring] == part) {
+                splits.push_back({j.edge, o.owner});
+                break;
+            }
+        }
+    }
+}
+
+// The lowest chord crossing another, of chords drawn between the two positions of each index
+// in `chordAt` (2k positions round a circle, each index 0..k-1 twice), and the lowest chord it
+// crosses; {kNone, kNone} when no two cross. Chord c spanning positions a0 < a1 crosses
+// another exactly when a position strictly between holds a chord whose other end lies outside
+// [a0, a1]: a range-minimum and a range-maximum query of the other ends, O(k log k) in all.
+std::pair<Index, Index> lowestCrossingChords(const std::vector<Index>& chordAt) {
+    size_t m = chordAt.size(), k = m / 2;
+    std::vector<size_t> first(k, m), second(k, m), other(m);
+    for (size_t i = 0; i < m; ++i) (first[chordAt[i]] == m ? first : second)[chordAt[i]] = i;
+    for (size_t i = 0; i < m; ++i)
+        other[i] = first[chordAt[i]] == i ? second[chordAt[i]] : first[chordAt[i]];
+    // Bottom-up segment trees over the positions: leaves at m + i.
+    std::vector<size_t> lo(2 * m), hi(2 * m);
+    for (size_t i = 0; i < m; ++i) lo[m + i] = hi[m + i] = other[i];
+    for (size_t i = m - 1; i > 0; --i) {
+        lo[i] = std::min(lo[2 * i], lo[2 * i + 1]);
+        hi[i] = std::max(hi[2 * i], hi[2 * i + 1]);
+    }
+    auto crossesSome = [&](size_t a0, size_t a1) {  // over positions (a0, a1)
+        size_t least = m, most = 0;
+        for (size_t l = a0 + 1 + m, r = a1 + m; l < r; l /= 2, r /= 2) {
+            ++work().validatorSteps;
+            if (l & 1) least = std::min(least, lo[l]), most = std::max(most, hi[l]), ++l;
+            if (r & 1) --r, least = std::min(least, lo[r]), most = std::max(most, hi[r]);
+        }
+        return least < a0 || most > a1;
+    };
+    for (Index c = 0; c < k; ++c) {
+        if (!crossesSome(first[c], second[c])) continue;
+        for (Index d = 0; d < k; ++d) {
+            ++work().validatorSteps;
+            bool in0 = first[c] < first[d] && first[d] < second[c];
+            bool in1 = first[c] < second[d] && second[d] < second[c];
+            if (in0 != in1) return {c, d};
+        }
+    }
+    return {kNone, kNone};
 }
 
 Diagnostic Validator::checkSharedVertices() {
@@ -394,11 +459,11 @@ Diagnostic Validator::checkSharedVertices() {
     // comes from and goes to). The rings cross there exactly when two wedges interleave.
     struct Ray {
         Point to;
-        Index owner;  // the passage whose wedge this ray bounds
-        bool after;   // the polygon's interior lies just counter-clockwise of this ray
+        Index occ;   // the passage (index into the point's list) whose wedge this ray bounds
+        bool after;  // the polygon's interior lies just counter-clockwise of this ray
     };
     std::vector<Ray> rays;
-    std::vector<Index> stack;
+    std::vector<Index> chordAt;
     for (const std::vector<Occurrence>& occ : touchPoints) {
         Point p = pt(occ[0].owner);
         for (const Occurrence& o : occ)
@@ -407,67 +472,46 @@ Diagnostic Validator::checkSharedVertices() {
                                          occurrenceText(o.owner == occ[0].owner ? occ[1] : occ[0]) +
                                          " (a Steiner point must be strictly inside the polygon)");
         rays.clear();
-        for (const Occurrence& o : occ) {
+        for (Index i = 0; i < occ.size(); ++i) {
+            const Occurrence& o = occ[i];
             // Walking from -> p -> to, the ring's inside is on the left for a counter-clockwise
             // ring; the polygon's interior is the other side for a hole.
             bool nextAfter = (ringSign[o.ring] > 0) != (P.parts[partOfRing[o.ring]].firstRing != o.ring);
-            rays.push_back({o.from, o.owner, !nextAfter});
-            rays.push_back({o.to, o.owner, nextAfter});
+            rays.push_back({o.from, i, !nextAfter});
+            rays.push_back({o.to, i, nextAfter});
         }
         std::sort(rays.begin(), rays.end(),
                   [&](const Ray& a, const Ray& b) { return angleLess(p, a.to, b.to); });
-        stack.clear();
-        for (const Ray& r : rays) {
-            if (!stack.empty() && stack.back() == r.owner) stack.pop_back();
-            else stack.push_back(r.owner);
-        }
-        auto text = [&](Index owner) {
-            for (const Occurrence& o : occ)
-                if (o.owner == owner) return occurrenceText(o);
-            return std::string();
-        };
         // Messages name a vertex: the lowest one among the passages involved.
-        auto vertexOf = [&](Index owner) { return owner < n ? owner : splits[owner - n].vertex; };
+        auto vertexOf = [&](Index i) {
+            Index owner = occ[i].owner;
+            return owner < n ? owner : junctions[owner - n].vertex;
+        };
         bool junction = std::any_of(occ.begin(), occ.end(), [&](const Occurrence& o) { return o.owner >= n; });
         const std::string here = junction ? "at this touching point" : "at this shared vertex";
-        if (stack.empty()) {
-            // Sectors between consecutive rays must alternate interior / exterior; otherwise
-            // two loops overlap here (a loop nested in another with the same orientation,
-            // or a hole nested in a hole).
-            for (size_t i = 0; i < rays.size(); ++i) {
-                const Ray& a = rays[i];
-                const Ray& b = rays[(i + 1) % rays.size()];
-                if (a.after == b.after) {
-                    Index u = std::min(a.owner, b.owner), w = std::max(a.owner, b.owner);
-                    return fail(vertexOf(u), "the interior overlaps itself " + here + " (" +
-                                                 (u == w ? std::string("a ring") : text(w)) +
-                                                 " touches here from the inside, with the "
-                                                 "orientation of a nested loop or hole)");
-                }
+        chordAt.clear();
+        for (const Ray& r : rays) chordAt.push_back(r.occ);
+        // The interleaving pair with the lowest passages (occ is sorted by owner), for a
+        // stable message.
+        auto [c, d] = lowestCrossingChords(chordAt);
+        if (c != kNone)
+            return fail(vertexOf(c), "the boundary crosses itself " + here + " (" +
+                                         occurrenceText(occ[d]) + " passes through to the other side)");
+        // Sectors between consecutive rays must alternate interior / exterior; otherwise two
+        // loops overlap here (a loop nested in another with the same orientation, a hole
+        // nested in a hole, or a part touching another from inside).
+        for (size_t i = 0; i < rays.size(); ++i) {
+            ++work().validatorSteps;
+            const Ray& a = rays[i];
+            const Ray& b = rays[(i + 1) % rays.size()];
+            if (a.after == b.after) {
+                Index u = std::min(a.occ, b.occ), w = std::max(a.occ, b.occ);
+                return fail(vertexOf(u), "the interior overlaps itself " + here + " (" +
+                                             (u == w ? std::string("a ring") : occurrenceText(occ[w])) +
+                                             " touches here from the inside, with the "
+                                             "orientation of a nested loop or hole)");
             }
-            continue;
         }
-        // Find the interleaving pair with the lowest owners, for a stable message.
-        std::vector<Index> owners;
-        for (const Occurrence& o : occ) owners.push_back(o.owner);
-        std::sort(owners.begin(), owners.end());
-        auto position = [&](Index owner, int which) {
-            int seen = 0;
-            for (size_t i = 0; i < rays.size(); ++i)
-                if (rays[i].owner == owner && seen++ == which) return i;
-            return rays.size();
-        };
-        for (size_t i = 0; i < owners.size(); ++i)
-            for (size_t j = i + 1; j < owners.size(); ++j) {
-                size_t a0 = position(owners[i], 0), a1 = position(owners[i], 1);
-                size_t b0 = position(owners[j], 0), b1 = position(owners[j], 1);
-                bool inB0 = a0 < b0 && b0 < a1, inB1 = a0 < b1 && b1 < a1;
-                if (inB0 != inB1)
-                    return fail(vertexOf(owners[i]), "the boundary crosses itself " + here + " (" +
-                                                         text(owners[j]) +
-                                                         " passes through to the other side)");
-            }
-        return fail(vertexOf(owners[0]), "the boundary crosses itself " + here);
     }
     return checkTouchTopology();
 }
@@ -475,6 +519,7 @@ Diagnostic Validator::checkSharedVertices() {
 // Touching is allowed only where it keeps the interior connected and every ring simple (as
 // GEOS rules): a ring may not touch itself, and the rings of a part touching each other may not
 // close a cycle (two rings touching twice, or three touching in a ring cut the interior in two).
+// Rings of different parts may touch anywhere they do not cross (parts are flooded apart).
 Diagnostic Validator::checkTouchTopology() {
     std::vector<Index> parent(P.rings.size());
     for (Index r = 0; r < parent.size(); ++r) parent[r] = r;
@@ -482,16 +527,26 @@ Diagnostic Validator::checkTouchTopology() {
         while (parent[r] != r) r = parent[r] = parent[parent[r]];
         return r;
     };
-    for (std::vector<Occurrence> occ : touchPoints) {
-        std::sort(occ.begin(), occ.end(), [](const Occurrence& a, const Occurrence& b) { return a.owner < b.owner; });
-        for (size_t i = 1; i < occ.size(); ++i) {
-            const Occurrence &a = occ[i - 1], &b = occ[i];
-            Index at = b.owner < n ? b.owner : splits[b.owner - n].vertex;
-            if (a.ring == b.ring)
+    // Per point: where each ring passed (ringAt), and each part's first ring there (partRing),
+    // valid while their stamp is the point's.
+    std::vector<Index> ringStamp(P.rings.size(), kNone), ringAt(P.rings.size());
+    std::vector<Index> partStamp(P.parts.size(), kNone), partRing(P.parts.size());
+    for (Index t = 0; t < touchPoints.size(); ++t) {
+        const std::vector<Occurrence>& occ = touchPoints[t];
+        for (Index i = 0; i < occ.size(); ++i) {
+            ++work().validatorSteps;
+            const Occurrence& b = occ[i];
+            Index at = b.owner < n ? b.owner : junctions[b.owner - n].vertex;
+            if (ringStamp[b.ring] == t)
                 return fail(at, "the ring touches itself here (it also passes through " +
-                                    occurrenceText(a) + "): a ring must be simple");
-            if (partOfRing[a.ring] != partOfRing[b.ring]) continue;
-            Index ra = find(a.ring), rb = find(b.ring);
+                                    occurrenceText(occ[ringAt[b.ring]]) + "): a ring must be simple");
+            ringStamp[b.ring] = t, ringAt[b.ring] = i;
+            Index part = partOfRing[b.ring];
+            if (partStamp[part] != t) {
+                partStamp[part] = t, partRing[part] = b.ring;
+                continue;
+            }
+            Index ra = find(partRing[part]), rb = find(b.ring);
             if (ra == rb)
                 return fail(at, "rings touching here and elsewhere enclose part of the interior: "
                                 "the interior is disconnected");
@@ -543,6 +598,9 @@ Diagnostic Validator::run() {
             ringOfV[v] = r;
     Diagnostic d = checkRings();
     if (d.ok()) d = checkEdges();
+    // A ring of zero area is reported as such unless the sweep found it crossing itself (a
+    // symmetric bow-tie): the crossing is the truth, zero area only its consequence.
+    if (zeroArea && (d.ok() || !edgesCrossed)) d = fail(*zeroArea, "ring has zero area");
     if (d.ok()) d = checkSharedVertices();
     if (d.ok()) d = checkHoles();
     return d;

@@ -51,6 +51,7 @@ const Row kCatalogue[] = {
     {"vertex-on-own-edge.json", "triangulate", 4, "vertex-on-own-edge.json: ring 0 vertex 4 (5, 0): the ring touches itself here: the vertex lies on its own edge ring 0 edge 0-1"},
     {"point-hole-on-edge.json", "triangulate", 4, "point-hole-on-edge.json: ring 2 vertex 0 (10, 4): point hole lies on edge ring 0 edge 1-2"},
     {"crossing-at-shared-vertex.json", "triangulate", 4, "ring 0 vertex 2 (5, 5): the boundary crosses itself at this shared vertex (ring 0 vertex 5 (5, 5) passes through"},
+    {"parts-crossing-at-junction.json", "triangulate", 4, "parts-crossing-at-junction.json: ring 1 vertex 0 (2, 0): the boundary crosses itself at this touching point (edge ring 0 edge 0-1 (0, 0)-(4, 0) passes through to the other side)"},
     {"overlap-at-shared-vertex.json", "triangulate", 4, "ring 1 vertex 0 (2, 2): the interior overlaps itself at this shared vertex (ring 2 vertex 0 (2, 2)"},
     {"hole-outside.json", "triangulate", 4, "hole-outside.json: ring 1 vertex 0 (20, 20): hole (ring 1) lies outside its outer ring (ring 0)"},
     {"holes-overlapping.json", "triangulate", 4, "holes-overlapping.json: ring 2 vertex 0 (3, 3): hole (ring 2) lies inside another hole (ring 1): holes overlap"},

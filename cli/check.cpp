@@ -423,7 +423,8 @@ int runCheck(const CheckOptions& o) {
     }
     if (!o.extractDir.empty() && !extract(rows, o)) code = int(Status::WriteFailed);
 
-    std::string summary = "check: " + std::to_string(rows.size()) + " features in " +
+    std::string summary = "check: " + std::to_string(rows.size()) +
+                          (rows.size() == 1 ? " feature in " : " features in ") +
                           std::to_string(files.size()) + (files.size() == 1 ? " file: " : " files: ");
     for (size_t v = 0; v < count.size(); ++v)
         summary += (v ? ", " : "") + std::to_string(count[v]) + " " + verdictName(Verdict(v));

@@ -317,3 +317,44 @@ TEST(Check, SampleFoldersAgreeWithTriangulateFileByFile) {
     }
     fs::remove_all(d);
 }
+
+// The core split: each feature read alone; parsePolygon's reading of the file is unchanged.
+TEST(Check, ParseFeaturesSplitsACollectionAndLeavesOtherFilesWhole) {
+    flood::ReadResult whole = flood::readPolygonFile(kMixed);
+    EXPECT_EQ(whole.diagnostic.status, flood::Status::Malformed);
+    EXPECT_TRUE(has(whole.diagnostic.message, "feature 5 polygon 7 ring 0 vertex 2")) << whole.diagnostic.message;
+
+    flood::DatasetRead d = flood::readFeaturesFile(kMixed, flood::kDefaultMaxInputBytes, false);
+    ASSERT_EQ(d.features.size(), 9u);
+    ASSERT_EQ(d.skipped.size(), 1u);
+    EXPECT_FALSE(d.features[0].wholeFile);
+    EXPECT_EQ(d.features[6].index, 7u);
+    EXPECT_EQ(d.features[2].read.polygon.parts.size(), 2u);  // a MultiPolygon stays one feature
+    EXPECT_EQ(d.features[2].read.polygon.rings.size(), 3u);
+    EXPECT_TRUE(d.features[2].source.empty());
+    EXPECT_EQ(d.features[5].read.diagnostic.status, flood::Status::Malformed);  // "feature 5 polygon 0 ..."
+    flood::DatasetRead kept = flood::readFeaturesFile(kMixed, flood::kDefaultMaxInputBytes, true);
+    EXPECT_TRUE(has(kept.features[1].source, "\"bow-tie\"")) << kept.features[1].source;
+
+    for (const char* other : {"polygons/holes.json", "polygons/invalid/malformed-json.json",
+                              "polygons/invalid/nan.wkt", "polygons/invalid/deep-nesting.json"}) {
+        flood::ReadResult r = flood::readPolygonFile(sourcePath(other));
+        flood::DatasetRead one = flood::readFeaturesFile(sourcePath(other), flood::kDefaultMaxInputBytes, true);
+        ASSERT_EQ(one.features.size(), 1u) << other;
+        EXPECT_TRUE(one.features[0].wholeFile);
+        EXPECT_EQ(one.features[0].read.diagnostic.message, r.diagnostic.message) << other;
+        EXPECT_EQ(one.features[0].read.polygon.vertices.size(), r.polygon.vertices.size()) << other;
+    }
+}
+
+TEST(Check, StdinAndAnExtractFolderThatCannotBeMade) {
+    CheckRun s = cli("check --json - < " + sourcePath("polygons/invalid/hole-outside.json"));
+    EXPECT_EQ(s.code, 4) << s.err;
+    EXPECT_TRUE(has(s.out, "\"file\": \"-\"")) << s.out;
+    fs::path d = scratch("badextract");
+    std::ofstream(d / "file") << "x";
+    CheckRun e = cli("check --extract " + (d / "file").string() + " " + kMixed);
+    EXPECT_EQ(e.code, 8) << e.err;
+    EXPECT_TRUE(has(e.err, "cannot create the --extract folder")) << e.err;
+    fs::remove_all(d);
+}

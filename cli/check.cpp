@@ -388,27 +388,37 @@ int runCheck(const CheckOptions& o) {
     Scheduler scheduler(files, o);
     std::vector<std::thread> workers;
     for (unsigned k = 0; k < std::max(1u, o.jobs); ++k) workers.emplace_back([&] { scheduler.work(); });
+    double seconds = 0;
+    auto joinWorkers = [&] {
+        for (std::thread& t : workers) t.join();
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
     if (isatty(STDERR_FILENO)) {
         // A progress line, redrawn at most 10 times a second, erased at the end.
-        std::atomic<bool> finished{false};
+        std::mutex m;
+        std::condition_variable cv;
+        bool finished = false;
         std::thread progress([&] {
-            while (!finished) {
+            std::unique_lock<std::mutex> lock(m);
+            do {
                 std::fprintf(stderr, "\r\033[Kcheck: %zu/%zu features checked, %zu/%zu files read",
                              scheduler.featuresDone.load(), scheduler.featuresKnown.load(),
                              scheduler.filesRead.load(), files.size());
                 std::fflush(stderr);
-                std::this_thread::sleep_for(std::chrono::milliseconds(100));
-            }
+            } while (!cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return finished; }));
             std::fprintf(stderr, "\r\033[K");
             std::fflush(stderr);
         });
-        for (std::thread& t : workers) t.join();
-        finished = true;
+        joinWorkers();
+        {
+            std::lock_guard<std::mutex> lock(m);
+            finished = true;
+        }
+        cv.notify_one();
         progress.join();
     } else {
-        for (std::thread& t : workers) t.join();
+        joinWorkers();
     }
-    double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
     std::vector<Row*> rows;
     for (File& f : files) {

@@ -358,3 +358,22 @@ TEST(Check, StdinAndAnExtractFolderThatCannotBeMade) {
     EXPECT_TRUE(has(e.err, "cannot create the --extract folder")) << e.err;
     fs::remove_all(d);
 }
+
+// The progress line is for people: on a terminal (script(1) gives one), never in a pipe.
+TEST(Check, ProgressLineOnlyOnATerminal) {
+    CheckRun piped = cli("check " + kMixed);
+    EXPECT_FALSE(has(piped.err, "features checked")) << piped.err;
+    if (!fs::exists("/usr/bin/script")) GTEST_SKIP() << "no script(1) to make a terminal";
+    fs::path out = fs::temp_directory_path() / ("flood-check-tty-" + std::to_string(getpid()));
+    std::string inner = std::string(FLOOD_CLI) + " check -j 1 " + kMixed + " > " + out.string();
+    FILE* p = popen(("/usr/bin/script -qec '" + inner + "' /dev/null").c_str(), "r");
+    ASSERT_NE(p, nullptr);
+    std::string tty;
+    char buf[4096];
+    for (size_t k; (k = fread(buf, 1, sizeof buf, p)) > 0;) tty.append(buf, k);
+    pclose(p);
+    EXPECT_TRUE(has(tty, "features checked")) << tty;
+    EXPECT_TRUE(has(tty, "\r\033[K")) << "the line is erased at the end";
+    EXPECT_EQ(timeless(slurp(out)), timeless(piped.out)) << "stdout is the same table either way";
+    fs::remove(out);
+}

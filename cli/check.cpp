@@ -42,8 +42,8 @@ namespace {
 namespace fs = std::filesystem;
 
 // In increasing severity: the exit code of a run is that of its worst row.
-#define FLOOD_VERDICTS(X)       \
-    X(Ok, "ok", Ok)             \
+#define FLOOD_VERDICTS(X)                \
+    X(Ok, "ok", Ok)                      \
     X(Malformed, "malformed", Malformed) \
     X(Invalid, "invalid", Invalid)       \
     X(Forbidden, "forbidden", Forbidden) \

@@ -12,6 +12,7 @@
 #include <map>
 #include <nlohmann/json.hpp>
 #include <regex>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -376,4 +377,18 @@ TEST(Check, ProgressLineOnlyOnATerminal) {
     EXPECT_TRUE(has(tty, "\r\033[K")) << "the line is erased at the end";
     EXPECT_EQ(timeless(slurp(out)), timeless(piped.out)) << "stdout is the same table either way";
     fs::remove(out);
+}
+
+// Two inputs with one stem (a.json in two folders) do not overwrite each other's repros.
+TEST(Check, ExtractedNamesNeverCollide) {
+    fs::path d = scratch("stems");
+    fs::create_directories(d / "copy");
+    fs::copy_file(kMixed, d / "copy" / "mixed.geojson");
+    json doc = checkJson("--extract " + (d / "out").string() + " " + kMixed + " " + (d / "copy").string());
+    std::set<std::string> names;
+    for (const json& r : doc["features"])
+        if (r["extracted"].is_string()) names.insert(fs::path(r["extracted"].get<std::string>()).filename());
+    EXPECT_EQ(names.size(), 10u);
+    EXPECT_TRUE(names.count("mixed_feature1.json") && names.count("mixed-2_feature1.json")) << doc;
+    fs::remove_all(d);
 }

@@ -349,8 +349,10 @@ int run(int argc, char** argv) {
         ->required();
     chk->add_flag("--json", checkOptions.json, "One JSON document: a record per feature and the summary");
     chk->add_option("--extract", checkOptions.extractDir,
-                    "Write each failing feature to DIR/STEM_featureN.json");
+                    "Write each failing feature to DIR/STEM_featureN.json")
+        ->type_name("DIR");
     chk->add_option("-j,--jobs", checkOptions.jobs, "Features checked in parallel (default: all cores)")
+        ->type_name("N")
         ->check(CLI::Range(1u, 1024u));
     addNoValidate(chk);
 

@@ -1,5 +1,5 @@
 // The `flood` command-line tool: triangulate, trace, transcript, verify, bench, generate,
-// shrink.
+// shrink, check (cli/check.h).
 //
 // Command-line parsing uses CLI11: a Debian package (libcli11-dev), header-only, with
 // subcommands and generated --help, so no hand-written argument parsing.
@@ -15,7 +15,9 @@
 #include <csignal>
 #include <cstdio>
 #include <iostream>
+#include <thread>
 
+#include "check.h"
 #include "checker.h"
 #include "generate.h"
 #include "flood.h"
@@ -364,7 +366,23 @@ int run(int argc, char** argv) {
                   "--no-validate) passes, keeping it so (docs/ALGORITHM.md §6)");
     addUp(shr, up);
 
-    for (CLI::App* cmd : {tri, trace, tr, ver, bench, shr})
+    cli::CheckOptions checkOptions;
+    checkOptions.jobs = std::max(1u, std::thread::hardware_concurrency());
+    auto* chk = app.add_subcommand("check", "Check every polygon of a dataset: each feature of "
+                                            "each file, folders recursively; a table or --json");
+    chk->add_option("FILE", checkOptions.inputs,
+                    "Files and folders (.json, .geojson, .wkt found recursively; - for stdin)")
+        ->required();
+    chk->add_flag("--json", checkOptions.json, "One JSON document: a record per feature and the summary");
+    chk->add_option("--extract", checkOptions.extractDir,
+                    "Write each failing feature to DIR/STEM_featureN.json")
+        ->type_name("DIR");
+    chk->add_option("-j,--jobs", checkOptions.jobs, "Features checked in parallel (default: all cores)")
+        ->type_name("N")
+        ->check(CLI::Range(1u, 1024u));
+    addNoValidate(chk);
+
+    for (CLI::App* cmd : {tri, trace, tr, ver, bench, shr, chk})
         cmd->add_option("--max-input-bytes", maxInputBytes,
                         "Refuse inputs larger than this (default 4 GiB; suffixes k, M, G: "
                         "1024-based)")
@@ -413,6 +431,11 @@ int run(int argc, char** argv) {
         if (shr->parsed()) return cmdShrink(in, out, up, timeout, slipping);
         if (ver->parsed()) return cmdVerify(in, up, !noValidate);
         if (bench->parsed()) return cmdBench(in, repeat, up);
+        if (chk->parsed()) {
+            checkOptions.maxInputBytes = maxInputBytes;
+            checkOptions.validate = !noValidate;
+            return cli::runCheck(checkOptions);
+        }
     } catch (const std::exception& e) {
         std::cerr << "internal error: " << e.what() << "\n";
         return code(Status::Internal);

@@ -38,6 +38,27 @@ ReadResult parsePolygon(std::string_view text, const std::string& name);
 ReadResult readPolygonFile(const std::string& path,  // "-" reads stdin
                            uint64_t maxBytes = kDefaultMaxInputBytes);
 
+// One polygon of a dataset (`flood check`): a Feature of a FeatureCollection, or a whole file.
+struct FeatureRead {
+    bool wholeFile = true;  // not a FeatureCollection's feature (any other document, or unreadable)
+    size_t index = 0;       // position in the collection's "features" array
+    std::string id, name;   // the Feature's "id" and "properties.name" (cut to 60 bytes), or ""
+    std::string source;     // the Feature as GeoJSON text, when asked for (for extraction)
+    ReadResult read;        // as parsePolygon reads it alone; messages say "NAME: feature N ..."
+};
+
+struct DatasetRead {
+    std::vector<FeatureRead> features;
+    std::vector<std::string> skipped;  // warnings for non-polygonal features
+};
+
+// Splits a FeatureCollection into its features, each read on its own so one broken feature
+// does not hide the others (a MultiPolygon feature stays one polygon: its parts may
+// interact). Any other document, or one that cannot be parsed, is one whole-file entry read
+// by parsePolygon, with its diagnostic unchanged.
+DatasetRead parseFeatures(std::string_view text, const std::string& name, bool keepSource);
+DatasetRead readFeaturesFile(const std::string& path, uint64_t maxBytes, bool keepSource);
+
 // Reads all of `path` ("-" is stdin) into `text`. Malformed, naming the file, when it cannot
 // be opened or read, is a directory, holds a NUL byte (binary data, not `expected`: reading
 // stops there, so /dev/zero ends at once) or grows beyond `maxBytes`.

@@ -308,4 +308,99 @@ ReadResult readPolygonFile(const std::string& path, uint64_t maxBytes) {
     return parsePolygon(text, path == "-" ? "<stdin>" : path);
 }
 
+// Splitting a dataset for `flood check`. Only a document that mentions "FeatureCollection"
+// is parsed here; everything else (and any document that fails to parse) goes to
+// parsePolygon as a whole, so its messages are exactly those of the other commands.
+namespace {
+
+// A property echoed into the report: strings as they are, other values as JSON text.
+std::string propertyText(const json& v) { return echo(v.is_string() ? v.get<std::string>() : v.dump()); }
+
+FeatureRead readFeature(const std::string& name, const json& item, size_t i, bool keepSource) {
+    FeatureRead f;
+    f.wholeFile = false;
+    f.index = i;
+    const std::string ctx = "feature " + std::to_string(i);
+    try {
+        if (item.is_object() && item.contains("id") && !item["id"].is_null())
+            f.id = propertyText(item["id"]);
+        if (item.is_object() && item.contains("properties") && item["properties"].is_object() &&
+            item["properties"].contains("name") && !item["properties"]["name"].is_null())
+            f.name = propertyText(item["properties"]["name"]);
+        if (keepSource) f.source = item.dump();
+        if (!item.is_object() || !item.contains("geometry"))
+            throw BadStructure{ctx + ": not a Feature with a geometry"};
+        int polygonCount = 0;
+        readGeometry(f.read, name, item["geometry"], ctx + " ", polygonCount);
+        if (f.read.polygon.rings.empty()) throw BadStructure{ctx + ": no polygon found"};
+    } catch (const BadStructure& b) {
+        f.read.polygon = Polygon{};
+        f.read.diagnostic = {Status::Malformed, name + ": " + b.message};
+    } catch (const json::exception& e) {
+        f.read.polygon = Polygon{};
+        f.read.diagnostic = {Status::Malformed, name + ": " + ctx + ": " + jsonReason(e.what())};
+    }
+    return f;
+}
+
+// As parsePolygon decides: a missing geometry is malformed (reported), a null or other one skipped.
+bool polygonal(const json& item) {
+    if (!item.is_object() || !item.contains("geometry")) return true;
+    const json& g = item["geometry"];
+    if (!g.is_object() || !g.contains("type") || !g["type"].is_string()) return false;
+    const std::string t = g["type"].get<std::string>();
+    return t == "Polygon" || t == "MultiPolygon" || t == "GeometryCollection" || t == "Feature";
+}
+
+}  // namespace
+
+DatasetRead parseFeatures(std::string_view text, const std::string& name, bool keepSource) {
+    DatasetRead out;
+    auto whole = [&] {
+        FeatureRead f;
+        f.read = parsePolygon(text, name);
+        out.features.push_back(std::move(f));
+        return std::move(out);
+    };
+    if (text.find("\"FeatureCollection\"") == std::string_view::npos ||
+        text.find('\0') != std::string_view::npos || tooDeep(text) != std::string_view::npos)
+        return whole();
+    json doc;
+    try {
+        doc = json::parse(text.begin(), text.end());
+    } catch (const json::exception&) {
+        return whole();  // parsePolygon says where and why
+    }
+    if (!doc.is_object() || !doc.contains("type") || doc["type"] != "FeatureCollection" ||
+        !doc.contains("features") || !doc["features"].is_array() || doc["features"].empty())
+        return whole();
+    const json& items = doc["features"];
+    for (size_t i = 0; i < items.size(); ++i) {
+        if (!polygonal(items[i])) {
+            const json& g = items[i]["geometry"];
+            std::string type = g.is_object() && g.contains("type") && g["type"].is_string()
+                                   ? echo(g["type"].get<std::string>())
+                                   : "null";
+            out.skipped.push_back(name + ": feature " + std::to_string(i) + ": not polygonal (" +
+                                  type + "), skipped");
+            continue;
+        }
+        out.features.push_back(readFeature(name, items[i], i, keepSource));
+    }
+    if (out.features.empty()) return whole();  // "no polygon found"
+    return out;
+}
+
+DatasetRead readFeaturesFile(const std::string& path, uint64_t maxBytes, bool keepSource) {
+    std::string text;
+    Diagnostic d = readInputFile(path, text, maxBytes, "GeoJSON or WKT");
+    if (!d.ok()) {
+        DatasetRead out;
+        out.features.emplace_back();
+        out.features.back().read.diagnostic = d;
+        return out;
+    }
+    return parseFeatures(text, path == "-" ? "<stdin>" : path, keepSource);
+}
+
 }  // namespace flood

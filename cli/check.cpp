@@ -1,0 +1,472 @@
+// `flood check`: the pipeline of the other commands (read -> validate -> flood -> exact
+// check) run on every feature of every file, in parallel, one row per feature.
+//
+// The unit of failure is the feature: a MultiPolygon's parts may touch or overlap, which is
+// a failure of the feature (validate() names the ring, the row adds its part). A file that
+// is no FeatureCollection is one feature; a file that cannot be read or parsed is one row.
+//
+// Work is a queue of jobs: reading a file puts its features at the front, so files are read
+// only when no feature waits and a few files are in memory at a time. Rows are kept in
+// input order and printed at the end: the output is the same for any -j.
+#include "check.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cctype>
+#include <chrono>
+#include <condition_variable>
+#include <cstdio>
+#include <cstdlib>
+#include <deque>
+#include <filesystem>
+#include <iostream>
+#include <mutex>
+#include <new>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "checker.h"
+#include "flood.h"
+#include "io.h"
+#include "output.h"
+#include "shrink.h"
+
+namespace flood::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+// In increasing severity: the exit code of a run is that of its worst row.
+#define FLOOD_VERDICTS(X)                \
+    X(Ok, "ok", Ok)                      \
+    X(Malformed, "malformed", Malformed) \
+    X(Invalid, "invalid", Invalid)       \
+    X(Forbidden, "forbidden", Forbidden) \
+    X(Checker, "checker", Internal)      \
+    X(Internal, "internal", Internal)
+
+enum class Verdict {
+#define FLOOD_X(name, word, status) name,
+    FLOOD_VERDICTS(FLOOD_X)
+#undef FLOOD_X
+        Count
+};
+
+const char* verdictName(Verdict v) {
+    static const char* const names[] = {
+#define FLOOD_X(name, word, status) word,
+        FLOOD_VERDICTS(FLOOD_X)
+#undef FLOOD_X
+    };
+    return names[int(v)];
+}
+
+Status verdictStatus(Verdict v) {
+    static const Status statuses[] = {
+#define FLOOD_X(name, word, status) Status::status,
+        FLOOD_VERDICTS(FLOOD_X)
+#undef FLOOD_X
+    };
+    return statuses[int(v)];
+}
+
+struct Row {
+    std::string file;
+    bool wholeFile = true;
+    size_t feature = 0;
+    std::string id, name;
+    size_t vertices = 0;
+    Verdict verdict = Verdict::Ok;
+    std::string at;      // ring and vertex, or the forbidden transition
+    std::string reason;  // one line
+    std::string repro;   // --extract: GeoJSON text that fails the same way ("" = none)
+    std::string extracted;
+};
+
+// One input file: its features while they wait, then their rows.
+struct File {
+    explicit File(std::string p, std::string e = "") : path(std::move(p)), error(std::move(e)) {}
+    std::string path;
+    std::string error;  // a folder that could not be listed or holds no polygon file
+    std::vector<FeatureRead> features;
+    std::vector<std::string> warnings;
+    std::vector<Row> rows;
+};
+
+std::string displayName(const std::string& path) { return path == "-" ? "<stdin>" : path; }
+
+std::string oneLine(std::string s) {
+    std::replace_if(s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r' || c == '\t'; }, ' ');
+    return s;
+}
+
+// Messages start with the file's name, which the row has in a column of its own.
+std::string withoutName(const std::string& message, const std::string& name) {
+    if (message.compare(0, name.size(), name) != 0) return message;
+    size_t i = name.size();
+    if (message.compare(i, 2, ": ") == 0) i += 2;
+    else if (message.compare(i, 1, ":") == 0) i += 1;
+    return message.substr(i);
+}
+
+// validate()'s "ring R vertex V (x, y): reason" (docs/ERRORS.md) split into where and why;
+// the ring's part is added when the feature has several.
+void splitInvalid(Row& row, const std::string& text, const Polygon& p) {
+    size_t end = std::string::npos;
+    if (text.compare(0, 5, "ring ") == 0) {
+        size_t point = text.find("): ");
+        end = point != std::string::npos ? point + 1 : text.find(": ");
+    }
+    if (end == std::string::npos) {
+        row.reason = text;
+        return;
+    }
+    row.at = text.substr(0, end);
+    row.reason = text.substr(end + 2);
+    if (p.parts.size() > 1) {
+        size_t ring = std::strtoul(text.c_str() + 5, nullptr, 10);
+        for (size_t k = 0; k < p.parts.size(); ++k)
+            if (ring >= p.parts[k].firstRing && ring < p.parts[k].firstRing + p.parts[k].ringCount)
+                row.at += " (part " + std::to_string(k) + ")";
+    }
+}
+
+// Numbered as describeForbidden() numbers them (steps from 1).
+std::string forbiddenAt(const Polygon& p, const Event& e) {
+    std::string at = std::string(forbiddenName(e.reason)) + " at step " + std::to_string(e.step + 1);
+    if (e.culprit != kNone && e.culprit < p.vertices.size()) {
+        Index r = p.ringOf(e.culprit);
+        at += ", ring " + std::to_string(r) + " vertex " + std::to_string(e.culprit - p.rings[r].first);
+    }
+    return at;
+}
+
+std::string polygonJson(const Polygon& p) {
+    std::ostringstream s;
+    writePolygonJson(s, p);
+    return s.str();
+}
+
+// Read, validate, flood, check: the first failure is the verdict.
+void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
+    const std::string name = displayName(row.file);
+    row.wholeFile = f.wholeFile;
+    row.feature = f.index;
+    row.id = f.id;
+    row.name = f.name;
+    bool readable = f.read.diagnostic.ok();
+    try {
+        Polygon& p = f.read.polygon;
+        row.vertices = p.vertices.size();
+        if (!readable) {
+            row.verdict = f.read.diagnostic.status == Status::Internal ? Verdict::Internal
+                                                                        : Verdict::Malformed;
+            row.reason = withoutName(f.read.diagnostic.message, name);
+        } else if (Diagnostic d = o.validate ? validate(p, name) : Diagnostic{}; !d.ok()) {
+            row.verdict = Verdict::Invalid;
+            splitInvalid(row, withoutName(d.message, name), p);
+        } else {
+            FloodResult r = triangulate(p);
+            if (!r.diagnostic.ok()) {
+                row.verdict = Verdict::Forbidden;
+                row.at = forbiddenAt(p, r.failure);
+                row.reason = r.diagnostic.message;
+            } else if (CheckResult c = checkTriangulation(p, r.triangles); !c.ok) {
+                row.verdict = Verdict::Checker;
+                row.reason = "the exact checker rejects the triangulation: " + c.reason;
+            }
+        }
+        // A whole file is copied at extraction (cannot be re-read from stdin: written anew).
+        if (row.verdict != Verdict::Ok && !o.extractDir.empty())
+            row.repro = !f.wholeFile ? std::move(f.source)
+                        : row.file == "-" && readable ? polygonJson(p) : "";
+    } catch (const std::bad_alloc&) {
+        row.verdict = Verdict::Internal;
+        row.reason = "out of memory";
+    } catch (const std::exception& e) {
+        row.verdict = Verdict::Internal;
+        row.reason = std::string("exception: ") + e.what();
+    } catch (...) {
+        row.verdict = Verdict::Internal;
+        row.reason = "unknown exception";
+    }
+    row.reason = oneLine(std::move(row.reason));
+    f = FeatureRead{};  // the polygon is done with: free it now
+}
+
+bool polygonFile(const fs::path& p) {
+    std::string ext = p.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext == ".json" || ext == ".geojson" || ext == ".wkt";
+}
+
+// Folders become their polygon files, recursively, in sorted order.
+std::vector<File> expand(const std::vector<std::string>& inputs) {
+    std::vector<File> files;
+    for (const std::string& in : inputs) {
+        std::error_code ec;
+        if (in == "-" || !fs::is_directory(in, ec)) {
+            files.emplace_back(in);
+            continue;
+        }
+        std::vector<std::string> found;
+        fs::recursive_directory_iterator it(in, ec), end;
+        for (; !ec && it != end; it.increment(ec)) {
+            std::error_code fe;
+            if (it->is_regular_file(fe) && polygonFile(it->path())) found.push_back(it->path().string());
+        }
+        std::sort(found.begin(), found.end());
+        for (std::string& f : found) files.emplace_back(std::move(f));
+        if (ec) files.emplace_back(in, in + ": cannot list folder: " + ec.message());
+        else if (found.empty()) files.emplace_back(in, in + ": folder holds no .json, .geojson or .wkt file");
+    }
+    return files;
+}
+
+// The job queue shared by the workers (see the header comment).
+class Scheduler {
+public:
+    Scheduler(std::vector<File>& files, const CheckOptions& o) : files_(files), o_(o) {
+        for (size_t i = 0; i < files.size(); ++i) queue_.push_back({i, kRead});
+    }
+
+    void work() {
+        for (;;) {
+            std::unique_lock<std::mutex> lock(m_);
+            cv_.wait(lock, [&] { return !queue_.empty() || active_ == 0; });
+            if (queue_.empty()) return;
+            Job j = queue_.front();
+            queue_.pop_front();
+            ++active_;
+            lock.unlock();
+            std::vector<Job> more;
+            if (j.feature == kRead) read(j.file, more);
+            else {
+                checkFeature(files_[j.file].features[j.feature], files_[j.file].rows[j.feature], o_);
+                ++featuresDone;
+            }
+            lock.lock();
+            queue_.insert(queue_.begin(), more.begin(), more.end());
+            --active_;
+            lock.unlock();
+            cv_.notify_all();
+        }
+    }
+
+    std::atomic<size_t> filesRead{0}, featuresKnown{0}, featuresDone{0};
+
+private:
+    static constexpr size_t kRead = SIZE_MAX;
+    struct Job {
+        size_t file, feature;
+    };
+
+    void read(size_t i, std::vector<Job>& more) {
+        File& f = files_[i];
+        if (!f.error.empty()) {
+            FeatureRead failed;
+            failed.read.diagnostic = {Status::Malformed, f.error};
+            f.features.push_back(std::move(failed));
+        } else {
+            try {
+                DatasetRead d = readFeaturesFile(f.path, o_.maxInputBytes, !o_.extractDir.empty());
+                f.features = std::move(d.features);
+                f.warnings = std::move(d.skipped);
+            } catch (const std::bad_alloc&) {
+                f.features.assign(1, FeatureRead{});
+                f.features[0].read.diagnostic = {Status::Malformed, displayName(f.path) + ": out of memory while reading"};
+            } catch (const std::exception& e) {
+                f.features.assign(1, FeatureRead{});
+                f.features[0].read.diagnostic = {Status::Internal, displayName(f.path) +
+                                                                       ": exception while reading: " + e.what()};
+            }
+            for (const FeatureRead& r : f.features) {
+                f.warnings.insert(f.warnings.end(), r.read.warnings.begin(), r.read.warnings.end());
+                if (r.read.warningsOmitted)
+                    f.warnings.push_back(displayName(f.path) + ": \u2026 and " +
+                                         std::to_string(r.read.warningsOmitted) + " more warnings like these");
+            }
+        }
+        f.rows.resize(f.features.size());
+        for (size_t k = 0; k < f.features.size(); ++k) {
+            f.rows[k].file = f.path;
+            more.push_back({i, k});
+        }
+        featuresKnown += f.features.size();
+        ++filesRead;
+    }
+
+    std::vector<File>& files_;
+    const CheckOptions& o_;
+    std::mutex m_;
+    std::condition_variable cv_;
+    std::deque<Job> queue_;
+    size_t active_ = 0;
+};
+
+// Each failing feature as DIR/STEM_featureN.json (a second file of the same stem gets
+// STEM-2_...); a failing whole file is copied as DIR/STEM_feature0.EXT, its format kept (JSON
+// cannot hold the NaN of a WKT file). Returns false when one could not be written.
+bool extract(std::vector<Row*>& rows, const CheckOptions& o) {
+    std::error_code ec;
+    fs::create_directories(o.extractDir, ec);
+    if (ec) {
+        std::cerr << "error: " << o.extractDir << ": cannot create the --extract folder: " << ec.message() << "\n";
+        return false;
+    }
+    bool ok = true;
+    std::set<std::string> stems;
+    std::string lastFile, stem;
+    for (Row* r : rows) {
+        if (r->verdict == Verdict::Ok) continue;
+        std::string text = std::move(r->repro), ext = ".json";
+        if (r->wholeFile && r->file != "-") {
+            ext = fs::path(r->file).extension().string();
+            if (!readInputFile(r->file, text, o.maxInputBytes, "GeoJSON or WKT").ok()) continue;
+        }
+        if (text.empty()) continue;  // unreadable: there is nothing to extract
+        if (r->file != lastFile) {
+            lastFile = r->file;
+            std::string base = r->file == "-" ? "stdin" : fs::path(r->file).stem().string();
+            stem = base;
+            for (int k = 2; !stems.insert(stem).second; ++k) stem = base + "-" + std::to_string(k);
+        }
+        std::string path = (fs::path(o.extractDir) / (stem + "_feature" + std::to_string(r->feature) + ext)).string();
+        Output out(path);
+        out.stream() << text;
+        if (out.commit() == Status::Ok) r->extracted = path;
+        else ok = false;
+    }
+    return ok;
+}
+
+size_t width(const std::string& s) {  // UTF-8 code points
+    return size_t(std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+}
+
+// Cut to one table cell, never inside a UTF-8 sequence.
+std::string cell(const std::string& s, size_t max) {
+    if (s.size() <= max) return s;
+    size_t n = max;
+    while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
+    return s.substr(0, n) + "\u2026";
+}
+
+void printTable(const std::vector<Row*>& rows) {
+    std::vector<std::array<std::string, 7>> cells;
+    cells.push_back({"FILE", "FEATURE", "ID/NAME", "VERTICES", "VERDICT", "AT", "REASON"});
+    for (const Row* r : rows) {
+        const std::string& label = !r->id.empty() ? r->id : r->name;
+        cells.push_back({r->file, r->wholeFile ? "-" : std::to_string(r->feature),
+                         label.empty() ? "-" : label, std::to_string(r->vertices),
+                         verdictName(r->verdict), r->at.empty() ? "-" : cell(r->at, 80),
+                         r->reason.empty() ? "-" : cell(r->reason, 120)});
+    }
+    std::array<size_t, 7> w{};
+    for (const auto& c : cells)
+        for (size_t k = 0; k < c.size(); ++k) w[k] = std::max(w[k], width(c[k]));
+    for (const auto& c : cells) {
+        std::string line;
+        for (size_t k = 0; k < c.size(); ++k) {
+            line += c[k];
+            if (k + 1 < c.size()) line += std::string(w[k] - width(c[k]) + 2, ' ');
+        }
+        std::cout << line << "\n";
+    }
+}
+
+}  // namespace
+
+int runCheck(const CheckOptions& o) {
+    auto t0 = std::chrono::steady_clock::now();
+    std::vector<File> files = expand(o.inputs);
+    Scheduler scheduler(files, o);
+    std::vector<std::thread> workers;
+    for (unsigned k = 0; k < std::max(1u, o.jobs); ++k) workers.emplace_back([&] { scheduler.work(); });
+    double seconds = 0;
+    auto joinWorkers = [&] {
+        for (std::thread& t : workers) t.join();
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
+    if (isatty(STDERR_FILENO)) {
+        // A progress line, redrawn at most 10 times a second, erased at the end.
+        std::mutex m;
+        std::condition_variable cv;
+        bool finished = false;
+        std::thread progress([&] {
+            std::unique_lock<std::mutex> lock(m);
+            do {
+                std::fprintf(stderr, "\r\033[Kcheck: %zu/%zu features checked, %zu/%zu files read",
+                             scheduler.featuresDone.load(), scheduler.featuresKnown.load(),
+                             scheduler.filesRead.load(), files.size());
+                std::fflush(stderr);
+            } while (!cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return finished; }));
+            std::fprintf(stderr, "\r\033[K");
+            std::fflush(stderr);
+        });
+        joinWorkers();
+        {
+            std::lock_guard<std::mutex> lock(m);
+            finished = true;
+        }
+        cv.notify_one();
+        progress.join();
+    } else {
+        joinWorkers();
+    }
+
+    std::vector<Row*> rows;
+    for (File& f : files) {
+        for (const std::string& w : f.warnings) std::cerr << "warning: " << w << "\n";
+        for (Row& r : f.rows) rows.push_back(&r);
+    }
+    int code = 0;
+    std::array<size_t, size_t(Verdict::Count)> count{};
+    for (const Row* r : rows) {
+        ++count[size_t(r->verdict)];
+        code = std::max(code, int(verdictStatus(r->verdict)));
+    }
+    if (!o.extractDir.empty() && !extract(rows, o)) code = int(Status::WriteFailed);
+
+    std::string summary = "check: " + std::to_string(rows.size()) +
+                          (rows.size() == 1 ? " feature in " : " features in ") +
+                          std::to_string(files.size()) + (files.size() == 1 ? " file: " : " files: ");
+    for (size_t v = 0; v < count.size(); ++v)
+        summary += (v ? ", " : "") + std::to_string(count[v]) + " " + verdictName(Verdict(v));
+    char time[32];
+    std::snprintf(time, sizeof time, "; %.2f s", seconds);
+    if (!o.json) {
+        printTable(rows);
+        std::cout << summary << time << "\n";
+        return code;
+    }
+    using json = nlohmann::ordered_json;  // fields in the order of the table
+    auto orNull = [](const std::string& s) { return s.empty() ? json(nullptr) : json(s); };
+    json records = json::array();
+    for (const Row* r : rows)
+        records.push_back({{"file", r->file},
+                           {"feature", r->wholeFile ? json(nullptr) : json(r->feature)},
+                           {"id", orNull(r->id)},
+                           {"name", orNull(r->name)},
+                           {"vertices", r->vertices},
+                           {"verdict", verdictName(r->verdict)},
+                           {"code", int(verdictStatus(r->verdict))},
+                           {"at", orNull(r->at)},
+                           {"reason", orNull(r->reason)},
+                           {"extracted", orNull(r->extracted)}});
+    json counts = json::object();
+    for (size_t v = 0; v < count.size(); ++v) counts[verdictName(Verdict(v))] = count[v];
+    json doc = {{"features", records},
+                {"summary", {{"files", files.size()}, {"features", rows.size()}, {"verdicts", counts},
+                             {"code", code}, {"seconds", seconds}}}};
+    // Invalid UTF-8 in a property or path is replaced, never a throw.
+    std::cout << doc.dump(1, ' ', false, json::error_handler_t::replace) << "\n";
+    return code;
+}
+
+}  // namespace flood::cli

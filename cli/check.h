@@ -1,0 +1,24 @@
+// `flood check FILE...`: every polygon of a dataset validated, triangulated and exactly
+// checked, one row each (docs/ERRORS.md, "flood check").
+#pragma once
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace flood::cli {
+
+struct CheckOptions {
+    std::vector<std::string> inputs;  // files and folders ("-" is stdin)
+    bool json = false;                // one JSON document instead of the table
+    std::string extractDir;           // write each failing feature there ("" = do not)
+    unsigned jobs = 1;                // worker threads
+    uint64_t maxInputBytes = 0;       // per file, as --max-input-bytes
+    bool validate = true;             // false: --no-validate, the machine diagnoses
+};
+
+// Returns the exit code: 0 when every feature passed, else the largest code of a failing
+// feature's class (3 malformed < 4 invalid < 5 forbidden < 6 checker/internal), or 8 when an
+// extracted file could not be written.
+int runCheck(const CheckOptions& options);
+
+}  // namespace flood::cli

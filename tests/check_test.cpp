@@ -1,0 +1,394 @@
+// `flood check` through the built binary: verdict counts and exit codes on a FeatureCollection
+// mixing valid and invalid features (polygons/datasets/mixed.geojson), the same output for
+// any -j, folders, --extract files that fail the same way, unreadable files among good ones,
+// and the sample folders checked against `flood triangulate` run on each file.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <regex>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "test_support.h"
+
+using namespace flood::testing;
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kMixed = sourcePath("polygons/datasets/mixed.geojson");
+
+struct CheckRun {
+    int code = -1;
+    std::string out, err;
+};
+
+fs::path scratch(const std::string& name) {
+    fs::path d = fs::temp_directory_path() / ("flood-check-" + name + "-" + std::to_string(getpid()));
+    fs::remove_all(d);
+    fs::create_directories(d);
+    return d;
+}
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+// stdout and stderr apart: the table and the JSON are stdout only.
+CheckRun cli(const std::string& args) {
+    fs::path err = fs::temp_directory_path() / ("flood-check-stderr-" + std::to_string(getpid()));
+    std::string cmd = std::string(FLOOD_CLI) + " " + args + " 2>" + err.string();
+    CheckRun r;
+    FILE* p = popen(cmd.c_str(), "r");
+    if (!p) return r;
+    char buf[4096];
+    for (size_t k; (k = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, k);
+    int st = pclose(p);
+    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    r.err = slurp(err);
+    fs::remove(err);
+    return r;
+}
+
+json checkJson(const std::string& args, int* code = nullptr) {
+    CheckRun r = cli("check --json " + args);
+    if (code) *code = r.code;
+    json doc = json::parse(r.out, nullptr, false);
+    EXPECT_FALSE(doc.is_discarded()) << r.out << r.err;
+    return doc;
+}
+
+bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// The only part of the output that depends on the run: the time.
+std::string timeless(std::string s) {
+    s = std::regex_replace(s, std::regex("; [0-9.]+ s\n"), "; T s\n");
+    return std::regex_replace(s, std::regex("\"seconds\": [0-9.e+-]+"), "\"seconds\": T");
+}
+
+}  // namespace
+
+TEST(Check, CountsPerVerdictInTheTableAndTheJson) {
+    CheckRun t = cli("check " + kMixed);
+    EXPECT_EQ(t.code, 4) << t.out << t.err;  // worst: invalid (no feature got further and failed)
+    EXPECT_TRUE(has(t.out, "check: 9 features in 1 file: 4 ok, 2 malformed, 3 invalid, "
+                           "0 forbidden, 0 checker, 0 internal; "))
+        << t.out;
+    EXPECT_TRUE(has(t.err, "feature 6: not polygonal (LineString), skipped")) << t.err;
+
+    int code = -1;
+    json doc = checkJson(kMixed, &code);
+    EXPECT_EQ(code, 4);
+    const json& s = doc["summary"];
+    EXPECT_EQ(s["features"], 9);
+    EXPECT_EQ(s["files"], 1);
+    EXPECT_EQ(s["code"], 4);
+    EXPECT_EQ(s["verdicts"], json::parse(R"({"ok": 4, "malformed": 2, "invalid": 3, "forbidden": 0,
+                                             "checker": 0, "internal": 0})"));
+    // Feature index -> verdict, id, name: the LineString (6) has no row.
+    struct Expect {
+        int feature;
+        const char* verdict;
+        int code;
+        json id, name;
+        const char* at;
+    } expect[] = {
+        {0, "ok", 0, "square-with-hole", nullptr, nullptr},
+        {1, "invalid", 4, nullptr, "bow-tie", "ring 0 vertex 0 (0, 0)"},
+        {2, "ok", 0, "7", "two islands", nullptr},
+        {3, "invalid", 4, nullptr, "hole outside", "ring 1 vertex 0 (20, 20)"},
+        {4, "invalid", 4, nullptr, "overlapping parts", "ring 0 vertex 1 (10, 0) (part 0)"},
+        {5, "malformed", 3, nullptr, "broken coordinates", nullptr},
+        {7, "ok", 0, nullptr, "two holes", nullptr},
+        {8, "ok", 0, "triangle", "shadowed by its id", nullptr},
+        {9, "malformed", 3, nullptr, "no geometry", nullptr},
+    };
+    const json& rows = doc["features"];
+    ASSERT_EQ(rows.size(), std::size(expect));
+    for (size_t k = 0; k < rows.size(); ++k) {
+        const json& r = rows[k];
+        const Expect& e = expect[k];
+        EXPECT_EQ(r["file"], kMixed);
+        EXPECT_EQ(r["feature"], e.feature);
+        EXPECT_EQ(r["verdict"], e.verdict) << r;
+        EXPECT_EQ(r["code"], e.code) << r;
+        EXPECT_EQ(r["id"], e.id) << r;
+        EXPECT_EQ(r["name"], e.name) << r;
+        EXPECT_EQ(r["at"], e.at ? json(e.at) : json(nullptr)) << r;
+        EXPECT_EQ(r["reason"].is_null(), e.code == 0) << r;
+    }
+    EXPECT_EQ(rows[3]["reason"], "hole (ring 1) lies outside its outer ring (ring 0) (global vertex 4)");
+    EXPECT_EQ(rows[5]["reason"],
+              "feature 5 polygon 0 ring 0 vertex 2: coordinate is not a pair of numbers (got [10,\"ten\"])");
+    EXPECT_EQ(rows[2]["vertices"], 12);
+    // The table shows the id where there is one, else the name.
+    EXPECT_TRUE(std::regex_search(t.out, std::regex("mixed.geojson +8 +triangle +3 +ok"))) << t.out;
+    EXPECT_TRUE(std::regex_search(t.out, std::regex("mixed.geojson +1 +bow-tie +4 +invalid +ring 0 vertex 0"))) << t.out;
+}
+
+TEST(Check, ExitCodeIsZeroOnlyWhenAllPassElseTheWorstClass) {
+    EXPECT_EQ(cli("check " + sourcePath("polygons/hole.json") + " " + sourcePath("polygons/holes.json")).code, 0);
+    // Without validation the invalid features reach the machine: forbidden (5) is worse.
+    int code = -1;
+    json doc = checkJson("--no-validate " + kMixed, &code);
+    EXPECT_EQ(code, 5);
+    EXPECT_EQ(doc["summary"]["verdicts"]["forbidden"], 2) << doc["summary"];
+    EXPECT_EQ(doc["features"][1]["verdict"], "forbidden");
+    EXPECT_TRUE(has(doc["features"][1]["at"].get<std::string>(), " at step ")) << doc["features"][1];
+    // A checker rejection (6) outranks them all.
+    doc = checkJson("--no-validate " + kMixed + " " + sourcePath("polygons/invalid/checker-rejects.json"), &code);
+    EXPECT_EQ(code, 6);
+    EXPECT_EQ(doc["features"].back()["verdict"], "checker");
+    EXPECT_EQ(doc["summary"]["code"], 6);
+    EXPECT_EQ(cli("check").code, 2);
+    EXPECT_EQ(cli("check -j 0 " + kMixed).code, 2);
+}
+
+TEST(Check, SameOutputForAnyNumberOfJobs) {
+    std::string inputs = kMixed + " " + sourcePath("polygons") + " /nonexistent.json";
+    for (const char* flags : {"", "--json ", "--no-validate "}) {
+        CheckRun one = cli(std::string("check -j 1 ") + flags + inputs);
+        CheckRun four = cli(std::string("check -j 4 ") + flags + inputs);
+        EXPECT_EQ(one.code, four.code) << flags;
+        EXPECT_GT(one.out.size(), 1000u) << flags;
+        EXPECT_EQ(timeless(one.out), timeless(four.out)) << flags;
+        EXPECT_EQ(one.err, four.err) << flags;  // warnings in input order too
+    }
+}
+
+TEST(Check, FoldersAreCheckedRecursivelyInSortedOrder) {
+    fs::path d = scratch("folder");
+    fs::create_directories(d / "b" / "deeper");
+    fs::copy_file(kMixed, d / "b" / "deeper" / "mixed.geojson");
+    fs::copy_file(sourcePath("polygons/hole.json"), d / "a.json");
+    fs::copy_file(sourcePath("polygons/invalid/nan.wkt"), d / "b" / "nan.WKT");
+    std::ofstream(d / "notes.txt") << "not a polygon";
+    fs::create_directories(d / "empty");
+    json doc = checkJson(d.string() + " " + (d / "empty").string());
+    std::vector<std::string> files;
+    for (const json& r : doc["features"]) files.push_back(r["file"]);
+    ASSERT_EQ(files.size(), 1u + 1u + 9u + 1u) << doc;
+    EXPECT_EQ(files[0], (d / "a.json").string());
+    EXPECT_EQ(files[1], (d / "b" / "deeper" / "mixed.geojson").string());
+    EXPECT_EQ(files[10], (d / "b" / "nan.WKT").string());
+    EXPECT_EQ(doc["features"][10]["verdict"], "invalid");
+    // A folder with no polygon file is a row, not a silent pass.
+    EXPECT_EQ(files[11], (d / "empty").string());
+    EXPECT_EQ(doc["features"][11]["verdict"], "malformed");
+    EXPECT_EQ(doc["features"][11]["reason"], "folder holds no .json, .geojson or .wkt file");
+    fs::remove_all(d);
+}
+
+TEST(Check, AnUnreadableFileIsARowAndTheOthersAreChecked) {
+    fs::path d = scratch("unreadable");
+    int code = -1;
+    json doc = checkJson(sourcePath("polygons/hole.json") + " " + (d / "missing.json").string() + " " +
+                             sourcePath("polygons/holes.json") + " " + sourcePath("polygons/invalid/nul-bytes.json"),
+                         &code);
+    EXPECT_EQ(code, 3);
+    const json& rows = doc["features"];
+    ASSERT_EQ(rows.size(), 4u) << doc;
+    EXPECT_EQ(rows[0]["verdict"], "ok");
+    EXPECT_EQ(rows[1]["verdict"], "malformed");
+    EXPECT_EQ(rows[1]["feature"], nullptr);
+    EXPECT_EQ(rows[1]["reason"], "cannot open file: No such file or directory");
+    EXPECT_EQ(rows[2]["verdict"], "ok");
+    EXPECT_TRUE(has(rows[3]["reason"].get<std::string>(), "binary data")) << rows[3];
+    // --max-input-bytes counts per file, like the other reading commands.
+    doc = checkJson("--max-input-bytes 100 " + sourcePath("polygons/hole.json") + " " +
+                    sourcePath("polygons/holes.json"));
+    EXPECT_EQ(doc["features"][0]["verdict"], "ok");
+    EXPECT_TRUE(has(doc["features"][1]["reason"].get<std::string>(), "larger than the limit of 100 bytes"))
+        << doc["features"][1];
+    fs::remove_all(d);
+}
+
+// Each extracted file, run through `flood triangulate` (with the same --no-validate), exits
+// with the row's code and the same message; invalid ones fail `flood verify` alike.
+TEST(Check, ExtractedFeaturesReproduceTheirFailure) {
+    for (std::string flags : {"", "--no-validate "}) {
+        fs::path d = scratch("extract");
+        fs::path out = d / "failing";
+        int code = -1;
+        json doc = checkJson(flags + "--extract " + out.string() + " " + kMixed + " " +
+                                 sourcePath("polygons/invalid/nan.wkt") + " " +
+                                 sourcePath("polygons/invalid/malformed-json.json") + " " +
+                                 sourcePath("polygons/hole.json") + " /nonexistent.json",
+                             &code);
+        EXPECT_EQ(code, flags.empty() ? 4 : 5);
+        size_t extracted = 0, failing = 0;
+        for (const json& r : doc["features"]) {
+            if (r["code"] == 0) {
+                EXPECT_TRUE(r["extracted"].is_null()) << r;
+                continue;
+            }
+            ++failing;
+            if (r["file"] == "/nonexistent.json") {
+                EXPECT_TRUE(r["extracted"].is_null()) << "nothing to extract: " << r;
+                continue;
+            }
+            ASSERT_TRUE(r["extracted"].is_string()) << r;
+            ++extracted;
+            std::string path = r["extracted"];
+            std::string stem = fs::path(r["file"].get<std::string>()).stem().string();
+            int feature = r["feature"].is_null() ? 0 : r["feature"].get<int>();
+            EXPECT_EQ(fs::path(path).parent_path(), out);
+            EXPECT_EQ(fs::path(path).stem().string(), stem + "_feature" + std::to_string(feature));
+            CheckRun t = cli("triangulate " + flags + path);
+            EXPECT_EQ(t.code, r["code"]) << path << ": " << t.err;
+            std::string reason = r["reason"];
+            std::string at = r["at"].is_null() ? "" : r["at"].get<std::string>();
+            at = std::regex_replace(at, std::regex(" \\(part [0-9]+\\)$"), "");  // check's addition
+            if (r["verdict"] == "invalid") {
+                EXPECT_TRUE(has(t.err, path + ": " + at + ": " + reason)) << t.err << " vs " << r;
+                EXPECT_EQ(cli("verify " + path).code, 4);
+            } else if (r["verdict"] == "forbidden") {
+                EXPECT_TRUE(has(t.err, reason)) << t.err << " vs " << r;
+            } else if (r["verdict"] == "malformed" && has(reason, "coordinate")) {
+                // "feature 5 polygon 0 ..." in the collection is "polygon 0 ..." alone.
+                EXPECT_TRUE(has(t.err, reason.substr(reason.find("polygon 0")))) << t.err;
+            }
+        }
+        EXPECT_GE(failing, 6u) << flags;
+        EXPECT_EQ(extracted, failing - 1);  // all but the missing file
+        size_t files = std::distance(fs::directory_iterator(out), fs::directory_iterator());
+        EXPECT_EQ(files, extracted);
+        fs::remove_all(d);
+    }
+}
+
+// The sample folders: each file's row (or each feature's, for a FeatureCollection) has the
+// exit code `flood triangulate` gives that file alone.
+TEST(Check, SampleFoldersAgreeWithTriangulateFileByFile) {
+    fs::path d = scratch("smoke");
+    for (const char* folder : {"polygons", "polygons/invalid"}) {
+        std::vector<std::string> files;
+        for (auto& e : fs::recursive_directory_iterator(sourcePath(folder))) {
+            std::string ext = e.path().extension().string();
+            if (e.is_regular_file() && (ext == ".json" || ext == ".geojson" || ext == ".wkt"))
+                files.push_back(e.path().string());
+        }
+        std::sort(files.begin(), files.end());
+        // One expected (file, code) per row.
+        std::vector<std::pair<std::string, int>> expected;
+        std::map<int, size_t> perCode;
+        for (const std::string& f : files) {
+            json doc = json::parse(slurp(f), nullptr, false);
+            std::vector<std::string> alone{f};
+            if (doc.is_object() && doc.value("type", "") == "FeatureCollection") {
+                alone.clear();
+                for (size_t i = 0; i < doc["features"].size(); ++i) {
+                    const json& g = doc["features"][i]["geometry"];
+                    if (g.is_object() && (g["type"] == "LineString" || g["type"] == "Point")) continue;
+                    fs::path one = d / ("feature" + std::to_string(i) + ".json");
+                    std::ofstream(one) << doc["features"][i].dump();
+                    alone.push_back(one.string());
+                }
+            }
+            for (const std::string& a : alone) {
+                int code = cli("triangulate -o /dev/null " + a).code;
+                expected.push_back({f, code});
+                ++perCode[code];
+            }
+        }
+        json doc = checkJson(sourcePath(folder));
+        const json& rows = doc["features"];
+        ASSERT_EQ(rows.size(), expected.size()) << folder;
+        for (size_t k = 0; k < rows.size(); ++k) {
+            EXPECT_EQ(rows[k]["file"], expected[k].first);
+            EXPECT_EQ(rows[k]["code"], expected[k].second) << rows[k];
+        }
+        const json& v = doc["summary"]["verdicts"];
+        EXPECT_EQ(v["ok"], perCode[0]) << folder;
+        EXPECT_EQ(v["malformed"], perCode[3]) << folder;
+        EXPECT_EQ(v["invalid"], perCode[4]) << folder;
+        EXPECT_EQ(v["forbidden"].get<size_t>() + v["checker"].get<size_t>() + v["internal"].get<size_t>(),
+                  perCode[5] + perCode[6])
+            << folder;
+        EXPECT_GT(perCode[4], 5u) << folder << ": the invalid samples are there";
+    }
+    fs::remove_all(d);
+}
+
+// The core split: each feature read alone; parsePolygon's reading of the file is unchanged.
+TEST(Check, ParseFeaturesSplitsACollectionAndLeavesOtherFilesWhole) {
+    flood::ReadResult whole = flood::readPolygonFile(kMixed);
+    EXPECT_EQ(whole.diagnostic.status, flood::Status::Malformed);
+    EXPECT_TRUE(has(whole.diagnostic.message, "feature 5 polygon 7 ring 0 vertex 2")) << whole.diagnostic.message;
+
+    flood::DatasetRead d = flood::readFeaturesFile(kMixed, flood::kDefaultMaxInputBytes, false);
+    ASSERT_EQ(d.features.size(), 9u);
+    ASSERT_EQ(d.skipped.size(), 1u);
+    EXPECT_FALSE(d.features[0].wholeFile);
+    EXPECT_EQ(d.features[6].index, 7u);
+    EXPECT_EQ(d.features[2].read.polygon.parts.size(), 2u);  // a MultiPolygon stays one feature
+    EXPECT_EQ(d.features[2].read.polygon.rings.size(), 3u);
+    EXPECT_TRUE(d.features[2].source.empty());
+    EXPECT_EQ(d.features[5].read.diagnostic.status, flood::Status::Malformed);  // "feature 5 polygon 0 ..."
+    flood::DatasetRead kept = flood::readFeaturesFile(kMixed, flood::kDefaultMaxInputBytes, true);
+    EXPECT_TRUE(has(kept.features[1].source, "\"bow-tie\"")) << kept.features[1].source;
+
+    for (const char* other : {"polygons/holes.json", "polygons/invalid/malformed-json.json",
+                              "polygons/invalid/nan.wkt", "polygons/invalid/deep-nesting.json"}) {
+        flood::ReadResult r = flood::readPolygonFile(sourcePath(other));
+        flood::DatasetRead one = flood::readFeaturesFile(sourcePath(other), flood::kDefaultMaxInputBytes, true);
+        ASSERT_EQ(one.features.size(), 1u) << other;
+        EXPECT_TRUE(one.features[0].wholeFile);
+        EXPECT_EQ(one.features[0].read.diagnostic.message, r.diagnostic.message) << other;
+        EXPECT_EQ(one.features[0].read.polygon.vertices.size(), r.polygon.vertices.size()) << other;
+    }
+}
+
+TEST(Check, StdinAndAnExtractFolderThatCannotBeMade) {
+    CheckRun s = cli("check --json - < " + sourcePath("polygons/invalid/hole-outside.json"));
+    EXPECT_EQ(s.code, 4) << s.err;
+    EXPECT_TRUE(has(s.out, "\"file\": \"-\"")) << s.out;
+    fs::path d = scratch("badextract");
+    std::ofstream(d / "file") << "x";
+    CheckRun e = cli("check --extract " + (d / "file").string() + " " + kMixed);
+    EXPECT_EQ(e.code, 8) << e.err;
+    EXPECT_TRUE(has(e.err, "cannot create the --extract folder")) << e.err;
+    fs::remove_all(d);
+}
+
+// The progress line is for people: on a terminal (script(1) gives one), never in a pipe.
+TEST(Check, ProgressLineOnlyOnATerminal) {
+    CheckRun piped = cli("check " + kMixed);
+    EXPECT_FALSE(has(piped.err, "features checked")) << piped.err;
+    if (!fs::exists("/usr/bin/script")) GTEST_SKIP() << "no script(1) to make a terminal";
+    fs::path out = fs::temp_directory_path() / ("flood-check-tty-" + std::to_string(getpid()));
+    std::string inner = std::string(FLOOD_CLI) + " check -j 1 " + kMixed + " > " + out.string();
+    FILE* p = popen(("/usr/bin/script -qec '" + inner + "' /dev/null").c_str(), "r");
+    ASSERT_NE(p, nullptr);
+    std::string tty;
+    char buf[4096];
+    for (size_t k; (k = fread(buf, 1, sizeof buf, p)) > 0;) tty.append(buf, k);
+    pclose(p);
+    EXPECT_TRUE(has(tty, "features checked")) << tty;
+    EXPECT_TRUE(has(tty, "\r\033[K")) << "the line is erased at the end";
+    EXPECT_EQ(timeless(slurp(out)), timeless(piped.out)) << "stdout is the same table either way";
+    fs::remove(out);
+}
+
+// Two inputs with one stem (a.json in two folders) do not overwrite each other's repros.
+TEST(Check, ExtractedNamesNeverCollide) {
+    fs::path d = scratch("stems");
+    fs::create_directories(d / "copy");
+    fs::copy_file(kMixed, d / "copy" / "mixed.geojson");
+    json doc = checkJson("--extract " + (d / "out").string() + " " + kMixed + " " + (d / "copy").string());
+    std::set<std::string> names;
+    for (const json& r : doc["features"])
+        if (r["extracted"].is_string()) names.insert(fs::path(r["extracted"].get<std::string>()).filename());
+    EXPECT_EQ(names.size(), 10u);
+    EXPECT_TRUE(names.count("mixed_feature1.json") && names.count("mixed-2_feature1.json")) << doc;
+    fs::remove_all(d);
+}

@@ -137,14 +137,18 @@ TEST(Check, CountsPerVerdictInTheTableAndTheJson) {
 
 TEST(Check, ExitCodeIsZeroOnlyWhenAllPassElseTheWorstClass) {
     EXPECT_EQ(cli("check " + sourcePath("polygons/hole.json") + " " + sourcePath("polygons/holes.json")).code, 0);
-    // Without validation the invalid features reach the machine: forbidden (5) is worse.
+    // Without validation the invalid features reach the machine: forbidden (5) for the bow-tie
+    // and the hole outside, and the overlapping parts (flooded apart) are caught by the exact
+    // checker, which sees all parts together: a checker rejection (6) outranks the rest.
     int code = -1;
     json doc = checkJson("--no-validate " + kMixed, &code);
-    EXPECT_EQ(code, 5);
+    EXPECT_EQ(code, 6);
+    EXPECT_EQ(doc["summary"]["verdicts"]["checker"], 1) << doc["summary"];
+    EXPECT_EQ(doc["features"][4]["verdict"], "checker");
     EXPECT_EQ(doc["summary"]["verdicts"]["forbidden"], 2) << doc["summary"];
     EXPECT_EQ(doc["features"][1]["verdict"], "forbidden");
     EXPECT_TRUE(has(doc["features"][1]["at"].get<std::string>(), " at step ")) << doc["features"][1];
-    // A checker rejection (6) outranks them all.
+    // Another checker rejection in a second file keeps the worst class.
     doc = checkJson("--no-validate " + kMixed + " " + sourcePath("polygons/invalid/checker-rejects.json"), &code);
     EXPECT_EQ(code, 6);
     EXPECT_EQ(doc["features"].back()["verdict"], "checker");
@@ -224,7 +228,8 @@ TEST(Check, ExtractedFeaturesReproduceTheirFailure) {
                                  sourcePath("polygons/invalid/malformed-json.json") + " " +
                                  sourcePath("polygons/hole.json") + " /nonexistent.json",
                              &code);
-        EXPECT_EQ(code, flags.empty() ? 4 : 5);
+        // Unvalidated, the overlapping parts are a checker rejection (6), the worst class.
+        EXPECT_EQ(code, flags.empty() ? 4 : 6);
         size_t extracted = 0, failing = 0;
         for (const json& r : doc["features"]) {
             if (r["code"] == 0) {

@@ -121,7 +121,7 @@ class Triangulation(NamedTuple):
 class Verdict(Diagnostic):
     """check()'s record of one feature: its Diagnostic, its position and its triangle count."""
 
-    index: int = 0
+    index: Any = 0  # the feature's position, or the id given to check()
     triangles: int = 0
 
 
@@ -244,16 +244,21 @@ def trace(polygon, *, validate: bool = True, up: str = "+y", name: str = "polygo
     return Trace(result, name)
 
 
-def check(features, *, validate: bool = True, up: str = "+y", threads: int = 0) -> List[Verdict]:
+def check(features, *, validate: bool = True, up: str = "+y", threads: int = 0,
+          ids: Optional[Sequence] = None) -> List[Verdict]:
     """Triangulates every feature (any accepted polygon) on ``threads`` C++ threads (0: one
-    per core) and returns one Verdict per feature, in order, named "feature I" in messages.
+    per core) and returns one Verdict per feature, in order. Feature i is named "feature ID"
+    in messages and its Verdict's ``index`` is ID, ``ids[i]`` (default: i).
     Nothing raises for a bad feature: its Verdict says what is wrong."""
     features = list(features)
-    names = [f"feature {i}" for i in range(len(features))]
+    ids = list(range(len(features))) if ids is None else list(ids)
+    if len(ids) != len(features):
+        raise ValueError(f"{len(ids)} ids for {len(features)} features")
+    names = [f"feature {i}" for i in ids]
     inputs = [_normalize(f) for f in features]
     out = _flood.check(inputs, validate, up, threads, names)
-    return [Verdict._from((code, message), (), names[i], index=i, triangles=count)
-            for i, (code, message, count) in enumerate(out)]
+    return [Verdict._from((code, message), (), names[k], index=ids[k], triangles=count)
+            for k, (code, message, count) in enumerate(out)]
 
 
 def generate(family: str, size: int, seed: int = 1) -> List[List[np.ndarray]]:

@@ -239,24 +239,37 @@ PYBIND11_MODULE(_flood, m) {
                               trianglesArray(o.triangles), ringCounts(o.polygon));
     });
 
-    // Many features at once on `threads` C++ threads: all inputs are read first (GIL held),
-    // then validated, flooded and checked without the GIL. One (status, message, triangle
-    // count) per feature, in input order.
+    // Many features at once on `threads` C++ threads: arrays are read first (they need the
+    // GIL), texts (WKT, GeoJSON) by the threads; then every feature is validated, flooded and
+    // checked without the GIL. One (status, message, triangle count) per feature, in order.
     m.def("check", [](py::sequence inputs, bool validateFirst, const std::string& up,
                       unsigned threads, const std::vector<std::string>& names) {
         Options options;
         options.up = parseUp(up);
         if (names.size() != inputs.size()) throw py::value_error("one name per feature");
-        std::vector<Outcome> outcomes;
-        outcomes.reserve(inputs.size());
-        for (size_t i = 0; i < inputs.size(); ++i) outcomes.push_back(prepare(inputs[i], names[i]));
+        std::vector<Outcome> outcomes(inputs.size());
+        std::vector<std::string> texts(inputs.size());
+        std::vector<bool> isText(inputs.size());
+        for (size_t i = 0; i < inputs.size(); ++i) {
+            py::handle input = inputs[i];
+            isText[i] = py::isinstance<py::str>(input);
+            if (isText[i]) texts[i] = input.cast<std::string>();
+            else outcomes[i] = prepare(input, names[i]);
+        }
         {
             py::gil_scoped_release unlocked;
             std::atomic<size_t> nextFeature{0};
             auto worker = [&] {
                 for (size_t i; (i = nextFeature++) < outcomes.size();) {
-                    run(outcomes[i], validateFirst, options, names[i]);
-                    outcomes[i].polygon = {};  // the verdict is all that is kept
+                    Outcome& o = outcomes[i];
+                    if (isText[i]) {
+                        ReadResult rr = parsePolygon(texts[i], names[i]);
+                        o.diagnostic = rr.diagnostic;
+                        o.polygon = std::move(rr.polygon);
+                        std::string().swap(texts[i]);
+                    }
+                    run(o, validateFirst, options, names[i]);
+                    o.polygon = {};  // the verdict is all that is kept
                 }
             };
             if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());

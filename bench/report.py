@@ -6,7 +6,8 @@ Usage: report.py DATA_DIR BENCHMARKS.md PLOT.svg [README.md]
 Standard library only. Everything in the output is computed from DATA_DIR (results.tsv,
 memory.tsv, manifest.tsv, earcut-overhead.txt, machine.txt); nothing is typed in by hand. When
 README.md holds the markers <!-- bench:begin --> and <!-- bench:end -->, the summary between
-them is replaced too.
+them is replaced too. Sections of BENCHMARKS.md between <!-- kept:begin --> and
+<!-- kept:end --> (figures measured by other commands, which say so) are carried over as they are.
 """
 import csv
 import math
@@ -474,10 +475,16 @@ def main():
     if os.path.exists(eb):
         EVENT_BYTES = int(open(eb).read().strip() or EVENT_BYTES)
     md_path, svg_path = sys.argv[2], sys.argv[3]
+    kept = ""
+    if os.path.exists(md_path):
+        old, kb, ke = open(md_path).read(), "<!-- kept:begin -->", "<!-- kept:end -->"
+        while kb in old and ke in old.split(kb, 1)[1]:
+            block, old = old.split(kb, 1)[1].split(ke, 1)
+            kept += "\n" + kb + block + ke + "\n"
     with open(svg_path, "w") as f:
         f.write(svg(D))
     with open(md_path, "w") as f:
-        f.write(markdown(D, os.path.relpath(svg_path, os.path.dirname(md_path))))
+        f.write(markdown(D, os.path.relpath(svg_path, os.path.dirname(md_path))) + kept)
     if len(sys.argv) > 4 and os.path.exists(sys.argv[4]):
         readme = open(sys.argv[4]).read()
         b, e = "<!-- bench:begin -->", "<!-- bench:end -->"

@@ -12,6 +12,9 @@ packages=(
   python3-glad python3-jinja2                         # GL loader generated at build time
   xvfb xauth                                          # headless GUI tests
   clang libclang-rt-14-dev python3                    # fuzzing pass and sanitizers in CI
+  pybind11-dev python3-dev python3-numpy              # Python module (python/)
+  python3-shapely python3-pytest                      #   its inputs and tests
+  python3-dask python3-distributed python3-pandas     #   flood.dask (bags, dataframes)
 )
 label=install-deps
 if [ $# -gt 0 ]; then packages=("$@"); label="${FLOOD_INSTALL_LABEL:-install-deps}"; fi

@@ -1,0 +1,272 @@
+"""Flood from Python: the Ronfard-Rossignac flooding triangulation of polygons with holes.
+
+A *polygon* is any of:
+
+- a ring list: a list of rings, each a sequence of (x, y) pairs, outer ring first, then its
+  holes; a list of such ring lists is a multipolygon (one part per ring list);
+- numpy arrays: one (n, 2) array (a polygon without holes) or a list of them (outer ring, then
+  holes); any real or integer dtype (converted to float64: integers beyond 2**53 round);
+- a shapely Polygon or MultiPolygon (z dropped), or a GeoJSON-like mapping of either;
+- a str: WKT or GeoJSON text, read by the same readers as the ``flood`` command.
+
+Rings may be open or closed; repeated consecutive points are dropped with a warning, as the
+command-line reader does. Failures carry the command's exit-code classes (docs/ERRORS.md).
+
+- ``triangulate(polygon)`` returns ``Triangulation(vertices, triangles)``: vertices (m, 2)
+  float64, triangles (n, 3) int64 indices into them, counter-clockwise, numbered in the order
+  flooded. It validates first (``validate=False`` skips, like ``--no-validate``) and checks the
+  result exactly, as the command does; any failure raises InvalidPolygon (InternalError for 6).
+- ``validate(polygon)`` returns a Diagnostic (``.ok`` true when valid); it raises only for
+  inputs that are not polygons at all (TypeError).
+- ``trace(polygon)`` returns a Trace: ``.events``, a numpy structured array (EVENT_DTYPE, fields
+  named as core/events.h names them), and ``.replay``, whose ``seek(step)`` gives the state
+  after ``step`` events (fingers Left/Right/NextLeft/NextRight, the active chain, ...).
+- ``check(features)`` triangulates many polygons on C++ threads and returns one Verdict each.
+- ``generate(family, size, seed)`` returns a generated valid polygon as a list of parts.
+
+The GIL is released while the core runs, so Python threads triangulate in parallel too.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from typing import Any, List, NamedTuple, Optional, Sequence
+
+import numpy as np
+
+from . import _flood
+
+__all__ = [
+    "ACTIONS", "EVENT_DTYPE", "FORBIDDEN", "NONE", "TESTS",
+    "Diagnostic", "InternalError", "InvalidPolygon", "Replay", "Trace", "Triangulation",
+    "Verdict", "check", "families", "generate", "trace", "triangulate", "validate",
+]
+
+NONE = _flood.NONE                # "no vertex" in events and replay states (0xffffffff)
+EVENT_DTYPE = _flood.EVENT_DTYPE  # one row per event; `action` indexes ACTIONS, `reason` FORBIDDEN
+ACTIONS: List[str] = list(_flood.ACTIONS)
+TESTS: List[str] = list(_flood.TESTS)          # bit i of `tested` / `passed`
+FORBIDDEN: List[str] = list(_flood.FORBIDDEN)
+
+
+# "ring R vertex V" (or "ring R" alone) as the core's messages locate a problem.
+_WHERE = re.compile(r"ring (\d+)(?: vertex (\d+))?")
+# The location the validator puts before its reason: "ring R vertex V (x, y): " or "ring R: ".
+_PREFIX = re.compile(r"^ring \d+(?: vertex \d+ \([^)]*\)| edge [^:]*)?: ")
+
+
+@dataclass(frozen=True)
+class Diagnostic:
+    """The outcome of reading, validating or flooding one polygon.
+
+    status: "ok", "malformed", "invalid", "forbidden" or "internal"; code: the exit code the
+    ``flood`` command would end with (0, 3, 4, 5, 6); message: the command's one-line message;
+    reason: the message without the input's name and the location; ring, vertex: where the
+    problem is (rings numbered across all parts as the CLI numbers them, the vertex within its
+    ring), None where the message names none.
+    """
+
+    status: str
+    code: int
+    message: str
+    reason: str
+    ring: Optional[int]
+    vertex: Optional[int]
+    warnings: List[str] = field(default_factory=list)
+
+    @property
+    def ok(self) -> bool:
+        return self.code == 0
+
+    @classmethod
+    def _from(cls, pair, warnings=(), name="", **extra):
+        code, message = pair
+        rest = message[len(name) + 2:] if name and message.startswith(name + ": ") else message
+        where = _WHERE.search(rest)
+        ring = int(where.group(1)) if where else None
+        vertex = int(where.group(2)) if where and where.group(2) is not None else None
+        return cls(status=_flood.STATUS_NAMES[code], code=code, message=message,
+                   reason=_PREFIX.sub("", rest), ring=ring, vertex=vertex,
+                   warnings=list(warnings), **extra)
+
+
+class InvalidPolygon(ValueError):
+    """Raised by triangulate() and trace() for malformed, invalid or forbidden input; carries
+    the Diagnostic (also as attributes: status, code, message, reason, ring, vertex)."""
+
+    def __init__(self, diagnostic: Diagnostic):
+        super().__init__(diagnostic.message)
+        self.diagnostic = diagnostic
+
+    def __getattr__(self, name):
+        if name == "diagnostic":
+            raise AttributeError(name)
+        return getattr(self.diagnostic, name)
+
+
+class InternalError(RuntimeError):
+    """Exit code 6: the exact checker rejected Flood's own output (a bug: please report it)."""
+
+    def __init__(self, diagnostic: Diagnostic):
+        super().__init__(diagnostic.message)
+        self.diagnostic = diagnostic
+
+
+class Triangulation(NamedTuple):
+    vertices: np.ndarray   # (m, 2) float64: the input's vertices, rings concatenated
+    triangles: np.ndarray  # (n, 3) int64 indices into vertices
+
+
+@dataclass(frozen=True)
+class Verdict(Diagnostic):
+    """check()'s record of one feature: its Diagnostic, its position and its triangle count."""
+
+    index: Any = 0  # the feature's position, or the id given to check()
+    triangles: int = 0
+
+
+def _raise_for(d: Diagnostic):
+    if d.code == 6:
+        raise InternalError(d)
+    if not d.ok:
+        raise InvalidPolygon(d)
+
+
+def _depth(x) -> int:
+    """Nesting depth: 1 for a point, 2 for a ring, 3 for a ring list, 4 for a multipolygon."""
+    d = 0
+    while True:
+        if isinstance(x, np.ndarray):
+            return d + x.ndim
+        if isinstance(x, (str, bytes)) or not isinstance(x, Sequence) or len(x) == 0:
+            return d + (1 if isinstance(x, Sequence) and not isinstance(x, (str, bytes)) else 0)
+        d += 1
+        x = x[0]
+
+
+def _ring(coords) -> np.ndarray:
+    a = np.asarray(coords)
+    if a.dtype.kind not in "fiu":
+        raise TypeError(f"ring coordinates must be numbers, got dtype {a.dtype}")
+    if a.ndim == 2 and a.shape[1] > 2:
+        a = a[:, :2]  # shapely and GeoJSON may carry z
+    return np.ascontiguousarray(a, dtype=np.float64)
+
+
+def _shapely_parts(geom):
+    kind = geom.geom_type
+    if kind == "Polygon":
+        polys = [] if geom.is_empty else [geom]
+    elif kind == "MultiPolygon":
+        polys = list(geom.geoms)
+    else:
+        raise TypeError(f"flood triangulates Polygon and MultiPolygon geometries, not {kind}")
+    return [[_ring(p.exterior.coords)] + [_ring(h.coords) for h in p.interiors] for p in polys]
+
+
+def _normalize(polygon) -> Any:
+    """Any accepted polygon as what the C++ side reads: a str, or parts of float64 rings."""
+    if isinstance(polygon, bytes):
+        return polygon.decode("utf-8")
+    if isinstance(polygon, str):
+        return polygon
+    if hasattr(polygon, "geom_type"):
+        return _shapely_parts(polygon)
+    if isinstance(polygon, dict):
+        kind, coords = polygon.get("type"), polygon.get("coordinates")
+        if kind == "Polygon":
+            return [[_ring(r) for r in coords]]
+        if kind == "MultiPolygon":
+            return [[_ring(r) for r in p] for p in coords]
+        raise TypeError(f"a GeoJSON mapping of a Polygon or MultiPolygon, not {kind!r}")
+    if isinstance(polygon, np.ndarray) or isinstance(polygon, Sequence):
+        depth = _depth(polygon)
+        if depth == 2:
+            return [[_ring(polygon)]]
+        if depth == 3:
+            return [[_ring(r) for r in polygon]]
+        if depth == 4:
+            return [[_ring(r) for r in part] for part in polygon]
+        raise TypeError("a polygon is a ring ((n, 2) coordinates), a list of rings or a list "
+                        f"of such lists (nesting depth {depth} found)")
+    raise TypeError(f"not a polygon: {type(polygon).__name__}")
+
+
+def validate(polygon, *, name: str = "polygon") -> Diagnostic:
+    """The validator's verdict (docs/ERRORS.md): ``.ok``, or the first problem found."""
+    pair, warnings = _flood.validate(_normalize(polygon), name)
+    return Diagnostic._from(pair, warnings, name)
+
+
+def triangulate(polygon, *, validate: bool = True, up: str = "+y",
+                name: str = "polygon") -> Triangulation:
+    """Triangulates like ``flood triangulate``: validate, flood, check exactly."""
+    pair, warnings, vertices, triangles, _ = _flood.triangulate(_normalize(polygon), validate, up, name)
+    _raise_for(Diagnostic._from(pair, warnings, name))
+    return Triangulation(vertices, triangles)
+
+
+class Replay:
+    """The machine's state at any step, rebuilt from the log (core/replay.h)."""
+
+    def __init__(self, handle):
+        self._handle = handle
+
+    def __len__(self) -> int:
+        return len(self._handle)
+
+    def seek(self, step: int):
+        """State after the first ``step`` events (0: before anything happened): ``.fingers``
+        (left, right, nextLeft, nextRight), ``.left``, ``.right``, ``.chain`` (Left to Right),
+        ``.water``, ``.triangleCount``, ``.dormant``, ``.jumps``, ``.bridges``, ``.forbidden``.
+        Vertex indices are global (rows of Trace.vertices); NONE where there is none."""
+        return self._handle.seek(step)
+
+
+class Trace:
+    """A recorded run: ``events`` (structured array), ``replay``, ``vertices``, ``triangles``
+    and ``diagnostic`` (not ok for a forbidden run, which is recorded all the same)."""
+
+    def __init__(self, handle, name):
+        self.events: np.ndarray = handle.events
+        self.vertices: np.ndarray = handle.vertices
+        self.triangles: np.ndarray = handle.triangles
+        self.diagnostic = Diagnostic._from(handle.diagnostic, handle.warnings, name)
+        self.replay = Replay(handle)
+
+
+def trace(polygon, *, validate: bool = True, up: str = "+y", name: str = "polygon") -> Trace:
+    """Floods with a recorder, like ``flood trace``. Malformed or invalid input raises
+    InvalidPolygon; a run stopped in a forbidden state is returned (see Trace.diagnostic)."""
+    result = _flood.trace(_normalize(polygon), validate, up, name)
+    if isinstance(result, tuple):
+        _raise_for(Diagnostic._from(result, (), name))
+    return Trace(result, name)
+
+
+def check(features, *, validate: bool = True, up: str = "+y", threads: int = 0,
+          ids: Optional[Sequence] = None) -> List[Verdict]:
+    """Triangulates every feature (any accepted polygon) on ``threads`` C++ threads (0: one
+    per core) and returns one Verdict per feature, in order. Feature i is named "feature ID"
+    in messages and its Verdict's ``index`` is ID, ``ids[i]`` (default: i).
+    Nothing raises for a bad feature: its Verdict says what is wrong."""
+    features = list(features)
+    ids = list(range(len(features))) if ids is None else list(ids)
+    if len(ids) != len(features):
+        raise ValueError(f"{len(ids)} ids for {len(features)} features")
+    names = [f"feature {i}" for i in ids]
+    inputs = [_normalize(f) for f in features]
+    out = _flood.check(inputs, validate, up, threads, names)
+    return [Verdict._from((code, message), (), names[k], index=ids[k], triangles=count)
+            for k, (code, message, count) in enumerate(out)]
+
+
+def generate(family: str, size: int, seed: int = 1) -> List[List[np.ndarray]]:
+    """A valid polygon of a generator family (``flood generate``; see families()), as a list
+    of parts, each [outer ring, holes...] of (n, 2) float64 arrays."""
+    return _flood.generate(family, size, seed)
+
+
+def families() -> List[str]:
+    return list(_flood.families())

@@ -1,0 +1,392 @@
+// The C++ half of the Python module `flood` (python/flood/__init__.py is the other half): turns
+// Python inputs into core Polygons while holding the GIL, then runs the core without it.
+// Inputs arrive already normalised by __init__.py: a str (WKT or GeoJSON text, read by the
+// core's own readers) or a list of parts, each a list of (n, 2) float64 arrays, outer ring
+// first. Failures come back as (status code, message) pairs; __init__.py turns them into
+// Diagnostic objects and exceptions.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <cstring>
+#include <memory>
+#include <thread>
+
+#include "checker.h"
+#include "flood.h"
+#include "generate.h"
+#include "io.h"
+#include "replay.h"
+
+namespace py = pybind11;
+using namespace flood;
+
+namespace flood::io_detail {
+// Defined in core/io_read.cpp: the readers' ring cleaning (repeated consecutive points dropped
+// with a warning, a closing point dropped), so an array reads exactly as the same file would.
+void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Point>& raw,
+                  bool outer);
+}  // namespace flood::io_detail
+
+namespace {
+
+using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
+
+// Reads one input (see the file comment). Needs the GIL.
+ReadResult readInput(py::handle input, const std::string& name) {
+    if (py::isinstance<py::str>(input)) {
+        std::string text = input.cast<std::string>();
+        py::gil_scoped_release unlocked;
+        return parsePolygon(text, name);
+    }
+    ReadResult rr;
+    for (py::handle part : input) {
+        bool outer = true;
+        for (py::handle ring : part) {
+            Array a = Array::ensure(ring);
+            if (!a || a.ndim() != 2 || a.shape(1) != 2) {
+                rr.diagnostic = {Status::Malformed,
+                                 name + ": ring " + std::to_string(rr.polygon.rings.size()) +
+                                     ": a ring is an (n, 2) array of coordinates"};
+                return rr;
+            }
+            std::vector<Point> raw(size_t(a.shape(0)));
+            auto v = a.unchecked<2>();
+            for (size_t i = 0; i < raw.size(); ++i) raw[i] = {v(i, 0), v(i, 1)};
+            io_detail::addCleanRing(rr, name, raw, outer);
+            outer = false;
+        }
+    }
+    if (rr.polygon.rings.empty()) rr.diagnostic = {Status::Malformed, name + ": polygon has no rings"};
+    return rr;
+}
+
+Up parseUp(const std::string& up) {
+    if (up == "+y" || up == "y") return Up::PlusY;
+    if (up == "-y") return Up::MinusY;
+    if (up == "+x" || up == "x") return Up::PlusX;
+    if (up == "-x") return Up::MinusX;
+    throw py::value_error("up must be one of +y, y, -y, +x, x, -x (got '" + up + "')");
+}
+
+// The CLI's pipeline (cli/main.cpp): read, validate, flood, exact check of the result.
+struct Outcome {
+    Diagnostic diagnostic;
+    std::vector<std::string> warnings;
+    Polygon polygon;
+    std::vector<Triangle> triangles;
+};
+
+// Validation and, with `flooded`, flooding and the checker's verdict. No GIL needed.
+void run(Outcome& o, bool validateFirst, const Options& options, const std::string& name) {
+    if (!o.diagnostic.ok()) return;
+    if (validateFirst) {
+        o.diagnostic = validate(o.polygon, name);
+        if (!o.diagnostic.ok()) return;
+    }
+    FloodResult r = triangulate(o.polygon, nullptr, options);
+    o.diagnostic = r.diagnostic;
+    if (!o.diagnostic.ok()) return;
+    CheckResult c = checkTriangulation(o.polygon, r.triangles);
+    if (!c.ok)
+        o.diagnostic = {Status::Internal,
+                        name + ": the exact checker rejects the triangulation: " + c.reason};
+    else o.triangles = std::move(r.triangles);
+}
+
+Outcome prepare(py::handle input, const std::string& name) {
+    ReadResult rr = readInput(input, name);
+    Outcome o;
+    o.diagnostic = rr.diagnostic;
+    o.warnings = std::move(rr.warnings);
+    if (rr.warningsOmitted)
+        o.warnings.push_back(name + ": ... and " + std::to_string(rr.warningsOmitted) +
+                             " more warnings like these");
+    o.polygon = std::move(rr.polygon);
+    return o;
+}
+
+py::array_t<double> verticesArray(const Polygon& p) {
+    py::array_t<double> a({py::ssize_t(p.vertices.size()), py::ssize_t(2)});
+    auto m = a.mutable_unchecked<2>();
+    for (size_t i = 0; i < p.vertices.size(); ++i) m(i, 0) = p.vertices[i].x, m(i, 1) = p.vertices[i].y;
+    return a;
+}
+
+py::array_t<int64_t> trianglesArray(const std::vector<Triangle>& t) {
+    py::array_t<int64_t> a({py::ssize_t(t.size()), py::ssize_t(3)});
+    auto m = a.mutable_unchecked<2>();
+    for (size_t i = 0; i < t.size(); ++i)
+        for (int k = 0; k < 3; ++k) m(i, k) = t[i][k];
+    return a;
+}
+
+// Ring lengths, so Python can tell which vertices belong to which ring.
+std::vector<Index> ringCounts(const Polygon& p) {
+    std::vector<Index> counts;
+    for (const Ring& r : p.rings) counts.push_back(r.count);
+    return counts;
+}
+
+py::tuple diagnosticTuple(const Diagnostic& d) { return py::make_tuple(int(d.status), d.message); }
+
+// The numpy dtype of flood::Event: field names, types and offsets as core/events.h has them,
+// so the log is copied into the array byte for byte.
+py::dtype eventDtype() {
+    py::dict fingers;
+    fingers["names"] = py::make_tuple("left", "right", "nextLeft", "nextRight");
+    fingers["formats"] = py::make_tuple("<u4", "<u4", "<u4", "<u4");
+    fingers["offsets"] = py::make_tuple(offsetof(Fingers, left), offsetof(Fingers, right),
+                                        offsetof(Fingers, nextLeft), offsetof(Fingers, nextRight));
+    fingers["itemsize"] = sizeof(Fingers);
+    py::object fingersType = py::dtype::from_args(fingers);
+    py::list names, formats, offsets;
+    auto field = [&](const char* n, py::object format, size_t offset) {
+        names.append(n);
+        formats.append(format);
+        offsets.append(offset);
+    };
+    py::str u1("u1"), u4("<u4");
+#define FLOOD_FIELD(f, type) field(#f, type, offsetof(Event, f))
+    FLOOD_FIELD(action, u1);
+    FLOOD_FIELD(side, u1);
+    FLOOD_FIELD(tested, u1);
+    FLOOD_FIELD(passed, u1);
+    FLOOD_FIELD(reason, u1);
+    FLOOD_FIELD(step, u4);
+    FLOOD_FIELD(part, u4);
+    FLOOD_FIELD(before, fingersType);
+    FLOOD_FIELD(after, fingersType);
+    FLOOD_FIELD(water, u4);
+    FLOOD_FIELD(firstTriangle, u4);
+    FLOOD_FIELD(triangleCount, u4);
+    FLOOD_FIELD(sagTests, u4);
+    FLOOD_FIELD(sag, u4);
+    FLOOD_FIELD(bridgeTo, u4);
+    FLOOD_FIELD(chainIndex, u4);
+    FLOOD_FIELD(cutLeft, u4);
+    FLOOD_FIELD(cutRight, u4);
+    FLOOD_FIELD(top, u4);
+    FLOOD_FIELD(jumpTarget, u4);
+    FLOOD_FIELD(gorgePushed, u4);
+    FLOOD_FIELD(gorgePopped, u4);
+    FLOOD_FIELD(bottom, u4);
+    FLOOD_FIELD(culprit, u4);
+    FLOOD_FIELD(culprit2, u4);
+#undef FLOOD_FIELD
+    py::dict d;
+    d["names"] = names;
+    d["formats"] = formats;
+    d["offsets"] = offsets;
+    d["itemsize"] = sizeof(Event);
+    return py::dtype::from_args(d);
+}
+
+static_assert(std::is_standard_layout_v<Event> && std::is_trivially_copyable_v<Event>,
+              "events are copied into numpy byte for byte");
+
+// A recorded run and its replay; the replay points into the trace, so both live here.
+struct TraceHandle {
+    Trace trace;
+    std::unique_ptr<Replay> replay;
+    std::vector<std::string> warnings;
+};
+
+}  // namespace
+
+PYBIND11_MODULE(_flood, m) {
+    m.doc() = "Flood's core (C++): see the package flood for the documented API";
+    m.attr("NONE") = kNone;
+    {
+        py::list actions, tests, reasons;
+        for (int i = 0; i < int(Action::Count); ++i) actions.append(actionName(Action(i)));
+        for (int i = 0; i < int(Test::Count); ++i) tests.append(testText(Test(i)));
+        for (int i = 0; i < int(Forbidden::Count); ++i) reasons.append(forbiddenName(Forbidden(i)));
+        m.attr("ACTIONS") = actions;
+        m.attr("TESTS") = tests;
+        m.attr("FORBIDDEN") = reasons;
+        py::dict statuses;
+        for (Status s : {Status::Ok, Status::Usage, Status::Malformed, Status::Invalid,
+                         Status::Forbidden, Status::Internal, Status::VerifyFailed,
+                         Status::WriteFailed})
+            statuses[py::int_(int(s))] = statusName(s);
+        m.attr("STATUS_NAMES") = statuses;
+    }
+    m.attr("EVENT_DTYPE") = eventDtype();
+
+    m.def("validate", [](py::handle input, const std::string& name) {
+        Outcome o = prepare(input, name);
+        {
+            py::gil_scoped_release unlocked;
+            if (o.diagnostic.ok()) o.diagnostic = validate(o.polygon, name);
+        }
+        return py::make_tuple(diagnosticTuple(o.diagnostic), o.warnings);
+    });
+
+    m.def("triangulate", [](py::handle input, bool validateFirst, const std::string& up,
+                            const std::string& name) {
+        Options options;
+        options.up = parseUp(up);
+        Outcome o = prepare(input, name);
+        {
+            py::gil_scoped_release unlocked;
+            run(o, validateFirst, options, name);
+        }
+        return py::make_tuple(diagnosticTuple(o.diagnostic), o.warnings, verticesArray(o.polygon),
+                              trianglesArray(o.triangles), ringCounts(o.polygon));
+    });
+
+    // Many features at once on `threads` C++ threads: arrays are read first (they need the
+    // GIL), texts (WKT, GeoJSON) by the threads; then every feature is validated, flooded and
+    // checked without the GIL. One (status, message, triangle count) per feature, in order.
+    m.def("check", [](py::sequence inputs, bool validateFirst, const std::string& up,
+                      unsigned threads, const std::vector<std::string>& names) {
+        Options options;
+        options.up = parseUp(up);
+        if (names.size() != inputs.size()) throw py::value_error("one name per feature");
+        std::vector<Outcome> outcomes(inputs.size());
+        std::vector<std::string> texts(inputs.size());
+        std::vector<bool> isText(inputs.size());
+        for (size_t i = 0; i < inputs.size(); ++i) {
+            py::handle input = inputs[i];
+            isText[i] = py::isinstance<py::str>(input);
+            if (isText[i]) texts[i] = input.cast<std::string>();
+            else outcomes[i] = prepare(input, names[i]);
+        }
+        {
+            py::gil_scoped_release unlocked;
+            std::atomic<size_t> nextFeature{0};
+            auto worker = [&] {
+                for (size_t i; (i = nextFeature++) < outcomes.size();) {
+                    Outcome& o = outcomes[i];
+                    if (isText[i]) {
+                        ReadResult rr = parsePolygon(texts[i], names[i]);
+                        o.diagnostic = rr.diagnostic;
+                        o.polygon = std::move(rr.polygon);
+                        std::string().swap(texts[i]);
+                    }
+                    run(o, validateFirst, options, names[i]);
+                    o.polygon = {};  // the verdict is all that is kept
+                }
+            };
+            if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
+            threads = unsigned(std::min<size_t>(threads, std::max<size_t>(1, outcomes.size())));
+            std::vector<std::thread> pool;
+            for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
+            worker();
+            for (std::thread& t : pool) t.join();
+        }
+        py::list verdicts;
+        for (const Outcome& o : outcomes)
+            verdicts.append(py::make_tuple(int(o.diagnostic.status), o.diagnostic.message,
+                                           o.triangles.size()));
+        return verdicts;
+    });
+
+    m.def("generate", [](const std::string& family, size_t size, uint64_t seed) {
+        auto families = familyNames();
+        if (std::find(families.begin(), families.end(), family) == families.end())
+            throw py::value_error("unknown family '" + family + "'");
+        Polygon p;
+        {
+            py::gil_scoped_release unlocked;
+            p = generate(family, seed, size);
+        }
+        py::list parts;
+        for (const Part& part : p.parts) {
+            py::list rings;
+            for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) {
+                const Ring& ring = p.rings[r];
+                py::array_t<double> a({py::ssize_t(ring.count), py::ssize_t(2)});
+                auto m = a.mutable_unchecked<2>();
+                for (Index i = 0; i < ring.count; ++i)
+                    m(i, 0) = p.vertices[ring.first + i].x, m(i, 1) = p.vertices[ring.first + i].y;
+                rings.append(a);
+            }
+            parts.append(rings);
+        }
+        return parts;
+    });
+    m.def("families", &familyNames);
+
+    py::class_<Fingers>(m, "Fingers")
+        .def_readonly("left", &Fingers::left)
+        .def_readonly("right", &Fingers::right)
+        .def_readonly("nextLeft", &Fingers::nextLeft)
+        .def_readonly("nextRight", &Fingers::nextRight)
+        .def("__repr__", [](const Fingers& f) {
+            return "Fingers(left=" + std::to_string(f.left) + ", right=" + std::to_string(f.right) +
+                   ", nextLeft=" + std::to_string(f.nextLeft) +
+                   ", nextRight=" + std::to_string(f.nextRight) + ")";
+        });
+
+    py::class_<Gorge>(m, "Gorge")
+        .def_readonly("id", &Gorge::id)
+        .def_readonly("held", &Gorge::held)
+        .def_readonly("top", &Gorge::top)
+        .def_readonly("chain", &Gorge::chain);
+
+    py::class_<ReplayState>(m, "ReplayState")
+        .def_readonly("step", &ReplayState::step)
+        .def_readonly("part", &ReplayState::part)
+        .def_readonly("fingers", &ReplayState::fingers)
+        .def_property_readonly("left", [](const ReplayState& s) { return s.fingers.left; })
+        .def_property_readonly("right", [](const ReplayState& s) { return s.fingers.right; })
+        .def_readonly("water", &ReplayState::water)
+        .def_readonly("triangleCount", &ReplayState::triangleCount)
+        .def_readonly("chain", &ReplayState::chain)
+        .def_readonly("dormant", &ReplayState::dormant)
+        .def_readonly("jumps", &ReplayState::jumps)
+        .def_readonly("bridges", &ReplayState::bridges)
+        .def_readonly("forbidden", &ReplayState::forbidden);
+
+    // The replay of a trace (core/replay.h); seek returns a copy of the state, so a state read
+    // earlier does not change under the caller when the replay moves on.
+    py::class_<TraceHandle, std::shared_ptr<TraceHandle>>(m, "Trace")
+        .def_property_readonly("events", [](const TraceHandle& t) {
+            py::array a(eventDtype(), std::vector<py::ssize_t>{py::ssize_t(t.trace.events.size())});
+            if (!t.trace.events.empty())
+                std::memcpy(a.mutable_data(), t.trace.events.data(), t.trace.events.size() * sizeof(Event));
+            return a;
+        })
+        .def_property_readonly("vertices", [](const TraceHandle& t) { return verticesArray(t.trace.polygon); })
+        .def_property_readonly("triangles", [](const TraceHandle& t) { return trianglesArray(t.trace.triangles); })
+        .def_property_readonly("diagnostic", [](const TraceHandle& t) { return diagnosticTuple(t.trace.diagnostic); })
+        .def_readonly("warnings", &TraceHandle::warnings)
+        .def("__len__", [](const TraceHandle& t) { return t.trace.events.size(); })
+        .def("seek", [](TraceHandle& t, uint32_t step) {
+            if (step > t.replay->size())
+                throw py::index_error("step " + std::to_string(step) + " is past the last event (" +
+                                      std::to_string(t.replay->size()) + ")");
+            return ReplayState(t.replay->seek(step));
+        });
+
+    // Records a run: read, validate (unless told not to), flood with a recorder. A forbidden
+    // run is recorded too (it is what one wants to look at); malformed or invalid input is not.
+    m.def("trace", [](py::handle input, bool validateFirst, const std::string& up,
+                      const std::string& name) -> py::object {
+        Options options;
+        options.up = parseUp(up);
+        Outcome o = prepare(input, name);
+        auto t = std::make_shared<TraceHandle>();
+        t->warnings = o.warnings;
+        {
+            py::gil_scoped_release unlocked;
+            if (o.diagnostic.ok() && validateFirst) o.diagnostic = validate(o.polygon, name);
+            if (o.diagnostic.ok()) {
+                t->trace = record(o.polygon, options);
+                if (t->trace.diagnostic.ok()) {
+                    CheckResult c = checkTriangulation(t->trace.polygon, t->trace.triangles);
+                    if (!c.ok)
+                        t->trace.diagnostic = {Status::Internal, name + ": the exact checker rejects the triangulation: " + c.reason};
+                }
+                t->replay = std::make_unique<Replay>(t->trace);
+            }
+        }
+        if (!o.diagnostic.ok()) return diagnosticTuple(o.diagnostic);
+        return py::cast(t);
+    });
+}

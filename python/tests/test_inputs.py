@@ -1,0 +1,68 @@
+"""Every accepted kind of input reads as the same polygon: shapely (with holes, multipolygons),
+numpy arrays of any dtype, nested lists, open or closed rings."""
+import numpy as np
+import pytest
+import shapely.geometry as sg
+
+import flood
+
+OUTER = [(0, 0), (10, 0), (10, 10), (0, 10)]
+HOLES = [[(2, 2), (2, 4), (4, 4), (4, 2)], [(6, 6), (6, 8), (8, 8), (8, 6)]]
+
+
+def expected_count(n, h):  # n + 2h - 2 triangles (§1)
+    return n + 2 * h - 2
+
+
+def test_shapely_polygon_with_holes_equals_the_ring_list():
+    rings = flood.triangulate([OUTER] + HOLES)
+    shapely_result = flood.triangulate(sg.Polygon(OUTER, HOLES))  # closed rings, as shapely keeps
+    assert shapely_result.vertices.tolist() == rings.vertices.tolist()
+    assert shapely_result.triangles.tolist() == rings.triangles.tolist()
+    assert len(rings.triangles) == expected_count(12, 2)
+
+
+def test_shapely_multipolygon_floods_every_part():
+    square = [(20, 0), (30, 0), (30, 10), (20, 10)]
+    multi = sg.MultiPolygon([sg.Polygon(OUTER, HOLES), sg.Polygon(square)])
+    result = flood.triangulate(multi)
+    assert len(result.vertices) == 16
+    assert len(result.triangles) == expected_count(12, 2) + expected_count(4, 0)
+    assert result.triangles.tolist() == flood.triangulate([[OUTER] + HOLES, [square]]).triangles.tolist()
+    # The triangles cover the multipolygon's area exactly.
+    v = result.vertices[result.triangles]
+    areas = 0.5 * np.cross(v[:, 1] - v[:, 0], v[:, 2] - v[:, 0])
+    assert (areas > 0).all() and areas.sum() == multi.area
+
+
+@pytest.mark.parametrize("dtype", [np.float32, np.float64, np.int32, np.int64])
+def test_numpy_dtypes_give_the_same_result(dtype):
+    reference = flood.triangulate([OUTER] + HOLES)
+    arrays = [np.array(r, dtype=dtype) for r in [OUTER] + HOLES]
+    result = flood.triangulate(arrays)
+    assert result.vertices.dtype == np.float64
+    assert result.triangles.tolist() == reference.triangles.tolist()
+    one_ring = flood.triangulate(np.array(OUTER, dtype=dtype))
+    assert one_ring.triangles.tolist() == flood.triangulate([OUTER]).triangles.tolist()
+
+
+def test_wkt_and_geojson_mapping():
+    poly = sg.Polygon(OUTER, HOLES)
+    reference = flood.triangulate(poly).triangles.tolist()
+    assert flood.triangulate(poly.wkt).triangles.tolist() == reference
+    assert flood.triangulate(sg.mapping(poly)).triangles.tolist() == reference
+
+
+def test_repeated_points_are_dropped_with_a_warning():
+    d = flood.validate([(0, 0), (10, 0), (10, 0), (10, 10), (0, 10)])
+    assert d.ok and len(d.warnings) == 1 and "repeated point dropped" in d.warnings[0]
+
+
+def test_what_is_not_a_polygon_is_refused():
+    with pytest.raises(TypeError):
+        flood.triangulate(sg.Point(0, 0))
+    with pytest.raises(TypeError):
+        flood.triangulate(42)
+    with pytest.raises(flood.InvalidPolygon) as caught:
+        flood.triangulate(np.zeros((4, 3, 1)))  # depth 3, but points of one coordinate
+    assert caught.value.status == "malformed" and caught.value.code == 3

@@ -246,7 +246,7 @@ uint64_t Replay::apply(const Event& e) {
             } else {
                 if (!held.empty()) held.pop_back();
                 held.insert(held.end(), chain.begin(), chain.end());
-                moved += held.size();
+                moved += chain.size();
                 chain = std::move(held);
             }
             // Jump pointers too are set and cleared last first: search from the end.

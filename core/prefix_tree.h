@@ -26,10 +26,20 @@ public:
         return last_.empty() ? kEmpty : last_.back();
     }
 
-    // Visits the `size` entries of the version with head `head` as visit(i, entry), last first.
+    // Visits entries from..size-1 of the version of `size` entries with head `head`, as
+    // visit(i, entry), last first.
     template <class Visit>
-    void load(uint32_t head, size_t size, Visit visit) const {
-        for (size_t i = size; i-- > 0; head = nodes_[head].parent) visit(i, nodes_[head].value);
+    void load(uint32_t head, size_t size, size_t from, Visit visit) const {
+        for (size_t i = size; i-- > from; head = nodes_[head].parent) visit(i, nodes_[head].value);
+    }
+
+    // How many first entries two versions share as nodes (equal entries stored twice are not
+    // counted). Walks only the entries after that.
+    size_t commonPrefix(uint32_t a, size_t sizeA, uint32_t b, size_t sizeB) const {
+        for (; sizeA > sizeB; --sizeA) a = nodes_[a].parent;
+        for (; sizeB > sizeA; --sizeB) b = nodes_[b].parent;
+        for (; a != b; --sizeA) a = nodes_[a].parent, b = nodes_[b].parent;
+        return sizeA;
     }
 
     void finish() {  // no store() follows

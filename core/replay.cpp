@@ -80,7 +80,7 @@ Replay::Replay(const Trace& trace, uint32_t keyframeInterval)
     for (size_t k = 0; k + 1 < keyframeSteps_.size(); ++k)
         maxSeekEvents_ = std::max(maxSeekEvents_, keyframeSteps_[k + 1] - 1 - keyframeSteps_[k]);
     keyframeSteps_.pop_back();
-    restore(keyframes_.front());
+    restore(0);
 }
 
 void Replay::addKeyframe() {
@@ -111,7 +111,19 @@ void Replay::addKeyframe() {
     keyframes_.push_back(std::move(k));
 }
 
-void Replay::restore(const Keyframe& k) {
+void Replay::restore(size_t index) {
+    const Keyframe& k = keyframes_[index];
+    // Dormant gorges and jumps the state still shares with the keyframe it was restored from,
+    // when that one shares them with k, stay: stepping back one step rewrites only what the
+    // steps since that keyframe changed.
+    size_t keepDormant = 0, keepJumps = 0;
+    if (restored_ != kNoKeyframe) {
+        const Keyframe& from = keyframes_[restored_];
+        keepDormant = std::min(dormantLow_, dormantTree_.commonPrefix(from.dormantHead, from.dormantCount,
+                                                                      k.dormantHead, k.dormantCount));
+        keepJumps = std::min(jumpsLow_, jumpsTree_.commonPrefix(from.jumpsHead, from.jumpsCount,
+                                                                k.jumpsHead, k.jumpsCount));
+    }
     std::vector<Gorge> dormant = std::move(state_.dormant);
     std::vector<std::pair<Index, Index>> jumps = std::move(state_.jumps), bridges = std::move(state_.bridges);
     state_ = k.head;
@@ -119,9 +131,10 @@ void Replay::restore(const Keyframe& k) {
     else bridges.insert(bridges.end(), bridges_.begin() + long(bridges.size()),
                         bridges_.begin() + long(k.bridgeCount));
     jumps.resize(k.jumpsCount);
-    jumpsTree_.load(k.jumpsHead, k.jumpsCount, [&](size_t i, const std::pair<Index, Index>& j) { jumps[i] = j; });
+    jumpsTree_.load(k.jumpsHead, k.jumpsCount, keepJumps,
+                    [&](size_t i, const std::pair<Index, Index>& j) { jumps[i] = j; });
     dormant.resize(k.dormantCount);
-    dormantTree_.load(k.dormantHead, k.dormantCount, [&](size_t i, const Dormant& d) {
+    dormantTree_.load(k.dormantHead, k.dormantCount, keepDormant, [&](size_t i, const Dormant& d) {
         dormant[i].id = d.id, dormant[i].held = d.held, dormant[i].top = d.top;
         dormant[i].chain.assign(chainPool_.begin() + long(d.chain ? chainEnds_[d.chain - 1] : 0),
                                 chainPool_.begin() + long(chainEnds_[d.chain]));
@@ -129,6 +142,9 @@ void Replay::restore(const Keyframe& k) {
     state_.dormant = std::move(dormant);
     state_.jumps = std::move(jumps);
     state_.bridges = std::move(bridges);
+    restored_ = index;
+    lastSeekRestored_ = k.dormantCount - keepDormant + k.jumpsCount - keepJumps;
+    dormantLow_ = k.dormantCount, jumpsLow_ = k.jumpsCount;
 }
 
 size_t Replay::keyframeBytes() const {
@@ -144,7 +160,8 @@ const ReplayState& Replay::seek(uint32_t step) {
     size_t k = size_t(std::upper_bound(keyframeSteps_.begin(), keyframeSteps_.end(), step) -
                       keyframeSteps_.begin()) - 1;
     // Stepping forward from where we are is cheapest unless a keyframe lies in between.
-    if (step < state_.step || keyframeSteps_[k] > state_.step) restore(keyframes_[k]);
+    lastSeekRestored_ = 0;
+    if (step < state_.step || keyframeSteps_[k] > state_.step) restore(k);
     lastSeekEvents_ = 0;
     for (; state_.step < step; ++lastSeekEvents_) apply(trace_->events[state_.step]);
     return state_;

@@ -64,6 +64,9 @@ public:
     size_t keyframeBytes() const;  // memory held by keyframes, shared parts counted once
     uint32_t lastSeekEvents() const { return lastSeekEvents_; }  // events the last seek re-applied
     uint32_t maxSeekEvents() const { return maxSeekEvents_; }    // the most any seek re-applies
+    // Dormant gorges and jump pointers the last seek rewrote from a keyframe (0 if it only
+    // stepped forward): only those that differ from the state it started from.
+    size_t lastSeekRestored() const { return lastSeekRestored_; }
 
 private:
     // A dormant gorge in a keyframe: its chain is chain number `chain` of chainPool_, copied once while it stays dormant.
@@ -84,7 +87,7 @@ private:
     void pushGorge(Gorge&& g);
     std::vector<Index> takeGorge(uint32_t id, uint64_t& moved);
     void addKeyframe();
-    void restore(const Keyframe& k);
+    void restore(size_t keyframe);
     const Trace* trace_;
     uint32_t interval_;
     std::vector<Keyframe> keyframes_;   // in step order, keyframes_[0] at step 0
@@ -97,11 +100,15 @@ private:
     // While keyframing: the chain number of each dormant gorge (kNoChain until a keyframe
     // copies it), the first positions of dormant and jumps changed since the last keyframe,
     // and the indices of the chains the next keyframe would copy.
+    // After that, the first positions changed since the last restore() of keyframe restored_.
     bool building_ = false;
     std::vector<uint32_t> dormantChains_;
     size_t dormantLow_ = 0, jumpsLow_ = 0;
+    static constexpr size_t kNoKeyframe = SIZE_MAX;
+    size_t restored_ = kNoKeyframe;
     uint64_t fresh_ = 0;
     uint32_t lastSeekEvents_ = 0, maxSeekEvents_ = 0;
+    size_t lastSeekRestored_ = 0;
     ReplayState state_;
 };
 

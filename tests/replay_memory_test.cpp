@@ -84,7 +84,35 @@ TEST(ReplayMemory, WorstSeekIsMeasuredAndExact) {
     }
 }
 
-// Versions of a list share the prefix they keep: only the entries after it cost a node.
+// Stepping back restores the keyframe before, but rewrites only the dormant gorges and jump
+// pointers the steps since it changed: an event changes at most two dormant positions (a
+// Spill pushes one and takes one) and one jump pointer, so at most 3 per event re-applied.
+// The staircase keeps up to n/2 gorges dormant: before, every step back rewrote them all.
+TEST(ReplayMemory, SteppingBackRewritesOnlyWhatChanged) {
+    Trace t = record(generate("staircase", 1, 100000));
+    ASSERT_TRUE(t.diagnostic.ok()) << t.diagnostic.message;
+    Replay replay(t);
+    for (uint32_t start : {replay.size() / 3, 2 * replay.size() / 3}) {
+        replay.seek(start);
+        ASSERT_GT(replay.state().dormant.size(), 10000u);
+        size_t most = 0;
+        for (int k = 0; k < 600; ++k) {
+            replay.seek(replay.state().step - 1);
+            most = std::max(most, replay.lastSeekRestored());
+        }
+        EXPECT_LE(most, 3u * replay.maxSeekEvents() + 3) << "from step " << start;
+        // What stayed is right: the same state as a seek from the start of a fresh replay.
+        Replay fresh(t);
+        const ReplayState& want = fresh.seek(replay.state().step);
+        ASSERT_EQ(replay.state().dormant.size(), want.dormant.size());
+        for (size_t i = 0; i < want.dormant.size(); ++i)
+            ASSERT_EQ(replay.state().dormant[i].chain, want.dormant[i].chain) << "gorge " << i;
+        EXPECT_EQ(replay.state().jumps, want.jumps);
+    }
+}
+
+// Versions of a list share the prefix they keep: only the entries after it cost a node, and
+// loading a version can skip the prefix it shares with another.
 TEST(PrefixTree, VersionsShareTheirPrefix) {
     PrefixTree<int> tree;
     std::vector<std::vector<int>> versions = {{1, 2, 3}, {1, 2, 3, 4, 5}, {1, 2}, {1, 2, 9}, {}, {7}};
@@ -95,9 +123,19 @@ TEST(PrefixTree, VersionsShareTheirPrefix) {
     EXPECT_EQ(tree.nodeCount(), 3u + 2 + 0 + 1 + 0 + 1);
     for (size_t v = 0; v < versions.size(); ++v) {
         std::vector<int> back(versions[v].size(), -1);
-        tree.load(heads[v], back.size(), [&](size_t i, int x) { back[i] = x; });
+        tree.load(heads[v], back.size(), 0, [&](size_t i, int x) { back[i] = x; });
         EXPECT_EQ(back, versions[v]) << "version " << v;
     }
+    auto common = [&](size_t a, size_t b) {
+        return tree.commonPrefix(heads[a], versions[a].size(), heads[b], versions[b].size());
+    };
+    EXPECT_EQ(common(0, 1), 3u);
+    EXPECT_EQ(common(1, 3), 2u);
+    EXPECT_EQ(common(3, 5), 0u);  // {7} is a new node, not an entry of {1, 2, 9}
+    EXPECT_EQ(common(4, 4), 0u);
+    std::vector<int> tail(5, -1);
+    tree.load(heads[1], 5, 3, [&](size_t i, int x) { tail[i] = x; });  // entries 3 and 4 only
+    EXPECT_EQ(tail, (std::vector<int>{-1, -1, -1, 4, 5}));
 }
 
 }  // namespace

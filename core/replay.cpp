@@ -33,31 +33,6 @@ void backWithHugePages(void* data, size_t bytes) {
 #endif
 }
 
-// Moves gorge `id` out of the dormant list; empty chain if the log names no such gorge.
-std::vector<Index> takeGorge(std::vector<Gorge>& gorges, uint32_t id) {
-    std::vector<Index> chain;
-    for (size_t i = 0; i < gorges.size(); ++i) {
-        if (gorges[i].id != id) continue;
-        chain = std::move(gorges[i].chain);
-        gorges.erase(gorges.begin() + long(i));
-        break;
-    }
-    return chain;
-}
-
-// What apply() moves for `e` on state `s`, in indices (a memmove of 64 costs about one
-// event): only keyframe spacing uses it, so a rough bound is enough.
-uint64_t movedByApply(const Event& e, const ReplayState& s) {
-    switch (e.action) {
-        case Action::Raise: return e.side == Side::Left ? s.chain.size() : e.triangleCount;
-        case Action::Bridge:  // the part right of the bridge is copied to the new gorge
-            return s.chain.size() - std::min<uint64_t>(s.chain.size(), uint64_t(e.chainIndex) + e.cutRight);
-        case Action::Jump: return s.chain.size() + 4 * s.dormant.size();
-        case Action::Spill:
-        case Action::Fill: return e.gorgePopped != kNone ? 4 * s.dormant.size() : 0;
-        default: return 0;
-    }
-}
 }  // namespace
 
 Trace record(const Polygon& polygon, const Options& options) {
@@ -76,115 +51,107 @@ Trace record(const Polygon& polygon, const Options& options) {
 
 Replay::Replay(const Trace& trace, uint32_t keyframeInterval)
     : trace_(&trace), interval_(std::max<uint32_t>(1, keyframeInterval)) {
-    // Work is counted in 64ths of an event: an event costs 64 plus what apply() moves.
+    // Work is counted in 64ths of an event: an event costs 64 plus what apply() moves (a
+    // memmove of 64 indices costs about one event).
     const uint64_t budget = uint64_t(interval_) * 64;
-    uint64_t work = 0, events = 0, fresh = 0;  // fresh: indices of chains pushed since, a bound
-    std::vector<uint32_t> pushed;  // gorges pushed since the last keyframe: their chains are new
-    addKeyframe(pushed);
+    uint64_t work = 0, events = 0;
+    building_ = true;
+    addKeyframe();
     for (const Event& e : trace.events) {
-        work += 64 + movedByApply(e, state_);
+        work += 64 + apply(e);
         ++events;
-        apply(e);
-        if ((e.action == Action::Bridge || e.action == Action::Spill) && e.gorgePushed != kNone) {  // a Steiner bridge pushes none
-            pushed.push_back(e.gorgePushed);
-            if (!state_.dormant.empty()) fresh += state_.dormant.back().chain.size();
-        }
         if (work < budget) continue;
-        // A big state (a long chain, thousands of dormant gorges) waits for enough work that
-        // its copy stays a fixed fraction of the log: memory O(events), seek O(state size).
-        uint64_t own = 16 + state_.chain.size() + 2 * state_.jumps.size() +
-                       4 * state_.dormant.size() + fresh;
+        // A costly keyframe (a long chain, many gorges changed) waits for enough work that it
+        // stays a fixed fraction of the log: memory O(events), seek O(state size).
+        uint64_t own = 16 + state_.chain.size() + 4 * (state_.dormant.size() - dormantLow_) +
+                       2 * (state_.jumps.size() - jumpsLow_) + fresh_;
         if (own > kKeyframeRatio * events && work < kMaxWorkFactor * budget) continue;
-        addKeyframe(pushed);
-        pushed.clear();
-        work = events = fresh = 0;
+        addKeyframe();
+        work = events = 0;
     }
+    building_ = false;
     bridges_ = std::move(state_.bridges);  // every state's bridges are a prefix of the last's
     state_.bridges.clear();
-    for (auto& slot : slots_) std::vector<int32_t>().swap(slot);
-    restore(keyframes_.front());
+    std::vector<uint32_t>().swap(dormantChains_);
+    dormantTree_.finish();
+    jumpsTree_.finish();
+    keyframes_.shrink_to_fit(), chainPool_.shrink_to_fit(), chainEnds_.shrink_to_fit();  // no more growth
+    keyframeSteps_.push_back(size() + 1);  // a seek re-applies at most up to the next keyframe
+    for (size_t k = 0; k + 1 < keyframeSteps_.size(); ++k)
+        maxSeekEvents_ = std::max(maxSeekEvents_, keyframeSteps_[k + 1] - 1 - keyframeSteps_[k]);
+    keyframeSteps_.pop_back();
+    restore(0);
 }
 
-void Replay::addKeyframe(const std::vector<uint32_t>& pushedSince) {
+void Replay::addKeyframe() {
     Keyframe k;
     std::vector<Gorge> dormant = std::move(state_.dormant);
-    std::vector<std::pair<Index, Index>> bridges = std::move(state_.bridges);
+    std::vector<std::pair<Index, Index>> jumps = std::move(state_.jumps), bridges = std::move(state_.bridges);
     k.head = state_;
     k.bridgeCount = uint32_t(bridges.size());
-    state_.dormant = std::move(dormant);
-    state_.bridges = std::move(bridges);
-
-    // A gorge keeps its chain while dormant: share it with the previous keyframe when its id
-    // is unique in both and it was not pushed again since. Ids index a table, so huge ids
-    // (only in hand-made traces) are simply not shared.
-    const size_t maxId = 4 * trace_->events.size() + 64;
-    const int32_t kAbsent = -1, kTwice = -2;
-    auto mark = [&](const std::vector<Keyframe::Dormant>& list, std::vector<int32_t>& slot) {
-        for (size_t i = 0; i < list.size(); ++i) {
-            if (list[i].id >= maxId) continue;
-            if (slot.size() <= list[i].id) slot.resize(list[i].id + 1, kAbsent);
-            int32_t& s = slot[list[i].id];
-            s = s == kAbsent ? int32_t(i) : kTwice;
-        }
-    };
-    std::vector<int32_t>& prevSlot = slots_[0];
-    std::vector<int32_t>& curSlot = slots_[1];
-    const Keyframe* prev = keyframes_.empty() ? nullptr : &keyframes_.back();
-    k.dormant.resize(state_.dormant.size());
-    for (size_t i = 0; i < state_.dormant.size(); ++i)
-        k.dormant[i] = {state_.dormant[i].id, state_.dormant[i].top, 0, state_.dormant[i].held};
-    if (prev) mark(prev->dormant, prevSlot);
-    mark(k.dormant, curSlot);
-    for (uint32_t id : pushedSince)
-        if (id < prevSlot.size()) prevSlot[id] = kTwice;
-    for (size_t i = 0; i < k.dormant.size(); ++i) {
-        uint32_t id = k.dormant[i].id;
-        bool shared = id < prevSlot.size() && prevSlot[id] >= 0 && curSlot[id] >= 0;
-        if (shared) {
-            k.dormant[i].chain = prev->dormant[size_t(prevSlot[id])].chain;
-        } else {
-            k.dormant[i].chain = uint32_t(chains_.size());
-            chains_.push_back(state_.dormant[i].chain);
-        }
+    // Gorges dormant since the last keyframe keep their place and their copied chain; only
+    // those pushed or moved since are stored again.
+    for (size_t i = dormantLow_; i < dormant.size(); ++i) {
+        if (dormantChains_[i] != kNoChain) continue;
+        dormantChains_[i] = uint32_t(chainEnds_.size());
+        chainPool_.insert(chainPool_.end(), dormant[i].chain.begin(), dormant[i].chain.end());
+        chainEnds_.push_back(chainPool_.size());
     }
-    // Leave the tables all absent for the next keyframe, touching only what was marked.
-    using List = const std::vector<Keyframe::Dormant>*;
-    for (List list : {prev ? &prev->dormant : List(nullptr), List(&k.dormant)})
-        if (list)
-            for (const auto& d : *list)
-                for (auto* slot : {&prevSlot, &curSlot})
-                    if (d.id < slot->size()) (*slot)[d.id] = kAbsent;
-    for (uint32_t id : pushedSince)
-        if (id < prevSlot.size()) prevSlot[id] = kAbsent;
+    k.dormantCount = uint32_t(dormant.size());
+    k.dormantHead = dormantTree_.store(dormant.size(), dormantLow_, [&](size_t i) {
+        return Dormant{dormant[i].id, dormant[i].top, dormantChains_[i], dormant[i].held};
+    });
+    k.jumpsCount = uint32_t(jumps.size());
+    k.jumpsHead = jumpsTree_.store(jumps.size(), jumpsLow_, [&](size_t i) { return jumps[i]; });
+    dormantLow_ = dormant.size(), jumpsLow_ = jumps.size(), fresh_ = 0;
+    state_.dormant = std::move(dormant);
+    state_.jumps = std::move(jumps);
+    state_.bridges = std::move(bridges);
     keyframeSteps_.push_back(state_.step);
     keyframes_.push_back(std::move(k));
 }
 
-void Replay::restore(const Keyframe& k) {
+void Replay::restore(size_t index) {
+    const Keyframe& k = keyframes_[index];
+    // Dormant gorges and jumps the state still shares with the keyframe it was restored from,
+    // when that one shares them with k, stay: stepping back one step rewrites only what the
+    // steps since that keyframe changed.
+    size_t keepDormant = 0, keepJumps = 0;
+    if (restored_ != kNoKeyframe) {
+        const Keyframe& from = keyframes_[restored_];
+        keepDormant = std::min(dormantLow_, dormantTree_.commonPrefix(from.dormantHead, from.dormantCount,
+                                                                      k.dormantHead, k.dormantCount));
+        keepJumps = std::min(jumpsLow_, jumpsTree_.commonPrefix(from.jumpsHead, from.jumpsCount,
+                                                                k.jumpsHead, k.jumpsCount));
+    }
     std::vector<Gorge> dormant = std::move(state_.dormant);
-    std::vector<std::pair<Index, Index>> bridges = std::move(state_.bridges);
+    std::vector<std::pair<Index, Index>> jumps = std::move(state_.jumps), bridges = std::move(state_.bridges);
     state_ = k.head;
     if (bridges.size() > k.bridgeCount) bridges.resize(k.bridgeCount);
     else bridges.insert(bridges.end(), bridges_.begin() + long(bridges.size()),
                         bridges_.begin() + long(k.bridgeCount));
-    dormant.resize(k.dormant.size());
-    for (size_t i = 0; i < dormant.size(); ++i) {
-        const Keyframe::Dormant& d = k.dormant[i];
+    jumps.resize(k.jumpsCount);
+    jumpsTree_.load(k.jumpsHead, k.jumpsCount, keepJumps,
+                    [&](size_t i, const std::pair<Index, Index>& j) { jumps[i] = j; });
+    dormant.resize(k.dormantCount);
+    dormantTree_.load(k.dormantHead, k.dormantCount, keepDormant, [&](size_t i, const Dormant& d) {
         dormant[i].id = d.id, dormant[i].held = d.held, dormant[i].top = d.top;
-        dormant[i].chain = chains_[d.chain];
-    }
+        dormant[i].chain.assign(chainPool_.begin() + long(d.chain ? chainEnds_[d.chain - 1] : 0),
+                                chainPool_.begin() + long(chainEnds_[d.chain]));
+    });
     state_.dormant = std::move(dormant);
+    state_.jumps = std::move(jumps);
     state_.bridges = std::move(bridges);
+    restored_ = index;
+    lastSeekRestored_ = k.dormantCount - keepDormant + k.jumpsCount - keepJumps;
+    dormantLow_ = k.dormantCount, jumpsLow_ = k.jumpsCount;
 }
 
 size_t Replay::keyframeBytes() const {
     size_t bytes = keyframes_.capacity() * sizeof(Keyframe) + bridges_.capacity() * sizeof(bridges_[0]) +
-                   chains_.capacity() * sizeof(chains_[0]);
-    for (const auto& c : chains_) bytes += c.capacity() * sizeof(Index);
-    for (const Keyframe& k : keyframes_)
-        bytes += k.head.chain.capacity() * sizeof(Index) +
-                 k.head.jumps.capacity() * sizeof(k.head.jumps[0]) +
-                 k.dormant.capacity() * sizeof(Keyframe::Dormant);
+                   chainPool_.capacity() * sizeof(Index) + chainEnds_.capacity() * sizeof(size_t) +
+                   dormantTree_.bytes() + jumpsTree_.bytes();
+    for (const Keyframe& k : keyframes_) bytes += k.head.chain.capacity() * sizeof(Index);
     return bytes;
 }
 
@@ -193,15 +160,47 @@ const ReplayState& Replay::seek(uint32_t step) {
     size_t k = size_t(std::upper_bound(keyframeSteps_.begin(), keyframeSteps_.end(), step) -
                       keyframeSteps_.begin()) - 1;
     // Stepping forward from where we are is cheapest unless a keyframe lies in between.
-    if (step < state_.step || keyframeSteps_[k] > state_.step) restore(keyframes_[k]);
-    while (state_.step < step) apply(trace_->events[state_.step]);
+    lastSeekRestored_ = 0;
+    if (step < state_.step || keyframeSteps_[k] > state_.step) restore(k);
+    lastSeekEvents_ = 0;
+    for (; state_.step < step; ++lastSeekEvents_) apply(trace_->events[state_.step]);
     return state_;
 }
 
+void Replay::pushGorge(Gorge&& g) {
+    if (building_) {
+        fresh_ += g.chain.size();
+        dormantChains_.push_back(kNoChain);
+    }
+    state_.dormant.push_back(std::move(g));
+}
+
+// Moves gorge `id` out of the dormant list; empty chain if the log names no such gorge. The
+// to-do list is a stack, so the search starts from the end.
+std::vector<Index> Replay::takeGorge(uint32_t id, uint64_t& moved) {
+    std::vector<Gorge>& gorges = state_.dormant;
+    std::vector<Index> chain;
+    for (size_t i = gorges.size(); i-- > 0;) {
+        if (gorges[i].id != id) continue;
+        moved += 4 * (gorges.size() - i);
+        chain = std::move(gorges[i].chain);
+        gorges.erase(gorges.begin() + long(i));
+        if (building_) {
+            if (dormantChains_[i] == kNoChain) fresh_ -= chain.size();  // never to be copied
+            dormantChains_.erase(dormantChains_.begin() + long(i));
+        }
+        dormantLow_ = std::min(dormantLow_, i);
+        return chain;
+    }
+    moved += 4 * gorges.size();  // searched them all
+    return chain;
+}
+
 // Applies one event to the visible state. Mirrors the machine's actions on vertex indices.
-void Replay::apply(const Event& e) {
+uint64_t Replay::apply(const Event& e) {
     ReplayState& s = state_;
     std::vector<Index>& chain = s.chain;
+    uint64_t moved = 0;
     s.forbidden = false;
     switch (e.action) {
         case Action::Start:
@@ -213,9 +212,11 @@ void Replay::apply(const Event& e) {
             if (e.side == Side::Left) {
                 chain.erase(chain.begin(), chain.begin() + long(k));
                 chain.insert(chain.begin(), e.after.left);
+                moved = chain.size();
             } else {
                 chain.resize(chain.size() - k);
                 chain.push_back(e.after.right);
+                moved = k;
             }
             break;
         }
@@ -225,6 +226,7 @@ void Replay::apply(const Event& e) {
             // What stays right of the sag: the copy of the chain vertex and the chain after
             // it, less the wedge cut there.
             std::vector<Index> rightPart(chain.begin() + long(std::min(chain.size(), i + e.cutRight)), chain.end());
+            moved = rightPart.size();
             chain.resize(keepLeft);
             chain.push_back(e.sag);
             if (e.gorgePushed == kNone) {  // a Steiner point: the chain runs on through it
@@ -234,7 +236,7 @@ void Replay::apply(const Event& e) {
                 other.id = e.gorgePushed;
                 other.chain.push_back(e.sag);
                 other.chain.insert(other.chain.end(), rightPart.begin(), rightPart.end());
-                s.dormant.push_back(std::move(other));
+                pushGorge(std::move(other));
             }
             s.bridges.emplace_back(e.sag, e.bridgeTo);
             break;
@@ -245,30 +247,38 @@ void Replay::apply(const Event& e) {
             held.held = true;
             held.top = e.top;
             held.chain = std::move(chain);
-            s.dormant.push_back(std::move(held));
+            pushGorge(std::move(held));
+            jumpsLow_ = std::min(jumpsLow_, s.jumps.size());
             s.jumps.emplace_back(e.top, e.jumpTarget);
-            if (e.gorgePopped != kNone) chain = takeGorge(s.dormant, e.gorgePopped);
+            if (e.gorgePopped != kNone) chain = takeGorge(e.gorgePopped, moved);
             else chain.assign(1, e.bottom);
             break;
         }
         case Action::Jump: {
-            std::vector<Index> held = takeGorge(s.dormant, e.gorgePopped);
+            std::vector<Index> held = takeGorge(e.gorgePopped, moved);
             // The held chain and the active chain share the top at their meeting ends.
             if (e.side == Side::Right) {
                 if (!held.empty()) chain.insert(chain.end(), held.begin() + 1, held.end());
+                moved += held.size();
             } else {
                 if (!held.empty()) held.pop_back();
                 held.insert(held.end(), chain.begin(), chain.end());
+                moved += chain.size();
                 chain = std::move(held);
             }
-            auto it = std::find_if(s.jumps.begin(), s.jumps.end(),
-                                   [&](const std::pair<Index, Index>& j) { return j.first == e.top; });
-            if (it != s.jumps.end()) s.jumps.erase(it);
+            // Jump pointers too are set and cleared last first: search from the end.
+            for (size_t j = s.jumps.size(); j-- > 0;) {
+                if (s.jumps[j].first != e.top) continue;
+                moved += 2 * (s.jumps.size() - j);
+                s.jumps.erase(s.jumps.begin() + long(j));
+                jumpsLow_ = std::min(jumpsLow_, j);
+                break;
+            }
             break;
         }
         case Action::Fill:
             chain.clear();
-            if (e.gorgePopped != kNone) chain = takeGorge(s.dormant, e.gorgePopped);
+            if (e.gorgePopped != kNone) chain = takeGorge(e.gorgePopped, moved);
             else if (e.bottom != kNone) chain.assign(1, e.bottom);
             break;
         case Action::Forbidden:
@@ -280,6 +290,7 @@ void Replay::apply(const Event& e) {
     s.water = e.water;
     s.triangleCount = e.firstTriangle + e.triangleCount;
     s.step = e.step + 1;
+    return moved;
 }
 
 }  // namespace flood

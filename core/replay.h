@@ -1,14 +1,16 @@
 // Replay: rebuild the machine-visible state at any step from the event log alone.
 // Keyframes make seeking cheap in both directions; the replay never runs the machine again
 // and never mutates the log. Keyframes are spaced by replay work and by their own size, and
-// share the chains of dormant gorges (immutable while dormant), so their memory stays a
-// small multiple of the log's even when thousands of gorges wait at once.
+// share what did not change since the keyframe before (dormant gorges, their chains, jump
+// pointers, bridges), so their memory stays a small multiple of the log's even when
+// thousands of gorges wait at once.
 #pragma once
 #include <utility>
 #include <vector>
 
 #include "events.h"
 #include "flood.h"
+#include "prefix_tree.h"
 
 namespace flood {
 
@@ -47,8 +49,10 @@ struct ReplayState {
 class Replay {
 public:
     // `keyframeInterval`: replay work (in events) between keyframes at least. A keyframe
-    // bigger than kKeyframeRatio indices per event since the last one waits, but never past
-    // kMaxWorkFactor intervals of work (so seeks stay bounded on heavy logs).
+    // costing more than kKeyframeRatio indices per event since the last one waits, but never
+    // past kMaxWorkFactor intervals of work (so seeks stay bounded on heavy logs). A keyframe
+    // costs its active chain plus what changed since the last one: dormant gorges and jump
+    // pointers are stacks in practice, stored as shared prefixes (core/prefix_tree.h).
     explicit Replay(const Trace& trace, uint32_t keyframeInterval = 256);
     static constexpr uint32_t kKeyframeRatio = 16, kMaxWorkFactor = 128;
     uint32_t size() const { return uint32_t(trace_->events.size()); }
@@ -57,32 +61,54 @@ public:
     const ReplayState& state() const { return state_; }
     const Trace& trace() const { return *trace_; }
     size_t keyframeCount() const { return keyframes_.size(); }
-    size_t keyframeBytes() const;  // memory held by keyframes, shared chains counted once
+    size_t keyframeBytes() const;  // memory held by keyframes, shared parts counted once
+    uint32_t lastSeekEvents() const { return lastSeekEvents_; }  // events the last seek re-applied
+    uint32_t maxSeekEvents() const { return maxSeekEvents_; }    // the most any seek re-applies
+    // Dormant gorges and jump pointers the last seek rewrote from a keyframe (0 if it only
+    // stepped forward): only those that differ from the state it started from.
+    size_t lastSeekRestored() const { return lastSeekRestored_; }
 
 private:
-    // A ReplayState without its bridges (always a prefix of bridges_) and with the chains of
-    // dormant gorges in chains_, shared between keyframes.
-    struct Keyframe {
-        ReplayState head;  // chain, jumps and scalars; dormant and bridges left empty
-        uint32_t bridgeCount = 0;
-        struct Dormant {
-            uint32_t id = 0;
-            Index top = kNone;
-            uint32_t chain = 0;  // in chains_
-            bool held = false;
-        };
-        std::vector<Dormant> dormant;
+    // A dormant gorge in a keyframe: its chain is chain number `chain` of chainPool_, copied once while it stays dormant.
+    struct Dormant {
+        uint32_t id = 0;
+        Index top = kNone;
+        uint32_t chain = 0;
+        bool held = false;
     };
-    void apply(const Event& e);
-    void addKeyframe(const std::vector<uint32_t>& pushedSince);
-    void restore(const Keyframe& k);
+    // A ReplayState's scalars and active chain; its lists are shared with other keyframes.
+    struct Keyframe {
+        ReplayState head;  // dormant, jumps and bridges left empty
+        uint32_t bridgeCount = 0;  // bridges are a prefix of bridges_
+        uint32_t dormantHead = 0, dormantCount = 0, jumpsHead = 0, jumpsCount = 0;
+    };
+    static constexpr uint32_t kNoChain = UINT32_MAX;
+    uint64_t apply(const Event& e);  // returns the indices it moved, for keyframe spacing
+    void pushGorge(Gorge&& g);
+    std::vector<Index> takeGorge(uint32_t id, uint64_t& moved);
+    void addKeyframe();
+    void restore(size_t keyframe);
     const Trace* trace_;
     uint32_t interval_;
     std::vector<Keyframe> keyframes_;   // in step order, keyframes_[0] at step 0
     std::vector<uint32_t> keyframeSteps_;
     std::vector<std::pair<Index, Index>> bridges_;  // every Bridge of the run, in order
-    std::vector<std::vector<Index>> chains_;        // dormant chains seen by keyframes
-    std::vector<int32_t> slots_[2];  // gorge id -> keyframe position, while keyframing
+    std::vector<Index> chainPool_;   // dormant chains seen by keyframes, end to end
+    std::vector<size_t> chainEnds_;  // where each ends in chainPool_
+    PrefixTree<Dormant> dormantTree_;
+    PrefixTree<std::pair<Index, Index>> jumpsTree_;
+    // While keyframing: the chain number of each dormant gorge (kNoChain until a keyframe
+    // copies it), the first positions of dormant and jumps changed since the last keyframe,
+    // and the indices of the chains the next keyframe would copy.
+    // After that, the first positions changed since the last restore() of keyframe restored_.
+    bool building_ = false;
+    std::vector<uint32_t> dormantChains_;
+    size_t dormantLow_ = 0, jumpsLow_ = 0;
+    static constexpr size_t kNoKeyframe = SIZE_MAX;
+    size_t restored_ = kNoKeyframe;
+    uint64_t fresh_ = 0;
+    uint32_t lastSeekEvents_ = 0, maxSeekEvents_ = 0;
+    size_t lastSeekRestored_ = 0;
     ReplayState state_;
 };
 

@@ -1,0 +1,38 @@
+// The front door (flood_api.h): validation first, then the flood machine.
+#include "flood_api.h"
+
+#include "io.h"
+
+namespace flood {
+
+Polygon makePolygon(const std::vector<Rings>& parts) {
+    Polygon p;
+    for (const Rings& rings : parts)
+        for (size_t r = 0; r < rings.size(); ++r) p.addRing(rings[r], r == 0);
+    return p;
+}
+
+Diagnostic checkPolygon(Polygon& polygon, const std::string& name) { return validate(polygon, name); }
+
+Triangulation triangulateParts(const std::vector<Rings>& parts, const Options& options) {
+    Triangulation t;
+    t.polygon = makePolygon(parts);
+    t.diagnostic = checkPolygon(t.polygon);
+    if (!t.ok()) return t;
+    FloodResult r = triangulate(t.polygon, nullptr, options);
+    t.triangles = std::move(r.triangles);
+    t.diagnostic = r.diagnostic;
+    return t;
+}
+
+Trace traceParts(const std::vector<Rings>& parts, const Options& options) {
+    Polygon polygon = makePolygon(parts);
+    Diagnostic d = checkPolygon(polygon);
+    if (d.ok()) return record(polygon, options);
+    Trace t;
+    t.polygon = std::move(polygon);
+    t.diagnostic = d;
+    return t;
+}
+
+}  // namespace flood

@@ -1,0 +1,40 @@
+// The front door of libfloodcore for programs that link Flood: rings in, index triples out,
+// every polygon validated first (so invalid input gets a diagnostic, never a wrong
+// triangulation). Installed as <flood/flood_api.h>; CMake: find_package(Flood) and link
+// Flood::core; pkg-config: `flood` (see the README's "C++ package").
+#pragma once
+#include <string>
+#include <vector>
+
+#include "flood.h"   // Options, Triangle, Diagnostic, Status, triangulate() without validation
+#include "replay.h"  // Trace, Replay: seek to any step of a recorded flood
+
+namespace flood {
+
+// One polygon: its outer ring, then its holes. A ring lists its vertices in order, in either
+// orientation, without repeating the first at the end; a hole may be a single point.
+using Rings = std::vector<std::vector<Point>>;
+
+// A MultiPolygon of `parts` as a Polygon. Vertices are numbered through all rings in order,
+// from 0: the numbers the triangles below use. Parts without rings are skipped.
+Polygon makePolygon(const std::vector<Rings>& parts);
+
+// Validity rules of docs/ERRORS.md; Ok, or Invalid with "NAME: ring R vertex V (x, y): reason"
+// for the first problem. Records the polygon's T-junctions in it, which the flood needs.
+Diagnostic checkPolygon(Polygon& polygon, const std::string& name = "polygon");
+
+struct Triangulation {
+    Polygon polygon;                  // the input, vertices numbered as in makePolygon
+    std::vector<Triangle> triangles;  // counter-clockwise index triples into polygon.vertices
+    Diagnostic diagnostic;            // Ok, or why there are no triangles
+    bool ok() const { return diagnostic.ok(); }
+};
+
+// Validates the parts, then floods them.
+Triangulation triangulateParts(const std::vector<Rings>& parts, const Options& options = {});
+
+// Validates the parts, then floods them recording every event; on invalid input the trace
+// has no events and its diagnostic says why. Replay it with flood::Replay.
+Trace traceParts(const std::vector<Rings>& parts, const Options& options = {});
+
+}  // namespace flood

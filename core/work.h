@@ -12,6 +12,8 @@ struct WorkCounters {
                                   // fills, spills and merges visit; sag-tree boxes and sags searched
     uint64_t sagTests = 0;        // sags the sag search tests with `inside`
     uint64_t validatorSteps = 0;  // pair tests and wedge comparisons of validate()
+    uint64_t sagSearch = 0;       // the sag search's share of the three machine counts above
+                                  // (its sweep, lists, tree and tests), to weigh it against the rest
 };
 
 inline thread_local WorkCounters tWork;

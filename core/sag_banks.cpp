@@ -21,13 +21,12 @@ struct Sweep {
     bool up(uint32_t t) const { return below(point[t], point[next[t]]); }
     Point lo(uint32_t t) const { return up(t) ? point[t] : point[next[t]]; }
     Point hi(uint32_t t) const { return up(t) ? point[next[t]] : point[t]; }
-    // The side of edge t that p is on (+1 left, -1 right, 0 on it), for p strictly between
-    // its ends in height: beyond the edge's x-range the answer needs no orientation test.
-    int side(uint32_t t, Point p) const {
-        Point a = point[t], b = point[next[t]];
-        if (p.x < a.x && p.x < b.x) return 1;
-        if (p.x > a.x && p.x > b.x) return -1;
-        return up(t) ? orient(a, b, p) : orient(b, a, p);
+    // The side of the upward edge lo -> hi that p is on (+1 left, -1 right, 0 on it), for p
+    // strictly between its ends in height: beyond the edge's x-range no orientation is needed.
+    static int side(Point lo, Point hi, Point p) {
+        if (p.x < lo.x && p.x < hi.x) return 1;
+        if (p.x > lo.x && p.x > hi.x) return -1;
+        return orient(lo, hi, p);
     }
     // While a minimum's two edges are inserted where the search put the point: the edges
     // around them, left to right (the ends may be kNoEdge), whose order is already known.
@@ -36,18 +35,6 @@ struct Sweep {
         for (int k = 0; k < 4; ++k)
             if (known[k] == t) return k;
         return -1;
-    }
-    // Edge a is left of edge b on the sweep line.
-    bool less(uint32_t a, uint32_t b) const {
-        if (a == b) return false;
-        if (known[1] != kNoEdge) {
-            int ka = knownAt(a), kb = knownAt(b);
-            if (ka >= 0 && kb >= 0) return ka < kb;
-        }
-        Point la = lo(a), lb = lo(b);
-        if (la == lb) return orient(lb, hi(b), hi(a)) > 0;  // both start here: by direction
-        if (below(lb, la)) return side(b, la) > 0;
-        return side(a, lb) < 0;
     }
     // Edges a and b share a point other than a common end, or overlap there. Exact; two
     // orientations decide the usual case (b wholly on one side of a's line).
@@ -81,19 +68,31 @@ struct Sweep {
     }
 };
 
-// An edge in the sweep's set. The tail is mutable: at a regular vertex the edge leaving it
-// takes the place of the edge arriving there, which keeps the order (no edge lies between
-// them at that point, or the checks before would have stopped the sweep).
+// An edge in the sweep's set, with its ends (lower first) at hand for the comparisons. It is
+// mutable: at a regular vertex the edge leaving it takes the place of the edge arriving there,
+// which keeps the order (no edge lies between them at that point, or the checks before would
+// have stopped the sweep).
 struct Active {
     mutable uint32_t tail;
+    mutable Point lo, hi;
 };
 
 struct EdgeLess {
     using is_transparent = void;  // a point is looked up among the edges crossing the line
     const Sweep* sweep;
-    bool operator()(const Active& a, const Active& b) const { return sweep->less(a.tail, b.tail); }
-    bool operator()(const Active& e, Point p) const { return sweep->side(e.tail, p) < 0; }
-    bool operator()(Point p, const Active& e) const { return sweep->side(e.tail, p) > 0; }
+    // Edge a is left of edge b on the sweep line.
+    bool operator()(const Active& a, const Active& b) const {
+        if (a.tail == b.tail) return false;
+        if (sweep->known[1] != kNoEdge) {
+            int ka = sweep->knownAt(a.tail), kb = sweep->knownAt(b.tail);
+            if (ka >= 0 && kb >= 0) return ka < kb;
+        }
+        if (a.lo == b.lo) return orient(b.lo, b.hi, a.hi) > 0;  // both start here: by direction
+        if (below(b.lo, a.lo)) return Sweep::side(b.lo, b.hi, a.lo) > 0;
+        return Sweep::side(a.lo, a.hi, b.lo) < 0;
+    }
+    bool operator()(const Active& e, Point p) const { return Sweep::side(e.lo, e.hi, p) < 0; }
+    bool operator()(Point p, const Active& e) const { return Sweep::side(e.lo, e.hi, p) > 0; }
 };
 
 }  // namespace
@@ -142,7 +141,7 @@ bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t
             if (at[ends] == active.end()) return false;
             Set::iterator it = at[ends];
             at[ends] = active.end();
-            it->tail = starts;
+            it->tail = starts, it->lo = sweep.lo(starts), it->hi = sweep.hi(starts);
             at[starts] = it;
             // The end of the edge that left, hence strictly between the neighbours (the
             // sweep has found no meeting so far): one orientation each clears the new edge.
@@ -160,7 +159,7 @@ bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t
         }
         // A minimum (or a point hole): where p falls among the edges crossing the line.
         Set::iterator right = active.lower_bound(point[p]);  // the first edge not left of p
-        if (right != active.end() && sweep.side(right->tail, point[p]) == 0) return false;  // p on an edge
+        if (right != active.end() && Sweep::side(right->lo, right->hi, point[p]) == 0) return false;  // p on an edge
         if (rankOf[p] != kNoEdge) {  // a sag: the edges just left and right of it
             if (right != active.end()) label[1][rankOf[p]] = right->tail;
             if (right != active.begin()) label[0][rankOf[p]] = std::prev(right)->tail;
@@ -176,8 +175,8 @@ bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t
         sweep.known[0] = right == active.begin() ? kNoEdge : std::prev(right)->tail;
         sweep.known[1] = a, sweep.known[2] = b;
         sweep.known[3] = right == active.end() ? kNoEdge : right->tail;
-        Set::iterator ib = active.emplace_hint(right, Active{b});
-        Set::iterator ia = active.emplace_hint(ib, Active{a});
+        Set::iterator ib = active.emplace_hint(right, Active{b, point[p], sweep.hi(b)});
+        Set::iterator ia = active.emplace_hint(ib, Active{a, point[p], sweep.hi(a)});
         sweep.known[1] = kNoEdge;
         if (ia->tail != a || ib->tail != b || std::next(ia) != ib) return false;
         at[a] = ia, at[b] = ib;

@@ -29,6 +29,7 @@
 #include <sstream>
 
 #include "predicates.h"
+#include "sag_banks.h"
 #include "sag_index.h"
 #include "work.h"
 
@@ -245,7 +246,7 @@ private:
             work().nodeVisits += count;
             if (r == pa.firstRing) outerNodes = count;
         }
-        mergeTouchingLoops(partVertices);
+        const bool touching = mergeTouchingLoops(partVertices);
 
         // The sags of the part, sorted by height (§4).
         sags_.clear();
@@ -255,6 +256,7 @@ private:
         sags_.insert(sags_.end(), points.begin(), points.end());
         sortByHeight(sags_, sagKeys_);
         indexSags();
+        prepareBanks(touching);
         // The bottoms, lowest first: every one of them starts a gorge unless the water
         // reaches it first. They are the to-do list of last resort (see lowestDryBottom()).
         bottoms_.clear();
@@ -370,9 +372,10 @@ private:
     // is the first one met rotating clockwise from the edge we came along (§1). The k passages
     // through a point are merged in O(k log k): their outgoing edges are sorted once by exact
     // angle, and each arrival takes the outgoing edge just before its own direction.
-    void mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
+    // True when some point was shared (the loops may have changed).
+    bool mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
         std::vector<std::pair<uint32_t, uint32_t>> copies = coincidentNodes(partVertices);
-        if (copies.empty()) return;
+        if (copies.empty()) return false;
         std::sort(copies.begin(), copies.end());
         std::vector<uint32_t> corner, newNext;
         std::vector<std::pair<Point, uint32_t>> outs;  // (where the edge goes, its passage)
@@ -410,6 +413,7 @@ private:
                 nodes_[newNext[i]].prev = corner[i];
             }
         }
+        return true;
     }
 
     // Direction c->a comes before c->b counter-clockwise from +x, exactly (half-planes, then
@@ -523,6 +527,14 @@ private:
     // Left, Right, NextRight, NextLeft (§4, §5). Sags are sorted, so the scan starts at the
     // water level and stops at Next.
     uint32_t findSag(uint32_t nx, Event& e) {
+        const WorkCounters before = work();
+        uint32_t s = searchSag(nx, e);
+        const WorkCounters& after = work();
+        work().sagSearch += (after.nodeVisits - before.nodeVisits) + (after.sagTests - before.sagTests) +
+                            (after.orientCalls - before.orientCalls);
+        return s;
+    }
+    uint32_t searchSag(uint32_t nx, Event& e) {
         // Ranks bracketing the water and Next: the number of sags below each.
         int64_t lo = int64_t(sagsBelow(water_)) - 1;
         if (lo + 1 < int64_t(sagKeys_.size()) && sags_[size_t(lo + 1)] == water_) ++lo;  // the water is itself a sag
@@ -544,6 +556,18 @@ private:
             ++work().sagTests;
             return inside(Point{sagKeys_[rank].x, sagKeys_[rank].y}, l, r, nr, nl);
         };
+        if (!banksTried_ && treeWork_ > partNodes_ / 2) buildBanks();
+        if (banks_.built()) {
+            // The lowest such sag sees a bank that is an input edge across open water: it is
+            // the first unused sag of the bank's list in the bracket (ALGORITHM.md §4). The
+            // exact test confirms it; were it refused, the plane index below decides.
+            int64_t k = bankCandidate(lo, hi);
+            if (k == -1) return kNil;
+            if (k >= 0 && test(uint32_t(k))) {
+                sagIndex_.markUsed(uint32_t(k));
+                return sags_[size_t(k)];
+            }
+        }
         // The next few ranks first, in order: in a wide gorge (a strip under a row of holes)
         // the lowest sag is usually the next one up, which the tree would reach only after
         // visiting every box whose rank range begins below it.
@@ -554,13 +578,59 @@ private:
             const HeightKey& s = sagKeys_[rank];
             if (!sagIndex_.used(rank) && s.x >= region.xMin && s.x <= region.xMax && test(rank)) k = rank;
         }
-        if (k < 0) k = sagIndex_.lowest(lo, hi, region, test);
+        if (k < 0) {
+            const uint64_t before = work().nodeVisits;
+            k = sagIndex_.lowest(lo, hi, region, test);
+            treeWork_ += work().nodeVisits - before;
+        }
         if (k < 0) return kNil;
         sagIndex_.markUsed(uint32_t(k));
         return sags_[size_t(k)];
     }
 
     static constexpr int64_t kProbes = 4;  // ranks findSag tests before the sag tree
+
+    // The bank lists (core/sag_banks.h) are built once the plane index has visited more than
+    // half a box per node of the part: a part whose gorges it prunes well never pays the sweep.
+    // Labels are only sound on loops whose edges are the input's and meet only at their
+    // ends; where points are shared (touching rings, T-junctions) the plane index alone is
+    // used. The initial links are kept for the sweep, which may run after edits.
+    void prepareBanks(bool touching) {
+        banks_.clear();
+        banksTried_ = touching || sags_.empty();
+        treeWork_ = 0;
+        partFirstVertex_ = poly_.rings[poly_.parts[part_].firstRing].first;
+        initialNodes_ = partNodes_;
+        initialNext_.clear();
+        if (banksTried_) return;
+        initialNext_.resize(initialNodes_);
+        for (uint32_t i = 0; i < initialNodes_; ++i) initialNext_[i] = next(partFirstNode_ + i) - partFirstNode_;
+    }
+    void buildBanks() {
+        banksTried_ = true;
+        std::vector<Point> point(initialNodes_);
+        for (uint32_t i = 0; i < initialNodes_; ++i) point[i] = P(partFirstNode_ + i);
+        std::vector<uint32_t> sagOfRank(sags_.size());
+        for (size_t k = 0; k < sags_.size(); ++k) sagOfRank[k] = sags_[k] - partFirstNode_;
+        if (!banks_.build(point, initialNext_, sagOfRank)) banks_.clear();  // crossing edges
+    }
+    // The input edge from node a to node b, as its tail's initial node; kNil when a -> b
+    // is not an input edge (a diagonal). Without shared points a vertex has one initial node.
+    uint32_t inputEdge(uint32_t a, uint32_t b) const {
+        uint32_t t = nodes_[a].v - partFirstVertex_;
+        if (t >= initialNodes_ || initialNext_[t] + partFirstVertex_ != nodes_[b].v) return kNil;
+        return t;
+    }
+    // The bank lists' answer for the active gorge: a rank, -1 for no sag, -2 when neither
+    // bank is an input edge.
+    int64_t bankCandidate(int64_t lo, int64_t hi) const {
+        auto used = [&](uint32_t rank) { return sagIndex_.used(rank); };
+        uint32_t t = inputEdge(prev(left_), left_);
+        if (t != kNil) return banks_.lowest(true, t, lo, hi, used);
+        t = inputEdge(right_, next(right_));
+        if (t != kNil) return banks_.lowest(false, t, lo, hi, used);
+        return -2;
+    }
 
     // ---- [SECTION] the five actions ----------------------------------------------------------
     void cutTriangle(uint32_t a, uint32_t b, uint32_t c) {
@@ -938,6 +1008,11 @@ private:
     std::vector<Node> nodes_;
     std::vector<uint32_t> sags_;
     SagIndex sagIndex_;  // the sags by height rank, searchable by x
+    SagBanks banks_;     // the sags each input edge sees, once the plane index is costly
+    bool banksTried_ = false;
+    uint64_t treeWork_ = 0;  // box visits of the plane index in this part
+    uint32_t partFirstVertex_ = 0, initialNodes_ = 0;
+    std::vector<uint32_t> initialNext_;  // per initial node of the part (local ids): next
     std::vector<HeightKey> sagKeys_;  // height keys of sags_, for binary search
     std::vector<double> sagY_;         // their y alone: a denser array for the first search
     std::vector<uint32_t> sagBucket_;  // first rank of each height bucket (heightBucket())

@@ -68,23 +68,11 @@ void expectLinear(const std::string& name, const std::function<Polygon(size_t)>&
 // against 65 and 112 at 10^3).
 constexpr double kFactor = 2.0;
 
-// Families whose sag search is still super-linear (issue 13, open): their gorges are slivers,
-// and a sliver crosses O(sqrt S) boxes of the sag tree (star: 0.9, 12, 31 tree boxes per
-// vertex at 10^3, 10^4, 10^5; circle-jagged: 3.7, 19, 45). They are run (validated, flooded,
-// checked exact-valid) but left out of the assertion until the search is linear.
-bool sagSearchStillSuperLinear(const std::string& family) {
-    return family == "star" || family == "circle-smooth" || family == "circle-jagged" || family == "collinear";
-}
-
+// Every family, sliver gorges included (issue 13: star, circle-smooth, circle-jagged and
+// collinear were left out while the sag tree visited O(sqrt S) boxes per search on them).
 TEST(Growth, GeneratedFamiliesWorkPerVertexIsLinear) {
-    for (const std::string& family : familyNames()) {
-        auto make = [&](size_t n) { return generate(family, 7, n); };
-        if (sagSearchStillSuperLinear(family)) {
-            for (size_t n = 1000; n <= 100000 && n <= maxN(); n *= 10) workPerVertex(make(n), family);
-            continue;
-        }
-        expectLinear(family, make, kFactor);
-    }
+    for (const std::string& family : familyNames())
+        expectLinear(family, [&](size_t n) { return generate(family, 7, n); }, kFactor);
 }
 
 // k triangular holes through one point, in disjoint wedges around it: the loops merge there

@@ -1,0 +1,61 @@
+// The sags a gorge's bank can see (issue 13). A sweep over the part's loops, lowest vertex
+// first, labels every sag with the loop edges its horizontal rays meet first, to its left and
+// to its right (the rays of the tilted horizontal: below() order). The lowest sag inside a
+// gorge sees both of the gorge's banks across open water, so when a bank is an input edge the
+// sags labelled with it, in rank order, hold the answer of the sag search (docs/ALGORITHM.md §4).
+// A sliver gorge then costs O(1) instead of the O(√S) boxes of the plane index.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "polygon.h"
+#include "work.h"
+
+namespace flood {
+
+class SagBanks {
+public:
+    // Loops of `point.size()` nodes (next[i]: the node after i; next[i] == i for a point
+    // hole), no two at the same point; sagOfRank: the sags' nodes by height rank. False, and
+    // nothing built, when two edges touch or cross, or a sag lies on an edge (unvalidated
+    // input): the sweep stops at the first such pair, before its order could be wrong.
+    bool build(const std::vector<Point>& point, const std::vector<uint32_t>& next,
+               const std::vector<uint32_t>& sagOfRank);
+    bool built() const { return built_; }
+    void clear();
+
+    // The lowest rank in (lo, hi) for which used(rank) is false among the sags whose ray to
+    // the left (toLeft) or right meets the edge tail -> next[tail] first; -1 if none.
+    template <class Used>
+    int64_t lowest(bool toLeft, uint32_t tail, int64_t lo, int64_t hi, Used&& used) const;
+
+private:
+    // Per side, the ranks labelled with each edge, ascending: ranks_[begin_[t] .. begin_[t+1]).
+    struct Side {
+        std::vector<uint32_t> begin, ranks;
+        void group(const std::vector<uint32_t>& label, size_t edges);
+    };
+    Side side_[2];  // 0: rays to the left, 1: to the right
+    bool built_ = false;
+};
+
+template <class Used>
+int64_t SagBanks::lowest(bool toLeft, uint32_t tail, int64_t lo, int64_t hi, Used&& used) const {
+    const Side& s = side_[toLeft ? 0 : 1];
+    if (tail + 1 >= s.begin.size()) return -1;
+    auto first = s.ranks.begin() + s.begin[tail], last = s.ranks.begin() + s.begin[tail + 1];
+    // The first rank above lo: a binary search (short: a bank sees few sags).
+    while (first != last) {
+        auto mid = first + (last - first) / 2;
+        if (int64_t(*mid) <= lo) first = mid + 1;
+        else last = mid;
+    }
+    ++work().nodeVisits;
+    for (last = s.ranks.begin() + s.begin[tail + 1]; first != last && int64_t(*first) < hi; ++first) {
+        ++work().nodeVisits;
+        if (!used(*first)) return *first;
+    }
+    return -1;
+}
+
+}  // namespace flood

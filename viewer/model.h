@@ -160,6 +160,7 @@ public:
     // The first failure's culprits (input validation, then the forbidden event, then the
     // checker), the step it shows at (kNone: none), and a display point for it if any.
     const Culprits& errorCulprits() const { return error_; }
+    // TODO(merge with V2's timeline): draw a tick at firstErrorStep() in panel_timeline.cpp.
     uint32_t firstErrorStep() const { return firstErrorStep_; }
     bool errorPoint(Point& p) const;
     // The error view: zooms to the culprits, seeks to the first error's step; the canvas

@@ -222,6 +222,11 @@ int main() {
     if (near(img, inside, palette::kCulprit, 2, &seen) || near(img, inside, palette::kPolygonFill, 0, &seen))
         failures += fail("dimmed interior (not fill, not culprit)", inside, palette::kBackground, seen);
     stbi_image_free(img.px);
+    // Unreadable input: the window (with the reason) is still pictured, the exit code is 3.
+    Image none;
+    if (!shoot(dir + "/no-such-polygon.json", "", dir + "/screenshot-test-unreadable.png", W, H, none, 3))
+        return 1;
+    stbi_image_free(none.px);
     if (failures) return 1;
     std::printf("ok: step %u, background, water, dry land and Left marker where expected, also "
                 "after stepping back from the end; error view: crossing and culprit edge in the error colour\n", step);

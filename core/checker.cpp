@@ -211,7 +211,9 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
               << " triangles, expected n + 2h - 2 - 2d - j - p = " << expected << " (n = " << verts
               << ", h = " << part.ringCount - 1 << ", d = " << d << " repeated points, j + p = "
               << lessOfPart[p] << " T-junctions and point holes)";
-            return fail(o.str());
+            std::vector<uint32_t> rings;  // the part's
+            for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) rings.push_back(r);
+            return fail(o.str(), {}, {}, std::move(rings));
         }
     }
 

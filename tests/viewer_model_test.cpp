@@ -456,6 +456,18 @@ TEST(ViewerVerdict, CheckerRejectionIsShownAndBlamesTheTriangle) {
     file.open(invalidPath("checker-rejects.json"));
     EXPECT_EQ(countKind(file, VerdictKind::Ok), 0u) << file.verdict();
     EXPECT_TRUE(file.failed());
+
+    // As `--no-validate`: only the checker's rejection (triangle-count), blaming the part's ring.
+    ReadResult r = readPolygonFile(invalidPath("checker-rejects.json"));
+    Model unchecked;
+    unchecked.openPolygon(r.polygon, "checker-rejects.json", Diagnostic{});
+    ASSERT_EQ(unchecked.verdictLines().size(), 1u) << unchecked.verdict();
+    EXPECT_EQ(unchecked.verdictLines()[0].kind, VerdictKind::Rejected) << unchecked.verdict();
+    EXPECT_NE(unchecked.verdict().find("triangle-count"), std::string::npos) << unchecked.verdict();
+    EXPECT_EQ(unchecked.errorCulprits().rings, std::vector<uint32_t>{0});
+    EXPECT_EQ(unchecked.exitCode(), 6);
+    unchecked.camera.setViewport({0, 0, 800, 600});
+    EXPECT_TRUE(unchecked.showError());
 }
 
 TEST(ViewerCulprits, ValidationBlamesWhatItsMessageNames) {
@@ -596,6 +608,11 @@ TEST(ViewerTraces, OpenLikeAPolygonAndFailWithTheLine) {
     EXPECT_EQ(m.steps(), t.events.size());
     EXPECT_EQ(m.verdictLines().at(0).kind, VerdictKind::Ok) << m.verdict();
     EXPECT_EQ(m.recentFiles().front().front(), '/');
+
+    Model byHeader;  // any name: the header line says it is a trace
+    std::ofstream(dir + "trace-saved-as.txt") << text;
+    byHeader.open(dir + "trace-saved-as.txt");
+    EXPECT_EQ(byHeader.steps(), t.events.size()) << byHeader.verdict();
 
     // Truncated mid-way: a failure naming a line; what was loaded stays.
     std::ofstream(dir + "truncated.jsonl") << text.substr(0, text.size() / 2);

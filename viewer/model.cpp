@@ -241,15 +241,24 @@ Model::Model() : trace_(std::make_unique<Trace>()), replay_(std::make_unique<Rep
 }
 Model::~Model() = default;
 
+// A trace by its name (*.jsonl, what `flood trace` is given) or by its header line, so a
+// trace saved under any name opens as one.
 static bool isTracePath(const std::string& path) {
-    return path.size() > 6 && path.compare(path.size() - 6, 6, ".jsonl") == 0;
+    if (path.size() > 6 && path.compare(path.size() - 6, 6, ".jsonl") == 0) return true;
+    std::ifstream in(path, std::ios::binary);
+    char head[64] = {};
+    in.read(head, sizeof head - 1);
+    std::string h(head, size_t(in.gcount()));
+    h.erase(std::remove_if(h.begin(), h.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); }), h.end());
+    return h.rfind("{\"format\":\"flood-trace\"", 0) == 0;
 }
 
 void Model::open(const std::string& path) {
     ReadResult r;
     Trace t;
+    const bool isTrace = isTracePath(path);
     try {
-        if (isTracePath(path)) r.diagnostic = readTraceFile(path, t);
+        if (isTrace) r.diagnostic = readTraceFile(path, t);
         else r = readPolygonFile(path);
     } catch (const std::exception& ex) {
         r.diagnostic = {Status::Malformed, path + ": " + ex.what()};
@@ -263,7 +272,7 @@ void Model::open(const std::string& path) {
         }
         return;
     }
-    if (isTracePath(path)) {
+    if (isTrace) {
         openTrace(std::move(t), path);
     } else {
         Diagnostic d = validate(r.polygon, path);
@@ -487,7 +496,11 @@ bool Model::showError() {
                 if (v < V.size()) grow(V[v]);
     Point p;
     if (errorPoint(p)) grow(p);
-    if (!(x0 <= x1))  // only rings blamed: their vertices
+    // A validation finding about whole rings (a hole outside, holes overlapping): the rings;
+    // otherwise rings only when nothing finer is blamed (the machine's fingers' rings can be
+    // the whole polygon).
+    bool ringLevel = !input_.ok() && error_.edges.empty() && !error_.hasPoint;
+    if (!(x0 <= x1) || ringLevel)
         for (Index r : error_.rings)
             if (r < trace_->polygon.rings.size())
                 for (Index i = 0; i < trace_->polygon.rings[r].count; ++i)

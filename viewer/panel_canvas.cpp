@@ -156,6 +156,18 @@ void errorOverlay(Ui& ui, ImDrawList* dl) {
                     r.addLine(Layer::Lines, cam.toScreen(P.vertices[tri[k]]),
                               cam.toScreen(P.vertices[tri[(k + 1) % 3]]), 4 * s, palette::kCulprit);
         }
+    // Only rings blamed (a hole outside, overlapping holes, a bad count): their outlines, up
+    // to a bound so a huge ring stays a frame's work.
+    if (c.edges.empty() && c.triangles.empty()) {
+        size_t budget = 50000;
+        for (Index ring : c.rings) {
+            if (ring >= P.rings.size()) continue;
+            const Ring& g = P.rings[ring];
+            for (Index i = 0; i < g.count && budget; ++i, --budget)
+                r.addLine(Layer::Lines, cam.toScreen(P.vertices[g.first + i]),
+                          cam.toScreen(P.vertices[g.first + (i + 1) % g.count]), 3 * s, palette::kCulprit);
+        }
+    }
     Point x;
     if (m.errorPoint(x)) r.addCircle(Layer::Markers, cam.toScreen(x), 12 * s, 3 * s, palette::kCulprit);
     for (Index v : c.vertices) {

@@ -112,7 +112,14 @@ std::vector<Index> canonicalVertices(const std::vector<Point>& V, const std::vec
     return canonical;
 }
 
-CheckResult fail(const std::string& s) { return {false, s}; }
+CheckResult fail(const std::string& s, std::vector<uint32_t> triangles = {},
+                 std::vector<uint32_t> vertices = {}, std::vector<uint32_t> rings = {}) {
+    CheckResult r{false, s, {}};
+    r.culprits.triangles = std::move(triangles);
+    r.culprits.vertices = std::move(vertices);
+    r.culprits.rings = std::move(rings);
+    return r;
+}
 
 std::string triName(size_t t, const Triangle& tri) {
     std::ostringstream o;
@@ -142,7 +149,7 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
         if (ring.count < 3 && !isPointHole(r)) {
             std::ostringstream o;
             o << "ring-too-short: ring " << r << " has " << ring.count << " vertices";
-            return fail(o.str());
+            return fail(o.str(), {}, {}, {r});
         }
         for (Index i = 0; i < ring.count; ++i) partOfVertex[ring.first + i] = partOfRing[r];
     }
@@ -154,7 +161,7 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
                 std::ostringstream o;
                 o << "index-out-of-range: " << triName(t, triangles[t]) << " uses vertex " << v
                   << " but the polygon has " << n << " vertices";
-                return fail(o.str());
+                return fail(o.str(), {uint32_t(t)});
             }
 
     const std::vector<Index> C = canonicalVertices(V, partOfVertex);
@@ -165,7 +172,8 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
         const Triangle& tri = triangles[t];
         Index p = partOfVertex[tri[0]];
         if (p == kNone || partOfVertex[tri[1]] != p || partOfVertex[tri[2]] != p)
-            return fail("mixed-parts: " + triName(t, tri) + " has vertices from different parts");
+            return fail("mixed-parts: " + triName(t, tri) + " has vertices from different parts",
+                        {uint32_t(t)}, {tri[0], tri[1], tri[2]});
         countOfPart[p]++;
     }
     std::vector<size_t> copiesOfPart(polygon.parts.size(), 0);  // d: repeated points per part
@@ -184,7 +192,7 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
             std::ostringstream o;
             o << "bad-split: vertex " << sp.vertex << " does not lie strictly inside edge (" << sp.edge
               << ", " << b << ")";
-            return fail(o.str());
+            return fail(o.str(), {}, {sp.vertex});
         }
         lessOfPart[partOfVertex[sp.edge]]++;
     }
@@ -203,7 +211,9 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
               << " triangles, expected n + 2h - 2 - 2d - j - p = " << expected << " (n = " << verts
               << ", h = " << part.ringCount - 1 << ", d = " << d << " repeated points, j + p = "
               << lessOfPart[p] << " T-junctions and point holes)";
-            return fail(o.str());
+            std::vector<uint32_t> rings;  // the part's
+            for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) rings.push_back(r);
+            return fail(o.str(), {}, {}, std::move(rings));
         }
     }
 
@@ -211,8 +221,12 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
     for (size_t t = 0; t < triangles.size(); ++t) {
         const Triangle& tri = triangles[t];
         int o = orient(V[tri[0]], V[tri[1]], V[tri[2]]);
-        if (o == 0) return fail("degenerate-triangle: " + triName(t, tri) + " has zero area");
-        if (o < 0) return fail("clockwise-triangle: " + triName(t, tri) + " is clockwise");
+        if (o == 0)
+            return fail("degenerate-triangle: " + triName(t, tri) + " has zero area", {uint32_t(t)},
+                        {tri[0], tri[1], tri[2]});
+        if (o < 0)
+            return fail("clockwise-triangle: " + triName(t, tri) + " is clockwise", {uint32_t(t)},
+                        {tri[0], tri[1], tri[2]});
     }
 
     // Rule 4: directed triangle edges are distinct.
@@ -226,7 +240,7 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
                 std::ostringstream o;
                 o << "edge-used-twice: directed edge (" << a << ", " << b << ") is in "
                   << triName(other, triangles[other]) << " and " << triName(t, tri);
-                return fail(o.str());
+                return fail(o.str(), {other, uint32_t(t)}, {a, b});
             }
         }
     }
@@ -247,7 +261,7 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
         if (s == 0) {
             std::ostringstream o;
             o << "ring-zero-area: ring " << r << " has zero signed area";
-            return fail(o.str());
+            return fail(o.str(), {}, {}, {r});
         }
         bool outer = partOfRing[r] != kNone && polygon.parts[partOfRing[r]].firstRing == r;
         // Forward when the ring's own direction already has the interior on its left.
@@ -272,20 +286,20 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
             std::ostringstream o;
             o << "boundary-edge-shared: rings " << dummy << " and " << r
               << " share the boundary segment (" << a << ", " << b << ")";
-            return fail(o.str());
+            return fail(o.str(), {}, {a, b}, {dummy, r});
         }
         // Rule 5.
         if (edges.find(edgeKey(C[b], C[a]), dummy)) {
             std::ostringstream o;
             o << "boundary-edge-reversed: " << triName(dummy, triangles[dummy])
               << " uses boundary edge (" << b << ", " << a << ") of ring " << r << " from outside";
-            return fail(o.str());
+            return fail(o.str(), {dummy}, {b, a}, {r});
         }
         if (!edges.contains(edgeKey(C[a], C[b]))) {
             std::ostringstream o;
             o << "boundary-edge-missing: no triangle has boundary edge (" << a << ", " << b
               << ") of ring " << r;
-            return fail(o.str());
+            return fail(o.str(), {}, {a, b}, {r});
         }
     }
 
@@ -299,7 +313,7 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
                 std::ostringstream o;
                 o << "unmatched-edge: " << triName(t, tri) << " has interior edge (" << a << ", "
                   << b << ") but no triangle has (" << b << ", " << a << ")";
-                return fail(o.str());
+                return fail(o.str(), {uint32_t(t)}, {a, b});
             }
         }
     }
@@ -320,7 +334,7 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
         std::string overlap = partsOverlap(V, partOfVertex, boundaryEdges);
         if (!overlap.empty()) return fail(overlap);
     }
-    return {true, ""};
+    return {true, "", {}};
 }
 
 }  // namespace flood

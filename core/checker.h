@@ -4,12 +4,14 @@
 #include <vector>
 
 #include "polygon.h"
+#include "status.h"
 
 namespace flood {
 
 struct CheckResult {
     bool ok = false;
     std::string reason;  // first rule broken, naming the triangle / edge / vertices
+    Culprits culprits;   // the same triangle / vertices / ring as data
 };
 
 // Checks, exactly (no epsilon): triangle count n + 2h - 2 - 2d per part (d = vertices repeating

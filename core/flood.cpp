@@ -465,9 +465,10 @@ private:
         emit(e);
         e.after = fingers();
         result_.failure = e;
-        result_.diagnostic = {Status::Forbidden, describeForbidden(poly_, e)};
+        result_.diagnostic = {Status::Forbidden, describeForbidden(poly_, e), forbiddenCulprits(poly_, e)};
         left_ = right_ = kNil;
     }
+
     // A ring of fewer than three vertices bounds no area: no loop can be built from it.
     void forbidShortRing(Event& e, Index ring) {
         e.action = Action::Forbidden;
@@ -477,6 +478,7 @@ private:
         result_.diagnostic = {Status::Forbidden, describeForbidden(poly_, e) + " (ring " +
                                                      std::to_string(ring) + " has " +
                                                      std::to_string(poly_.rings[ring].count) + " vertices)"};
+        result_.diagnostic.culprits.rings = {ring};
         left_ = right_ = kNil;
     }
     static void mark(Event& e, Test t, bool r) {
@@ -1042,6 +1044,19 @@ private:
 
 FloodResult triangulate(const Polygon& polygon, Listener* listener, const Options& options) {
     return Machine(polygon, listener, options).run();
+}
+
+Culprits forbiddenCulprits(const Polygon& polygon, const Event& e) {
+    Culprits c;
+    const Fingers& f = e.before;
+    for (Index v : {e.culprit, e.culprit2, f.left, f.right, f.nextLeft, f.nextRight})
+        if (v < polygon.vertices.size() &&
+            std::find(c.vertices.begin(), c.vertices.end(), v) == c.vertices.end()) {
+            c.vertices.push_back(v);
+            Index r = polygon.ringOf(v);
+            if (std::find(c.rings.begin(), c.rings.end(), r) == c.rings.end()) c.rings.push_back(r);
+        }
+    return c;
 }
 
 std::string describeForbidden(const Polygon& polygon, const Event& e) {

@@ -30,5 +30,7 @@ FloodResult triangulate(const Polygon& polygon, Listener* listener = nullptr,
 
 // Human-readable description of a forbidden event, naming the vertices (index, ring, x, y).
 std::string describeForbidden(const Polygon& polygon, const Event& e);
+// The event's vertices as data (its culprits first, then the fingers before it) and their rings.
+Culprits forbiddenCulprits(const Polygon& polygon, const Event& e);
 
 }  // namespace flood

@@ -77,9 +77,36 @@ struct Validator {
         return "ring " + std::to_string(r) + " vertex " + std::to_string(v - P.rings[r].first) +
                " " + formatPoint(pt(v));
     }
-    Diagnostic fail(Index v, const std::string& reason) const {
-        return {Status::Invalid, name + ": " + at(v) + ": " + reason + " (global vertex " +
-                                     std::to_string(v) + ")"};
+    // Blames v (first), its ring, and whatever else `also` names; every vertex named adds
+    // its ring, so the culprits are the ones the message names.
+    Diagnostic fail(Index v, const std::string& reason, Culprits also = {}) const {
+        Diagnostic d{Status::Invalid, name + ": " + at(v) + ": " + reason + " (global vertex " +
+                                          std::to_string(v) + ")"};
+        Culprits& c = d.culprits;
+        c = std::move(also);
+        c.vertices.insert(c.vertices.begin(), v);
+        for (Index e : c.edges) c.vertices.push_back(e), c.vertices.push_back(next(e));
+        for (Index u : c.vertices) c.rings.push_back(ringOfV[u]);
+        for (auto* list : {&c.vertices, &c.rings, &c.edges}) {
+            std::vector<uint32_t> seen;  // unique, first mention first
+            for (uint32_t x : *list)
+                if (std::find(seen.begin(), seen.end(), x) == seen.end()) seen.push_back(x);
+            *list = std::move(seen);
+        }
+        return d;
+    }
+    static Culprits ringsCulprits(std::vector<uint32_t> rings) {
+        Culprits c;
+        c.rings = std::move(rings);
+        return c;
+    }
+    // The culprits of a vertex lying at its exact point (touches, spikes, vertices on edges).
+    Culprits atPoint(Index v, std::vector<uint32_t> edges = {}) const {
+        Culprits c;
+        c.edges = std::move(edges);
+        c.hasPoint = true;
+        c.x = pt(v).x, c.y = pt(v).y;
+        return c;
     }
     // "ring R edge A-B (x, y)-(x, y)" for the edge e -> next(e).
     std::string edgeText(Index e) const {
@@ -113,6 +140,11 @@ struct Validator {
     std::string occurrenceText(const Occurrence& o) const {
         return o.owner < n ? at(o.owner) : "edge " + edgeText(junctions[o.owner - n].edge);
     }
+    // What occurrenceText names, added to c.
+    void blame(Culprits& c, const Occurrence& o) const {
+        if (o.owner < n) c.vertices.push_back(o.owner);
+        else c.edges.push_back(junctions[o.owner - n].edge);
+    }
 };
 
 // --- exact geometric helpers -------------------------------------------------------------
@@ -142,8 +174,12 @@ Diagnostic Validator::checkRings() {
     for (Index r = 0; r < P.rings.size(); ++r) {
         const Ring& ring = P.rings[r];
         if (ring.count == 0)
-            return {Status::Invalid, name + ": ring " + std::to_string(r) +
-                                         ": ring is empty, it needs at least 3 distinct points"};
+        {
+            Diagnostic d{Status::Invalid, name + ": ring " + std::to_string(r) +
+                                              ": ring is empty, it needs at least 3 distinct points"};
+            d.culprits.rings = {r};
+            return d;
+        }
         bool outer = P.parts[partOfRing[r]].firstRing == r;
         if (ring.count == 1 && !outer) continue;  // a Steiner point
         tmp.assign(P.vertices.begin() + ring.first, P.vertices.begin() + ring.first + ring.count);
@@ -157,7 +193,7 @@ Diagnostic Validator::checkRings() {
                                         (outer ? "" : " (or exactly one, a point hole)"));
         for (Index v = ring.first; v < ring.first + ring.count; ++v)
             if (pt(v) == pt(next(v)))
-                return fail(v, "repeated consecutive point (zero-length edge)");
+                return fail(v, "repeated consecutive point (zero-length edge)", atPoint(v, {v}));
     }
     ringSign.assign(P.rings.size(), 0);
     for (Index r = 0; r < P.rings.size(); ++r) {
@@ -221,9 +257,11 @@ Diagnostic Validator::checkEdges() {
     });
 
     std::optional<std::pair<Index, std::string>> problem;  // vertex to report, reason
+    Culprits problemCulprits;                               // and what else it names
     // `vertex` lies strictly inside `edge`: a touch between rings (checked in check 5),
     // refused on its own ring or for a point.
     auto onEdge = [&](Index vertex, Index edge) {
+        if (isPoint(vertex) || ringOfV[vertex] == ringOfV[edge]) problemCulprits = atPoint(vertex, {edge});
         if (isPoint(vertex))
             problem.emplace(vertex, "point hole lies on edge " + edgeText(edge) +
                                         " (a Steiner point must be strictly inside the polygon)");
@@ -250,6 +288,7 @@ Diagnostic Validator::checkEdges() {
             adjacent = true;
             Point p = pt(e1), q = pt(e2), s = pt(next(e2));
             if (orient(p, q, s) == 0 && sameDirection(q, p, s)) {
+                problemCulprits = atPoint(e2, {e1, e2});
                 problem.emplace(e2, "the ring folds back on itself here (spike): edge " +
                                         edgeText(e1) + " overlaps the next edge");
                 return;
@@ -260,6 +299,8 @@ Diagnostic Validator::checkEdges() {
         Index lo = std::min(e, f), hi = std::max(e, f);
         if (o1 * o2 < 0 && o3 * o4 < 0) {
             edgesCrossed = true;
+            problemCulprits = {};
+            problemCulprits.edges = {lo, hi};  // no exact double point: the viewer computes one
             problem.emplace(lo, "edge " + edgeText(lo) + " crosses edge " + edgeText(hi));
             return;
         }
@@ -268,6 +309,7 @@ Diagnostic Validator::checkEdges() {
             auto key = [&](Point p) { return useX ? p.x : p.y; };
             double l = std::max(std::min(key(a), key(b)), std::min(key(c), key(d)));
             double h = std::min(std::max(key(a), key(b)), std::max(key(c), key(d)));
+            if (l < h) problemCulprits = {}, problemCulprits.edges = {lo, hi};
             if (l < h)
                 problem.emplace(lo, "edge " + edgeText(lo) + " overlaps collinear edge " +
                                         edgeText(hi));
@@ -349,7 +391,7 @@ Diagnostic Validator::checkEdges() {
         });
         for (auto [e, r] : leftmost) enclosing[r] = enclosingAt(where[e]);
     }
-    if (problem) return fail(problem->first, problem->second);
+    if (problem) return fail(problem->first, problem->second, problemCulprits);
     // One junction per edge and point, ordered by edge, then along the edge from its start
     // (the order the flood machine and the checker walk it in).
     std::sort(junctions.begin(), junctions.end(), [&](const EdgeSplit& s, const EdgeSplit& t) {
@@ -467,10 +509,13 @@ Diagnostic Validator::checkSharedVertices() {
     for (const std::vector<Occurrence>& occ : touchPoints) {
         Point p = pt(occ[0].owner);
         for (const Occurrence& o : occ)
-            if (o.owner < n && isPoint(o.owner))
-                return fail(o.owner, "point hole coincides with " +
-                                         occurrenceText(o.owner == occ[0].owner ? occ[1] : occ[0]) +
-                                         " (a Steiner point must be strictly inside the polygon)");
+            if (o.owner < n && isPoint(o.owner)) {
+                const Occurrence& other = o.owner == occ[0].owner ? occ[1] : occ[0];
+                Culprits c = atPoint(o.owner);
+                blame(c, other);
+                return fail(o.owner, "point hole coincides with " + occurrenceText(other) +
+                                         " (a Steiner point must be strictly inside the polygon)", c);
+            }
         rays.clear();
         for (Index i = 0; i < occ.size(); ++i) {
             const Occurrence& o = occ[i];
@@ -494,9 +539,12 @@ Diagnostic Validator::checkSharedVertices() {
         // The interleaving pair with the lowest passages (occ is sorted by owner), for a
         // stable message.
         auto [c, d] = lowestCrossingChords(chordAt);
-        if (c != kNone)
+        if (c != kNone) {
+            Culprits also = atPoint(vertexOf(c));
+            blame(also, occ[d]);
             return fail(vertexOf(c), "the boundary crosses itself " + here + " (" +
-                                         occurrenceText(occ[d]) + " passes through to the other side)");
+                                         occurrenceText(occ[d]) + " passes through to the other side)", also);
+        }
         // Sectors between consecutive rays must alternate interior / exterior; otherwise two
         // loops overlap here (a loop nested in another with the same orientation, a hole
         // nested in a hole, or a part touching another from inside).
@@ -506,10 +554,12 @@ Diagnostic Validator::checkSharedVertices() {
             const Ray& b = rays[(i + 1) % rays.size()];
             if (a.after == b.after) {
                 Index u = std::min(a.occ, b.occ), w = std::max(a.occ, b.occ);
+                Culprits also = atPoint(vertexOf(u));
+                if (u != w) blame(also, occ[w]);
                 return fail(vertexOf(u), "the interior overlaps itself " + here + " (" +
                                              (u == w ? std::string("a ring") : occurrenceText(occ[w])) +
                                              " touches here from the inside, with the "
-                                             "orientation of a nested loop or hole)");
+                                             "orientation of a nested loop or hole)", also);
             }
         }
     }
@@ -537,9 +587,12 @@ Diagnostic Validator::checkTouchTopology() {
             ++work().validatorSteps;
             const Occurrence& b = occ[i];
             Index at = b.owner < n ? b.owner : junctions[b.owner - n].vertex;
-            if (ringStamp[b.ring] == t)
+            if (ringStamp[b.ring] == t) {
+                Culprits also = atPoint(at);
+                blame(also, occ[ringAt[b.ring]]);
                 return fail(at, "the ring touches itself here (it also passes through " +
-                                    occurrenceText(occ[ringAt[b.ring]]) + "): a ring must be simple");
+                                    occurrenceText(occ[ringAt[b.ring]]) + "): a ring must be simple", also);
+            }
             ringStamp[b.ring] = t, ringAt[b.ring] = i;
             Index part = partOfRing[b.ring];
             if (partStamp[part] != t) {
@@ -548,8 +601,12 @@ Diagnostic Validator::checkTouchTopology() {
             }
             Index ra = find(partRing[part]), rb = find(b.ring);
             if (ra == rb)
+            {
+                Culprits also = atPoint(at);
+                also.rings = {partRing[part], b.ring};
                 return fail(at, "rings touching here and elsewhere enclose part of the interior: "
-                                "the interior is disconnected");
+                                "the interior is disconnected", also);
+            }
             parent[ra] = rb;
         }
     }
@@ -571,17 +628,18 @@ Diagnostic Validator::checkHoles() {
             if (e != kNone && P.parts[partOfRing[e]].firstRing == e)
                 return fail(v, "outer ring " + std::to_string(r) +
                                    " lies inside the outer ring " + std::to_string(e) +
-                                   " of another part: parts overlap");
+                                   " of another part: parts overlap", ringsCulprits({r, e}));
             continue;
         }
         if (e == outer) continue;
         if (sameHole(e))
             return fail(v, "hole (ring " + std::to_string(r) + ") lies inside another hole (ring " +
-                               std::to_string(e) + "): holes overlap");
+                               std::to_string(e) + "): holes overlap", ringsCulprits({r, e}));
         return fail(v, "hole (ring " + std::to_string(r) + ") lies outside its outer ring (ring " +
                            std::to_string(outer) + ")" +
                            (e == kNone ? std::string()
-                                       : ", inside ring " + std::to_string(e) + " instead"));
+                                       : ", inside ring " + std::to_string(e) + " instead"),
+                   ringsCulprits(e == kNone ? std::vector<uint32_t>{r, outer} : std::vector<uint32_t>{r, outer, e}));
     }
     return {};
 }

@@ -33,7 +33,15 @@ shot() {
   local step
   step=$(step_after "$2" "$3" "$4")
   [ -n "$step" ] || { echo "no $3 #$4 in $2" >&2; exit 1; }
-  "${RUN[@]}" "$VIEWER" "polygons/$2" --step "$step" --screenshot "docs/img/$1.png" --size 900x600
+  viewer "polygons/$2" --step "$step" --screenshot "docs/img/$1.png" --size 900x600
+}
+
+# viewer ARGS...: the picture is written whatever the input; exit codes 3-6 only say the
+# input failed (invalid polygons are pictured on purpose), anything else stops the script.
+viewer() {
+  local rc=0
+  "${RUN[@]}" "$VIEWER" "$@" || rc=$?
+  [ "$rc" -eq 0 ] || { [ "$rc" -ge 3 ] && [ "$rc" -le 6 ]; } || exit "$rc"
 }
 
 shot monotone-fill            monotone.json         Fill   1
@@ -53,4 +61,7 @@ shot figure7-5-fill           paper-figure-7.json   Fill   2
 shot figure7-6-end            paper-figure-7.json   Fill   3
 shot fig11-a                  invalid/fig11-a-sag-start.json Forbidden 1
 shot fig11-b                  invalid/fig11-b-ceiling.json   Forbidden 1
+# "Why does my face fail?": the face as it opens, then its error view (the E key).
+viewer polygons/tutorial/crossing-face.json --screenshot docs/img/why-fails-open.png --size 900x600
+viewer polygons/tutorial/crossing-face.json --show-error --screenshot docs/img/why-fails-error.png --size 900x600
 echo "docs/img: $(ls docs/img/*.png | wc -l) images"

@@ -30,14 +30,18 @@ struct Args {
     std::string screenshot;
     int width = 1280, height = 800;
     bool bench = false;  // measure open, seek and frame times, print them, exit
+    bool showError = false;  // open in the error view (as the E key does)
 };
 
 const char* const kUsage =
-    "usage: flood-viewer [FILE] [--step N] [--screenshot OUT.png] [--size WxH]\n"
-    "  FILE              polygon (GeoJSON, ring arrays or WKT); default: polygons/paper-figure-7.json\n"
+    "usage: flood-viewer [FILE] [--step N] [--show-error] [--screenshot OUT.png] [--size WxH]\n"
+    "  FILE              polygon (GeoJSON, ring arrays or WKT) or a trace from `flood trace`\n"
+    "                    (*.jsonl); default: polygons/paper-figure-7.json\n"
     "  --step N          show the state after N events (repeat it to draw each in turn:\n"
     "                    --step 40 --step 5 shows 5 after a frame at 40)\n"
-    "  --screenshot OUT  render once in a hidden window, write OUT as PNG and exit\n"
+    "  --show-error      start in the error view (zoomed to the culprits), as the E key\n"
+    "  --screenshot OUT  render once in a hidden window, write OUT as PNG and exit; the exit\n"
+    "                    code is the CLI's: 3 unreadable, 4 invalid, 5 forbidden, 6 checker\n"
     "  --size WxH        window size in pixels (default 1280x800)\n"
     "  --bench           time opening, seeking and drawing (hidden window), print, exit\n"
     "keys in the viewer: F1 or ?\n";
@@ -64,6 +68,8 @@ int parseArgs(int argc, char** argv, Args& a) {
                 return 2 + 1;
             }
             a.steps.push_back(uint32_t(std::min<long>(a.step, ~0u)));
+        } else if (s == "--show-error") {
+            a.showError = true;
         } else if (s == "--bench") {
             a.bench = true;
         } else if (s == "--screenshot") {
@@ -103,7 +109,7 @@ int printSummary(const std::string& why, Model& model, const Args& args) {
         std::printf("%s\n", model.inputDiagnostic().message.empty()
                                 ? "no polygon to summarise (polygons/ is empty)"
                                 : model.inputDiagnostic().message.c_str());
-        return model.inputDiagnostic().ok() ? 0 : int(model.inputDiagnostic().status);
+        return model.exitCode();
     }
     const Trace& t = model.trace();
     std::printf("Summary of %s:\n", model.path().c_str());
@@ -197,6 +203,7 @@ int main(int argc, char** argv) {
         if (xdg && *xdg) recentFile = std::string(xdg) + "/flood-viewer/recent.txt";
         else if (home && *home) recentFile = std::string(home) + "/.config/flood-viewer/recent.txt";
         if (!recentFile.empty()) model.loadRecent(recentFile);
+        model.recentPath = recentFile;  // saved on every open
     }
     double openStart = now();
     if (!args.file.empty()) model.open(args.file);
@@ -211,7 +218,10 @@ int main(int argc, char** argv) {
     const bool shot = !args.screenshot.empty() || args.bench;
     platform::WindowOptions wo;
     wo.width = args.width, wo.height = args.height, wo.hidden = shot;
-    wo.title = "flood-viewer — " + (model.path().empty() ? std::string("no polygon") : model.path());
+    auto title = [&] {
+        return "flood-viewer — " + (model.path().empty() ? std::string("no polygon") : model.path());
+    };
+    wo.title = title();
     IMGUI_CHECKVERSION();
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
@@ -240,20 +250,30 @@ int main(int argc, char** argv) {
     ui.scale = scale;
 
     int exitCode = 0;
+    uint64_t titled = model.generation();
     double lastTime = platform::time();
     for (int frame = 0; !platform::shouldClose(); ++frame) {
         if (shot || model.playing) platform::pollEvents();
         else platform::waitEvents(0.25);  // idle: wake on input, or 4 times a second
         for (const auto& path : platform::takeDroppedPaths()) {
             model.open(path);
-            ui.message = "opened " + path;
-            platform::setTitle("flood-viewer — " + path);
+            ui.message = model.openDiagnostic().ok() ? "opened " + path : model.openDiagnostic().message;
+        }
+        // The title names the file loaded (a failed open keeps the previous one).
+        if (model.generation() != titled) {
+            titled = model.generation();
+            platform::setTitle(title());
         }
         imguiGlNewFrame();
         platform::newFrame();
         ImGui::NewFrame();
         Vec2 size = platform::windowSize();
         ui.layout = computeLayout(size.x, size.y, scale);
+        if (frame == 0 && args.showError) {
+            model.camera.setViewport(ui.layout.canvas);
+            model.showError();
+            if (!args.steps.empty()) model.seek(args.steps.front());
+        }
 
         double frameStart = now();
         // Bench: frames 3..62 step to a random step, 63..122 pan by a pixel at a fixed one.
@@ -302,7 +322,8 @@ int main(int argc, char** argv) {
             ui.pngRequest.clear();
             if (shot) {
                 std::fprintf(ok ? stdout : stderr, "flood-viewer: %s\n", ui.message.c_str());
-                exitCode = ok ? 0 : 1;
+                // The picture is written; the exit code still says what the input was.
+                exitCode = !ok ? 1 : model.exitCode();
                 platform::requestClose();
             }
         }

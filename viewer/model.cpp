@@ -3,6 +3,7 @@
 #include "model.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -15,6 +16,7 @@
 
 #include "io.h"
 #include "predicates.h"
+#include "trace_io.h"
 #include "transcript.h"
 
 #ifndef FLOOD_SOURCE_DIR
@@ -98,9 +100,15 @@ void Camera::fit(const Polygon& polygon, const Rect& viewport) {
         y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
     }
     if (!(x0 <= x1)) x0 = x1 = y0 = y1 = 0;
+    fitBox(x0, y0, x1, y1, viewport);
+}
+
+void Camera::fitBox(double x0, double y0, double x1, double y1, const Rect& viewport,
+                    double minSide) {
+    viewport_ = viewport;
     cx_ = (x0 + x1) / 2;
     cy_ = (y0 + y1) / 2;
-    double w = std::max(x1 - x0, 1e-300), h = std::max(y1 - y0, 1e-300);
+    double w = std::max(x1 - x0, minSide), h = std::max(y1 - y0, minSide);
     const double usable = 0.88;  // 6% margin on each side
     scale_ = std::min(viewport.w * usable / w, viewport.h * usable / h);
     if (!std::isfinite(scale_) || scale_ <= 0) scale_ = 1;
@@ -233,20 +241,66 @@ Model::Model() : trace_(std::make_unique<Trace>()), replay_(std::make_unique<Rep
 }
 Model::~Model() = default;
 
+// A trace by its name (*.jsonl, what `flood trace` is given) or by its header line, so a
+// trace saved under any name opens as one.
+static bool isTracePath(const std::string& path) {
+    if (path.size() > 6 && path.compare(path.size() - 6, 6, ".jsonl") == 0) return true;
+    std::ifstream in(path, std::ios::binary);
+    char head[64] = {};
+    in.read(head, sizeof head - 1);
+    std::string h(head, size_t(in.gcount()));
+    h.erase(std::remove_if(h.begin(), h.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); }), h.end());
+    return h.rfind("{\"format\":\"flood-trace\"", 0) == 0;
+}
+
 void Model::open(const std::string& path) {
     ReadResult r;
+    Trace t;
+    const bool isTrace = isTracePath(path);
     try {
-        r = readPolygonFile(path);
+        if (isTrace) r.diagnostic = readTraceFile(path, t);
+        else r = readPolygonFile(path);
     } catch (const std::exception& ex) {
         r.diagnostic = {Status::Malformed, path + ": " + ex.what()};
     }
-    Diagnostic d = r.diagnostic;
-    if (d.ok()) d = validate(r.polygon, path);
-    openPolygon(std::move(r.polygon), path, d, std::move(r.warnings));
-    if (!r.diagnostic.ok()) return;
-    recent_.erase(std::remove(recent_.begin(), recent_.end(), path), recent_.end());
-    recent_.insert(recent_.begin(), path);
+    if (!r.diagnostic.ok()) {
+        // A failed open keeps what was loaded; with nothing loaded, the failure is the verdict.
+        openDiag_ = r.diagnostic;
+        if (trace_->polygon.vertices.empty()) {
+            openPolygon({}, path, r.diagnostic);
+            openDiag_ = r.diagnostic;
+        }
+        return;
+    }
+    if (isTrace) {
+        openTrace(std::move(t), path);
+    } else {
+        Diagnostic d = validate(r.polygon, path);
+        openPolygon(std::move(r.polygon), path, d, std::move(r.warnings));
+    }
+    remember(path);
+}
+
+void Model::remember(const std::string& path) {
+    std::error_code ec;
+    std::string abs = std::filesystem::absolute(path, ec).lexically_normal().string();
+    if (ec || path == "-") abs = path;
+    recent_.erase(std::remove(recent_.begin(), recent_.end(), abs), recent_.end());
+    recent_.insert(recent_.begin(), abs);
     if (recent_.size() > 10) recent_.resize(10);
+    if (!recentPath.empty()) saveRecent(recentPath);
+}
+
+void Model::openTrace(Trace trace, const std::string& name) {
+    playing = false;
+    ++generation_;
+    path_ = name;
+    openDiag_ = {};
+    warnings_.clear();
+    // The trace holds the run; validation of a copy only says whether its input was valid.
+    Polygon copy = trace.polygon;
+    input_ = copy.vertices.empty() ? Diagnostic{} : validate(copy, name);
+    adopt(std::make_unique<Trace>(std::move(trace)));
 }
 
 void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic input,
@@ -254,6 +308,7 @@ void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic inp
     playing = false;
     ++generation_;
     path_ = name;
+    openDiag_ = input.status == Status::Malformed ? input : Diagnostic{};
     input_ = std::move(input);
     warnings_ = std::move(warnings);
     auto trace = std::make_unique<Trace>();
@@ -265,6 +320,11 @@ void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic inp
         }
     }
     trace->polygon = std::move(polygon);
+    adopt(std::move(trace));
+}
+
+void Model::adopt(std::unique_ptr<Trace> trace) {
+    errorView = false;
     // The replay points into the trace: replace both together, replay first.
     replay_.reset();
     trace_ = std::move(trace);
@@ -276,8 +336,9 @@ void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic inp
         for (uint32_t t = e.firstTriangle;
              t < e.firstTriangle + e.triangleCount && t < triangleStep_.size(); ++t)
             triangleStep_[t] = e.step + 1;
+    computeVerdictLines();  // runs the exact checker: once, not every frame
     computeOffenders();
-    verdict_ = computeVerdict();  // a scan of the log: once, not every frame
+    verdict_ = computeVerdict();
     needsFit = true;
     step_ = 0;
     replay_->seek(0);
@@ -299,29 +360,261 @@ void Model::computeOffenders() {
         add(e.culprit), add(e.culprit2);
         add(e.before.left), add(e.before.right), add(e.before.nextLeft), add(e.before.nextRight);
     }
-    // Validation messages name a point as "(x, y)": blame every vertex at that point.
-    const std::string& m = input_.message;
-    for (size_t open = m.find('('); open != std::string::npos; open = m.find('(', open + 1)) {
-        double x, y;
-        if (std::sscanf(m.c_str() + open, "(%lf, %lf)", &x, &y) != 2) continue;
-        for (Index v = 0; v < trace_->polygon.vertices.size(); ++v)
-            if (trace_->polygon.vertices[v] == Point{x, y}) add(v);
-    }
+    for (Index v : error_.vertices) add(v);
     std::sort(offenders_.begin(), offenders_.end());
     offenders_.erase(std::unique(offenders_.begin(), offenders_.end()), offenders_.end());
 }
 
 std::string Model::computeVerdict() const {
-    if (!input_.ok() && trace_->polygon.vertices.empty()) return input_.message;
     std::string s;
-    if (!input_.ok()) s = "invalid input: " + input_.message + "\n";
+    for (const VerdictLine& l : verdictLines_) s += (s.empty() ? "" : "\n") + l.text;
+    return s;
+}
+
+void Model::computeVerdictLines() {
+    verdictLines_.clear();
+    check_ = {};
+    error_ = {};
+    firstErrorStep_ = kNone;
+    const Polygon& P = trace_->polygon;
+    auto line = [&](VerdictKind k, std::string text) { verdictLines_.push_back({k, std::move(text)}); };
+    if (!input_.ok() && P.vertices.empty()) {
+        line(input_.status == Status::Malformed ? VerdictKind::Unreadable : VerdictKind::InvalidInput,
+             input_.message);
+        return;
+    }
+    if (!input_.ok()) {
+        line(VerdictKind::InvalidInput, "invalid input: " + input_.message);
+        error_ = input_.culprits;
+    }
+    const Event* forbidden = nullptr;
     for (const Event& e : trace_->events)
-        if (e.action == Action::Forbidden)
-            return s + "Forbidden at step " + std::to_string(e.step + 1) + ": " +
-                   describeForbidden(trace_->polygon, e);
-    if (!trace_->diagnostic.ok()) return s + trace_->diagnostic.message;
-    return s + "ok: " + std::to_string(trace_->triangles.size()) + " triangles (expected " +
-           std::to_string(trace_->polygon.expectedTriangles()) + ")";
+        if (e.action == Action::Forbidden) {
+            forbidden = &e;
+            break;
+        }
+    if (forbidden) {
+        line(VerdictKind::Forbidden, "forbidden at step " + std::to_string(forbidden->step + 1) +
+                                         ": " + describeForbidden(P, *forbidden));
+        if (error_.empty()) error_ = forbiddenCulprits(P, *forbidden);
+        firstErrorStep_ = forbidden->step + 1;
+        return;
+    }
+    if (!trace_->diagnostic.ok()) {
+        line(VerdictKind::Internal, trace_->diagnostic.message);
+        if (error_.empty()) error_ = trace_->diagnostic.culprits;
+        return;
+    }
+    if (P.vertices.empty()) return;  // nothing loaded
+    // A completed run: the exact checker decides, never the triangle count.
+    check_ = checkTriangulation(P, trace_->triangles);
+    if (!check_.ok) {
+        line(VerdictKind::Rejected, "the exact checker rejects the triangulation: " + check_.reason);
+        if (error_.empty()) error_ = check_.culprits;
+        for (uint32_t t : check_.culprits.triangles)
+            if (t < triangleStep_.size() && triangleStep_[t] &&
+                (firstErrorStep_ == kNone || triangleStep_[t] < firstErrorStep_))
+                firstErrorStep_ = triangleStep_[t];
+    } else if (input_.ok()) {
+        line(VerdictKind::Ok, "ok: " + std::to_string(trace_->triangles.size()) +
+                                  " triangles, exact checker passed");
+    } else {
+        line(VerdictKind::Note, "the exact checker accepts the " +
+                                    std::to_string(trace_->triangles.size()) +
+                                    " triangles, but the input is invalid");
+    }
+    if (firstErrorStep_ == kNone && !input_.ok()) {
+        // Invalid input that floods through: the first step a culprit is a finger.
+        for (const Event& e : trace_->events) {
+            for (Index v : {e.after.left, e.after.right, e.after.nextLeft, e.after.nextRight})
+                if (v != kNone && std::find(error_.vertices.begin(), error_.vertices.end(), v) !=
+                                      error_.vertices.end())
+                    firstErrorStep_ = e.step + 1;
+            if (firstErrorStep_ != kNone) break;
+        }
+    }
+}
+
+bool Model::failed() const {
+    return std::any_of(verdictLines_.begin(), verdictLines_.end(),
+                       [](const VerdictLine& l) { return l.failure(); });
+}
+
+int Model::exitCode() const {
+    if (!openDiag_.ok()) return int(openDiag_.status);
+    for (const VerdictLine& l : verdictLines_)  // the first failure decides, as in the CLI
+        switch (l.kind) {
+            case VerdictKind::Unreadable: return int(Status::Malformed);
+            case VerdictKind::InvalidInput: return int(Status::Invalid);
+            case VerdictKind::Forbidden: return int(Status::Forbidden);
+            case VerdictKind::Rejected:
+            case VerdictKind::Internal: return int(Status::Internal);
+            default: break;
+        }
+    return 0;
+}
+
+bool Model::errorPoint(Point& p) const {
+    const auto& V = trace_->polygon.vertices;
+    if (error_.hasPoint) {
+        p = {error_.x, error_.y};
+        return true;
+    }
+    if (error_.edges.size() < 2) return false;
+    // Two crossing edges: their intersection in doubles, for display only.
+    auto ends = [&](Index e, Point& a, Point& b) {
+        if (e >= V.size()) return false;
+        const Ring& r = trace_->polygon.rings[trace_->polygon.ringOf(e)];
+        a = V[e], b = V[e + 1 == r.first + r.count ? r.first : e + 1];
+        return true;
+    };
+    Point a, b, c, d;
+    if (!ends(error_.edges[0], a, b) || !ends(error_.edges[1], c, d)) return false;
+    double den = (b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x);
+    if (den == 0 || !std::isfinite(den)) {  // collinear overlap: the middle of the shared part
+        p = {(a.x + b.x + c.x + d.x) / 4, (a.y + b.y + c.y + d.y) / 4};
+        return true;
+    }
+    double t = ((c.x - a.x) * (d.y - c.y) - (c.y - a.y) * (d.x - c.x)) / den;
+    p = {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+    return true;
+}
+
+bool Model::showError() {
+    if (!failed()) return false;
+    const auto& V = trace_->polygon.vertices;
+    double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+    auto grow = [&](Point p) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+    };
+    for (Index v : error_.vertices)
+        if (v < V.size()) grow(V[v]);
+    for (uint32_t t : error_.triangles)
+        if (t < trace_->triangles.size())
+            for (Index v : trace_->triangles[t])
+                if (v < V.size()) grow(V[v]);
+    Point p;
+    if (errorPoint(p)) grow(p);
+    // A validation finding about whole rings (a hole outside, holes overlapping): the rings;
+    // otherwise rings only when nothing finer is blamed (the machine's fingers' rings can be
+    // the whole polygon).
+    bool ringLevel = !input_.ok() && error_.edges.empty() && !error_.hasPoint;
+    if (!(x0 <= x1) || ringLevel)
+        for (Index r : error_.rings)
+            if (r < trace_->polygon.rings.size())
+                for (Index i = 0; i < trace_->polygon.rings[r].count; ++i)
+                    grow(V[trace_->polygon.rings[r].first + i]);
+    if (!(x0 <= x1)) return false;
+    // A single point is shown with a neighbourhood of 1/50 of the polygon.
+    Camera whole;
+    whole.fit(trace_->polygon, camera.viewport());
+    double side = 0.02 * std::min(camera.viewport().w, camera.viewport().h) / whole.scale();
+    camera.fitBox(x0, y0, x1, y1, camera.viewport(), side);
+    errorView = true;
+    needsFit = false;
+    if (firstErrorStep_ != kNone) seek(firstErrorStep_);
+    return true;
+}
+
+FindTarget findTarget(const Trace& trace, const std::string& query) {
+    FindTarget f;
+    std::string q;
+    for (char c : query)
+        if (!std::isspace(static_cast<unsigned char>(c))) q += char(std::tolower(static_cast<unsigned char>(c)));
+    if (q.empty()) return f.message = "type v<vertex>, t<triangle>, s<step> or r<ring>", f;
+    f.kind = q[0];
+    if (std::string("vtsr").find(f.kind) == std::string::npos)
+        return f.message = "'" + query + "': start with v (vertex), t (triangle), s (step) or r (ring)", f;
+    if (q.size() == 1 || q.size() > 12 || q.find_first_not_of("0123456789", 1) != std::string::npos)
+        return f.message = "'" + query + "': a number must follow '" + std::string(1, f.kind) + "'", f;
+    f.index = std::stoull(q.substr(1));
+    const Polygon& P = trace.polygon;
+    const auto& V = P.vertices;
+    auto outOfRange = [&](const char* what, size_t count) {
+        f.message = std::string("no ") + what + " " + std::to_string(f.index) + ": there are " +
+                    std::to_string(count) + (count ? " (0-" + std::to_string(count - 1) + ")" : "");
+        return f;
+    };
+    auto at = [&](Point p) { f.hasCenter = true, f.center = p, f.x0 = f.x1 = p.x, f.y0 = f.y1 = p.y; };
+    switch (f.kind) {
+        case 'v': {
+            if (f.index >= V.size()) return outOfRange("vertex", V.size());
+            Index v = Index(f.index);
+            at(V[v]);
+            // Its first event: the first step it is a finger or the event's subject.
+            for (const Event& e : trace.events)
+                for (Index u : {e.after.left, e.after.right, e.after.nextLeft, e.after.nextRight,
+                                e.bottom, e.sag, e.top})
+                    if (u == v && f.seekTo == kNone) f.seekTo = e.step + 1;
+            Index r = P.ringOf(v);
+            f.message = "vertex " + std::to_string(v) + ": ring " + std::to_string(r) + " vertex " +
+                        std::to_string(v - P.rings[r].first);
+            break;
+        }
+        case 't': {
+            if (f.index >= trace.triangles.size()) return outOfRange("triangle", trace.triangles.size());
+            const Triangle& t = trace.triangles[f.index];
+            if (t[0] >= V.size() || t[1] >= V.size() || t[2] >= V.size())
+                return f.message = "triangle " + std::to_string(f.index) + " has a vertex out of range", f;
+            at({(V[t[0]].x + V[t[1]].x + V[t[2]].x) / 3, (V[t[0]].y + V[t[1]].y + V[t[2]].y) / 3});
+            for (Index v : t)
+                f.x0 = std::min(f.x0, V[v].x), f.x1 = std::max(f.x1, V[v].x),
+                f.y0 = std::min(f.y0, V[v].y), f.y1 = std::max(f.y1, V[v].y);
+            for (const Event& e : trace.events)
+                if (e.triangleCount && f.index >= e.firstTriangle &&
+                    f.index < uint64_t(e.firstTriangle) + e.triangleCount) {
+                    f.seekTo = e.step + 1;
+                    break;
+                }
+            f.message = "triangle " + std::to_string(f.index);
+            break;
+        }
+        case 's': {
+            if (f.index > trace.events.size())
+                return f.message = "no step " + std::to_string(f.index) + ": there are " +
+                                   std::to_string(trace.events.size()) + " steps",
+                       f;
+            f.seekTo = uint32_t(f.index);
+            f.message = "step " + std::to_string(f.index);
+            if (f.index == 0) return f.ok = true, f.message += " (before anything)", f;
+            const Event& e = trace.events[f.index - 1];
+            Index v = e.water != kNone ? e.water : e.after.left;
+            if (v == kNone || v >= V.size()) v = e.before.left;
+            if (v != kNone && v < V.size()) at(V[v]);
+            else return f.ok = true, f;  // nothing to centre on: seek only
+            break;
+        }
+        case 'r': {
+            if (f.index >= P.rings.size()) return outOfRange("ring", P.rings.size());
+            const Ring& r = P.rings[f.index];
+            if (r.count == 0) return f.message = "ring " + std::to_string(f.index) + " is empty", f;
+            at(V[r.first]);
+            for (Index i = 0; i < r.count; ++i) {
+                Point p = V[r.first + i];
+                if (!std::isfinite(p.x) || !std::isfinite(p.y)) continue;
+                f.x0 = std::min(f.x0, p.x), f.x1 = std::max(f.x1, p.x);
+                f.y0 = std::min(f.y0, p.y), f.y1 = std::max(f.y1, p.y);
+            }
+            f.center = {(f.x0 + f.x1) / 2, (f.y0 + f.y1) / 2};
+            f.message = "ring " + std::to_string(f.index) + ": " + std::to_string(r.count) + " vertices";
+            break;
+        }
+    }
+    f.ok = true;
+    return f;
+}
+
+FindTarget Model::find(const std::string& query) {
+    FindTarget f = findTarget(*trace_, query);
+    if (!f.ok) return f;
+    if (f.seekTo != kNone) seek(f.seekTo);
+    if (f.kind == 'r' && (f.x1 > f.x0 || f.y1 > f.y0))
+        camera.fitBox(f.x0, f.y0, f.x1, f.y1, camera.viewport());
+    else if (f.hasCenter)
+        camera.centerOn(f.center);
+    if (f.hasCenter) needsFit = false;
+    return f;
 }
 
 const Event* Model::currentEvent() const {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "checker.h"
 #include "events.h"
 #include "flood.h"
 #include "polygon.h"
@@ -49,6 +50,11 @@ Layout computeLayout(double width, double height, double uiScale);
 class Camera {
 public:
     void fit(const Polygon& polygon, const Rect& viewport);  // whole polygon, 6% margin
+    // The box [x0, x1] x [y0, y1] (world), 6% margin; a box of no size (one point) is
+    // shown at the scale of a box `minSide` wide.
+    void fitBox(double x0, double y0, double x1, double y1, const Rect& viewport,
+                double minSide = 1e-300);
+    void centerOn(Point p) { cx_ = p.x, cy_ = p.y; }
     void setViewport(const Rect& viewport) { viewport_ = viewport; }
     Vec2 toScreen(Point p) const;
     Point toWorld(Vec2 s) const;
@@ -86,6 +92,31 @@ struct TranscriptItem {
 std::vector<TranscriptItem> buildTranscript(const Trace& trace);
 
 // ----------------------------------------------------------------------------------------
+// The verdict, one line per finding. Ok only when the exact checker passed on valid input;
+// every failure (unreadable, invalid input, forbidden state, checker rejection, internal)
+// has its own line, drawn red.
+enum class VerdictKind : uint8_t { Ok, Note, Unreadable, InvalidInput, Forbidden, Rejected, Internal };
+struct VerdictLine {
+    VerdictKind kind = VerdictKind::Ok;
+    std::string text;
+    bool failure() const { return kind != VerdictKind::Ok && kind != VerdictKind::Note; }
+};
+
+// Find: "v2999" (vertex), "t77022" (triangle), "s12051" (step), "r3" (ring), parsed and
+// looked up against a trace. A bad query says why in `message`.
+struct FindTarget {
+    bool ok = false;
+    std::string message;
+    char kind = 0;               // 'v', 't', 's' or 'r'
+    uint64_t index = 0;
+    bool hasCenter = false;
+    Point center;                // where to centre the view
+    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // what to show (a ring's box; a point otherwise)
+    uint32_t seekTo = kNone;     // step to seek to, kNone: stay
+};
+FindTarget findTarget(const Trace& trace, const std::string& query);
+
+// ----------------------------------------------------------------------------------------
 class Model {
 public:
     Model();
@@ -93,10 +124,16 @@ public:
     Model(const Model&) = delete;
     Model& operator=(const Model&) = delete;
 
-    // Reads, validates and floods a file of any format io.h knows. Never throws: unreadable
-    // files leave an empty polygon and the message in inputDiagnostic(); invalid polygons are
-    // flooded anyway so the viewer can show where the machine stops.
+    // Reads, validates and floods a file of any format io.h knows, or loads a trace written
+    // by `flood trace` (*.jsonl). Never throws. An unreadable file or malformed trace keeps
+    // whatever was loaded (nothing loaded: an empty polygon) and says why in openDiagnostic()
+    // and the verdict; invalid polygons are flooded anyway so the viewer can show where the
+    // machine stops. Recent files get the absolute path, saved to `recentPath` if set.
     void open(const std::string& path);
+    // A recorded run as it is (the polygon is validated again only to report the input).
+    void openTrace(Trace trace, const std::string& name);
+    const Diagnostic& openDiagnostic() const { return openDiag_; }  // the last open's read
+    std::string recentPath;
     void openPolygon(Polygon polygon, const std::string& name, Diagnostic input,
                      std::vector<std::string> warnings = {});
 
@@ -113,6 +150,26 @@ public:
     void loadRecent(const std::string& file);  // one path per line; missing file: no-op
     void saveRecent(const std::string& file) const;
     const std::string& verdict() const { return verdict_; }  // "ok: 64 triangles" / "Forbidden at step 12: ..."
+    const std::vector<VerdictLine>& verdictLines() const { return verdictLines_; }
+    const CheckResult& check() const { return check_; }  // the exact checker, on a completed run
+    bool failed() const;  // any failure line in the verdict
+    // The CLI's exit code for what is loaded: 0, 3 unreadable, 4 invalid, 5 forbidden,
+    // 6 checker rejection or internal error (docs/ERRORS.md).
+    int exitCode() const;
+
+    // The first failure's culprits (input validation, then the forbidden event, then the
+    // checker), the step it shows at (kNone: none), and a display point for it if any.
+    const Culprits& errorCulprits() const { return error_; }
+    // TODO(merge with V2's timeline): draw a tick at firstErrorStep() in panel_timeline.cpp.
+    uint32_t firstErrorStep() const { return firstErrorStep_; }
+    bool errorPoint(Point& p) const;
+    // The error view: zooms to the culprits, seeks to the first error's step; the canvas
+    // draws the culprits thick and dims the rest while `errorView` is set.
+    bool showError();
+    bool errorView = false;
+
+    // Find (see findTarget): centres the camera on the target and seeks where it says.
+    FindTarget find(const std::string& query);
 
     // Time.
     uint32_t steps() const { return uint32_t(trace_->events.size()); }
@@ -151,6 +208,14 @@ public:
 private:
     void computeOffenders();
     std::string computeVerdict() const;
+    void adopt(std::unique_ptr<Trace> trace);  // makes `trace` the loaded run
+    void computeVerdictLines();
+    void remember(const std::string& path);
+    Diagnostic openDiag_;
+    CheckResult check_;
+    std::vector<VerdictLine> verdictLines_;
+    Culprits error_;
+    uint32_t firstErrorStep_ = kNone;
     std::unique_ptr<Trace> trace_;    // owned here, at a stable address for Replay
     std::unique_ptr<Replay> replay_;
     std::string path_;

@@ -10,6 +10,7 @@
 #include <cstdio>
 
 #include "panels.h"
+#include "platform_glfw.h"
 
 namespace flood::view {
 
@@ -123,6 +124,103 @@ void triangleLabels(Ui& ui, ImDrawList* dl) {
     });
 }
 
+// The error view: the canvas dimmed, the culprit edges thick, the crossing point ringed and
+// each culprit vertex labelled "ring R #i" (Model::showError zoomed to them).
+void errorOverlay(Ui& ui, ImDrawList* dl) {
+    const Model& m = ui.model;
+    const Camera& cam = m.camera;
+    const Rect& area = ui.layout.canvas;
+    const Polygon& P = m.polygon();
+    const Culprits& c = m.errorCulprits();
+    const float s = ui.scale;
+    Renderer& r = ui.renderer;
+    Vec2 a{area.x, area.y}, b{area.x + area.w, area.y}, d{area.x, area.y + area.h},
+        e{area.x + area.w, area.y + area.h};
+    Rgba dim = palette::kBackground;
+    dim.a = 200;
+    r.addTriangle(Layer::Lines, a, b, e, dim);
+    r.addTriangle(Layer::Lines, a, e, d, dim);
+    auto edgeEnd = [&](Index v) {
+        const Ring& ring = P.rings[P.ringOf(v)];
+        return v + 1 == ring.first + ring.count ? ring.first : v + 1;
+    };
+    for (Index v : c.edges)
+        if (v < P.vertices.size())
+            r.addLine(Layer::Lines, cam.toScreen(P.vertices[v]), cam.toScreen(P.vertices[edgeEnd(v)]),
+                      6 * s, palette::kCulprit);
+    for (uint32_t t : c.triangles)
+        if (t < m.trace().triangles.size()) {
+            const Triangle& tri = m.trace().triangles[t];
+            if (tri[0] < P.vertices.size() && tri[1] < P.vertices.size() && tri[2] < P.vertices.size())
+                for (int k = 0; k < 3; ++k)
+                    r.addLine(Layer::Lines, cam.toScreen(P.vertices[tri[k]]),
+                              cam.toScreen(P.vertices[tri[(k + 1) % 3]]), 4 * s, palette::kCulprit);
+        }
+    // Only rings blamed (a hole outside, overlapping holes, a bad count): their outlines, up
+    // to a bound so a huge ring stays a frame's work.
+    if (c.edges.empty() && c.triangles.empty()) {
+        size_t budget = 50000;
+        for (Index ring : c.rings) {
+            if (ring >= P.rings.size()) continue;
+            const Ring& g = P.rings[ring];
+            for (Index i = 0; i < g.count && budget; ++i, --budget)
+                r.addLine(Layer::Lines, cam.toScreen(P.vertices[g.first + i]),
+                          cam.toScreen(P.vertices[g.first + (i + 1) % g.count]), 3 * s, palette::kCulprit);
+        }
+    }
+    Point x;
+    if (m.errorPoint(x)) r.addCircle(Layer::Markers, cam.toScreen(x), 12 * s, 3 * s, palette::kCulprit);
+    for (Index v : c.vertices) {
+        if (v >= P.vertices.size()) continue;
+        Vec2 p = cam.toScreen(P.vertices[v]);
+        r.addDisc(Layer::Markers, p, 4 * s, palette::kCulprit);
+        if (!area.contains(p)) continue;
+        Index ring = P.ringOf(v);
+        char text[64];
+        std::snprintf(text, sizeof text, "v%u (ring %u #%u)", v, ring, v - P.rings[ring].first);
+        dl->AddText(ImVec2(float(p.x + 8 * s), float(p.y - 16 * s)), toImU32(palette::kCulprit), text);
+    }
+}
+
+// The find box and the "Show error" button, floating at the canvas's top-left corner.
+void canvasBar(Ui& ui) {
+    Model& m = ui.model;
+    const Rect& area = ui.layout.canvas;
+    const float s = ui.scale;
+    ImGui::SetNextWindowPos(ImVec2(float(area.x + 8 * s), float(area.y + 8 * s)), ImGuiCond_Always);
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    ImGui::Begin("##canvasbar", nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing);
+    ImGuiIO& io = ImGui::GetIO();
+    bool keys = !io.WantTextInput;
+    if (ui.focusFind || (io.KeyCtrl && ImGui::IsKeyPressed(platform::kKeyF, false))) {
+        ImGui::SetKeyboardFocusHere();
+        ui.focusFind = false;
+    }
+    ImGui::SetNextItemWidth(140 * s);
+    if (ImGui::InputTextWithHint("##find", "find v12 t3 s40 r1", ui.findText, sizeof ui.findText,
+                                 ImGuiInputTextFlags_EnterReturnsTrue)) {
+        FindTarget f = m.find(ui.findText);
+        ui.message = f.message;
+        ui.findFailed = !f.ok;
+    }
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+F: v<vertex>, t<triangle>, s<step>, r<ring>");
+    if (m.failed()) {
+        ImGui::SameLine();
+        bool go = ImGui::Button(m.errorView ? "Hide error (E)" : "Show error (E)");
+        go |= keys && !io.KeyCtrl && ImGui::IsKeyPressed('E', false);
+        if (go) {
+            if (m.errorView) m.errorView = false;
+            else if (!m.showError()) ui.message = "no culprit to show";
+        }
+    }
+    if (!ui.message.empty() && ui.findFailed)
+        ImGui::TextColored(toImVec4(palette::kCulprit), "%s", ui.message.c_str());
+    ImGui::End();
+}
+
 }  // namespace
 
 void drawCanvas(Ui& ui) {
@@ -131,6 +229,7 @@ void drawCanvas(Ui& ui) {
     if (m.needsFit) {
         m.camera.fit(m.polygon(), area);
         m.needsFit = false;
+        m.errorView = false;
     }
     m.camera.setViewport(area);
     canvasInput(ui);
@@ -182,13 +281,14 @@ void drawCanvas(Ui& ui) {
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     dl->PushClipRect(ImVec2(float(area.x), float(area.y)),
                      ImVec2(float(area.x + area.w), float(area.y + area.h)), true);
-    if (o.triangleNumbers) triangleLabels(ui, dl);
+    if (m.errorView) errorOverlay(ui, dl);
+    if (o.triangleNumbers && !m.errorView) triangleLabels(ui, dl);
     // Gorge labels fold away when hundreds are on screen; finger labels always show.
     size_t crowd = 0;
     for (const auto& l : cs.overlay.labels) crowd += l.folds && area.contains(cam.toScreen(l.p));
     for (const auto& l : cs.overlay.labels) {
         Vec2 c = cam.toScreen(l.p);
-        if (!area.contains(c) || (l.folds && crowd > 200)) continue;
+        if (!area.contains(c) || (l.folds && crowd > 200) || m.errorView) continue;
         dl->AddText(ImVec2(float(c.x + l.dx * s), float(c.y + l.dy * s)), toImU32(l.color),
                     l.text.c_str());
     }
@@ -199,6 +299,7 @@ void drawCanvas(Ui& ui) {
                     toImU32(palette::kCulprit), msg);
     }
     dl->PopClipRect();
+    canvasBar(ui);
 }
 
 }  // namespace flood::view

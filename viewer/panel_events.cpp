@@ -12,6 +12,13 @@ const char* vname(Index v, char* buf, size_t n) {
     snprintf(buf, n, "%u", v);
     return buf;
 }
+// A vertex or triangle number that finds its target when clicked (Model::find).
+void clickable(Ui& ui, const char* text, char kind) {
+    ImGui::TextUnformatted(text);
+    if (text[0] == '-' || !ImGui::IsItemHovered()) return;
+    ImGui::SetTooltip("click: find %c%s", kind, text);
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) ui.message = ui.model.find(kind + std::string(text)).message;
+}
 }  // namespace
 
 void drawEvents(Ui& ui) {
@@ -52,7 +59,7 @@ void drawEvents(Ui& ui) {
                 char label[32];
                 snprintf(label, sizeof label, "%d", i + 1);
                 if (ImGui::Selectable(label, uint32_t(i + 1) == m.step(),
-                                      ImGuiSelectableFlags_SpanAllColumns)) {
+                                      ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowItemOverlap)) {
                     m.seek(uint32_t(i + 1));
                     ui.eventsScrolledTo = m.step();  // the user scrolled here: do not jump
                 }
@@ -61,16 +68,17 @@ void drawEvents(Ui& ui) {
                 ImGui::TableNextColumn();
                 ImGui::TextColored(toImVec4(palette::action(e.action)), "%s", actionName(e.action));
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(vname(e.after.left, b[0], 16));
+                clickable(ui, vname(e.after.left, b[0], 16), 'v');
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(vname(e.after.right, b[1], 16));
+                clickable(ui, vname(e.after.right, b[1], 16), 'v');
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(vname(e.after.nextLeft, b[2], 16));
+                clickable(ui, vname(e.after.nextLeft, b[2], 16), 'v');
                 ImGui::TableNextColumn();
-                ImGui::TextUnformatted(vname(e.after.nextRight, b[3], 16));
+                clickable(ui, vname(e.after.nextRight, b[3], 16), 'v');
                 ImGui::TableNextColumn();
+                char t[16];
                 if (e.triangleCount == 1)
-                    ImGui::Text("%u", e.firstTriangle);
+                    snprintf(t, sizeof t, "%u", e.firstTriangle), clickable(ui, t, 't');
                 else if (e.triangleCount > 1)
                     ImGui::Text("%u-%u", e.firstTriangle, e.firstTriangle + e.triangleCount - 1);
             }

@@ -3,7 +3,9 @@
 // recently opened files, and any path typed in. Files can also be dropped on the window.
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstring>
+#include <filesystem>
 
 #include "panels.h"
 
@@ -58,10 +60,42 @@ void drawOpen(Ui& ui) {
             if (ImGui::Selectable(name.c_str(), f == m.path())) chosen = f;
         }
     }
+    // Any folder: its subfolders to walk into, and the polygons and traces in it.
+    if (ImGui::CollapsingHeader("Browse")) {
+        namespace fs = std::filesystem;
+        std::error_code ec;
+        if (ui.browseDir.empty()) ui.browseDir = fs::absolute(dir, ec).lexically_normal().string();
+        ImGui::TextDisabled("%s", ui.browseDir.c_str());
+        std::vector<std::string> dirs, files;
+        for (const auto& e : fs::directory_iterator(ui.browseDir, ec)) {
+            std::string name = e.path().filename().string();
+            std::string ext = e.path().extension().string();
+            if (e.is_directory(ec)) dirs.push_back(name);
+            else if (ext == ".json" || ext == ".wkt" || ext == ".jsonl" || ext == ".geojson") files.push_back(name);
+        }
+        std::sort(dirs.begin(), dirs.end());
+        std::sort(files.begin(), files.end());
+        std::string into;
+        if (ImGui::Selectable("../")) into = fs::path(ui.browseDir).parent_path().string();
+        for (const auto& d : dirs)
+            if (ImGui::Selectable((d + "/").c_str())) into = (fs::path(ui.browseDir) / d).string();
+        for (const auto& f : files) {
+            std::string full = (fs::path(ui.browseDir) / f).string();
+            if (ImGui::Selectable(f.c_str(), full == m.path())) chosen = full;
+        }
+        if (!into.empty()) ui.browseDir = fs::path(into).lexically_normal().string();
+    }
     if (!chosen.empty()) {
         m.open(chosen);
         std::strncpy(path, chosen.c_str(), sizeof path - 1);
-        ui.message = "opened " + chosen;
+        // A failed open keeps what was loaded; say why in red.
+        ui.openFailed = !m.openDiagnostic().ok();
+        ui.message = ui.openFailed ? m.openDiagnostic().message : "opened " + chosen;
+    }
+    if (ui.openFailed) {
+        ImGui::PushTextWrapPos(0);
+        ImGui::TextColored(toImVec4(palette::kCulprit), "%s", m.openDiagnostic().message.c_str());
+        ImGui::PopTextWrapPos();
     }
     ImGui::End();
 }

@@ -47,6 +47,11 @@ struct Ui {
     std::string pngRequest;            // non-empty: main writes this PNG after rendering
     uint32_t eventsScrolledTo = ~0u;   // events list follows the step when it changes
     uint32_t transcriptScrolledTo = ~0u;
+    char findText[64] = "";            // the canvas's find box (Ctrl+F)
+    bool focusFind = false;
+    bool findFailed = false;           // ui.message is the find box's "why not"
+    std::string browseDir;             // the Open panel's folder browser
+    bool openFailed = false;           // the last open from the Open panel failed
 };
 
 void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, labels, input

@@ -12,6 +12,8 @@
 #include <string>
 #include <tuple>
 
+#include <sys/wait.h>
+
 #include "model.h"
 #include "palette.h"
 
@@ -55,15 +57,17 @@ int fail(const char* what, Vec2 p, Rgba want, Rgba seen) {
 
 // Runs flood-viewer headless at `steps` (one or more --step options) into `out`, loads it.
 bool shoot(const std::string& input, const std::string& steps, const std::string& out, int W,
-           int H, Image& img) {
+           int H, Image& img, int wantExit = 0) {
     std::remove(out.c_str());
     std::string cmd = std::string("'") + FLOOD_VIEWER + "' '" + input + "' " + steps +
                       " --screenshot '" + out + "' --size " + std::to_string(W) + "x" +
                       std::to_string(H);
     std::printf("%s\n", cmd.c_str());
     std::fflush(stdout);  // before the child writes to the same stream
-    if (int rc = std::system(cmd.c_str()); rc != 0) {
-        std::fprintf(stderr, "FAIL: flood-viewer exited with %d\n", rc);
+    int rc = std::system(cmd.c_str());
+    rc = rc != -1 && WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
+    if (rc != wantExit) {
+        std::fprintf(stderr, "FAIL: flood-viewer exited with %d, want %d\n", rc, wantExit);
         return false;
     }
     int channels = 0;
@@ -192,7 +196,39 @@ int main() {
         stbi_image_free(img.px);
     }
     if (failures) return 1;
+
+    // The error view of a self-crossing ring: exit code 4 (invalid), the picture still
+    // written, the two crossing edges thick in the error colour at the crossing point and along
+    // them, the rest dimmed.
+    std::string bad = dir + "/screenshot-test-crossing.json";
+    std::ofstream(bad) << R"({"type": "Polygon", "coordinates": [
+        [[0, 0], [10, 0], [0, 10], [10, 10], [0, 0]]]})" "\n";
+    Model crossing;
+    crossing.open(bad);
+    crossing.camera.setViewport(layout.canvas);
+    Point x;
+    if (!crossing.showError() || !crossing.errorPoint(x)) {
+        std::fprintf(stderr, "FAIL: no error view for %s: %s\n", bad.c_str(), crossing.verdict().c_str());
+        return 1;
+    }
+    Image img;
+    if (!shoot(bad, "--show-error", dir + "/screenshot-test-error.png", W, H, img, 4)) return 1;
+    Rgba seen;
+    Vec2 at = crossing.camera.toScreen(x);
+    if (!near(img, at, palette::kCulprit, 1, &seen)) failures += fail("crossing point", at, palette::kCulprit, seen);
+    Vec2 along = crossing.camera.toScreen({7.5, 2.5});  // on edge (10,0)-(0,10)
+    if (!near(img, along, palette::kCulprit, 1, &seen)) failures += fail("culprit edge", along, palette::kCulprit, seen);
+    Vec2 inside = crossing.camera.toScreen({5, 8.5});  // inside the upper lobe, dimmed
+    if (near(img, inside, palette::kCulprit, 2, &seen) || near(img, inside, palette::kPolygonFill, 0, &seen))
+        failures += fail("dimmed interior (not fill, not culprit)", inside, palette::kBackground, seen);
+    stbi_image_free(img.px);
+    // Unreadable input: the window (with the reason) is still pictured, the exit code is 3.
+    Image none;
+    if (!shoot(dir + "/no-such-polygon.json", "", dir + "/screenshot-test-unreadable.png", W, H, none, 3))
+        return 1;
+    stbi_image_free(none.px);
+    if (failures) return 1;
     std::printf("ok: step %u, background, water, dry land and Left marker where expected, also "
-                "after stepping back from the end\n", step);
+                "after stepping back from the end; error view: crossing and culprit edge in the error colour\n", step);
     return 0;
 }

@@ -14,6 +14,7 @@ struct WorkCounters {
     uint64_t validatorSteps = 0;  // pair tests and wedge comparisons of validate()
     uint64_t touchSteps = 0;      // grid cells walked and point-edge tests of findTouches()
     uint64_t checkerSteps = 0;    // edges the checker's parts sweep scans, cuts and inserts
+    uint64_t invariantSteps = 0;  // grid cells and vertices the invariant checker visits
 };
 
 inline thread_local WorkCounters tWork;

@@ -266,6 +266,7 @@ int main(int argc, char** argv) {
         drawTimeline(ui);
         drawStateMachine(ui);
         drawDecision(ui);
+        drawPredicates(ui);
         drawBreakpoints(ui);
         drawEvents(ui);
         drawTranscript(ui);

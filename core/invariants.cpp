@@ -93,7 +93,12 @@ Violation InvariantChecker::triangleEmpty(const Triangle& t, uint32_t number) {
     if (gridStart_.empty()) return {};
     Point a = P(t[0]), b = P(t[1]), c = P(t[2]);
     const Point side[3][2] = {{a, b}, {b, c}, {c, a}};
+    const double bx0 = std::min({a.x, b.x, c.x}), bx1 = std::max({a.x, b.x, c.x});
+    const double by0 = std::min({a.y, b.y, c.y}), by1 = std::max({a.y, b.y, c.y});
     auto crosses = [&](Point p, Point q) {  // a proper crossing of the segment and a side
+        if (std::max(p.x, q.x) <= bx0 || std::min(p.x, q.x) >= bx1 || std::max(p.y, q.y) <= by0 ||
+            std::min(p.y, q.y) >= by1)
+            return false;  // apart from the triangle's box (touching it is no proper crossing)
         for (const auto& s : side) {
             int o1 = orient(s[0], s[1], p), o2 = orient(s[0], s[1], q);
             if (o1 * o2 >= 0) continue;
@@ -138,12 +143,10 @@ Violation InvariantChecker::triangleEmpty(const Triangle& t, uint32_t number) {
                     ++work().invariantSteps;
                     if (crosses(p, P(u)))
                         return violated(Invariant::TriangleEmpty, {v, u, t[0], t[1], t[2]},
-                                        "the edge " + vtx(v) + "-" + std::to_string(u) + " crosses triangle " +
+                                        "the edge between vertices " + std::to_string(v) + " and " + std::to_string(u) + " crosses triangle " +
                                             std::to_string(number) + ", just cut");
                 }
-                if (p.x < std::min({a.x, b.x, c.x}) || p.x > std::max({a.x, b.x, c.x}) ||
-                    p.y < std::min({a.y, b.y, c.y}) || p.y > std::max({a.y, b.y, c.y}))
-                    continue;
+                if (p.x <= bx0 || p.x >= bx1 || p.y <= by0 || p.y >= by1) continue;
                 if (orient(a, b, p) > 0 && orient(b, c, p) > 0 && orient(c, a, p) > 0)
                     return violated(Invariant::TriangleEmpty, {v, t[0], t[1], t[2]},
                                     vtx(v) + " lies inside triangle " + std::to_string(number) + ", just cut");

@@ -454,7 +454,14 @@ TEST(ViewerModel, InvariantScanRunsInTheBackground) {
     EXPECT_FALSE(m.violations().empty());
     EXPECT_GT(m.firstViolationStep(), 0u);
     EXPECT_GT(m.forbiddenStep(), 0u);
-    EXPECT_LE(m.firstViolationStep(), m.forbiddenStep());
+    EXPECT_LT(m.firstViolationStep(), m.forbiddenStep());
+    // The open landed on the forbidden step; the finished scan moves on to the violation once.
+    EXPECT_EQ(m.step(), m.forbiddenStep());
+    EXPECT_TRUE(m.landOnFirstViolation());
+    EXPECT_EQ(m.step(), m.firstViolationStep());
+    m.seek(1);
+    EXPECT_FALSE(m.landOnFirstViolation());
+    EXPECT_EQ(m.step(), 1u);
     // A new open cancels the running scan before the trace it reads goes away.
     m.openPolygon(generate("comb", 1, 200000), "comb", {});
     m.cancelInvariants();

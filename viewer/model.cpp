@@ -410,6 +410,7 @@ std::vector<KeyPress> KeyQueue::take() {
 // [SECTION] Model
 Model::Model() : trace_(std::make_unique<Trace>()), replay_(std::make_unique<Replay>(*trace_)) {
     verdict_ = computeVerdict();
+    scan_.done = true;  // nothing to check before the first open
 }
 Model::~Model() { cancelInvariants(); }
 
@@ -471,7 +472,17 @@ void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic inp
             seek(forbiddenStep_);
             break;
         }
+    landedStep_ = step_;
+    landingPending_ = true;
     startInvariants();
+}
+
+bool Model::landOnFirstViolation() {
+    if (!landingPending_ || !invariantsDone()) return false;
+    landingPending_ = false;
+    if (step_ != landedStep_ || firstViolationStep() == 0) return false;
+    seek(firstViolationStep());
+    return true;
 }
 
 void Model::startInvariants() {

@@ -230,6 +230,9 @@ public:
     const std::vector<Violation>& violations() const;  // empty until done
     uint32_t firstViolationStep() const;                // 0 until done or when none
     void cancelInvariants();                            // stops and joins the scan
+    // Once the scan is done: moves to the first violation if the user has not moved since
+    // the open landed (on the forbidden step, or step 0). True when it moved. Every frame.
+    bool landOnFirstViolation();
     void waitForInvariants();                           // joins it (tests)
 
 private:
@@ -242,6 +245,8 @@ private:
     void startInvariants();
     InvariantScan scan_;
     uint32_t forbiddenStep_ = 0;
+    uint32_t landedStep_ = 0;     // where open() put the step
+    bool landingPending_ = false;  // the scan's result has not been looked at yet
     std::vector<PredicateRow> inspection_;
     uint64_t inspectedFor_ = ~0ull;  // generation and step of inspection_
     void computeOffenders();

@@ -59,6 +59,7 @@ void drawHelp(Ui& ui) {
         {"F1 or ?", "this window"},
         {"Ctrl+O", "open a polygon (or drop a file on the window)"},
         {"drag / wheel", "pan / zoom at the cursor"},
+        {"timeline: click / wheel / right-drag", "go to the hovered step / zoom / pan the strip"},
         {"hover", "vertex or triangle details"},
         {"click a triangle", "go to the step that cut it"},
         {"right-click a vertex", "break when it becomes Left, Right, NextLeft or NextRight"},

@@ -130,6 +130,7 @@ void strip(Ui& ui) {
 // The invariant lane's status: progress while the background scan runs, then what it found.
 void invariantStatus(Ui& ui) {
     Model& m = ui.model;
+    if (m.landOnFirstViolation()) ui.message = "moved to the first broken invariant (the machine stops later)";
     if (!m.invariantsDone()) {
         ImGui::TextDisabled("invariants: checking step %u of %u", m.invariantProgress(), m.steps());
         ImGui::SameLine();

@@ -483,13 +483,20 @@ TEST(ViewerModel, InspectorRecomputesTheRecordedTests) {
     }
     for (const std::string& family : familyNames())
         for (size_t size : {30, 300}) traces.push_back(record(generate(family, 5, size)));
-    size_t rows = 0, sagRows = 0;
+    // Invalid input too, up to and including the Forbidden step (the tests that led there).
+    for (const auto& f : listPolygonFiles(std::string(FLOOD_SOURCE_DIR) + "/polygons/invalid")) {
+        Model m;
+        m.open(f);
+        traces.push_back(m.trace());
+    }
+    for (const std::string& family : invalidFamilyNames()) traces.push_back(record(generateInvalid(family, 3, 200)));
+    size_t rows = 0, sagRows = 0, forbidden = 0;
     std::array<size_t, 3> stages{};
     for (const Trace& t : traces) {
         Replay before(t);
         std::vector<VertexClass> classes = classifyVertices(t.polygon);
         for (const Event& e : t.events) {
-            if (e.action == Action::Forbidden) break;
+            forbidden += e.action == Action::Forbidden && e.tested != 0;
             const std::vector<PredicateRow> rs = inspectDecision(t, before.seek(e.step), e, classes);
             for (const PredicateRow& r : rs) {
                 if (r.hasRecorded) {
@@ -498,7 +505,8 @@ TEST(ViewerModel, InspectorRecomputesTheRecordedTests) {
                 } else {
                     ++sagRows;
                 }
-                if (r.stage == "filter") ++stages[0];
+                if (r.stage.rfind("filter", 0) == 0) ++stages[0];
+                if (r.stage.rfind("expansion", 0) == 0) ++stages[1];
             }
             // Every test the event ran has its row.
             for (int i = 0; i < int(flood::Test::WalkLanded); ++i) {
@@ -512,5 +520,7 @@ TEST(ViewerModel, InspectorRecomputesTheRecordedTests) {
     EXPECT_GT(rows, 1000u);
     EXPECT_GT(sagRows, 10u);
     EXPECT_GT(stages[0], 10u);
+    EXPECT_GT(stages[1], 0u) << "collinear corners need the exact stage";
+    EXPECT_GT(forbidden, 3u);
 }
 #endif

@@ -118,11 +118,23 @@ int orientGmp(Point a, Point b, Point c) {
     return mpq_sgn(sum.q);
 }
 
-// s lies on the closed segment p-q (p == q allowed).
-bool onSegment(Point s, Point p, Point q) {
-    if (orient(p, q, s) != 0) return false;
-    return std::fmin(p.x, q.x) <= s.x && s.x <= std::fmax(p.x, q.x) &&
-           std::fmin(p.y, q.y) <= s.y && s.y <= std::fmax(p.y, q.y);
+// Stage 1, the filter: +1 or -1 when it decides, 0 when it cannot; `det` gets its value.
+inline int orientFilter(Point a, Point b, Point c, double& det) {
+    double detLeft = (a.x - c.x) * (b.y - c.y);
+    double detRight = (a.y - c.y) * (b.x - c.x);
+    det = detLeft - detRight;
+    double detSum = std::fabs(detLeft) + std::fabs(detRight);
+    if (std::isfinite(det) && std::isfinite(detSum) && detSum >= kFilterMin) {
+        double bound = kCcwErrBoundA * detSum;
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+    }
+    return 0;
+}
+
+// Stage 2 applies when every coordinate is in the safe exponent range.
+inline bool expansionExact(Point a, Point b, Point c) {
+    return safe(a.x) && safe(a.y) && safe(b.x) && safe(b.y) && safe(c.x) && safe(c.y);
 }
 
 }  // namespace
@@ -132,21 +144,37 @@ int orient(Point a, Point b, Point c) {
            std::isfinite(b.y) && std::isfinite(c.x) && std::isfinite(c.y) &&
            "orient() needs finite coordinates; validate the input first");
     ++work().orientCalls;
-    // Stage 1: filter.
-    double detLeft = (a.x - c.x) * (b.y - c.y);
-    double detRight = (a.y - c.y) * (b.x - c.x);
-    double det = detLeft - detRight;
-    double detSum = std::fabs(detLeft) + std::fabs(detRight);
-    if (std::isfinite(det) && std::isfinite(detSum) && detSum >= kFilterMin) {
-        double bound = kCcwErrBoundA * detSum;
-        if (det > bound) return 1;
-        if (-det > bound) return -1;
-    }
-    // Stage 2: expansions, when every coordinate is in the safe exponent range.
-    if (safe(a.x) && safe(a.y) && safe(b.x) && safe(b.y) && safe(c.x) && safe(c.y))
-        return orientExpansion(a, b, c);
-    // Stage 3: rationals.
+    double det;
+    if (int s = orientFilter(a, b, c, det)) return s;
+    if (expansionExact(a, b, c)) return orientExpansion(a, b, c);
     return orientGmp(a, b, c);
+}
+
+// The same stages as orient(), saying which decided; not counted as the machine's work.
+OrientReport orientExplained(Point a, Point b, Point c) {
+    OrientReport r;
+    if ((r.sign = orientFilter(a, b, c, r.det))) return r;
+    r.stage = expansionExact(a, b, c) ? Stage::Expansion : Stage::Rationals;
+    r.sign = r.stage == Stage::Expansion ? orientExpansion(a, b, c) : orientGmp(a, b, c);
+    return r;
+}
+
+const char* stageName(Stage s) {
+    switch (s) {
+        case Stage::Filter: return "filter";
+        case Stage::Expansion: return "expansion";
+        case Stage::Rationals: return "rationals";
+    }
+    return "?";
+}
+
+namespace {
+// s lies on the closed segment p-q (p == q allowed).
+template <class Orient>
+bool onSegment(Orient&& turn, Point s, Point p, Point q) {
+    if (turn(p, q, s) != 0) return false;
+    return std::fmin(p.x, q.x) <= s.x && s.x <= std::fmax(p.x, q.x) &&
+           std::fmin(p.y, q.y) <= s.y && s.y <= std::fmax(p.y, q.y);
 }
 
 // Rule: s is inside when it lies on none of the four closed edges L-R, R-NR, NR-NL, NL-L and
@@ -154,20 +182,38 @@ int orient(Point a, Point b, Point c) {
 // simple quadrangle (convex or not, either orientation) this is exactly its open interior; a
 // degenerate quadrangle (repeated or collinear vertices) has no interior points beyond those of
 // its non-degenerate part; a self-crossing one counts both lobes. All tests are exact orient
-// calls and exact coordinate comparisons.
-bool inside(Point s, Point left, Point right, Point nextRight, Point nextLeft) {
+// calls (`turn`) and exact coordinate comparisons.
+template <class Orient>
+bool insideWith(Orient&& turn, Point s, Point left, Point right, Point nextRight, Point nextLeft) {
     const Point q[4] = {left, right, nextRight, nextLeft};
     int winding = 0;
     for (int i = 0; i < 4; ++i) {
         Point p = q[i], r = q[(i + 1) % 4];
-        if (onSegment(s, p, r)) return false;
+        if (onSegment(turn, s, p, r)) return false;
         if (p.y <= s.y) {
-            if (r.y > s.y && orient(p, r, s) > 0) ++winding;  // upward edge, s on its left
+            if (r.y > s.y && turn(p, r, s) > 0) ++winding;  // upward edge, s on its left
         } else {
-            if (r.y <= s.y && orient(p, r, s) < 0) --winding;  // downward edge, s on its right
+            if (r.y <= s.y && turn(p, r, s) < 0) --winding;  // downward edge, s on its right
         }
     }
     return winding != 0;
+}
+}  // namespace
+
+bool inside(Point s, Point left, Point right, Point nextRight, Point nextLeft) {
+    return insideWith(orient, s, left, right, nextRight, nextLeft);
+}
+
+InsideReport insideExplained(Point s, Point left, Point right, Point nextRight, Point nextLeft) {
+    InsideReport r;
+    auto turn = [&r](Point a, Point b, Point c) {
+        OrientReport o = orientExplained(a, b, c);
+        ++r.orients;
+        if (o.stage > r.stage) r.stage = o.stage;
+        return o.sign;
+    };
+    r.inside = insideWith(turn, s, left, right, nextRight, nextLeft);
+    return r;
 }
 
 // [SECTION] ExactSum

@@ -3,6 +3,7 @@
 // Every predicate is exact for any finite double input: a fast floating-point filter,
 // then exact expansion arithmetic, then GMP rationals for extreme exponents. No epsilon.
 #pragma once
+#include <cstdint>
 #include <memory>
 
 #include "polygon.h"
@@ -34,6 +35,23 @@ inline bool insideSegment(Point a, Point b, Point c) {
 // Left, Right, NextRight, NextLeft (counter-clockwise in that order), the region of the
 // active gorge between the water level and the next water level (§5, Fig. 4).
 bool inside(Point s, Point left, Point right, Point nextRight, Point nextLeft);
+
+// Which stage of the exact predicate decided a sign (the predicate inspector shows it).
+enum class Stage : uint8_t { Filter, Expansion, Rationals };
+const char* stageName(Stage s);  // "filter", "expansion", "rationals"
+struct OrientReport {
+    int sign = 0;
+    double det = 0;               // the filter's floating-point determinant
+    Stage stage = Stage::Filter;  // the stage that decided `sign`
+};
+// orient() with its working shown: the same stages, code and result.
+OrientReport orientExplained(Point a, Point b, Point c);
+struct InsideReport {
+    bool inside = false;
+    Stage stage = Stage::Filter;  // the deepest stage any of its orient tests needed
+    int orients = 0;              // orient tests it made
+};
+InsideReport insideExplained(Point s, Point left, Point right, Point nextRight, Point nextLeft);
 
 // Exact signed doubled area accumulator: add triangles or ring edges, compare sums exactly.
 class ExactSum {

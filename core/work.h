@@ -16,6 +16,7 @@ struct WorkCounters {
     uint64_t checkerSteps = 0;    // edges the checker's parts sweep scans, cuts and inserts
     uint64_t sagSearch = 0;       // the sag search's share of the three machine counts above
                                   // (its sweep, lists, tree and tests), to weigh it against the rest
+    uint64_t invariantSteps = 0;  // grid cells and vertices the invariant checker visits
 };
 
 inline thread_local WorkCounters tWork;

@@ -8,6 +8,7 @@
 #include <random>
 
 #include "predicates.h"
+#include "work.h"
 
 using flood::ExactSum;
 using flood::inside;
@@ -235,4 +236,62 @@ TEST(ExactSumTest, TriangleAreas) {
     tris.addTriangle(p[0], p[2], p[3]);
     EXPECT_EQ(sq.sign(), 1);
     EXPECT_TRUE(sq == tris);
+}
+
+// orientExplained() runs orient()'s stages and says which decided: the filter for plain
+// input, expansions for near-degenerate points, rationals for extreme exponents.
+TEST(OrientExplained, EachStageDecidesItsInputs) {
+    using flood::orientExplained;
+    using flood::Stage;
+    auto r = orientExplained({0, 0}, {1, 0}, {0, 1});
+    EXPECT_EQ(r.stage, Stage::Filter);
+    EXPECT_EQ(r.sign, 1);
+    EXPECT_EQ(r.det, 1.0);
+    // Exactly collinear, and off the line by one ulp: beyond the filter's error bound.
+    r = orientExplained({0.5, 0.5}, {12, 12}, {24, 24});
+    EXPECT_EQ(r.stage, Stage::Expansion);
+    EXPECT_EQ(r.sign, 0);
+    r = orientExplained({std::nextafter(0.5, 1.0), 0.5}, {12, 12}, {24, 24});
+    EXPECT_EQ(r.stage, Stage::Expansion);
+    EXPECT_EQ(r.sign, orient({std::nextafter(0.5, 1.0), 0.5}, {12, 12}, {24, 24}));
+    EXPECT_EQ(r.sign, -1);  // (0.5+u, 0.5) lies below the diagonal: a clockwise turn
+    // Tiny products underflow and huge ones overflow: only rationals are exact there.
+    r = orientExplained({1e-300, 0}, {0, 1e-300}, {0, 0});
+    EXPECT_EQ(r.stage, Stage::Rationals);
+    EXPECT_EQ(r.sign, 1);
+    r = orientExplained({1e300, 1e300}, {-1e300, 1e300}, {0, -1e300});
+    EXPECT_EQ(r.stage, Stage::Rationals);
+    EXPECT_EQ(r.sign, 1);
+    EXPECT_FALSE(std::isfinite(r.det));  // the floating-point value is no use here
+    EXPECT_STREQ(flood::stageName(Stage::Rationals), "rationals");
+}
+
+// Same sign as orient() everywhere, without counting as the machine's work.
+TEST(OrientExplained, AgreesWithOrientAndCountsNoWork) {
+    std::mt19937_64 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (int i = 0; i < 20000; ++i) {
+        Point a{u(rng), u(rng)}, b{u(rng), u(rng)};
+        double t = u(rng);
+        Point c{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};  // near the line: every stage
+        if (i % 3 == 0) c = {u(rng) * std::ldexp(1.0, -600), u(rng) * std::ldexp(1.0, 600)};
+        flood::work() = {};
+        auto r = flood::orientExplained(a, b, c);
+        EXPECT_EQ(flood::work().orientCalls, 0u);
+        ASSERT_EQ(r.sign, orient(a, b, c)) << i;
+    }
+}
+
+TEST(InsideExplained, AgreesWithInsideAndReportsTheDeepestStage) {
+    Point l{0, 0}, r{4, 0}, nr{4, 4}, nl{0, 4};
+    auto in = flood::insideExplained({2, 2}, l, r, nr, nl);
+    EXPECT_TRUE(in.inside);
+    EXPECT_EQ(in.stage, flood::Stage::Filter);
+    EXPECT_GT(in.orients, 0);
+    // On the diagonal edge of a skewed quadrangle: collinear, so an exact stage decides.
+    Point nl2{0.5, 0.5 * 3}, s{0.25, 0.75};
+    auto on = flood::insideExplained(s, l, r, nr, nl2);
+    EXPECT_EQ(on.inside, inside(s, l, r, nr, nl2));
+    EXPECT_FALSE(on.inside);
+    EXPECT_EQ(on.stage, flood::Stage::Expansion);
 }

@@ -286,6 +286,7 @@ int main(int argc, char** argv) {
         drawTimeline(ui);
         drawStateMachine(ui);
         drawDecision(ui);
+        drawPredicates(ui);
         drawBreakpoints(ui);
         drawEvents(ui);
         drawTranscript(ui);

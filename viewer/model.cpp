@@ -235,11 +235,192 @@ std::vector<TranscriptItem> buildTranscript(const Trace& trace) {
 }
 
 // ========================================================================================
+// [SECTION] Predicate inspector
+namespace {
+// The machine's lower() on vertices: heights, then x, then vertex index (bridge copies of one
+// vertex are ordered by node, which the log does not keep: they compare equal here).
+int compareHeight(const Polygon& p, Index a, Index b) {
+    Point pa = p.vertices[a], pb = p.vertices[b];
+    if (pa.y != pb.y) return pa.y < pb.y ? -1 : 1;
+    if (pa.x != pb.x) return pa.x < pb.x ? -1 : 1;
+    return a < b ? -1 : a > b ? 1 : 0;
+}
+
+PredicateRow belowRow(const Polygon& p, Test t, const char* text, Index a, Index b) {
+    PredicateRow r;
+    r.test = t;
+    r.predicate = text;
+    r.args = {a, b};
+    r.sign = compareHeight(p, a, b);
+    r.result = r.sign < 0;
+    r.stage = "comparison";
+    return r;
+}
+}  // namespace
+
+std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState& before, const Event& e,
+                                          const std::vector<VertexClass>& classes, size_t maxSags) {
+    std::vector<PredicateRow> rows;
+    const Polygon& p = trace.polygon;
+    const Fingers& f = e.before;
+    if (f.left == kNone || e.tested == 0 || f.left >= p.vertices.size()) return rows;
+    auto pt = [&](Index v) { return p.vertices[v]; };
+    auto add = [&](PredicateRow r) {
+        if (r.test != Test::Count && e.didTest(r.test)) {
+            r.hasRecorded = true;
+            r.recorded = e.testResult(r.test);
+        }
+        rows.push_back(std::move(r));
+    };
+    // SameNext: an identity of nodes; the log keeps vertices.
+    PredicateRow same;
+    same.test = Test::SameNext;
+    same.predicate = "NextLeft == NextRight";
+    same.args = {f.nextLeft, f.nextRight};
+    same.result = f.nextLeft == f.nextRight;
+    same.sign = same.result ? 0 : 1;
+    same.stage = "identity";
+    add(same);
+    Index nx = f.nextLeft;  // Next: where the water rises to
+    if (e.didTest(Test::LeftLower)) {
+        PredicateRow r = belowRow(p, Test::LeftLower, "below(NextLeft, NextRight)", f.nextLeft, f.nextRight);
+        const bool leftLower = r.result;
+        add(std::move(r));
+        Index c = leftLower ? f.left : f.right;
+        nx = leftLower ? f.nextLeft : f.nextRight;
+        if (e.didTest(Test::NextAbove)) add(belowRow(p, Test::NextAbove, "below(C, Next)", c, nx));
+        if (e.didTest(Test::CIsTop)) {
+            // C's loop neighbours: the finger beyond it and the chain node inside it.
+            const auto& ch = before.chain;
+            Index prevC = leftLower ? f.nextLeft : (ch.size() > 1 ? ch[ch.size() - 2] : f.nextLeft);
+            Index nextC = leftLower ? (ch.size() > 1 ? ch[1] : f.nextRight) : f.nextRight;
+            OrientReport o = orientExplained(pt(prevC), pt(c), pt(nextC));
+            PredicateRow r;
+            r.test = Test::CIsTop;
+            r.predicate = "orient(prev C, C, next C) <= 0";
+            r.args = {prevC, c, nextC};
+            r.result = o.sign <= 0;
+            r.hasValue = true;
+            r.value = o.det;
+            r.sign = o.sign;
+            r.stage = stageName(o.stage);
+            add(std::move(r));
+        }
+        if (e.didTest(Test::JumpSet)) {
+            PredicateRow r;
+            r.test = Test::JumpSet;
+            r.predicate = "jump(C) is set";
+            r.args = {c};
+            r.result = std::any_of(before.jumps.begin(), before.jumps.end(),
+                                   [&](const std::pair<Index, Index>& j) { return j.first == c; });
+            r.sign = r.result;
+            r.stage = "identity";
+            add(std::move(r));
+        }
+    }
+    if (!e.didTest(Test::SagInside)) return rows;
+    // The sag search: inside(s, Left, Right, NextRight, NextLeft) for the sags between the
+    // water and Next; SagInside is whether any is inside (the machine takes the lowest).
+    const Point l = pt(f.left), r = pt(f.right), nr = pt(f.nextRight), nl = pt(f.nextLeft);
+    std::vector<Index> bridged;
+    for (const auto& b : before.bridges) bridged.push_back(b.first);
+    std::sort(bridged.begin(), bridged.end());
+    std::vector<Index> sags;
+    for (Index v = 0; v < classes.size() && v < p.vertices.size(); ++v)
+        if (classes[v] == VertexClass::Sag && before.water != kNone && compareHeight(p, before.water, v) < 0 &&
+            compareHeight(p, v, nx) < 0 && !std::binary_search(bridged.begin(), bridged.end(), v))
+            sags.push_back(v);
+    std::sort(sags.begin(), sags.end(), [&](Index a, Index b) { return compareHeight(p, a, b) < 0; });
+    // The one bridged is listed even when the cap cuts the rest.
+    if (e.action == Action::Bridge && std::find(sags.begin(), sags.end(), e.sag) == sags.end()) sags.insert(sags.begin(), e.sag);
+    if (sags.size() > maxSags) {
+        auto it = std::find(sags.begin(), sags.end(), e.sag);
+        if (it != sags.end() && size_t(it - sags.begin()) >= maxSags) std::rotate(sags.begin(), it, it + 1);
+        sags.resize(maxSags);
+    }
+    bool any = false;
+    for (Index s : sags) {
+        InsideReport in = insideExplained(pt(s), l, r, nr, nl);
+        PredicateRow row;
+        row.predicate = "inside(s, Left, Right, NextRight, NextLeft)";
+        row.args = {s, f.left, f.right, f.nextRight, f.nextLeft};
+        row.result = in.inside;
+        row.sign = in.inside;
+        row.stage = std::string(stageName(in.stage)) + " (" + std::to_string(in.orients) + " orients)";
+        any = any || in.inside;
+        rows.push_back(std::move(row));
+    }
+    PredicateRow sagRow;
+    sagRow.test = Test::SagInside;
+    sagRow.predicate = "some sag is inside (the rows below)";
+    if (e.action == Action::Bridge) sagRow.args = {e.sag};
+    sagRow.result = e.action == Action::Bridge ? insideExplained(pt(e.sag), l, r, nr, nl).inside : any;
+    sagRow.sign = sagRow.result;
+    sagRow.stage = "inside";
+    add(std::move(sagRow));
+    // The summary row goes before its inside() rows.
+    std::rotate(rows.end() - long(sags.size()) - 1, rows.end() - 1, rows.end());
+    return rows;
+}
+
+const std::vector<PredicateRow>& Model::inspection() {
+    uint64_t key = generation_ << 32 | step_;
+    if (key == inspectedFor_) return inspection_;
+    inspectedFor_ = key;
+    inspection_.clear();
+    if (const Event* e = currentEvent()) {
+        uint32_t at = step_;
+        inspection_ = inspectDecision(*trace_, replay_->seek(at - 1), *e, classes_);
+        replay_->seek(at);
+    }
+    return inspection_;
+}
+
+// ========================================================================================
+// [SECTION] Timeline and keys
+uint32_t TimelineView::eventAt(double x, double width, uint32_t events) const {
+    if (events == 0) return 0;
+    double i = std::floor(first + x / perEvent(width, events));  // the mark x falls in
+    return uint32_t(std::clamp(i, 0.0, double(events - 1)));
+}
+
+void TimelineView::zoomAt(double x, double width, double factor, uint32_t events) {
+    if (events == 0 || width <= 0 || factor <= 0) return;
+    double at = first + x / perEvent(width, events);
+    // Zoomed in: never fewer than 8 events across; zoomed out: the whole log.
+    span = std::clamp(visible(events) / factor, std::min(8.0, double(events)), double(events));
+    first = at - x / perEvent(width, events);
+    clamp(events);
+}
+
+void TimelineView::pan(double dx, double width, uint32_t events) {
+    if (events == 0 || width <= 0) return;
+    first -= dx / perEvent(width, events);
+    clamp(events);
+}
+
+void TimelineView::clamp(uint32_t events) {
+    if (span >= double(events)) span = 0;  // all of it: follow the log's length
+    first = std::clamp(first, 0.0, std::max(0.0, double(events) - visible(events)));
+}
+
+void KeyQueue::push(int key, int action, bool shift, bool ctrl) {
+    if (action == 1 || action == 2) presses_.push_back({key, shift, ctrl, action == 2});
+}
+
+std::vector<KeyPress> KeyQueue::take() {
+    std::vector<KeyPress> out;
+    out.swap(presses_);
+    return out;
+}
+
+// ========================================================================================
 // [SECTION] Model
 Model::Model() : trace_(std::make_unique<Trace>()), replay_(std::make_unique<Replay>(*trace_)) {
     verdict_ = computeVerdict();
+    scan_.done = true;  // nothing to check before the first open
 }
-Model::~Model() = default;
+Model::~Model() { cancelInvariants(); }
 
 // A trace by its name (*.jsonl, what `flood trace` is given) or by its header line, so a
 // trace saved under any name opens as one.
@@ -311,6 +492,7 @@ void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic inp
     openDiag_ = input.status == Status::Malformed ? input : Diagnostic{};
     input_ = std::move(input);
     warnings_ = std::move(warnings);
+    cancelInvariants();  // the scan reads the trace about to be replaced
     auto trace = std::make_unique<Trace>();
     if (!polygon.vertices.empty()) {
         try {
@@ -342,12 +524,56 @@ void Model::adopt(std::unique_ptr<Trace> trace) {
     needsFit = true;
     step_ = 0;
     replay_->seek(0);
+    timeline = {};
+    forbiddenStep_ = 0;
     // Land where the trouble is: the forbidden event, so its state is on screen.
     for (const Event& e : trace_->events)
         if (e.action == Action::Forbidden) {
-            seek(e.step + 1);
+            forbiddenStep_ = e.step + 1;
+            seek(forbiddenStep_);
             break;
         }
+    landedStep_ = step_;
+    landingPending_ = true;
+    startInvariants();
+}
+
+bool Model::landOnFirstViolation() {
+    if (!landingPending_ || !invariantsDone()) return false;
+    landingPending_ = false;
+    if (step_ != landedStep_ || firstViolationStep() == 0) return false;
+    seek(firstViolationStep());
+    return true;
+}
+
+void Model::startInvariants() {
+    scan_.cancel = false;
+    scan_.done = false;
+    scan_.progress = 0;
+    scan_.found.clear();
+    scan_.thread = std::thread([this, trace = trace_.get()] {
+        scan_.found = checkInvariants(*trace, &scan_.progress, &scan_.cancel);
+        scan_.done.store(true, std::memory_order_release);
+    });
+}
+
+void Model::cancelInvariants() {
+    scan_.cancel = true;
+    waitForInvariants();
+}
+
+void Model::waitForInvariants() {
+    if (scan_.thread.joinable()) scan_.thread.join();
+}
+
+const std::vector<Violation>& Model::violations() const {
+    static const std::vector<Violation> none;
+    return invariantsDone() ? scan_.found : none;
+}
+
+uint32_t Model::firstViolationStep() const {
+    const std::vector<Violation>& v = violations();
+    return v.empty() ? 0 : v.front().step;
 }
 
 void Model::computeOffenders() {

@@ -5,7 +5,9 @@
 // Steps: step s means "the first s events applied" (Replay::seek(s)); the current event is
 // events[s - 1], the one that produced what is on screen. Step 0 has no current event.
 #pragma once
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -14,9 +16,12 @@
 #include "checker.h"
 #include "events.h"
 #include "flood.h"
+#include "invariants.h"
 #include "polygon.h"
 #include "replay.h"
 #include "status.h"
+
+#include <thread>
 
 namespace flood::view {
 
@@ -115,6 +120,67 @@ struct FindTarget {
     uint32_t seekTo = kNone;     // step to seek to, kNone: stay
 };
 FindTarget findTarget(const Trace& trace, const std::string& query);
+// Predicate inspector: the tests of one event's decision path (Fig. 9), recomputed from the
+// replay state before the event, each with its predicate, arguments, floating-point value,
+// exact result and the stage of the exact predicate that decided it.
+struct PredicateRow {
+    Test test = Test::Count;     // Test::Count: one of the sag search's inside() tests
+    std::string predicate;       // "below(NextLeft, NextRight)", "orient(prev C, C, next C) <= 0", ...
+    std::vector<Index> args;     // vertex ids, in the predicate's order
+    bool result = false;         // recomputed
+    bool recorded = false;       // what the event says (decision tests only)
+    bool hasRecorded = false;
+    bool hasValue = false;       // orient-based: `value` and `stage` mean something
+    double value = 0;            // the filter's determinant
+    int sign = 0;                // exact sign (orient) or the comparison's outcome
+    std::string stage;           // "filter" / "expansion" / "rationals" / "comparison" / "identity"
+};
+// The sag search's inside() tests are listed for the sags it could test: unbridged sags
+// strictly between the water and Next (at most `maxSags` of them; the machine's sag index
+// tests fewer, Event::sagTests of them).
+std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState& before, const Event& e,
+                                          const std::vector<VertexClass>& classes, size_t maxSags = 64);
+
+// ----------------------------------------------------------------------------------------
+// The timeline strip: which events a strip `width` pixels wide shows, zoomed and panned.
+// Event i is the mark [x(i), x(i + 1)); hovering it names step i + 1 (the state after it),
+// and a click there lands on that same step.
+struct TimelineView {
+    double first = 0;  // event index (fractional) at the strip's left edge
+    double span = 0;   // events across the strip; 0: the whole log
+    double visible(uint32_t events) const { return span > 0 ? span : double(events); }
+    double perEvent(double width, uint32_t events) const { return width / std::max(1.0, visible(events)); }
+    double xOfStep(uint32_t step, double width, uint32_t events) const {
+        return (step - first) * perEvent(width, events);
+    }
+    // The event whose mark is under x (clamped to the log), and the step a click there means.
+    uint32_t eventAt(double x, double width, uint32_t events) const;
+    uint32_t stepAt(double x, double width, uint32_t events) const {
+        return events == 0 ? 0 : eventAt(x, width, events) + 1;
+    }
+    // Wheel: zoom by `factor` (> 1 magnifies) keeping the event under x in place; drag: pan.
+    void zoomAt(double x, double width, double factor, uint32_t events);
+    void pan(double dx, double width, uint32_t events);
+
+private:
+    void clamp(uint32_t events);
+};
+
+// Key presses in the order the platform reported them. ImGui folds a frame's presses of a
+// key into one, so a slow frame lost taps; the platform queues each press here instead and
+// the shortcuts apply every one.
+struct KeyPress {
+    int key = 0;  // the platform's key code
+    bool shift = false, ctrl = false, repeat = false;
+};
+class KeyQueue {
+public:
+    // A platform key event: action 0 release, 1 press, 2 auto-repeat (GLFW's numbering).
+    void push(int key, int action, bool shift, bool ctrl);
+    std::vector<KeyPress> take();  // every press since the last call, oldest first
+private:
+    std::vector<KeyPress> presses_;
+};
 
 // ----------------------------------------------------------------------------------------
 class Model {
@@ -160,7 +226,7 @@ public:
     // The first failure's culprits (input validation, then the forbidden event, then the
     // checker), the step it shows at (kNone: none), and a display point for it if any.
     const Culprits& errorCulprits() const { return error_; }
-    // TODO(merge with V2's timeline): draw a tick at firstErrorStep() in panel_timeline.cpp.
+    // Marked on the timeline (panel_timeline.cpp).
     uint32_t firstErrorStep() const { return firstErrorStep_; }
     bool errorPoint(Point& p) const;
     // The error view: zooms to the culprits, seeks to the first error's step; the canvas
@@ -189,6 +255,7 @@ public:
     // end of the log) if none does.
     bool runToBreakpoint(int direction);
     Breakpoints breakpoints;
+    TimelineView timeline;  // reset by every open
 
     // Playback: `speed` steps per second; advance() is fed the frame time.
     bool playing = false;
@@ -205,7 +272,38 @@ public:
     Index pickVertex(Vec2 screen, double radiusPx) const;
     int64_t pickTriangle(Vec2 screen) const;  // among the triangles cut so far, -1 if none
 
+    // The current event's decision path, recomputed (cached per step).
+    const std::vector<PredicateRow>& inspection();
+
+    // The first Forbidden step (its event index + 1), 0 when the run has none.
+    uint32_t forbiddenStep() const { return forbiddenStep_; }
+
+    // Invariant lane: core/invariants.h run over the trace in a background thread, started
+    // by every open. Results are readable once done; progress counts the steps checked.
+    bool invariantsDone() const { return scan_.done.load(std::memory_order_acquire); }
+    uint32_t invariantProgress() const { return scan_.progress.load(std::memory_order_relaxed); }
+    const std::vector<Violation>& violations() const;  // empty until done
+    uint32_t firstViolationStep() const;                // 0 until done or when none
+    void cancelInvariants();                            // stops and joins the scan
+    // Once the scan is done: moves to the first violation if the user has not moved since
+    // the open landed (on the forbidden step, or step 0). True when it moved. Every frame.
+    bool landOnFirstViolation();
+    void waitForInvariants();                           // joins it (tests)
+
 private:
+    struct InvariantScan {
+        std::thread thread;
+        std::atomic<bool> cancel{false}, done{false};
+        std::atomic<uint32_t> progress{0};
+        std::vector<Violation> found;  // written by the thread before `done`
+    };
+    void startInvariants();
+    InvariantScan scan_;
+    uint32_t forbiddenStep_ = 0;
+    uint32_t landedStep_ = 0;     // where open() put the step
+    bool landingPending_ = false;  // the scan's result has not been looked at yet
+    std::vector<PredicateRow> inspection_;
+    uint64_t inspectedFor_ = ~0ull;  // generation and step of inspection_
     void computeOffenders();
     std::string computeVerdict() const;
     void adopt(std::unique_ptr<Trace> trace);  // makes `trace` the loaded run

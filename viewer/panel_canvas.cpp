@@ -292,6 +292,14 @@ void drawCanvas(Ui& ui) {
         dl->AddText(ImVec2(float(c.x + l.dx * s), float(c.y + l.dy * s)), toImU32(l.color),
                     l.text.c_str());
     }
+    // The predicate inspector's hovered row: its arguments, numbered in the predicate's order.
+    for (size_t i = 0; i < ui.highlight.size(); ++i) {
+        if (ui.highlight[i] >= m.polygon().vertices.size()) continue;
+        Vec2 c = cam.toScreen(m.polygon().vertices[ui.highlight[i]]);
+        dl->AddCircle(ImVec2(float(c.x), float(c.y)), 9 * s, IM_COL32(80, 220, 255, 255), 0, 2.5f * s);
+        dl->AddText(ImVec2(float(c.x + 10 * s), float(c.y - 18 * s)), IM_COL32(80, 220, 255, 255),
+                    std::to_string(i + 1).c_str());
+    }
     if (m.polygon().vertices.empty()) {
         const char* msg = m.inputDiagnostic().ok() ? "no polygon: open one (Ctrl+O or Open...)"
                                                    : m.inputDiagnostic().message.c_str();

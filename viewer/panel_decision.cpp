@@ -37,6 +37,7 @@ void drawDecision(Ui& ui) {
     ImGui::TextColored(toImVec4(palette::action(e->action)), "=> %s (C is %s)",
                        actionName(e->action), e->side == Side::Left ? "Left" : "Right");
     if (e->sagTests) ImGui::TextDisabled("%u inside() tests against the sag list", e->sagTests);
+    if (ImGui::SmallButton("Predicates...")) ui.showPredicates = true;
     if (e->action == Action::Forbidden)
         ImGui::TextColored(toImVec4(palette::kCulprit), "%s", forbiddenText(e->reason));
     ImGui::PopTextWrapPos();

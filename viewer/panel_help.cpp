@@ -9,17 +9,19 @@ namespace flood::view {
 
 void handleShortcuts(Ui& ui) {
     ImGuiIO& io = ImGui::GetIO();
+    // Stepping keys come from the platform's queue, one step per press however slow the
+    // frame; the queue is drained even when a text field has the keys.
+    std::vector<KeyPress> presses = platform::takeKeyPresses();
     // Keys belong to text fields and focused widgets first.
     if (io.WantCaptureKeyboard || io.WantTextInput) return;
     Model& m = ui.model;
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Space), false)) m.togglePlay();
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_RightArrow))) {
+    for (const KeyPress& k : presses) {
+        if (k.key != platform::kKeyLeft && k.key != platform::kKeyRight) continue;
+        int direction = k.key == platform::kKeyRight ? +1 : -1;
         m.playing = false;
-        io.KeyShift ? (void)m.runToBreakpoint(+1) : m.stepForward();
-    }
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_LeftArrow))) {
-        m.playing = false;
-        io.KeyShift ? (void)m.runToBreakpoint(-1) : m.stepBack();
+        if (k.shift) m.runToBreakpoint(direction);
+        else direction > 0 ? m.stepForward() : m.stepBack();
     }
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home), false)) m.first();
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_End), false)) m.last();
@@ -59,6 +61,7 @@ void drawHelp(Ui& ui) {
         {"E", "error view: zoom to the culprits of a failure (again: back)"},
         {"Ctrl+F", "find v<vertex>, t<triangle>, s<step>, r<ring>"},
         {"drag / wheel", "pan / zoom at the cursor"},
+        {"timeline: click / wheel / right-drag", "go to the hovered step / zoom / pan the strip"},
         {"hover", "vertex or triangle details"},
         {"click a triangle", "go to the step that cut it"},
         {"right-click a vertex", "break when it becomes Left, Right, NextLeft or NextRight"},

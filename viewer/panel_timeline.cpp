@@ -1,5 +1,6 @@
 // The bottom panel: transport buttons, go-to, play speed, event-kind navigation, and the
-// timeline strip with one mark per event. Marks narrower than ~3 px are folded into one
+// timeline strip with one mark per event, ticks for breakpoints, the first error and the
+// invariant lane. Marks narrower than ~3 px are folded into one
 // per 3 px bucket, coloured by the most telling action in it (Tracy's trick for huge traces).
 #include <imgui.h>
 
@@ -27,40 +28,76 @@ int weight(Action a) {
     }
 }
 
+// Steps whose event hits an enabled breakpoint: a scan of the log, redone only when the trace
+// or the breakpoints change.
+const std::vector<uint32_t>& breakpointSteps(const Model& m) {
+    static uint64_t forGeneration = ~0ull;
+    static Breakpoints forBreakpoints;
+    static std::vector<uint32_t> steps;
+    const Breakpoints& b = m.breakpoints;
+    bool same = forGeneration == m.generation() && b.actions == forBreakpoints.actions &&
+                b.forbidden == forBreakpoints.forbidden && b.vertex == forBreakpoints.vertex &&
+                b.triangle == forBreakpoints.triangle;
+    if (!same) {
+        steps.clear();
+        if (b.any())
+            for (const Event& e : m.trace().events)
+                if (hits(b, e)) steps.push_back(e.step + 1);
+        forGeneration = m.generation();
+        forBreakpoints = b;
+    }
+    return steps;
+}
+
+// The strip shows m.timeline's window of the log: wheel zooms at the cursor, right or middle
+// drag pans, a left click or drag scrubs to the step the tooltip names.
 void strip(Ui& ui) {
     Model& m = ui.model;
+    TimelineView& tv = m.timeline;
     const auto& ev = m.trace().events;
     ImDrawList* dl = ImGui::GetWindowDrawList();
     ImVec2 p0 = ImGui::GetCursorScreenPos();
-    float w = ImGui::GetContentRegionAvail().x, h = 26 * ui.scale;
-    ImGui::InvisibleButton("##timeline", ImVec2(std::max(w, 1.f), h));
+    float w = std::max(ImGui::GetContentRegionAvail().x, 1.f), h = 26 * ui.scale, lane = 8 * ui.scale;
+    ImGui::InvisibleButton("##timeline", ImVec2(w, h + lane),
+                           ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
+                               ImGuiButtonFlags_MouseButtonMiddle);
     dl->AddRectFilled(p0, ImVec2(p0.x + w, p0.y + h), IM_COL32(20, 20, 24, 255));
+    dl->AddRectFilled(ImVec2(p0.x, p0.y + h), ImVec2(p0.x + w, p0.y + h + lane), IM_COL32(34, 30, 40, 255));
     uint32_t n = uint32_t(ev.size());
     if (n == 0) return;
-    // Step s sits at the right edge of event s-1's mark: the strip reads left to right.
-    double perEvent = w / n;
+    ImGuiIO& io = ImGui::GetIO();
+    float mx = io.MousePos.x - p0.x;
+    if (ImGui::IsItemHovered() && io.MouseWheel != 0) tv.zoomAt(mx, w, std::pow(1.25, io.MouseWheel), n);
+    if (ImGui::IsItemActive() && (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)))
+        tv.pan(io.MouseDelta.x, w, n);
+    dl->PushClipRect(p0, ImVec2(p0.x + w, p0.y + h + lane), true);
+    const double perEvent = tv.perEvent(w, n);
+    const uint32_t i0 = tv.eventAt(0, w, n), i1 = std::min(n, tv.eventAt(w, w, n) + 1);
+    auto xOf = [&](uint32_t step) { return p0.x + float(tv.xOfStep(step, w, n)); };
     const float minMark = 3;
     if (perEvent >= minMark) {
-        for (uint32_t i = 0; i < n; ++i) {
-            float x0 = p0.x + float(i * perEvent), x1 = p0.x + float((i + 1) * perEvent) - 1;
+        for (uint32_t i = i0; i < i1; ++i) {
+            float x0 = xOf(i), x1 = xOf(i + 1) - 1;
             dl->AddRectFilled(ImVec2(x0, p0.y + 3), ImVec2(std::max(x1, x0 + 1), p0.y + h - 3),
                               toImU32(palette::action(ev[i].action)));
         }
     } else {
-        // Folding scans the whole log: redo it only for a new trace or a new strip width.
+        // Folding scans the visible events: redo it only when the trace or the window changes.
         static uint64_t foldedFor = ~0ull;
+        static double foldedFirst = -1, foldedSpan = -1;
         static std::vector<Action> folded;
         int buckets = int(w / minMark);
-        if (foldedFor != m.generation() || folded.size() != size_t(buckets)) {
+        if (foldedFor != m.generation() || folded.size() != size_t(buckets) || foldedFirst != tv.first ||
+            foldedSpan != tv.span) {
             folded.assign(size_t(buckets), Action::Start);
             for (int b = 0; b < buckets; ++b) {
-                uint32_t i0 = uint32_t(double(b) / buckets * n), i1 = uint32_t(double(b + 1) / buckets * n);
-                Action best = ev[std::min(i0, n - 1)].action;
-                for (uint32_t i = i0; i < i1 && i < n; ++i)
+                uint32_t b0 = tv.eventAt(b * minMark, w, n), b1 = tv.eventAt((b + 1) * minMark, w, n);
+                Action best = ev[b0].action;
+                for (uint32_t i = b0; i < b1; ++i)
                     if (weight(ev[i].action) > weight(best)) best = ev[i].action;
                 folded[size_t(b)] = best;
             }
-            foldedFor = m.generation();
+            foldedFor = m.generation(), foldedFirst = tv.first, foldedSpan = tv.span;
         }
         for (int b = 0; b < buckets; ++b) {
             float x0 = p0.x + b * minMark;
@@ -68,17 +105,57 @@ void strip(Ui& ui) {
                               toImU32(palette::action(folded[size_t(b)])));
         }
     }
-    float cx = p0.x + float(m.step() * perEvent);
-    dl->AddLine(ImVec2(cx, p0.y), ImVec2(cx, p0.y + h), IM_COL32(255, 255, 255, 255), 2 * ui.scale);
-    if (ImGui::IsItemActive()) {  // click or drag scrubs
-        float x = ImGui::GetIO().MousePos.x - p0.x;
+    // Ticks: breakpoints above, the first error across, invariant violations in the lane.
+    auto tick = [&](uint32_t step, float y0, float y1, ImU32 colour, float width) {
+        if (step + 1 < i0 || step > i1 + 1) return;
+        float x = xOf(step);  // a step sits at the right edge of its event's mark
+        dl->AddLine(ImVec2(x, y0), ImVec2(x, y1), colour, width);
+    };
+    for (uint32_t s : breakpointSteps(m)) tick(s, p0.y, p0.y + 6 * ui.scale, IM_COL32(255, 220, 60, 255), 2);
+    for (const Violation& v : m.violations())
+        tick(v.step, p0.y + h, p0.y + h + lane, IM_COL32(255, 120, 40, 255), 2);
+    // The first error: the forbidden event, a triangle the checker rejects, or where an invalid
+    // input first shows.
+    if (m.firstErrorStep() != kNone)
+        tick(m.firstErrorStep(), p0.y, p0.y + h + lane, toImU32(palette::kCulprit), 3 * ui.scale);
+    tick(m.step(), p0.y, p0.y + h, IM_COL32(255, 255, 255, 255), 2 * ui.scale);
+    dl->PopClipRect();
+    if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {  // click or drag scrubs
         m.playing = false;
-        m.seek(uint32_t(std::clamp(std::lround(x / perEvent), 0l, long(n))));
+        m.seek(tv.stepAt(mx, w, n));
     }
     if (ImGui::IsItemHovered()) {
-        float x = ImGui::GetIO().MousePos.x - p0.x;
-        uint32_t i = uint32_t(std::clamp(long(x / perEvent), 0l, long(n) - 1));
+        uint32_t i = tv.eventAt(mx, w, n);
         ImGui::SetTooltip("step %u: %s", i + 1, describeEvent(m.trace(), ev[i]).c_str());
+    }
+}
+
+// The invariant lane's status: progress while the background scan runs, then what it found.
+void invariantStatus(Ui& ui) {
+    Model& m = ui.model;
+    if (m.landOnFirstViolation()) ui.message = "moved to the first broken invariant (the machine stops later)";
+    if (!m.invariantsDone()) {
+        ImGui::TextDisabled("invariants: checking step %u of %u", m.invariantProgress(), m.steps());
+        ImGui::SameLine();
+        if (ImGui::SmallButton("Cancel##invariants")) m.cancelInvariants();
+        return;
+    }
+    const std::vector<Violation>& v = m.violations();
+    if (m.invariantProgress() < m.steps() && v.empty()) {
+        ImGui::TextDisabled("invariants: cancelled at step %u", m.invariantProgress());
+        return;
+    }
+    if (v.empty()) {
+        ImGui::TextColored(ImVec4(0.6f, 0.9f, 0.6f, 1), "invariants: none broken");
+        return;
+    }
+    ImGui::TextColored(ImVec4(1, 0.55f, 0.2f, 1), "invariants: %zu steps break one; first at step %u: %s (%s)",
+                       v.size(), v.front().step, invariantName(v.front().which), v.front().detail.c_str());
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Go##invariant")) m.seek(v.front().step);
+    if (m.forbiddenStep()) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("(the machine stops at step %u)", m.forbiddenStep());
     }
 }
 
@@ -140,6 +217,7 @@ void drawTimeline(Ui& ui) {
     if (ImGui::Button("Help")) ui.showHelp = true;
 
     strip(ui);
+    invariantStatus(ui);
 
     const Event* e = m.currentEvent();
     ImGui::PushTextWrapPos(0);

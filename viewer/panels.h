@@ -5,6 +5,7 @@
 #pragma once
 #include <array>
 #include <string>
+#include <vector>
 
 #include "canvas_geometry.h"
 #include "model.h"
@@ -42,6 +43,8 @@ struct Ui {
     CanvasState canvas;
     bool showHelp = false;
     bool showOpen = false;
+    bool showPredicates = false;
+    std::vector<Index> highlight;      // vertices the predicate inspector's hovered row names
     Action seekKind = Action::Bridge;  // "previous/next event of kind" in the timeline
     std::string message;               // last status message (saved files, load errors)
     std::string pngRequest;            // non-empty: main writes this PNG after rendering
@@ -58,6 +61,7 @@ void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, 
 void drawTimeline(Ui& ui);       // panel_timeline.cpp: strip, transport, go-to, play
 void drawStateMachine(Ui& ui);   // panel_state_machine.cpp: the six states of §4
 void drawDecision(Ui& ui);       // panel_decision.cpp: the Fig. 9 tests of the current event
+void drawPredicates(Ui& ui);     // panel_predicates.cpp: those tests' predicates, values, stages
 void drawBreakpoints(Ui& ui);    // panel_breakpoints.cpp: breakpoints, legend, display options
 void drawEvents(Ui& ui);         // panel_events.cpp: every event, clipped
 void drawTranscript(Ui& ui);     // panel_transcript.cpp: the paper-style transcript

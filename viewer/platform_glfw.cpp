@@ -12,6 +12,7 @@ namespace flood::view::platform {
 
 const int kKeyF = GLFW_KEY_F;
 const int kKeyF1 = GLFW_KEY_F1;
+const int kKeyLeft = GLFW_KEY_LEFT, kKeyRight = GLFW_KEY_RIGHT;
 
 namespace {
 GLFWwindow* g_window = nullptr;
@@ -19,6 +20,14 @@ std::vector<std::string> g_dropped;
 std::string g_glfwError;
 
 void onError(int, const char* description) { g_glfwError = description ? description : "?"; }
+
+KeyQueue g_keys;
+GLFWkeyfun g_imguiKey = nullptr;  // ImGui's key callback: ours chains to it
+
+void onKey(GLFWwindow* w, int key, int scancode, int action, int mods) {
+    if (g_imguiKey) g_imguiKey(w, key, scancode, action, mods);
+    g_keys.push(key, action, mods & GLFW_MOD_SHIFT, mods & GLFW_MOD_CONTROL);
+}
 
 void onDrop(GLFWwindow*, int count, const char** paths) {
     for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
@@ -69,6 +78,7 @@ bool createWindow(const WindowOptions& o, std::string* error) {
     }
     glfwSetDropCallback(g_window, onDrop);
     ImGui_ImplGlfw_InitForOpenGL(g_window, true);
+    g_imguiKey = glfwSetKeyCallback(g_window, onKey);
     return true;
 }
 
@@ -102,6 +112,8 @@ float contentScale() {
 }
 
 void setTitle(const std::string& title) { glfwSetWindowTitle(g_window, title.c_str()); }
+
+std::vector<KeyPress> takeKeyPresses() { return g_keys.take(); }
 
 std::vector<std::string> takeDroppedPaths() {
     std::vector<std::string> out;

@@ -38,10 +38,13 @@ void framebufferSize(int* w, int* h);
 float contentScale();              // 1 on a 96-dpi screen, 2 on most hi-DPI ones
 void setTitle(const std::string& title);
 std::vector<std::string> takeDroppedPaths();  // files dropped on the window since last call
+// Key presses and repeats since the last call, every one in order (model.h's KeyQueue).
+std::vector<KeyPress> takeKeyPresses();
 
 // ImGui 1.86 has no ImGuiKey for letters or function keys; its GLFW backend fills
 // io.KeysDown by GLFW key code, so these index io.KeysDown directly.
 extern const int kKeyF;
 extern const int kKeyF1;
+extern const int kKeyLeft, kKeyRight;
 
 }  // namespace flood::view::platform

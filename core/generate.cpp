@@ -565,28 +565,38 @@ const Family kFamilies[] = {
      steinerPoints},
 };
 
-}  // namespace
-
-std::vector<std::string> familyNames() {
+// One family table's names, descriptions and generator (valid and invalid tables alike).
+template <size_t N>
+std::vector<std::string> namesOf(const Family (&table)[N]) {
     std::vector<std::string> names;
-    for (const Family& f : kFamilies) names.push_back(f.name);
+    for (const Family& f : table) names.push_back(f.name);
     return names;
 }
-
-std::string familyDescription(const std::string& family) {
-    for (const Family& f : kFamilies)
+template <size_t N>
+std::string descriptionIn(const Family (&table)[N], const std::string& family) {
+    for (const Family& f : table)
         if (family == f.name) return f.description;
     return "";
 }
-
-Polygon generate(const std::string& family, uint64_t seed, size_t size) {
-    for (const Family& f : kFamilies)
+// `salt` keeps the valid and invalid families' random streams apart for the same seed.
+template <size_t N>
+Polygon makeFrom(const Family (&table)[N], const std::string& family, uint64_t seed, size_t size,
+                 uint64_t salt) {
+    for (const Family& f : table)
         if (family == f.name) {
-            Rng rng(seed * 0x2545f4914f6cdd1dULL + 0x1234567);
+            Rng rng(seed * 0x2545f4914f6cdd1dULL + salt);
             return f.make(rng, size);
         }
-    assert(false && "generate(): unknown family; see familyNames()");
+    assert(false && "generate()/generateInvalid(): unknown family; see familyNames()");
     return {};
+}
+
+}  // namespace
+
+std::vector<std::string> familyNames() { return namesOf(kFamilies); }
+std::string familyDescription(const std::string& family) { return descriptionIn(kFamilies, family); }
+Polygon generate(const std::string& family, uint64_t seed, size_t size) {
+    return makeFrom(kFamilies, family, seed, size, 0x1234567);
 }
 
 // [SECTION] transform
@@ -803,26 +813,12 @@ const Family kInvalidFamilies[] = {
 
 }  // namespace
 
-std::vector<std::string> invalidFamilyNames() {
-    std::vector<std::string> names;
-    for (const Family& f : kInvalidFamilies) names.push_back(f.name);
-    return names;
-}
-
+std::vector<std::string> invalidFamilyNames() { return namesOf(kInvalidFamilies); }
 std::string invalidFamilyDescription(const std::string& family) {
-    for (const Family& f : kInvalidFamilies)
-        if (family == f.name) return f.description;
-    return "";
+    return descriptionIn(kInvalidFamilies, family);
 }
-
 Polygon generateInvalid(const std::string& family, uint64_t seed, size_t size) {
-    for (const Family& f : kInvalidFamilies)
-        if (family == f.name) {
-            Rng rng(seed * 0x2545f4914f6cdd1dULL + 0x7654321);
-            return f.make(rng, size);
-        }
-    assert(false && "generateInvalid(): unknown family; see invalidFamilyNames()");
-    return {};
+    return makeFrom(kInvalidFamilies, family, seed, size, 0x7654321);
 }
 
 }  // namespace flood

@@ -5,29 +5,39 @@
 # polygons/regress and the hand-made degenerate cases of polygons/conjecture/probes (files
 # validate() refuses; malformed files are not polygons), the
 # generator's invalid families (flood generate, several seeds and sizes), and the GeoJSON/WKT
-# files of any DIR given — runs `flood verify --no-validate` and records what caught it: the
+# files of any DIR given, and a GEOS-differential corpus (scripts/geos-diff.sh --dump: every
+# generated polygon or MultiPolygon GEOS calls invalid, --geos N cases, default 2000, 0 for none)
+# — runs `flood verify --no-validate` and records what caught it: the
 # forbidden transitions of the polygon's flood, only the complement's flood, only the exact
 # checker, or nothing (it slips through). The smallest slipping input of each source is shrunk
 # (`flood shrink --slipping`) into polygons/conjecture/. Prints the markdown table and replaces
 # the block between the conjecture markers in docs/ALGORITHM.md.
 #
-# Usage: scripts/conjecture.sh [--no-shrink] [--no-docs] [DIR...]   (build first; FLOOD=path)
+# Usage: scripts/conjecture.sh [--no-shrink] [--no-docs] [--geos N] [DIR...]   (build first; FLOOD=path)
 set -uo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 flood=${FLOOD:-$root/build/flood}
-shrink=1 docs=1 dirs=()
-for a in "$@"; do
-    case "$a" in
+shrink=1 docs=1 geos=2000 dirs=()
+while [ $# -gt 0 ]; do
+    case "$1" in
         --no-shrink) shrink=0 ;;
         --no-docs) docs=0 ;;
-        -*) echo "usage: $0 [--no-shrink] [--no-docs] [DIR...]" >&2; exit 2 ;;
-        *) [ -d "$a" ] || { echo "$0: $a: not a directory" >&2; exit 2; }; dirs+=("$a") ;;
+        --geos) geos=${2:-}; shift; [[ "$geos" =~ ^[0-9]+$ ]] || { echo "$0: --geos needs a count" >&2; exit 2; } ;;
+        -*) echo "usage: $0 [--no-shrink] [--no-docs] [--geos N] [DIR...]" >&2; exit 2 ;;
+        *) [ -d "$1" ] || { echo "$0: $1: not a directory" >&2; exit 2; }; dirs+=("$1") ;;
     esac
+    shift
 done
 [ -x "$flood" ] || { echo "$0: $flood not found: cmake --build build first (or set FLOOD)" >&2; exit 2; }
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 results=$tmp/results.tsv  # source, input, verdict, vertex count
+geosDir=""
+if [ "$geos" -gt 0 ]; then
+    geosDir=$tmp/geos-differential
+    "$root/scripts/geos-diff.sh" --seed 1 --cases "$geos" --dump "$geosDir" >/dev/null ||
+        { echo "$0: scripts/geos-diff.sh failed (libgeos-dev installed? scripts/install-deps.sh)" >&2; exit 1; }
+fi
 : >"$results"
 sizes="30 300 3000" seeds="1 2 3 4"
 
@@ -71,7 +81,7 @@ for family in $families; do
         done
     done
 done
-for d in "${dirs[@]}"; do
+for d in "${dirs[@]}" ${geosDir:+"$geosDir"}; do
     for f in "$d"/*.json "$d"/*.geojson "$d"/*.wkt; do
         [ -f "$f" ] && measure "$(basename "$d")" "$f" "$(basename "$f")"
     done
@@ -110,7 +120,8 @@ fi
 
 block="Measured by \`scripts/conjecture.sh${dirs[*]:+ ${dirs[*]}}\` ($(date -u +%Y-%m-%d)):
 \`flood verify --no-validate\` on every input that \`validate()\` refuses; generated families
-at sizes $sizes, seeds $seeds (random-lattice: seeds 1 to 100); $skipped files skipped
+at sizes $sizes, seeds $seeds (random-lattice: seeds 1 to 100); geos-differential: the cases
+GEOS 3.11 calls invalid among \`scripts/geos-diff.sh --seed 1 --cases $geos\`; $skipped files skipped
 (malformed, or valid once written and read back). Each input is counted once, by the first
 check that caught it.
 

@@ -31,18 +31,6 @@ struct CheckRun {
     std::string out, err;
 };
 
-fs::path scratch(const std::string& name) {
-    fs::path d = fs::temp_directory_path() / ("flood-check-" + name + "-" + std::to_string(getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 // stdout and stderr apart: the table and the JSON are stdout only.
 CheckRun cli(const std::string& args) {
     fs::path err = fs::temp_directory_path() / ("flood-check-stderr-" + std::to_string(getpid()));

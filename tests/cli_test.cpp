@@ -127,19 +127,6 @@ RunResult shell(const std::string& command) {
     return r;
 }
 
-// A fresh empty directory for one test.
-fs::path scratch(const std::string& name) {
-    fs::path d = fs::temp_directory_path() / ("flood-cli-" + name + "-" + std::to_string(getpid()));
-    fs::remove_all(d);
-    fs::create_directories(d);
-    return d;
-}
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 std::vector<std::string> listing(const fs::path& d) {
     std::vector<std::string> names;
     for (auto& e : fs::directory_iterator(d)) names.push_back(e.path().filename().string());

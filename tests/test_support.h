@@ -3,10 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <array>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -18,6 +21,21 @@ namespace flood::testing {
 
 inline std::string sourcePath(const std::string& rel) { return std::string(FLOOD_SOURCE_DIR) + "/" + rel; }
 inline std::string sharedPath(const std::string& rel) { return std::string(FLOOD_SHARED_DIR) + "/" + rel; }
+
+// A fresh empty directory for one test (named for it and this process, so parallel runs differ).
+inline std::filesystem::path scratch(const std::string& name) {
+    std::filesystem::path d =
+        std::filesystem::temp_directory_path() / ("flood-test-" + name + "-" + std::to_string(getpid()));
+    std::filesystem::remove_all(d);
+    std::filesystem::create_directories(d);
+    return d;
+}
+
+// A whole file's bytes.
+inline std::string slurp(const std::filesystem::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
 
 inline std::vector<std::string> filesIn(const std::string& dir, const std::string& ext) {
     std::vector<std::string> out;

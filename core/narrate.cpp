@@ -99,8 +99,9 @@ std::string jump(const Polygon& polygon, const Event& e) {
 }
 
 std::string fill(const Polygon& polygon, const Event& e) {
-    std::string s = "NextLeft and NextRight are the same vertex (" +
-                     vertex(polygon, e.before.nextLeft) + ")";
+    // "meet at vertex 7", as a Bridge says it: "the same vertex (vertex 7)" read aloud
+    // repeats the word.
+    std::string s = "NextLeft and NextRight meet at " + vertex(polygon, e.before.nextLeft);
     if (e.didTest(Test::SagInside)) s += " and no sag hangs below it";
     return s + ": the gorge is filled to its ceiling by a fan from it" +
            cutting(e, "") + "; " + nextGorge(polygon, e) + ".";
@@ -126,7 +127,7 @@ std::string forbidden(const Polygon& polygon, const Event& e) {
             what = "The water spills over the top " + at + " but finds no gorge to flood";
             break;
         case Forbidden::NotFinite:
-            what = "The vertex " + at + " has a coordinate that is not a finite number, so no height can be compared";
+            what = "A coordinate of " + at + " is not a finite number, so no height can be compared";
             break;
         case Forbidden::ShortLoop:
             what = "A ring with fewer than three vertices bounds no area and cannot be flooded";

@@ -2,6 +2,11 @@
 // reason, naming the fingers, the triangles and why the machine chose what it did.
 #include <gtest/gtest.h>
 
+#include <cctype>
+#include <cmath>
+
+#include "generate.h"
+#include "io.h"
 #include "narrate.h"
 #include "replay.h"
 #include "test_support.h"
@@ -89,7 +94,7 @@ TEST(Narrate, StartBridgeSpillJumpFill) {
     EXPECT_TRUE(has(jump, "other bank at vertex " + std::to_string(e.jumpTarget))) << jump;
 
     std::string fill = first("monotone.json", Action::Fill, &e);
-    EXPECT_TRUE(has(fill, "NextLeft and NextRight are the same vertex")) << fill;
+    EXPECT_TRUE(has(fill, "NextLeft and NextRight meet at vertex ")) << fill;
     EXPECT_TRUE(has(fill, "cutting triangle 3")) << fill;
     EXPECT_TRUE(has(fill, "the part is done")) << fill;
     std::string fillThenPending = first("sag.json", Action::Fill, &e);
@@ -134,4 +139,71 @@ TEST(Narrate, SurvivesIndicesOutsideThePolygon) {
     std::string s = narrate(p, e);
     EXPECT_TRUE(has(s, "vertex 999")) << s;
     EXPECT_TRUE(has(s, "no vertex")) << s;
+}
+
+namespace {
+
+// The first word said twice in a row in `s` ("vertex vertex"), case-insensitive; numbers are
+// not words ("triangles 3 4" is no repetition). Empty when there is none.
+std::string repeatedWord(const std::string& s) {
+    std::string last, word;
+    auto endWord = [&]() -> bool {
+        if (word.empty()) return false;
+        bool number = word.find_first_not_of("0123456789") == std::string::npos;
+        bool again = !number && word == last;
+        if (!number) last = word;
+        word.clear();
+        return again;
+    };
+    for (char ch : s) {
+        if (std::isalpha(static_cast<unsigned char>(ch)) || std::isdigit(static_cast<unsigned char>(ch))) {
+            word += char(std::tolower(static_cast<unsigned char>(ch)));
+            continue;
+        }
+        std::string w = word;
+        if (endWord()) return w;
+    }
+    std::string w = word;
+    return endWord() ? w : "";
+}
+
+// Every sentence of the run of `p`, checked for a repeated word.
+void expectNoRepeatedWord(const Polygon& p, const std::string& what) {
+    Trace t = record(p);
+    for (const Event& e : t.events) {
+        std::string s = narrate(p, e);
+        EXPECT_EQ(repeatedWord(s), "") << what << ", step " << e.step << ": " << s;
+    }
+}
+
+}  // namespace
+
+TEST(Narrate, RepeatedWordFinder) {
+    EXPECT_EQ(repeatedWord("The vertex vertex 7 is"), "vertex");
+    EXPECT_EQ(repeatedWord("The Vertex, vertex 7"), "vertex");
+    EXPECT_EQ(repeatedWord("triangles 3 3 and vertex 7"), "");
+    EXPECT_EQ(repeatedWord("at vertex 7 and vertex 8 of hole 1"), "");
+    EXPECT_EQ(repeatedWord("vertex 7 vertex 8"), "vertex") << "numbers are dropped";
+    EXPECT_EQ(repeatedWord("ends in the the"), "the");
+}
+
+// A lecturer reads the narration aloud: no sentence of the gallery, the samples, the invalid
+// samples or the generated families says a word twice in a row.
+TEST(Narrate, NoWordRepeatedOnGalleryAndSamples) {
+    std::vector<std::string> files = filesIn(sourcePath("polygons"), ".json");
+    for (const std::string& f : filesIn(sourcePath("polygons/invalid"), ".json")) files.push_back(f);
+    for (const std::string& f : files) {
+        ReadResult r = readPolygonFile(f);
+        if (!r.diagnostic.ok()) continue;  // unreadable samples have no run to narrate
+        validate(r.polygon, f);
+        expectNoRepeatedWord(r.polygon, f);
+    }
+    for (const std::string& family : familyNames())
+        for (size_t size : {8, 40}) expectNoRepeatedWord(generate(family, 1, size), family);
+    for (const std::string& family : invalidFamilyNames())
+        expectNoRepeatedWord(generateInvalid(family, 1, 40), "invalid " + family);
+    // A coordinate that is not a number: the machine's own refusal (reading refuses it first).
+    Polygon nan;
+    nan.addRing({{0, 0}, {1, 0}, {std::nan(""), 1}}, true);
+    expectNoRepeatedWord(nan, "a NaN coordinate");
 }

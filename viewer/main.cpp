@@ -287,6 +287,7 @@ int main(int argc, char** argv) {
         drawStateMachine(ui);
         drawDecision(ui);
         drawPredicates(ui);
+        drawStateTable(ui);
         drawBreakpoints(ui);
         drawEvents(ui);
         drawTranscript(ui);

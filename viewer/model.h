@@ -20,18 +20,16 @@
 #include "polygon.h"
 #include "replay.h"
 #include "status.h"
+#include "vertex_class.h"
 
 #include <thread>
 
 namespace flood::view {
 
-// ----------------------------------------------------------------------------------------
-// Vertex classes of §3 (Fig. 1), computed from each vertex's ring neighbours.
-enum class VertexClass : uint8_t { Regular, Bottom, Sag, Top, Ceiling, Count };
-const char* vertexClassName(VertexClass c);
-// Rings are walked with the interior on the left (outer rings counter-clockwise, holes
-// clockwise), whatever their orientation in the file.
-std::vector<VertexClass> classifyVertices(const Polygon& polygon);
+// Vertex classes of §3 (Fig. 1): core/vertex_class.h.
+using flood::VertexClass;
+using flood::vertexClassName;
+using flood::classifyVertices;
 
 // ----------------------------------------------------------------------------------------
 // Screen geometry. Screen coordinates are ImGui's logical pixels: origin top-left, y down.
@@ -93,6 +91,7 @@ std::string describeEvent(const Trace& trace, const Event& e);  // one line per 
 struct TranscriptItem {
     uint32_t firstEvent = 0, lastEvent = 0;  // inclusive event indices
     std::string text;
+    std::string separator;  // what follows it in the transcript: ", ", "; " or "" (the last)
 };
 std::vector<TranscriptItem> buildTranscript(const Trace& trace);
 

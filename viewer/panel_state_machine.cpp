@@ -94,6 +94,7 @@ void drawStateMachine(Ui& ui) {
                     active ? IM_COL32(0, 0, 0, 255) : IM_COL32(230, 230, 230, 255), name);
     }
     ImGui::Dummy(ImVec2(avail.x, side));
+    if (ImGui::SmallButton("State table...")) ui.showStateTable = true;  // Fig. 10
 
     ImGui::PushTextWrapPos(0);
     if (!cur) {

@@ -1,5 +1,6 @@
 // The run told like the caption of the paper's Fig. 7 ("Raise 0-7, Spill; ..."), flowing
-// like text; the item holding the current step is highlighted, and clicking an item goes there.
+// like text with the paper's ", " and "; " between items; the item holding the current step
+// is highlighted, and clicking an item goes there.
 #include <imgui.h>
 
 #include <algorithm>
@@ -22,7 +23,7 @@ void drawTranscript(Ui& ui) {
     ImGui::TextDisabled("(%zu items, %u events)", items.size(), m.steps());
     ImGui::BeginChild("text");
     uint32_t curEvent = m.step() == 0 ? ~0u : m.step() - 1;
-    float right = ImGui::GetContentRegionAvail().x, spacing = ImGui::GetStyle().ItemSpacing.x;
+    float right = ImGui::GetContentRegionAvail().x;
     // The text flows into lines; lay them out once per trace and width, then submit only the
     // visible lines, so a million-event transcript scrolls like a short one.
     static uint64_t laidFor = ~0ull;
@@ -32,9 +33,9 @@ void drawTranscript(Ui& ui) {
         lineStart.clear();
         float x = 0;
         for (size_t i = 0; i < items.size(); ++i) {
-            float w = ImGui::CalcTextSize(items[i].text.c_str()).x;
+            float w = ImGui::CalcTextSize((items[i].text + items[i].separator).c_str()).x;
             if (i == 0 || x + w > right) lineStart.push_back(uint32_t(i)), x = 0;
-            x += w + spacing;
+            x += w;  // the separator carries the space: items touch, like text
         }
         lineStart.push_back(uint32_t(items.size()));
         laidFor = m.generation(), laidWidth = right;
@@ -54,7 +55,7 @@ void drawTranscript(Ui& ui) {
         for (int line = clipper.DisplayStart; line < clipper.DisplayEnd; ++line)
             for (uint32_t i = lineStart[size_t(line)]; i < lineStart[size_t(line) + 1]; ++i) {
                 const TranscriptItem& it = items[i];
-                if (i > lineStart[size_t(line)]) ImGui::SameLine();
+                if (i > lineStart[size_t(line)]) ImGui::SameLine(0, 0);
                 bool cur = curEvent >= it.firstEvent && curEvent <= it.lastEvent;
                 ImGui::PushID(int(i));
                 const Event& first = m.trace().events[it.firstEvent];
@@ -64,6 +65,10 @@ void drawTranscript(Ui& ui) {
                 ImGui::PopStyleColor();
                 if (ImGui::IsItemHovered())
                     ImGui::SetTooltip("steps %u-%u", it.firstEvent + 1, it.lastEvent + 1);
+                if (!it.separator.empty()) {  // the paper's ", " and "; ", right after the item
+                    ImGui::SameLine(0, 0);
+                    ImGui::TextUnformatted(it.separator.c_str());
+                }
                 ImGui::PopID();
             }
     ImGui::EndChild();

@@ -44,6 +44,7 @@ struct Ui {
     bool showHelp = false;
     bool showOpen = false;
     bool showPredicates = false;
+    bool showStateTable = false;
     std::vector<Index> highlight;      // vertices the predicate inspector's hovered row names
     Action seekKind = Action::Bridge;  // "previous/next event of kind" in the timeline
     std::string message;               // last status message (saved files, load errors)
@@ -62,6 +63,7 @@ void drawTimeline(Ui& ui);       // panel_timeline.cpp: strip, transport, go-to,
 void drawStateMachine(Ui& ui);   // panel_state_machine.cpp: the six states of §4
 void drawDecision(Ui& ui);       // panel_decision.cpp: the Fig. 9 tests of the current event
 void drawPredicates(Ui& ui);     // panel_predicates.cpp: those tests' predicates, values, stages
+void drawStateTable(Ui& ui);     // panel_state_table.cpp: Fig. 10, combinations against states
 void drawBreakpoints(Ui& ui);    // panel_breakpoints.cpp: breakpoints, legend, display options
 void drawEvents(Ui& ui);         // panel_events.cpp: every event, clipped
 void drawTranscript(Ui& ui);     // panel_transcript.cpp: the paper-style transcript

@@ -1,0 +1,51 @@
+#include "vertex_class.h"
+
+#include <utility>
+
+#include "predicates.h"
+
+namespace flood {
+
+const char* vertexClassName(VertexClass c) {
+    switch (c) {
+        case VertexClass::Regular: return "regular";
+        case VertexClass::Bottom: return "bottom";
+        case VertexClass::Sag: return "sag";
+        case VertexClass::Top: return "top";
+        case VertexClass::Ceiling: return "ceiling";
+        default: return "?";
+    }
+}
+
+std::vector<VertexClass> classifyVertices(const Polygon& polygon) {
+    std::vector<VertexClass> out(polygon.vertices.size(), VertexClass::Regular);
+    const auto& v = polygon.vertices;
+    for (size_t r = 0; r < polygon.rings.size(); ++r) {
+        const Ring& ring = polygon.rings[r];
+        if (ring.count == 1) out[ring.first] = VertexClass::Sag;  // a Steiner point: a hole's bottom
+        if (ring.count < 3) continue;
+        // The file may list a ring either way; the predicates want the interior on the left.
+        // Outer rings of a part come first: holes must turn the other way.
+        bool isOuter = false;
+        for (const Part& p : polygon.parts) isOuter |= (p.firstRing == r);
+        ExactSum area2;
+        for (Index i = 0; i < ring.count; ++i) area2.addCross(v[ring.first + i], v[ring.first + (i + 1) % ring.count]);
+        bool reversed = isOuter ? area2.sign() < 0 : area2.sign() > 0;
+        for (Index i = 0; i < ring.count; ++i) {
+            Point prev = v[ring.first + (i + ring.count - 1) % ring.count];
+            Point cur = v[ring.first + i];
+            Point next = v[ring.first + (i + 1) % ring.count];
+            if (reversed) std::swap(prev, next);
+            bool isMin = below(cur, prev) && below(cur, next);
+            bool isMax = below(prev, cur) && below(next, cur);
+            bool isConvex = convex(prev, cur, next);
+            VertexClass c = VertexClass::Regular;
+            if (isMin) c = isConvex ? VertexClass::Bottom : VertexClass::Sag;
+            if (isMax) c = isConvex ? VertexClass::Ceiling : VertexClass::Top;
+            out[ring.first + i] = c;
+        }
+    }
+    return out;
+}
+
+}  // namespace flood

@@ -1,0 +1,85 @@
+// The paper's Fig. 10 drawn live: the vertex combinations the run met (classes of C and Next,
+// fingers meeting) against the states R F B S J X, each cell's count over the whole trace, and
+// the cell of the current step lit. The table itself is core/state_table.h.
+#include <imgui.h>
+
+#include <string>
+
+#include "panels.h"
+#include "state_table.h"
+
+namespace flood::view {
+
+namespace {
+const char* className(int c) { return c == kNoClass ? "-" : vertexClassName(VertexClass(c)); }
+// The paper's letters; Start is the machine's entry, not one of its states.
+const char* columnLetter(Action a) {
+    switch (a) {
+        case Action::Raise: return "R";
+        case Action::Fill: return "F";
+        case Action::Bridge: return "B";
+        case Action::Spill: return "S";
+        case Action::Jump: return "J";
+        case Action::Forbidden: return "X";
+        default: return "start";
+    }
+}
+}  // namespace
+
+void drawStateTable(Ui& ui) {
+    if (!ui.showStateTable) return;
+    Model& m = ui.model;
+    ImGui::SetNextWindowSize(ImVec2(520 * ui.scale, 320 * ui.scale), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(float(ui.layout.canvas.x + 40 * ui.scale),
+                                   float(ui.layout.canvas.y + 40 * ui.scale)),
+                            ImGuiCond_FirstUseEver);
+    if (!ImGui::Begin("State table (Fig. 10)", &ui.showStateTable)) {
+        ImGui::End();
+        return;
+    }
+    // One scan of the log per opened trace.
+    static uint64_t builtFor = ~0ull;
+    static StateTable table;
+    if (builtFor != m.generation()) {
+        table = buildStateTable(m.polygon(), m.trace().events);
+        builtFor = m.generation();
+    }
+    const StateCell* cur = m.step() == 0 || m.step() > table.cellOf.size() ? nullptr
+                                                                           : &table.cellOf[m.step() - 1];
+    ImGui::TextDisabled("C: the end of the chain that acts; Next: its finger; rows the run met");
+    constexpr int kLead = 3;
+    if (ImGui::BeginTable("fig10", kLead + StateTable::kColumns,
+                          ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY |
+                              ImGuiTableFlags_SizingFixedFit)) {
+        ImGui::TableSetupScrollFreeze(0, 1);
+        ImGui::TableSetupColumn("C");
+        ImGui::TableSetupColumn("Next");
+        ImGui::TableSetupColumn("meet");
+        for (Action a : kStateColumns) ImGui::TableSetupColumn(columnLetter(a));
+        ImGui::TableHeadersRow();
+        for (int r = 0; r < StateTable::kRows; ++r) {
+            bool curRow = cur && cur->row == r;
+            if (table.rowTotal(r) == 0 && !curRow) continue;
+            Combination k = Combination::ofRow(r);
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(className(k.c));
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(className(k.next));
+            ImGui::TableNextColumn();
+            ImGui::TextUnformatted(k.meet ? "yes" : "no");
+            for (int c = 0; c < StateTable::kColumns; ++c) {
+                ImGui::TableNextColumn();
+                uint64_t n = table.count(r, c);
+                if (curRow && cur->column == c)
+                    ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg,
+                                           toImU32(palette::action(kStateColumns[size_t(c)])));
+                if (n) ImGui::Text("%llu", static_cast<unsigned long long>(n));
+            }
+        }
+        ImGui::EndTable();
+    }
+    ImGui::End();
+}
+
+}  // namespace flood::view

@@ -1,6 +1,7 @@
 // Opening polygons: the teaching gallery (polygons/gallery.json) with its descriptions, then
 // the files of polygons/ (the same ones the tests and benchmarks use),
 // recently opened files, and any path typed in. Files can also be dropped on the window.
+// A FeatureCollection's features are listed with their verdicts, failing ones first.
 #include <imgui.h>
 
 #include <algorithm>
@@ -27,6 +28,37 @@ void drawOpen(Ui& ui) {
     ImGui::SameLine();
     go |= ImGui::Button("Open");
     std::string chosen = go ? std::string(path) : std::string();
+
+    // The loaded file's features, judged in the background (a dataset may hold thousands);
+    // only polygon documents can be collections.
+    const std::string file = m.feature() == Model::kNoFeature ? m.path() : m.path().substr(0, m.path().rfind('#'));
+    const bool polygonFile = !file.empty() && file.size() > 6 && file.compare(file.size() - 6, 6, ".jsonl") != 0 &&
+                             file.find("(shrunk)") == std::string::npos;
+    if (polygonFile && ui.features.path() != file) ui.features.start(file);
+    size_t openFeature = Model::kNoFeature;
+    if (polygonFile && (!ui.features.done() || !ui.features.features().empty()) &&
+        ImGui::CollapsingHeader("Features", ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (!ui.features.done()) {
+            std::string label = std::to_string(ui.features.progress()) + " / " + std::to_string(ui.features.total());
+            ImGui::ProgressBar(float(double(ui.features.progress()) / double(std::max<size_t>(1, ui.features.total()))),
+                               ImVec2(-1, 0), label.c_str());
+        } else {
+            for (const FeatureVerdict& f : ui.features.features()) {
+                static const char* const kVerdict[] = {"ok", "note", "malformed", "invalid", "forbidden", "rejected", "internal"};
+                std::string label = "#" + std::to_string(f.index) + " " +
+                                    (f.name.empty() ? f.id : f.name) + "  " + std::to_string(f.vertices) + " v  " +
+                                    kVerdict[size_t(f.kind)] + "##feature" + std::to_string(f.index);
+                if (f.failure()) ImGui::PushStyleColor(ImGuiCol_Text, toImVec4(palette::kCulprit));
+                if (ImGui::Selectable(label.c_str(), m.feature() == f.index)) openFeature = f.index;
+                if (f.failure()) ImGui::PopStyleColor();
+                if (!f.reason.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f.reason.c_str());
+            }
+        }
+    }
+    if (openFeature != Model::kNoFeature) {
+        ui.openFailed = !m.openFeature(file, openFeature);
+        ui.message = ui.openFailed ? m.openDiagnostic().message : "opened " + m.path();
+    }
 
     if (!m.recentFiles().empty() && ImGui::CollapsingHeader("Recent", ImGuiTreeNodeFlags_DefaultOpen))
         for (const auto& f : m.recentFiles())

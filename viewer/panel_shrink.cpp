@@ -35,8 +35,8 @@ void drawShrink(Ui& ui) {
     ImGui::SetNextWindowPos(ImVec2(float(ui.layout.canvas.x + ui.layout.canvas.w - 340 * ui.scale),
                                    float(ui.layout.canvas.y + 10 * ui.scale)),
                             ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowSize(ImVec2(330 * ui.scale, 0), ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Shrink")) {
+    // Its content changes with the job's stage: fit it each frame, text wrapped to a column.
+    if (!ImGui::Begin("Shrink", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
         ImGui::End();
         return;
     }
@@ -45,7 +45,7 @@ void drawShrink(Ui& ui) {
         // it may make, the label says how many so far.
         std::string label = std::to_string(job.tries()) + " tries";
         ImGui::ProgressBar(float(double(job.tries()) / double(std::max<size_t>(1, job.maxTries()))),
-                           ImVec2(-1, 0), label.c_str());
+                           ImVec2(320 * ui.scale, 0), label.c_str());
         if (ImGui::Button("Cancel")) job.cancel();  // the repro found so far still opens
     } else if (job.done()) {
         ShrinkResult r = job.result();
@@ -71,7 +71,7 @@ void drawShrink(Ui& ui) {
     }
 
     if (m.shrunk()) {
-        ImGui::PushTextWrapPos(0);
+        ImGui::PushTextWrapPos(320 * ui.scale);
         ImGui::Text("minimal repro: %zu vertices, from", m.polygon().vertices.size());
         ImGui::TextDisabled("%s", m.originName().c_str());
         ImGui::PopTextWrapPos();
@@ -85,7 +85,7 @@ void drawShrink(Ui& ui) {
         }
     }
     if (!ui.shrinkNote.empty()) {
-        ImGui::PushTextWrapPos(0);
+        ImGui::PushTextWrapPos(320 * ui.scale);
         ImGui::TextDisabled("%s", ui.shrinkNote.c_str());
         ImGui::PopTextWrapPos();
     }

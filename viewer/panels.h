@@ -56,6 +56,7 @@ struct Ui {
     std::string browseDir;             // the Open panel's folder browser
     bool openFailed = false;           // the last open from the Open panel failed
     FeatureScan features;              // the Open panel's verdicts of a collection's features
+    uint64_t featuresGeneration = ~0ull;  // Model::generation() the scan was chosen for
     ShrinkJob shrink;                  // the Shrink panel's background shrink
     uint64_t shrinkGeneration = 0;     // Model::generation() the running shrink started from
     char savePath[1024] = "";          // where the Shrink panel saves the repro

@@ -46,7 +46,9 @@ void drawShrink(Ui& ui) {
         std::string label = std::to_string(job.tries()) + " tries";
         ImGui::ProgressBar(float(double(job.tries()) / double(std::max<size_t>(1, job.maxTries()))),
                            ImVec2(320 * ui.scale, 0), label.c_str());
-        if (ImGui::Button("Cancel")) job.cancel();  // the repro found so far still opens
+        // Not joined here: a classification in flight may take up to its time limit; the
+        // frame goes on and the repro found so far opens once the thread has stopped.
+        if (ImGui::Button("Cancel")) job.requestCancel();
     } else if (job.done()) {
         ShrinkResult r = job.result();
         job.reset();

@@ -166,7 +166,7 @@ public:
     ShrinkResult run() {
         if (result_.failure.kind == Failure::Kind::None) return result_;
         bool progress = true;
-        while (progress && result_.tries < o_.maxTries) {
+        while (progress && result_.tries < o_.maxTries && !result_.cancelled) {
             progress = false;
             progress |= removeRings();
             progress |= removeVertices();
@@ -184,7 +184,11 @@ private:
 
     // Keeps `candidate` if it fails the same way (and stays valid when the input was).
     bool accept(const Parts& candidate) {
-        if (result_.tries >= o_.maxTries) return false;
+        if (stopped()) return false;
+        if (o_.onTry && !o_.onTry(result_.tries)) {
+            result_.cancelled = true;
+            return false;
+        }
         Polygon p = toPolygon(candidate);
         if (p.rings.empty()) return false;
         if (result_.inputValid && !validate(p, "shrink").ok()) return false;
@@ -194,6 +198,9 @@ private:
         result_.failure = f;
         return true;
     }
+
+    // Out of tries or cancelled: the loops below stop copying candidates at once.
+    bool stopped() const { return result_.cancelled || result_.tries >= o_.maxTries; }
 
     bool removeRings() {
         bool any = false;
@@ -221,7 +228,7 @@ private:
             for (size_t r = 0; r < best_[pi].size(); ++r) {
                 for (size_t chunk = std::max<size_t>(1, best_[pi][r].size() / 2);; chunk /= 2) {
                     // Remove each run of `chunk` vertices in turn, keeping at least 3.
-                    for (size_t start = 0; start < best_[pi][r].size();) {
+                    for (size_t start = 0; start < best_[pi][r].size() && !stopped();) {
                         size_t n = best_[pi][r].size();
                         size_t end = std::min(n, start + chunk);
                         if (n - (end - start) < 3) break;
@@ -231,7 +238,7 @@ private:
                         if (accept(c)) any = true;  // the same start now names the next run
                         else start += chunk;
                     }
-                    if (chunk <= 1) break;
+                    if (chunk <= 1 || stopped()) break;
                 }
             }
         }
@@ -264,7 +271,7 @@ private:
         // Vertex by vertex to integers (when the global rounding changed the failure).
         for (size_t pi = 0; pi < best_.size(); ++pi)
             for (size_t r = 0; r < best_[pi].size(); ++r)
-                for (size_t v = 0; v < best_[pi][r].size(); ++v) {
+                for (size_t v = 0; v < best_[pi][r].size() && !stopped(); ++v) {
                     Point q = best_[pi][r][v];
                     if (!std::isfinite(q.x) || !std::isfinite(q.y)) continue;
                     Point rq{std::nearbyint(q.x), std::nearbyint(q.y)};

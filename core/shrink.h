@@ -51,6 +51,9 @@ struct ShrinkOptions {
     // can plant a checker failure. Null in normal use.
     std::function<void(std::vector<Triangle>&)> corrupt;
     bool slipping = false;  // classify as Slips or None instead (see above)
+    // Called before each classification with the tries made so far; returning false stops
+    // the shrink there (the viewer's Cancel), with the smallest polygon found until then.
+    std::function<bool(size_t tries)> onTry;
 };
 
 // Runs the machine (validation skipped) and the exact checker on `polygon`.
@@ -61,6 +64,7 @@ struct ShrinkResult {
     Failure failure;        // its failure (same class as the input's)
     bool inputValid = false;  // validate() accepted the input, so every candidate was kept valid
     size_t tries = 0;       // classifications made
+    bool cancelled = false;   // onTry returned false
 };
 
 // Shrinks a failing polygon. If `polygon` does not fail, returns it with Failure::Kind::None.

@@ -4,6 +4,7 @@
 #if __has_include("model.h")
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -800,5 +801,171 @@ TEST(ViewerModel, InspectorRecomputesTheRecordedTests) {
     EXPECT_GT(stages[0], 10u);
     EXPECT_GT(stages[1], 0u) << "collinear corners need the exact stage";
     EXPECT_GT(forbidden, 3u);
+}
+
+// ----------------------------------------------------------------------------------------
+// Shrink from the viewer, and the features of a collection.
+namespace {
+
+// A 300-vertex valid star with one vertex moved through the centre: the ring crosses itself.
+Polygon buriedCrossing() {
+    Polygon star = generate("star", 5, 300);
+    std::vector<Point> ring(star.vertices.begin(), star.vertices.begin() + star.rings[0].count);
+    Point& v = ring[ring.size() / 2];
+    v = {-v.x * 3, -v.y * 3};
+    Polygon p;
+    p.addRing(ring, true);
+    return p;
+}
+
+std::string scratchDir(const std::string& name) {
+    std::string dir = std::string(::testing::TempDir()) + "flood-viewer-" + name;
+    std::filesystem::remove_all(dir);
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+std::string mixedPath() { return std::string(FLOOD_SOURCE_DIR) + "/polygons/datasets/mixed.geojson"; }
+
+}  // namespace
+
+TEST(ViewerShrink, BackgroundShrinkFinishesSmallerFailingTheSameWayAndOpensBesideTheOriginal) {
+    const std::string dir = scratchDir("shrink");
+    const std::string file = dir + "/crossing.json";
+    ASSERT_TRUE(saveGeoJson(buriedCrossing(), file).ok());
+    Model m;
+    m.open(file);
+    ASSERT_TRUE(m.failed());
+    const size_t before = m.polygon().vertices.size();
+    ASSERT_GE(before, 250u);
+    ShrinkOptions o;
+    o.fork = false;  // no crash or hang to survive here; keeps the test light
+    const Failure original = classify(m.polygon(), o);
+    ASSERT_EQ(original.kind, Failure::Kind::Forbidden) << original.message;
+
+    ShrinkJob job;
+    job.start(m.polygon(), o);
+    job.wait();
+    ASSERT_TRUE(job.done());
+    const ShrinkResult& r = job.result();
+    EXPECT_FALSE(r.cancelled);
+    EXPECT_LE(r.polygon.vertices.size(), 12u);
+    EXPECT_TRUE(r.failure.sameClass(original)) << r.failure.message;
+    EXPECT_TRUE(classify(r.polygon, o).sameClass(original));
+    EXPECT_EQ(job.tries(), r.tries - 1) << "progress is the tries made before the last";
+
+    m.openShrunk(r);
+    EXPECT_TRUE(m.shrunk());
+    EXPECT_EQ(m.polygon().vertices.size(), r.polygon.vertices.size());
+    EXPECT_NE(m.path().find("(shrunk)"), std::string::npos) << m.path();
+    EXPECT_TRUE(m.failed());
+    ASSERT_FALSE(m.recentFiles().empty());
+    EXPECT_EQ(m.recentFiles().front(), std::filesystem::absolute(file).lexically_normal().string());
+
+    // Saved as GeoJSON, atomically: the file reads back, nothing else is left in the folder.
+    const std::string repro = dir + "/crossing-shrunk.geojson";
+    ASSERT_TRUE(saveGeoJson(m.polygon(), repro).ok());
+    ReadResult back = readPolygonFile(repro);
+    ASSERT_TRUE(back.diagnostic.ok()) << back.diagnostic.message;
+    EXPECT_EQ(back.polygon.vertices.size(), r.polygon.vertices.size());
+    EXPECT_TRUE(classify(back.polygon, o).sameClass(original));
+    size_t files = 0;
+    for (const auto& e : std::filesystem::directory_iterator(dir)) files += e.is_regular_file();
+    EXPECT_EQ(files, 2u);
+
+    m.openOrigin();  // one click back
+    EXPECT_FALSE(m.shrunk());
+    EXPECT_EQ(m.polygon().vertices.size(), before);
+}
+
+TEST(ViewerShrink, CancelStopsAtTheNextTry) {
+    ShrinkOptions o;
+    o.fork = false;
+    ShrinkJob job;
+    size_t calls = 0;
+    // The test's hook asks for the cancel at try 5, from the shrinking thread itself.
+    o.onTry = [&](size_t tries) {
+        ++calls;
+        if (tries == 5) job.requestCancel();
+        return true;
+    };
+    Polygon p = buriedCrossing();
+    job.start(p, o);
+    job.wait();
+    ASSERT_TRUE(job.done());
+    EXPECT_TRUE(job.result().cancelled);
+    EXPECT_EQ(calls, 5u) << "not one classification after the cancel";
+    EXPECT_EQ(job.result().tries, 5u);
+    // What it found until then still fails the same way.
+    EXPECT_TRUE(job.result().failure.sameClass(classify(p, o)));
+    EXPECT_LT(job.result().polygon.vertices.size(), p.vertices.size());
+}
+
+TEST(ViewerShrink, SavingToAnUnwritablePlaceFailsAndLeavesNothing) {
+    const std::string dir = scratchDir("unwritable");
+    Diagnostic d = saveGeoJson(buriedCrossing(), dir + "/no-such-folder/x.geojson");
+    EXPECT_EQ(d.status, Status::WriteFailed);
+    EXPECT_NE(d.message.find("no-such-folder/x.geojson"), std::string::npos) << d.message;
+    EXPECT_TRUE(std::filesystem::is_empty(dir));
+}
+
+TEST(ViewerFeatures, OpenFeatureNOpensThatFeature) {
+    Model m;
+    ASSERT_TRUE(m.openFeature(mixedPath(), 7));  // "two holes": 4 + 4 + 4 vertices
+    EXPECT_EQ(m.feature(), 7u);
+    EXPECT_EQ(m.polygon().vertices.size(), 12u);
+    EXPECT_EQ(m.polygon().rings.size(), 3u);
+    EXPECT_FALSE(m.failed());
+    EXPECT_EQ(m.path(), mixedPath() + "#7");
+    ASSERT_TRUE(m.openFeature(mixedPath(), 1));  // the bow-tie crosses itself
+    EXPECT_EQ(m.polygon().vertices.size(), 4u);
+    EXPECT_TRUE(m.failed());
+    EXPECT_EQ(m.exitCode(), 4);
+}
+
+TEST(ViewerFeatures, OutOfRangeOrNotACollectionIsAClearFailureKeepingWhatWasLoaded) {
+    Model m;
+    ASSERT_TRUE(m.openFeature(mixedPath(), 8));
+    const size_t loaded = m.polygon().vertices.size();
+    EXPECT_FALSE(m.openFeature(mixedPath(), 99));
+    EXPECT_EQ(m.openDiagnostic().status, Status::Usage);
+    EXPECT_NE(m.openDiagnostic().message.find("mixed.geojson"), std::string::npos) << m.openDiagnostic().message;
+    EXPECT_NE(m.openDiagnostic().message.find("99"), std::string::npos) << m.openDiagnostic().message;
+    EXPECT_NE(m.openDiagnostic().message.find("0..9"), std::string::npos) << m.openDiagnostic().message;
+    EXPECT_EQ(m.polygon().vertices.size(), loaded);
+    EXPECT_EQ(m.feature(), 8u);
+
+    EXPECT_FALSE(m.openFeature(mixedPath(), 6));  // a LineString: no polygon to open
+    EXPECT_EQ(m.openDiagnostic().status, Status::Usage);
+    EXPECT_FALSE(m.openFeature(std::string(FLOOD_SOURCE_DIR) + "/polygons/paper-figure-7.json", 0));
+    EXPECT_NE(m.openDiagnostic().message.find("not a FeatureCollection"), std::string::npos);
+    EXPECT_EQ(m.polygon().vertices.size(), loaded);
+}
+
+TEST(ViewerFeatures, ListShowsVerdictsFailingFirst) {
+    FeatureScan scan;
+    scan.start(mixedPath());
+    scan.wait();
+    ASSERT_TRUE(scan.done());
+    EXPECT_TRUE(scan.diagnostic().ok()) << scan.diagnostic().message;
+    std::vector<std::pair<size_t, VerdictKind>> got;
+    for (const auto& f : scan.features()) got.push_back({f.index, f.kind});
+    const std::vector<std::pair<size_t, VerdictKind>> want = {
+        {1, VerdictKind::InvalidInput}, {3, VerdictKind::InvalidInput}, {4, VerdictKind::InvalidInput},
+        {5, VerdictKind::Unreadable},   {9, VerdictKind::Unreadable},   {0, VerdictKind::Ok},
+        {2, VerdictKind::Ok},           {7, VerdictKind::Ok},           {8, VerdictKind::Ok}};
+    EXPECT_EQ(got, want);
+    EXPECT_EQ(scan.total(), want.size());
+    EXPECT_EQ(scan.progress(), want.size());
+    ASSERT_FALSE(scan.features().empty());
+    EXPECT_EQ(scan.features()[0].name, "bow-tie");
+    EXPECT_NE(scan.features()[0].reason.find("ring 0"), std::string::npos) << scan.features()[0].reason;
+    EXPECT_EQ(scan.features().back().id, "triangle");
+    EXPECT_EQ(scan.features().back().vertices, 3u);
+
+    FeatureScan single;  // not a collection: nothing to list
+    single.start(std::string(FLOOD_SOURCE_DIR) + "/polygons/paper-figure-7.json");
+    single.wait();
+    EXPECT_TRUE(single.features().empty());
 }
 #endif

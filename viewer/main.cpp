@@ -1,5 +1,5 @@
 // flood-viewer: replays the flooding triangulation of a polygon step by step.
-//   flood-viewer [FILE] [--step N] [--screenshot OUT.png] [--size WxH]
+//   flood-viewer [FILE] [--feature N] [--step N] [--screenshot OUT.png] [--size WxH]
 // Without a display it prints a summary of the run instead and says how to get pictures.
 #include <imgui.h>
 
@@ -31,12 +31,16 @@ struct Args {
     int width = 1280, height = 800;
     bool bench = false;  // measure open, seek and frame times, print them, exit
     bool showError = false;  // open in the error view (as the E key does)
+    long feature = -1;       // --feature N: that feature of a FeatureCollection
 };
 
 const char* const kUsage =
-    "usage: flood-viewer [FILE] [--step N] [--show-error] [--screenshot OUT.png] [--size WxH]\n"
+    "usage: flood-viewer [FILE] [--feature N] [--step N] [--show-error] [--screenshot OUT.png]\n"
+    "                    [--size WxH]\n"
     "  FILE              polygon (GeoJSON, ring arrays or WKT) or a trace from `flood trace`\n"
     "                    (*.jsonl); default: polygons/paper-figure-7.json\n"
+    "  --feature N       open feature N (0-based, as `flood check` numbers them) of a\n"
+    "                    FeatureCollection; no such feature: exit 2\n"
     "  --step N          show the state after N events (repeat it to draw each in turn:\n"
     "                    --step 40 --step 5 shows 5 after a frame at 40)\n"
     "  --show-error      start in the error view (zoomed to the culprits), as the E key\n"
@@ -68,6 +72,13 @@ int parseArgs(int argc, char** argv, Args& a) {
                 return 2 + 1;
             }
             a.steps.push_back(uint32_t(std::min<long>(a.step, ~0u)));
+        } else if (s == "--feature") {
+            const char* v = value("--feature");
+            char* end = nullptr;
+            if (!v || (a.feature = std::strtol(v, &end, 10), *end != 0) || a.feature < 0) {
+                if (v) std::fprintf(stderr, "flood-viewer: --feature wants a number >= 0, got '%s'\n", v);
+                return 2 + 1;
+            }
         } else if (s == "--show-error") {
             a.showError = true;
         } else if (s == "--bench") {
@@ -206,7 +217,15 @@ int main(int argc, char** argv) {
         model.recentPath = recentFile;  // saved on every open
     }
     double openStart = now();
-    if (!args.file.empty()) model.open(args.file);
+    if (args.feature >= 0) {
+        // A feature that cannot be opened is the answer: say so before any window.
+        if (!model.openFeature(args.file, size_t(args.feature))) {
+            std::fprintf(stderr, "flood-viewer: %s\n", model.openDiagnostic().message.c_str());
+            return int(model.openDiagnostic().status);
+        }
+    } else if (!args.file.empty()) {
+        model.open(args.file);
+    }
     double openSeconds = now() - openStart;
     if (!args.steps.empty()) model.seek(args.steps.front());
     BenchStats bench;
@@ -292,6 +311,7 @@ int main(int argc, char** argv) {
         drawEvents(ui);
         drawTranscript(ui);
         drawOpen(ui);
+        drawShrink(ui);
         drawHelp(ui);
         ImGui::Render();
 

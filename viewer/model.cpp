@@ -11,6 +11,8 @@
 #include <fstream>
 #include <limits>
 #include <sstream>
+#include <system_error>
+#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -470,6 +472,8 @@ void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic inp
 
 void Model::adopt(std::unique_ptr<Trace> trace) {
     errorView = false;
+    feature_ = kNoFeature;  // openFeature / openShrunk set these again after adopting
+    origin_.clear();
     // The replay points into the trace: replace both together, replay first.
     replay_.reset();
     trace_ = std::move(trace);
@@ -954,6 +958,221 @@ std::string defaultPolygonPath() {
     if (std::filesystem::exists(preferred, ec)) return preferred;
     auto files = listPolygonFiles(dir);
     return files.empty() ? std::string() : files.front();
+}
+
+}  // namespace flood::view
+
+// ----------------------------------------------------------------------------------------
+// Features of a collection, shrinking, saving a repro.
+
+namespace flood::view {
+
+bool Model::openFeature(const std::string& path, size_t index) {
+    DatasetRead d;
+    try {
+        d = readFeaturesFile(path, kDefaultMaxInputBytes, false);
+    } catch (const std::exception& ex) {
+        openDiag_ = {Status::Malformed, path + ": " + ex.what()};
+        return false;
+    }
+    if (d.features.size() == 1 && d.features[0].wholeFile) {
+        const Diagnostic& r = d.features[0].read.diagnostic;
+        openDiag_ = !r.ok() ? r
+                            : Diagnostic{Status::Usage, path + ": not a FeatureCollection, it has no feature " +
+                                                            std::to_string(index)};
+        return false;
+    }
+    // Indices are positions in "features"; a non-polygonal feature has none of its own here.
+    auto it = std::find_if(d.features.begin(), d.features.end(),
+                           [&](const FeatureRead& f) { return f.index == index; });
+    if (it == d.features.end()) {
+        size_t last = 0;
+        for (const auto& f : d.features) last = std::max(last, f.index);
+        openDiag_ = {Status::Usage, path + ": no polygonal feature " + std::to_string(index) + " (the collection's " +
+                                        (d.features.empty() ? std::string("features are not polygons")
+                                                            : "features run 0.." + std::to_string(last)) +
+                                        ")"};
+        return false;
+    }
+    FeatureRead& f = *it;
+    const std::string name = path + "#" + std::to_string(index);
+    if (!f.read.diagnostic.ok()) {
+        openDiag_ = f.read.diagnostic;
+        return false;
+    }
+    Diagnostic v = validate(f.read.polygon, name);
+    openPolygon(std::move(f.read.polygon), name, v, std::move(f.read.warnings));
+    feature_ = index;
+    remember(path);
+    return true;
+}
+
+void Model::openShrunk(const ShrinkResult& result) {
+    const std::string from = path_;
+    const size_t fromFeature = feature_;
+    Polygon p = result.polygon;
+    Diagnostic v = validate(p, from + " (shrunk)");
+    openPolygon(std::move(p), from + " (shrunk)", v);
+    // What it came from: a file (the feature's file for "FILE#N"), one click away.
+    originName_ = from;
+    origin_ = fromFeature == kNoFeature ? from : from.substr(0, from.rfind('#'));
+    originFeature_ = fromFeature;
+}
+
+void Model::openOrigin() {
+    if (origin_.empty()) return;
+    const std::string file = origin_;
+    if (originFeature_ == kNoFeature) open(file);
+    else openFeature(file, originFeature_);
+}
+
+void ShrinkJob::start(const Polygon& polygon, ShrinkOptions options) {
+    reset();
+    maxTries_ = options.maxTries;
+    options.onTry = [this, user = std::move(options.onTry)](size_t tries) {
+        tries_.store(tries, std::memory_order_relaxed);
+        if (user && !user(tries)) return false;
+        return !cancel_.load(std::memory_order_relaxed);
+    };
+    thread_ = std::thread([this, polygon, options] {
+        try {
+            result_ = shrink(polygon, options);
+        } catch (const std::exception& ex) {
+            result_ = {};
+            result_.polygon = polygon;
+            result_.failure.kind = Failure::Kind::Crash;
+            result_.failure.message = std::string("the shrinker failed: ") + ex.what();
+        }
+        done_.store(true, std::memory_order_release);
+    });
+}
+
+void ShrinkJob::cancel() {
+    requestCancel();
+    wait();
+}
+
+void ShrinkJob::wait() {
+    if (thread_.joinable()) thread_.join();
+}
+
+void ShrinkJob::reset() {
+    cancel();
+    cancel_.store(false);
+    done_.store(false);
+    tries_.store(0);
+    result_ = {};
+}
+
+Diagnostic saveGeoJson(const Polygon& polygon, const std::string& path) {
+    namespace fs = std::filesystem;
+    std::ostringstream json;
+    // writePolygonJson: a bare ring array for one part (the coordinates of a GeoJSON
+    // Polygon), a GeoJSON MultiPolygon for several.
+    if (polygon.parts.size() > 1) writePolygonJson(json, polygon);
+    else {
+        json << "{\"type\": \"Polygon\", \"coordinates\": ";
+        writePolygonJson(json, polygon);
+        json << "}";
+    }
+    json << "\n";
+    // Beside the target, so the rename stays on one file system and is atomic.
+    const std::string tmp = path + ".tmp" + std::to_string(::getpid());
+    {
+        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        out << json.str();
+        out.flush();
+        if (!out) {
+            std::error_code ec;
+            fs::remove(tmp, ec);
+            return {Status::WriteFailed, path + ": cannot write " + tmp};
+        }
+    }
+    std::error_code ec;
+    fs::rename(tmp, path, ec);
+    if (ec) {
+        fs::remove(tmp, ec);
+        return {Status::WriteFailed, path + ": cannot replace the file: " + ec.message()};
+    }
+    return {};
+}
+
+FeatureVerdict judgeFeature(const FeatureRead& f) {
+    FeatureVerdict v;
+    v.index = f.index;
+    v.id = f.id;
+    v.name = f.name;
+    v.vertices = f.read.polygon.vertices.size();
+    try {
+        if (!f.read.diagnostic.ok()) {
+            v.kind = f.read.diagnostic.status == Status::Internal ? VerdictKind::Internal : VerdictKind::Unreadable;
+            v.reason = f.read.diagnostic.message;
+            return v;
+        }
+        Polygon p = f.read.polygon;
+        if (Diagnostic d = validate(p, "feature " + std::to_string(f.index)); !d.ok()) {
+            v.kind = VerdictKind::InvalidInput;
+            v.reason = d.message;
+        } else if (FloodResult r = triangulate(p); !r.diagnostic.ok()) {
+            v.kind = VerdictKind::Forbidden;
+            v.reason = r.diagnostic.message;
+        } else if (CheckResult c = checkTriangulation(p, r.triangles); !c.ok) {
+            v.kind = VerdictKind::Rejected;
+            v.reason = "the exact checker rejects the triangulation: " + c.reason;
+        }
+    } catch (const std::exception& ex) {
+        v.kind = VerdictKind::Internal;
+        v.reason = std::string("exception: ") + ex.what();
+    }
+    return v;
+}
+
+void orderFailingFirst(std::vector<FeatureVerdict>& list) {
+    std::stable_sort(list.begin(), list.end(), [](const FeatureVerdict& a, const FeatureVerdict& b) {
+        return a.failure() != b.failure() ? a.failure() : a.index < b.index;
+    });
+}
+
+void FeatureScan::start(const std::string& path) {
+    cancel();
+    path_ = path;
+    cancel_ = false;
+    done_ = false;
+    progress_ = 0;
+    total_ = 0;
+    features_.clear();
+    diag_ = {};
+    thread_ = std::thread([this, path] {
+        DatasetRead d;
+        try {
+            d = readFeaturesFile(path, kDefaultMaxInputBytes, false);
+        } catch (const std::exception& ex) {
+            diag_ = {Status::Malformed, path + ": " + ex.what()};
+        }
+        if (d.features.size() == 1 && d.features[0].wholeFile) {
+            diag_ = d.features[0].read.diagnostic;  // not a collection: nothing to list
+            d.features.clear();
+        }
+        total_.store(d.features.size(), std::memory_order_relaxed);
+        std::vector<FeatureVerdict> list;
+        for (const FeatureRead& f : d.features) {
+            if (cancel_.load(std::memory_order_relaxed)) break;
+            list.push_back(judgeFeature(f));
+            progress_.store(list.size(), std::memory_order_relaxed);
+        }
+        orderFailingFirst(list);
+        features_ = std::move(list);
+        done_.store(true, std::memory_order_release);
+    });
+}
+
+void FeatureScan::cancel() {
+    cancel_.store(true, std::memory_order_relaxed);
+    wait();
+}
+
+void FeatureScan::wait() {
+    if (thread_.joinable()) thread_.join();
 }
 
 }  // namespace flood::view

@@ -17,8 +17,10 @@
 #include "events.h"
 #include "flood.h"
 #include "invariants.h"
+#include "io.h"
 #include "polygon.h"
 #include "replay.h"
+#include "shrink.h"
 #include "status.h"
 #include "vertex_class.h"
 
@@ -181,6 +183,81 @@ private:
     std::vector<KeyPress> presses_;
 };
 
+
+// ----------------------------------------------------------------------------------------
+// Shrink from the viewer: core/shrink.h run in a background thread, with the tries made as
+// progress and a Cancel that stops it before its next classification. An `onTry` in the
+// options is still called (before the cancel is looked at).
+class ShrinkJob {
+public:
+    ShrinkJob() = default;
+    ShrinkJob(const ShrinkJob&) = delete;
+    ShrinkJob& operator=(const ShrinkJob&) = delete;
+    ~ShrinkJob() { cancel(); }
+    void start(const Polygon& polygon, ShrinkOptions options);  // cancels a running one first
+    bool started() const { return thread_.joinable() || done(); }
+    bool done() const { return done_.load(std::memory_order_acquire); }
+    size_t tries() const { return tries_.load(std::memory_order_relaxed); }
+    size_t maxTries() const { return maxTries_; }
+    void cancel();  // asks the thread to stop and joins it; the result so far stays readable
+    void requestCancel() { cancel_.store(true, std::memory_order_relaxed); }  // without joining
+    void wait();    // joins (tests)
+    const ShrinkResult& result() const { return result_; }  // once done()
+    void reset();   // cancels and forgets the result
+
+private:
+    std::thread thread_;
+    std::atomic<bool> cancel_{false}, done_{false};
+    std::atomic<size_t> tries_{0};
+    size_t maxTries_ = 0;
+    ShrinkResult result_;  // written by the thread before `done_`
+};
+
+// Writes `polygon` as a GeoJSON Polygon or MultiPolygon to `path` atomically: a temporary
+// file beside it, renamed over it once complete. WriteFailed (nothing left behind) if not.
+Diagnostic saveGeoJson(const Polygon& polygon, const std::string& path);
+
+// ----------------------------------------------------------------------------------------
+// The features of a FeatureCollection with their verdicts (read, validate, flood, exact
+// check: the first failure), as `flood check` judges them.
+struct FeatureVerdict {
+    size_t index = 0;        // position in the collection's "features" array
+    std::string id, name;
+    size_t vertices = 0;
+    VerdictKind kind = VerdictKind::Ok;  // Ok, Unreadable, InvalidInput, Forbidden, Rejected, Internal
+    std::string reason;      // the diagnostic's message; "" when ok
+    bool failure() const { return kind != VerdictKind::Ok; }
+};
+FeatureVerdict judgeFeature(const FeatureRead& feature);
+// Failing features first, each group in collection order.
+void orderFailingFirst(std::vector<FeatureVerdict>& list);
+
+// Judges a collection's features in a background thread (a dataset may hold thousands).
+class FeatureScan {
+public:
+    FeatureScan() = default;
+    FeatureScan(const FeatureScan&) = delete;
+    FeatureScan& operator=(const FeatureScan&) = delete;
+    ~FeatureScan() { cancel(); }
+    void start(const std::string& path);  // cancels a running scan first
+    const std::string& path() const { return path_; }
+    bool done() const { return done_.load(std::memory_order_acquire); }
+    size_t progress() const { return progress_.load(std::memory_order_relaxed); }  // judged so far
+    size_t total() const { return total_.load(std::memory_order_relaxed); }  // known once read
+    void cancel();
+    void wait();
+    // Once done: the verdicts, failing first; empty when the file is not a FeatureCollection.
+    const std::vector<FeatureVerdict>& features() const { return features_; }
+    const Diagnostic& diagnostic() const { return diag_; }  // the file could not be read
+
+private:
+    std::thread thread_;
+    std::string path_;
+    std::atomic<bool> cancel_{false}, done_{false};
+    std::atomic<size_t> progress_{0}, total_{0};
+    std::vector<FeatureVerdict> features_;  // written by the thread before `done_`
+    Diagnostic diag_;
+};
 // ----------------------------------------------------------------------------------------
 class Model {
 public:
@@ -201,6 +278,19 @@ public:
     std::string recentPath;
     void openPolygon(Polygon polygon, const std::string& name, Diagnostic input,
                      std::vector<std::string> warnings = {});
+    // Feature `index` (its position in "features") of a FeatureCollection, named
+    // "FILE#index". Not a collection, or no such feature: false, the loaded polygon kept,
+    // openDiagnostic() says why (Usage for a bad index, else the read's failure).
+    bool openFeature(const std::string& path, size_t index);
+    size_t feature() const { return feature_; }  // the open feature's index, kNoFeature if none
+    static constexpr size_t kNoFeature = ~size_t(0);
+
+    // Shrink: opens a shrunk polygon as "<name> (shrunk)", remembering what it came from so
+    // that openOrigin() brings the original back in one click (it also stays in Recent).
+    void openShrunk(const ShrinkResult& result);
+    bool shrunk() const { return !origin_.empty(); }
+    const std::string& originName() const { return originName_; }
+    void openOrigin();
 
     const std::string& path() const { return path_; }
     uint64_t generation() const { return generation_; }  // changes with every open
@@ -309,6 +399,9 @@ private:
     void computeVerdictLines();
     void remember(const std::string& path);
     Diagnostic openDiag_;
+    size_t feature_ = kNoFeature;
+    std::string origin_, originName_;  // the shrunk polygon's source file, and its display name
+    size_t originFeature_ = kNoFeature;
     CheckResult check_;
     std::vector<VerdictLine> verdictLines_;
     Culprits error_;

@@ -1,6 +1,7 @@
 // Opening polygons: the teaching gallery (polygons/gallery.json) with its descriptions, then
 // the files of polygons/ (the same ones the tests and benchmarks use),
 // recently opened files, and any path typed in. Files can also be dropped on the window.
+// A FeatureCollection's features are listed with their verdicts, failing ones first.
 #include <imgui.h>
 
 #include <algorithm>
@@ -27,6 +28,45 @@ void drawOpen(Ui& ui) {
     ImGui::SameLine();
     go |= ImGui::Button("Open");
     std::string chosen = go ? std::string(path) : std::string();
+
+    // The features of the loaded file (or of a collection that failed to open whole: its
+    // features are separate polygons), judged in the background: a dataset may hold thousands.
+    auto polygonDocument = [](const std::string& f) {
+        return !f.empty() && f.find("(shrunk)") == std::string::npos &&
+               (f.size() < 6 || f.compare(f.size() - 6, 6, ".jsonl") != 0);
+    };
+    if (m.generation() != ui.featuresGeneration) {
+        ui.featuresGeneration = m.generation();
+        std::string file = m.feature() == Model::kNoFeature ? m.path() : m.path().substr(0, m.path().rfind('#'));
+        if (polygonDocument(file) && ui.features.path() != file) ui.features.start(file);
+    }
+    size_t openFeature = Model::kNoFeature;
+    const FeatureScan& scan = ui.features;
+    if (!scan.path().empty() && (!scan.done() || !scan.features().empty()) &&
+        ImGui::CollapsingHeader(("Features of " + scan.path()).c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+        if (!scan.done()) {
+            std::string label = std::to_string(scan.progress()) + " / " + std::to_string(scan.total());
+            ImGui::ProgressBar(float(double(scan.progress()) / double(std::max<size_t>(1, scan.total()))),
+                               ImVec2(-1, 0), label.c_str());
+        } else {
+            static const char* const kVerdict[] = {"ok", "note", "malformed", "invalid", "forbidden", "rejected", "internal"};
+            const bool thisFile = m.feature() != Model::kNoFeature && m.path().rfind(scan.path() + "#", 0) == 0;
+            for (const FeatureVerdict& f : scan.features()) {
+                std::string label = "#" + std::to_string(f.index) + " " + (f.name.empty() ? f.id : f.name) + "  " +
+                                    std::to_string(f.vertices) + " v  " + kVerdict[size_t(f.kind)] + "##feature" +
+                                    std::to_string(f.index);
+                if (f.failure()) ImGui::PushStyleColor(ImGuiCol_Text, toImVec4(palette::kCulprit));
+                if (ImGui::Selectable(label.c_str(), thisFile && m.feature() == f.index)) openFeature = f.index;
+                if (f.failure()) ImGui::PopStyleColor();
+                if (!f.reason.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f.reason.c_str());
+            }
+        }
+    }
+    if (openFeature != Model::kNoFeature) {
+        const std::string file = scan.path();
+        ui.openFailed = !m.openFeature(file, openFeature);
+        ui.message = ui.openFailed ? m.openDiagnostic().message : "opened " + m.path();
+    }
 
     if (!m.recentFiles().empty() && ImGui::CollapsingHeader("Recent", ImGuiTreeNodeFlags_DefaultOpen))
         for (const auto& f : m.recentFiles())
@@ -91,6 +131,7 @@ void drawOpen(Ui& ui) {
         // A failed open keeps what was loaded; say why in red.
         ui.openFailed = !m.openDiagnostic().ok();
         ui.message = ui.openFailed ? m.openDiagnostic().message : "opened " + chosen;
+        if (ui.openFailed && polygonDocument(chosen)) ui.features.start(chosen);  // a collection?
     }
     if (ui.openFailed) {
         ImGui::PushTextWrapPos(0);

@@ -56,6 +56,12 @@ struct Ui {
     bool findFailed = false;           // ui.message is the find box's "why not"
     std::string browseDir;             // the Open panel's folder browser
     bool openFailed = false;           // the last open from the Open panel failed
+    FeatureScan features;              // the Open panel's verdicts of a collection's features
+    uint64_t featuresGeneration = ~0ull;  // Model::generation() the scan was chosen for
+    ShrinkJob shrink;                  // the Shrink panel's background shrink
+    uint64_t shrinkGeneration = 0;     // Model::generation() the running shrink started from
+    char savePath[1024] = "";          // where the Shrink panel saves the repro
+    std::string shrinkNote;            // the Shrink panel's last outcome
 };
 
 void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, labels, input
@@ -68,6 +74,7 @@ void drawBreakpoints(Ui& ui);    // panel_breakpoints.cpp: breakpoints, legend, 
 void drawEvents(Ui& ui);         // panel_events.cpp: every event, clipped
 void drawTranscript(Ui& ui);     // panel_transcript.cpp: the paper-style transcript
 void drawOpen(Ui& ui);           // panel_open.cpp: polygons/ and recent files
+void drawShrink(Ui& ui);         // panel_shrink.cpp: shrink a failure, open and save the repro
 void drawHelp(Ui& ui);           // panel_help.cpp: keys and glossary
 void handleShortcuts(Ui& ui);    // panel_help.cpp: the keys the help window lists
 

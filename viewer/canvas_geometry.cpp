@@ -102,15 +102,19 @@ std::vector<MarkerVertex> thinMarkers(const std::vector<MarkerVertex>& markers, 
     const Rect& r = cam.viewport();
     const double x0 = r.x - cell, y0 = r.y - cell;
     const int nx = int(std::ceil(r.w / cell)) + 2, ny = int(std::ceil(r.h / cell)) + 2;
-    std::vector<bool> taken(size_t(std::max(nx, 0)) * size_t(std::max(ny, 0)), false);
+    std::vector<uint8_t> taken(size_t(std::max(nx, 0)) * size_t(std::max(ny, 0)), 0);
     std::vector<MarkerVertex> kept;
+    // The camera is affine: its map from (origin-relative) world to cell coordinates, once.
+    const Vec2 at = cam.toScreen(o), ex = cam.toScreen({o.x + 1, o.y}), ey = cam.toScreen({o.x, o.y + 1});
+    const double ix = (ex.x - at.x) / cell, jx = (ex.y - at.y) / cell;
+    const double iy = (ey.x - at.x) / cell, jy = (ey.y - at.y) / cell;
+    const double i0 = (at.x - x0) / cell, j0 = (at.y - y0) / cell;
     for (const MarkerVertex& m : markers) {
-        Vec2 p = cam.toScreen({o.x + m.x, o.y + m.y});
-        double i = std::floor((p.x - x0) / cell), j = std::floor((p.y - y0) / cell);
+        double i = std::floor(i0 + m.x * ix + m.y * iy), j = std::floor(j0 + m.x * jx + m.y * jy);
         if (!(i >= 0 && j >= 0 && i < nx && j < ny)) continue;  // also drops NaN
         size_t c = size_t(j) * size_t(nx) + size_t(i);
         if (taken[c]) continue;
-        taken[c] = true;
+        taken[c] = 1;
         kept.push_back(m);
     }
     return kept;
@@ -137,7 +141,7 @@ std::vector<uint32_t> visibleLabels(const TriangleGrid& grid, const Camera& cam,
 void TriangleGrid::buildVertices(const Polygon& polygon) {
     centroid_ = polygon.vertices;
     area_.assign(centroid_.size(), 0.f);
-    bucket();
+    bucket(8);  // finer than for triangles: the neighbour search below scans 3x3 cells
     // A vertex's room: the distance to its nearest neighbour, searched in the 3x3 cells around
     // it; anything farther is at least a cell away, so min(found, cell) never overstates it.
     // A crowded block (a cluster far denser than the grid) is given no room rather than a
@@ -179,10 +183,10 @@ void TriangleGrid::build(const Polygon& polygon, const std::vector<Triangle>& tr
         centroid_[t] = {(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
         area_[t] = float(std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2);
     }
-    bucket();
+    bucket(32);
 }
 
-void TriangleGrid::bucket() {
+void TriangleGrid::bucket(double perCell) {
     const size_t n = centroid_.size();
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     for (Point c : centroid_) {
@@ -190,8 +194,8 @@ void TriangleGrid::bucket() {
         x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
     }
     if (!(x0 <= x1)) x0 = x1 = y0 = y1 = 0;
-    // About 32 triangles a cell: cheap to count, and a zoomed-in view visits few cells.
-    int side = std::clamp(int(std::sqrt(double(n) / 32)), 1, 512);
+    // About perCell items a cell: cheap to count, and a zoomed-in view visits few cells.
+    int side = std::clamp(int(std::sqrt(double(n) / perCell)), 1, 512);
     x0_ = x0, y0_ = y0;
     cell_ = std::max({(x1 - x0) / side, (y1 - y0) / side, 1e-300});
     nx_ = std::max(1, int(std::ceil((x1 - x0) / cell_)));

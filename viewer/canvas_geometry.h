@@ -79,7 +79,7 @@ public:
     double area(uint32_t t) const { return area_[t]; }
 
 private:
-    void bucket();  // counting sort of centroid_ into cells
+    void bucket(double perCell);  // counting sort of centroid_ into cells of ~perCell items
     bool cells(Point lo, Point hi, int& i0, int& j0, int& i1, int& j1) const;
     double x0_ = 0, y0_ = 0, cell_ = 1;
     int nx_ = 0, ny_ = 0;

@@ -89,32 +89,113 @@ CanvasOverlay buildCanvasOverlay(const Model& model, const SceneOptions& options
         if (l.arrow) ov.arrows.push_back(l);
     }
     ov.markers.reserve(sc.markers.size());
-    for (const Scene::Marker& m : sc.markers)
+    for (const Scene::Marker& m : sc.markers) {
         ov.markers.push_back({float(m.p.x - o.x), float(m.p.y - o.y), m.color, m.radius, float(m.shape)});
+        ov.gorgeMarkers += m.thin;  // buildScene lists the gorge rings first
+    }
     ov.labels = std::move(sc.labels);
     return ov;
 }
 
+std::vector<MarkerVertex> thinMarkers(const std::vector<MarkerVertex>& markers, Point o,
+                                      const Camera& cam, double cell) {
+    const Rect& r = cam.viewport();
+    const double x0 = r.x - cell, y0 = r.y - cell;
+    const int nx = int(std::ceil(r.w / cell)) + 2, ny = int(std::ceil(r.h / cell)) + 2;
+    std::vector<uint8_t> taken(size_t(std::max(nx, 0)) * size_t(std::max(ny, 0)), 0);
+    std::vector<MarkerVertex> kept;
+    // The camera is affine: its map from (origin-relative) world to cell coordinates, once.
+    const Vec2 at = cam.toScreen(o), ex = cam.toScreen({o.x + 1, o.y}), ey = cam.toScreen({o.x, o.y + 1});
+    const double ix = (ex.x - at.x) / cell, jx = (ex.y - at.y) / cell;
+    const double iy = (ey.x - at.x) / cell, jy = (ey.y - at.y) / cell;
+    const double i0 = (at.x - x0) / cell, j0 = (at.y - y0) / cell;
+    for (const MarkerVertex& m : markers) {
+        double i = std::floor(i0 + m.x * ix + m.y * iy), j = std::floor(j0 + m.x * jx + m.y * jy);
+        if (!(i >= 0 && j >= 0 && i < nx && j < ny)) continue;  // also drops NaN
+        size_t c = size_t(j) * size_t(nx) + size_t(i);
+        if (taken[c]) continue;
+        taken[c] = 1;
+        kept.push_back(m);
+    }
+    return kept;
+}
+
+std::vector<uint32_t> visibleLabels(const TriangleGrid& grid, const Camera& cam, uint32_t count,
+                                    double minArea) {
+    constexpr double kLabelMargin = 32;  // pixels
+    const Rect& r = cam.viewport();
+    Point a = cam.toWorld({r.x, r.y + r.h}), b = cam.toWorld({r.x + r.w, r.y});
+    size_t cap = size_t(4 * r.w * r.h / minArea) + 16;
+    double px2 = cam.scale() * cam.scale();
+    std::vector<uint32_t> shown;
+    // The grid's cells overhang the view: keep what is on screen, or near enough to show
+    // part of its text.
+    const Rect near{r.x - kLabelMargin, r.y - kLabelMargin, r.w + 2 * kLabelMargin, r.h + 2 * kLabelMargin};
+    grid.forEach(a, b, count, cap, [&](uint32_t t) {
+        if (grid.area(t) * px2 >= minArea && near.contains(cam.toScreen(grid.centroid(t)))) shown.push_back(t);
+    });
+    return shown;
+}
+
 // ----------------------------------------------------------------------------------------
+void TriangleGrid::buildVertices(const Polygon& polygon) {
+    centroid_ = polygon.vertices;
+    area_.assign(centroid_.size(), 0.f);
+    bucket(8);  // finer than for triangles: the neighbour search below scans 3x3 cells
+    // A vertex's room: the distance to its nearest neighbour, searched in the 3x3 cells around
+    // it; anything farther is at least a cell away, so min(found, cell) never overstates it.
+    // A crowded block (a cluster far denser than the grid) is given no room rather than a
+    // quadratic search: its labels would need an extreme zoom anyway.
+    constexpr size_t kMaxScan = 512;
+    for (int j = 0; j < ny_; ++j)
+        for (int i = 0; i < nx_; ++i) {
+            int i0 = std::max(i - 1, 0), i1 = std::min(i + 1, nx_ - 1);
+            int j0 = std::max(j - 1, 0), j1 = std::min(j + 1, ny_ - 1);
+            size_t block = 0;
+            for (int jj = j0; jj <= j1; ++jj)
+                block += start_[size_t(jj) * nx_ + i1 + 1] - start_[size_t(jj) * nx_ + i0];
+            const size_t c = size_t(j) * nx_ + i;
+            for (uint32_t k = start_[c]; k < start_[c + 1]; ++k) {
+                const uint32_t a = ids_[k];
+                const Point p = centroid_[a];
+                double best = cell_ * cell_;
+                if (block > kMaxScan) best = 0;
+                for (int jj = j0; jj <= j1 && best > 0; ++jj)
+                    for (uint32_t q = start_[size_t(jj) * nx_ + i0]; q < start_[size_t(jj) * nx_ + i1 + 1]; ++q) {
+                        if (ids_[q] == a) continue;
+                        Point o = centroid_[ids_[q]];
+                        best = std::min(best, (o.x - p.x) * (o.x - p.x) + (o.y - p.y) * (o.y - p.y));
+                    }
+                area_[a] = float(best);
+            }
+        }
+}
+
 void TriangleGrid::build(const Polygon& polygon, const std::vector<Triangle>& triangles) {
     const auto& v = polygon.vertices;
     const size_t n = triangles.size();
     centroid_.assign(n, Point{0, 0});
     area_.assign(n, 0.f);
-    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     for (size_t t = 0; t < n; ++t) {
         const Triangle& tri = triangles[t];
         if (tri[0] >= v.size() || tri[1] >= v.size() || tri[2] >= v.size()) continue;
         Point a = v[tri[0]], b = v[tri[1]], c = v[tri[2]];
         centroid_[t] = {(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3};
         area_[t] = float(std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2);
-        if (!std::isfinite(centroid_[t].x) || !std::isfinite(centroid_[t].y)) continue;
-        x0 = std::min(x0, centroid_[t].x), x1 = std::max(x1, centroid_[t].x);
-        y0 = std::min(y0, centroid_[t].y), y1 = std::max(y1, centroid_[t].y);
+    }
+    bucket(32);
+}
+
+void TriangleGrid::bucket(double perCell) {
+    const size_t n = centroid_.size();
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    for (Point c : centroid_) {
+        if (!std::isfinite(c.x) || !std::isfinite(c.y)) continue;
+        x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
     }
     if (!(x0 <= x1)) x0 = x1 = y0 = y1 = 0;
-    // About 32 triangles a cell: cheap to count, and a zoomed-in view visits few cells.
-    int side = std::clamp(int(std::sqrt(double(n) / 32)), 1, 512);
+    // About perCell items a cell: cheap to count, and a zoomed-in view visits few cells.
+    int side = std::clamp(int(std::sqrt(double(n) / perCell)), 1, 512);
     x0_ = x0, y0_ = y0;
     cell_ = std::max({(x1 - x0) / side, (y1 - y0) / side, 1e-300});
     nx_ = std::max(1, int(std::ceil((x1 - x0) / cell_)));

@@ -50,17 +50,27 @@ CanvasGeometry buildCanvasGeometry(const Model& model);
 struct CanvasOverlay {
     std::vector<SegmentVertex> lines;     // in buildScene's order
     std::vector<MarkerVertex> markers;    // in buildScene's order
+    size_t gorgeMarkers = 0;              // markers [0, gorgeMarkers): pending/held rings (thin)
     std::vector<Scene::Line> arrows;      // jump pointers: heads are drawn in screen space
     std::vector<Scene::Label> labels;     // L, R, NL, NR, pending/held gorges
 };
 // The per-step part of buildScene(model, options), as GPU vertices relative to `origin`.
 CanvasOverlay buildCanvasOverlay(const Model& model, const SceneOptions& options, Point origin);
 
+// At most one marker per `cell`-pixel square of a grid over the camera's viewport, so a dense
+// polygon reads as a shape, not a smear: in each cell the first marker in list order wins
+// (callers list the important ones first), so the choice depends on the camera alone.
+// Markers more than a cell outside the viewport are dropped. Positions are relative to `origin`.
+std::vector<MarkerVertex> thinMarkers(const std::vector<MarkerVertex>& markers, Point origin,
+                                      const Camera& camera, double cell);
+
 // Triangles bucketed by the grid cell of their centroid, so labels cost what is on screen,
-// not what the polygon holds.
+// not what the polygon holds. Vertices too (buildVertices): a vertex is its own "centroid"
+// and its "area" is the squared distance to its nearest neighbour, the room its label has.
 class TriangleGrid {
 public:
     void build(const Polygon& polygon, const std::vector<Triangle>& triangles);
+    void buildVertices(const Polygon& polygon);
     // Calls f(t) for every triangle t < count whose centroid lies in the world box, in cell
     // order; returns false (and calls nothing) if more than `cap` would be called.
     template <class F>
@@ -69,6 +79,7 @@ public:
     double area(uint32_t t) const { return area_[t]; }
 
 private:
+    void bucket(double perCell);  // counting sort of centroid_ into cells of ~perCell items
     bool cells(Point lo, Point hi, int& i0, int& j0, int& i1, int& j1) const;
     double x0_ = 0, y0_ = 0, cell_ = 1;
     int nx_ = 0, ny_ = 0;
@@ -96,5 +107,11 @@ bool TriangleGrid::forEach(Point lo, Point hi, uint32_t count, size_t cap, F f) 
             for (size_t k = 0, n = cut(i, j, b); k < n; ++k) f(b[k]);
     return true;
 }
+
+// The labels to draw: the first `count` items of `grid` in the camera's viewport whose screen
+// area is at least `minArea` px²; none when more than a screenful of them (4 per minArea of
+// viewport) would be candidates, so a zoomed-out million costs a few hundred cell lookups.
+std::vector<uint32_t> visibleLabels(const TriangleGrid& grid, const Camera& camera, uint32_t count,
+                                    double minArea);
 
 }  // namespace flood::view

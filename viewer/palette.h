@@ -26,10 +26,11 @@ constexpr Rgba kRight{60, 230, 90, 255};          // the Right end
 constexpr Rgba kNextLeft{255, 150, 230, 255};     // finger markers: lighter shades of L / R
 constexpr Rgba kNextRight{160, 255, 170, 255};
 constexpr Rgba kJump{200, 160, 255, 255};
-constexpr Rgba kBridge{255, 230, 120, 255};
+constexpr Rgba kBridge{0, 215, 175, 255};        // teal: far from the just-cut yellow
 constexpr Rgba kDormant{255, 255, 255, 255};
 constexpr Rgba kCulprit{255, 40, 40, 255};
 constexpr Rgba kHover{255, 255, 255, 255};
+constexpr Rgba kVertexNumber{200, 200, 200, 255};
 
 // Vertex classes of §3 (Fig. 1).
 constexpr Rgba kRegular{170, 170, 170, 255};

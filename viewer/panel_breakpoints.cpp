@@ -63,6 +63,8 @@ void drawBreakpoints(Ui& ui) {
         ImGui::SameLine(), ImGui::Checkbox("jump pointers", &o.jumps);
         ImGui::Checkbox("bridges", &o.bridges);
         ImGui::SameLine(), ImGui::Checkbox("pending/held gorges", &o.dormant);
+        ImGui::Checkbox("vertex numbers", &o.vertexNumbers);
+        ImGui::SameLine(), ImGui::Checkbox("current gorge only", &o.gorgeFocus);
     }
     ImGui::End();
 }

@@ -16,6 +16,10 @@ namespace flood::view {
 
 namespace {
 
+// Side of a cell of the marker thinning grid, in pixels before UI scale: nearly four radii
+// of a class dot, so where thinning bites the dots cover a quarter of the screen at most.
+constexpr double kMarkerCell = 16;
+
 void canvasInput(Ui& ui) {
     Model& m = ui.model;
     ImGuiIO& io = ImGui::GetIO();
@@ -86,6 +90,9 @@ void syncBuffers(Ui& ui) {
         cs.origin = g.origin;
         std::copy(g.bbox, g.bbox + 4, cs.bbox);
         cs.grid.build(m.polygon(), m.trace().triangles);
+        cs.vertexGrid.buildVertices(m.polygon());
+        cs.vertexMarkers = std::move(g.classes);
+        cs.vertexMarkers.insert(cs.vertexMarkers.end(), g.regular.begin(), g.regular.end());
         cs.generation = m.generation();
         cs.overlayStep = ~0u;
     }
@@ -96,32 +103,81 @@ void syncBuffers(Ui& ui) {
         ui.renderer.setOverlay(cs.overlay);
         cs.overlayStep = m.step();
         cs.overlayOptions = o;
+        cs.thinKey = {};
+    }
+    // Markers thinned to one per cell of a screen grid: redone when the camera moves.
+    const Camera& cam = m.camera;
+    const Rect& r = cam.viewport();
+    std::array<double, 8> key{cam.center().x, cam.center().y, cam.scale(), r.w, r.h, r.x, r.y,
+                              double(m.step())};
+    if (key != cs.thinKey) {
+        cs.thinKey = key;
+        const double cell = kMarkerCell * ui.scale;
+        const auto& all = cs.overlay.markers;
+        std::vector<MarkerVertex> gorges(all.begin(), all.begin() + cs.overlay.gorgeMarkers);
+        std::vector<MarkerVertex> overlay = thinMarkers(gorges, cs.origin, cam, cell);
+        overlay.insert(overlay.end(), all.begin() + cs.overlay.gorgeMarkers, all.end());
+        ui.renderer.setMarkers(thinMarkers(cs.vertexMarkers, cs.origin, cam, cell), overlay);
     }
 }
 
-// Triangle numbers, only when few enough are on screen to read: the grid counts the cut
-// triangles in view first, so a zoomed-out million costs a few hundred cell lookups.
+// Triangle numbers, only when few enough are on screen to read (visibleLabels).
 void triangleLabels(Ui& ui, ImDrawList* dl) {
     const Model& m = ui.model;
     const Camera& cam = m.camera;
-    const Rect& area = ui.layout.canvas;
     const float s = ui.scale;
-    const double minArea = 700 * s * s;  // px², about four times a label's own footprint
-    Point a = cam.toWorld({area.x, area.y + area.h}), b = cam.toWorld({area.x + area.w, area.y});
-    size_t cap = size_t(4 * area.w * area.h / minArea) + 16;
     uint32_t n = std::min<uint32_t>(m.state().triangleCount, uint32_t(m.trace().triangles.size()));
     const Event* ev = m.currentEvent();
     uint32_t curFirst = ev ? ev->firstTriangle : n;
-    double px2 = cam.scale() * cam.scale();
     char text[16];
-    ui.canvas.grid.forEach(a, b, n, cap, [&](uint32_t t) {
-        if (ui.canvas.grid.area(t) * px2 < minArea) return;
+    // px², about four times a label's own footprint
+    for (uint32_t t : visibleLabels(ui.canvas.grid, cam, n, 700 * s * s)) {
         Vec2 c = cam.toScreen(ui.canvas.grid.centroid(t));
         std::snprintf(text, sizeof text, "%u", t);
         ImVec2 size = ImGui::CalcTextSize(text);
         Rgba color = t >= curFirst ? Rgba{0, 0, 0, 255} : Rgba{230, 240, 255, 255};
         dl->AddText(ImVec2(float(c.x) - size.x / 2, float(c.y) - size.y / 2), toImU32(color), text);
-    });
+    }
+}
+
+// Vertex numbers beside their vertex, through the same culling: a vertex's room is the
+// distance to its nearest neighbour, which must be longer on screen than a six-digit label.
+void vertexLabels(Ui& ui, ImDrawList* dl) {
+    const Model& m = ui.model;
+    const Camera& cam = m.camera;
+    const float s = ui.scale;
+    const double room = 44 * s;
+    char text[16];
+    for (uint32_t i : visibleLabels(ui.canvas.vertexGrid, cam, uint32_t(m.polygon().vertices.size()),
+                                    room * room)) {
+        Vec2 c = cam.toScreen(m.polygon().vertices[i]);
+        std::snprintf(text, sizeof text, "%u", i);
+        dl->AddText(ImVec2(float(c.x + 5 * s), float(c.y - 16 * s)), toImU32(palette::kVertexNumber), text);
+    }
+}
+
+// "Current gorge only": everything outside the active gorge's box dimmed like the error view.
+void gorgeFocus(Ui& ui) {
+    const Model& m = ui.model;
+    const Rect& area = ui.layout.canvas;
+    Point lo, hi;
+    if (!activeGorgeBox(m, lo, hi)) return;
+    const float pad = 12 * ui.scale;
+    Vec2 a = m.camera.toScreen({lo.x, hi.y}), b = m.camera.toScreen({hi.x, lo.y});
+    double x0 = std::clamp(a.x - pad, area.x, area.x + area.w), x1 = std::clamp(b.x + pad, area.x, area.x + area.w);
+    double y0 = std::clamp(a.y - pad, area.y, area.y + area.h), y1 = std::clamp(b.y + pad, area.y, area.y + area.h);
+    Rgba dim = palette::kBackground;
+    dim.a = 200;
+    auto rect = [&](double l, double t, double r, double btm) {
+        if (r <= l || btm <= t) return;
+        ui.renderer.addTriangle(Layer::Lines, {l, t}, {r, t}, {r, btm}, dim);
+        ui.renderer.addTriangle(Layer::Lines, {l, t}, {r, btm}, {l, btm}, dim);
+    };
+    double L = area.x, T = area.y, R = area.x + area.w, B = area.y + area.h;
+    rect(L, T, R, y0);    // above
+    rect(L, y1, R, B);    // below
+    rect(L, y0, x0, y1);  // left
+    rect(x1, y0, R, y1);  // right
 }
 
 // The error view: the canvas dimmed, the culprit edges thick, the crossing point ringed and
@@ -261,7 +317,6 @@ void drawCanvas(Ui& ui) {
     w.edgeEnd = o.triangleEdges && sparse(m.trace().triangles.size(), 40) ? n : 0;
     w.bridgeCount = o.bridges ? uint32_t(m.state().bridges.size()) : 0;
     w.classes = o.vertexClasses;
-    w.regular = o.vertexClasses && sparse(poly.vertices.size(), 100);
     w.thinBoundary = !sparse(poly.vertices.size(), 16);
     w.uiScale = s;
 
@@ -282,7 +337,9 @@ void drawCanvas(Ui& ui) {
     dl->PushClipRect(ImVec2(float(area.x), float(area.y)),
                      ImVec2(float(area.x + area.w), float(area.y + area.h)), true);
     if (m.errorView) errorOverlay(ui, dl);
+    else if (o.gorgeFocus) gorgeFocus(ui);
     if (o.triangleNumbers && !m.errorView) triangleLabels(ui, dl);
+    if (o.vertexNumbers && !m.errorView) vertexLabels(ui, dl);
     // Gorge labels fold away when hundreds are on screen; finger labels always show.
     size_t crowd = 0;
     for (const auto& l : cs.overlay.labels) crowd += l.folds && area.contains(cam.toScreen(l.p));

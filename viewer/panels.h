@@ -25,6 +25,9 @@ struct CanvasState {
     Point origin;
     float bbox[4] = {0, 0, 0, 0};  // of the polygon, minus the origin
     TriangleGrid grid;  // triangle labels by cell
+    TriangleGrid vertexGrid;  // vertex labels by cell
+    std::vector<MarkerVertex> vertexMarkers;  // classes first, then regular: thinned per camera
+    std::array<double, 8> thinKey{};  // camera centre x, y, scale, viewport w, h, x, y, step
     CanvasOverlay overlay;
     WorldView view;     // what Renderer::render draws this frame
     // Hover picking is a scan of the polygon: redo it only when something moved.

@@ -156,7 +156,7 @@ bool Renderer::init(std::string* error) {
         glBindBuffer(GL_ARRAY_BUFFER, buf_[b]);
         segmentAttributes();
     }
-    for (Buffer b : {Classes, Regular, OverlayMarkers}) {
+    for (Buffer b : {Classes, OverlayMarkers}) {
         glBindVertexArray(wvao_[b]);
         glBindBuffer(GL_ARRAY_BUFFER, buf_[b]);
         markerAttributes();
@@ -182,8 +182,6 @@ void Renderer::setGeometry(const CanvasGeometry& g) {
     put(Cover, GL_ARRAY_BUFFER, cover, g.fans.empty() ? 0 : 6);
     put(Boundary, GL_ARRAY_BUFFER, g.boundary, g.boundary.size());
     put(Bridges, GL_ARRAY_BUFFER, g.bridges, g.bridges.size());
-    put(Classes, GL_ARRAY_BUFFER, g.classes, g.classes.size());
-    put(Regular, GL_ARRAY_BUFFER, g.regular, g.regular.size());
     put(BoundaryEdges, GL_ELEMENT_ARRAY_BUFFER, g.boundaryEdges, g.boundaryEdges.size());
     dryIsUncut_ = g.dryIsUncut;
     glBindVertexArray(0);
@@ -194,8 +192,16 @@ void Renderer::setOverlay(const CanvasOverlay& o) {
     if (!screen_.id) return;
     upload(GL_ARRAY_BUFFER, buf_[OverlayLines], o.lines.data(), o.lines.size() * sizeof(o.lines[0]));
     count_[OverlayLines] = o.lines.size();
-    upload(GL_ARRAY_BUFFER, buf_[OverlayMarkers], o.markers.data(), o.markers.size() * sizeof(o.markers[0]));
-    count_[OverlayMarkers] = o.markers.size();
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void Renderer::setMarkers(const std::vector<MarkerVertex>& vertices,
+                          const std::vector<MarkerVertex>& overlay) {
+    if (!screen_.id) return;
+    upload(GL_ARRAY_BUFFER, buf_[Classes], vertices.data(), vertices.size() * sizeof(vertices[0]));
+    count_[Classes] = vertices.size();
+    upload(GL_ARRAY_BUFFER, buf_[OverlayMarkers], overlay.data(), overlay.size() * sizeof(overlay[0]));
+    count_[OverlayMarkers] = overlay.size();
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
@@ -322,7 +328,6 @@ void Renderer::drawWorld(const WorldView& v, Vec2 windowSize, float pixelRatio) 
     useWorld(marker_, v, windowSize);
     glUniform1f(marker_.pixelRatio, pixelRatio);
     glEnable(GL_PROGRAM_POINT_SIZE);
-    if (v.regular) markers(Regular);
     if (v.classes) markers(Classes);
     markers(OverlayMarkers);
     glDisable(GL_PROGRAM_POINT_SIZE);

@@ -27,8 +27,7 @@ struct WorldView {
     uint32_t waterEnd = 0, currentEnd = 0;  // triangles [0, waterEnd) flooded, then current
     uint32_t edgeEnd = 0;                   // triangles whose edges are drawn
     uint32_t bridgeCount = 0;               // a prefix of CanvasGeometry::bridges
-    bool classes = true;                    // bottom, sag, top, ceiling markers
-    bool regular = true;                    // markers of the other vertices
+    bool classes = true;                    // vertex markers (as thinned by setMarkers)
     bool thinBoundary = false;              // 1-pixel boundary (dense: cheaper, same look)
     float uiScale = 1;
 };
@@ -46,7 +45,9 @@ public:
 
     // World-space buffers: the trace's once when it is opened, the overlay when the step changes.
     void setGeometry(const CanvasGeometry& g);
-    void setOverlay(const CanvasOverlay& o);
+    void setOverlay(const CanvasOverlay& o);  // its lines; the markers come from setMarkers
+    // The markers thinned for the current camera (thinMarkers): the vertices' and the overlay's.
+    void setMarkers(const std::vector<MarkerVertex>& vertices, const std::vector<MarkerVertex>& overlay);
 
     void clear();  // empties every screen-space layer; call once per frame before adding
     void addTriangle(Layer layer, Vec2 a, Vec2 b, Vec2 c, Rgba color);

@@ -52,6 +52,23 @@ Rgba vertexClassColor(VertexClass c) {
     }
 }
 
+bool activeGorgeBox(const Model& model, Point& lo, Point& hi) {
+    const Polygon& poly = model.polygon();
+    const ReplayState& s = model.state();
+    lo = {INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY};
+    auto add = [&](Point p) {
+        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
+    };
+    for (Index i : s.chain)
+        if (valid(poly, i)) add(poly.vertices[i]);
+    const Fingers& f = s.fingers;
+    for (Index i : {f.left, f.right, f.nextLeft, f.nextRight})
+        if (valid(poly, i)) add(poly.vertices[i]);
+    Point a, b;
+    if (waterLevel(poly, s, a, b)) add(a), add(b);
+    return lo.x <= hi.x && lo.y <= hi.y;
+}
+
 Scene buildScene(const Model& model, const SceneOptions& o) {
     Scene sc;
     const Polygon& poly = model.polygon();
@@ -105,7 +122,7 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
                     sc.lines.push_back({v[g.chain[i]], v[g.chain[i + 1]], palette::kDormant, 1.5f});
             Index anchor = valid(poly, g.top) ? g.top : (g.chain.empty() ? kNone : g.chain[0]);
             if (valid(poly, anchor)) {
-                sc.markers.push_back({v[anchor], palette::kDormant, 9, Scene::Shape::Ring});
+                sc.markers.push_back({v[anchor], palette::kDormant, 9, Scene::Shape::Ring, true});
                 Scene::Label l{v[anchor], (g.held ? "held " : "pending ") + std::to_string(g.id),
                                palette::kDormant, 10, 10};
                 l.folds = true;
@@ -128,7 +145,8 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
     if (o.vertexClasses && all)
         for (Index i = 0; i < v.size() && i < model.classes().size(); ++i) {
             VertexClass c = model.classes()[i];
-            sc.markers.push_back({v[i], vertexClassColor(c), c == VertexClass::Regular ? 2.5f : 4.5f});
+            sc.markers.push_back({v[i], vertexClassColor(c), c == VertexClass::Regular ? 2.5f : 4.5f,
+                                  Scene::Shape::Disc, true});
         }
 
     for (Index i : model.offenders()) {

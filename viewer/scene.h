@@ -26,6 +26,7 @@ struct Scene {
         Rgba color;
         float radius = 3;  // screen pixels (before UI scale)
         Shape shape = Shape::Disc;
+        bool thin = false;  // one of many alike (vertex classes, gorges): thinned by screen density
     };
     struct Label {
         Point p;
@@ -53,6 +54,8 @@ struct SceneOptions {
     bool jumps = true;
     bool bridges = true;
     bool dormant = true;
+    bool vertexNumbers = true;
+    bool gorgeFocus = false;  // "current gorge only": dim everything outside the active gorge
     // Only what changes with the step: no rings, triangles, boundary, bridges or vertex
     // classes (the canvas keeps those in GPU buffers, see canvas_geometry.h).
     bool perStepOnly = false;
@@ -60,6 +63,10 @@ struct SceneOptions {
 
 Scene buildScene(const Model& model, const SceneOptions& options = {});
 Rgba vertexClassColor(VertexClass c);  // the legend's colours
+
+// The world box of the active gorge: its chain, the finger edges and the water level. False
+// when no gorge is active (before the start, after the end).
+bool activeGorgeBox(const Model& model, Point& lo, Point& hi);
 
 // Writes the scene as a standalone SVG of the given pixel width.
 void writeSceneSvg(std::ostream& out, const Scene& scene, const Polygon& polygon, int width);

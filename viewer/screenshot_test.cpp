@@ -6,6 +6,7 @@
 // flood-order triangles, which must shrink). Exit 77 (skipped) without a display, except in CI.
 #include <stb_image.h>  // implementation lives in Debian's libstb
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -137,6 +138,58 @@ int checkShot(const Model& model, const Layout& layout, const Image& img, bool b
     return failures;
 }
 
+// A 10^5-vertex face (`flood generate circle-jagged 100000`: spikes alternating between radii
+// 0.2-0.7 and 0.8-1 around the origin) must read as a shape at the fit: the disc inside radius
+// 0.2 is dry land, the plane beyond radius 1 background, and the spiked band mostly not
+// vertex-class dots (unthinned, they paved it). Samples on a pixel grid, classified by radius.
+int checkDenseFace(const std::string& dir, int W, int H, const Layout& layout) {
+    std::string input = dir + "/screenshot-test-dense.json";
+    std::string gen = std::string("'") + FLOOD_CLI + "' generate circle-jagged 100000 -o '" + input + "'";
+    if (std::system(gen.c_str()) != 0) {
+        std::fprintf(stderr, "FAIL: %s\n", gen.c_str());
+        return 1;
+    }
+    Model model;
+    model.open(input);
+    model.camera.fit(model.polygon(), layout.canvas);
+    Image img;
+    if (!shoot(input, "--step 0", dir + "/screenshot-test-dense.png", W, H, img)) return 1;
+    const Rgba dots[] = {palette::kRegular, palette::kBottom, palette::kSag, palette::kTop, palette::kCeiling};
+    int inner = 0, innerLand = 0, band = 0, bandDots = 0, outer = 0, outerBackground = 0;
+    const Rect& c = layout.canvas;
+    for (double y = c.y + 60; y < c.y + c.h - 4; y += 3)  // below the find box
+        for (double x = c.x + 4; x < c.x + c.w - 4; x += 3) {
+            Point w = model.camera.toWorld({x, y});
+            double r = std::hypot(w.x, w.y);
+            Rgba px = img.at(int(x), int(y));
+            if (r < 0.15) {
+                ++inner, innerLand += close(px, palette::kPolygonFill, 6);
+            } else if ((r > 0.25 && r < 0.65) || (r > 0.82 && r < 0.97)) {
+                ++band;
+                for (Rgba d : dots) bandDots += close(px, d, 6);
+            } else if (r > 1.1) {
+                ++outer, outerBackground += close(px, palette::kBackground, 6);
+            }
+        }
+    stbi_image_free(img.px);
+    std::printf("dense face: land %d/%d inside, dots %d/%d in the band, background %d/%d outside\n",
+                innerLand, inner, bandDots, band, outerBackground, outer);
+    int failures = 0;
+    if (inner < 50 || innerLand < 0.95 * inner) {
+        std::fprintf(stderr, "FAIL: dense face: the inner disc is not dry land\n");
+        ++failures;
+    }
+    if (band < 500 || bandDots > 0.4 * band) {
+        std::fprintf(stderr, "FAIL: dense face: vertex dots pave the spiked band (a smear)\n");
+        ++failures;
+    }
+    if (outer < 500 || outerBackground < 0.95 * outer) {
+        std::fprintf(stderr, "FAIL: dense face: the outside is not background\n");
+        ++failures;
+    }
+    return failures;
+}
+
 }  // namespace
 
 int main() {
@@ -228,7 +281,9 @@ int main() {
         return 1;
     stbi_image_free(none.px);
     if (failures) return 1;
+    if (int dense = checkDenseFace(dir, W, H, layout); dense != 0) return dense;
     std::printf("ok: step %u, background, water, dry land and Left marker where expected, also "
-                "after stepping back from the end; error view: crossing and culprit edge in the error colour\n", step);
+                "after stepping back from the end; error view: crossing and culprit edge in the error colour; "
+                "a 10^5-vertex face reads as a shape\n", step);
     return 0;
 }

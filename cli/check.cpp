@@ -206,6 +206,9 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
 bool polygonFile(const fs::path& p) {
     std::string ext = p.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+#ifdef FLOOD_GDAL
+    if (gdal::gisFile(p.string())) return true;
+#endif
     return ext == ".json" || ext == ".geojson" || ext == ".wkt";
 }
 

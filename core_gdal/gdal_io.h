@@ -22,6 +22,10 @@ struct Selection {
 // file is not stdin and not .json, .geojson or .wkt (those keep their exact messages).
 bool handles(const std::string& path, const Selection& s);
 
+// A file a folder listing offers as a GIS dataset (flood check DIR, the viewer's browser):
+// .shp, .gpkg, .fgb, .geojsonl, .geojsons, .gml, .kml, .sqlite, .tab, .mif.
+bool gisFile(const std::string& path);
+
 // One entry per polygonal feature: index is its position in the layer, id its FID, name its
 // "name" field. Non-polygonal features are skipped with a warning in `skipped`; a dataset that
 // cannot be opened or filtered is one whole-file Malformed entry naming the file.

@@ -4,9 +4,12 @@
 #include <cpl_error.h>
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
+#include <sys/stat.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <memory>
 #include <mutex>
 
@@ -101,7 +104,15 @@ struct Reader {
         CPLErrorReset();
         DatasetPtr ds(static_cast<GDALDataset*>(
             GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
-        if (!ds) return malformed("not a vector dataset GDAL can open: " + lastError());
+        if (!ds) {
+            // GDAL says nothing of a missing file; GDAL's own names (/vsizip/..., PG:...) are
+            // not files, so only a plain path is checked.
+            struct stat st;
+            if (path.rfind("/vsi", 0) != 0 && path.find(':') == std::string::npos &&
+                ::stat(path.c_str(), &st) != 0)
+                return malformed(std::string("cannot open file: ") + std::strerror(errno));
+            return malformed("not a vector dataset GDAL can open: " + lastError());
+        }
         OGRLayer* layer = nullptr;
         if (!s.layer.empty()) {
             layer = ds->GetLayerByName(s.layer.c_str());
@@ -168,13 +179,27 @@ struct Reader {
 
 }  // namespace
 
-bool handles(const std::string& path, const Selection& s) {
-    if (s.any()) return true;
-    if (path == "-") return false;
+namespace {
+std::string extension(const std::string& path) {
     size_t dot = path.find_last_of("./");
     std::string ext = dot == std::string::npos || path[dot] == '/' ? "" : path.substr(dot + 1);
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+}  // namespace
+
+bool handles(const std::string& path, const Selection& s) {
+    if (s.any()) return true;
+    if (path == "-") return false;
+    std::string ext = extension(path);
     return !ext.empty() && ext != "json" && ext != "geojson" && ext != "wkt";
+}
+
+bool gisFile(const std::string& path) {
+    static const char* const known[] = {"shp", "gpkg", "fgb", "geojsonl", "geojsons",
+                                        "gml", "kml", "sqlite", "tab", "mif"};
+    std::string ext = extension(path);
+    return std::find(std::begin(known), std::end(known), ext) != std::end(known);
 }
 
 DatasetRead readFeatures(const std::string& path, const Selection& s) {

@@ -5,6 +5,7 @@
 #include <ogrsf_frmts.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
@@ -19,6 +20,7 @@ Diagnostic writeTriangles(const std::string& path, const std::string& format, co
     const bool gpkg = format == "gpkg";
     auto failed = [&](const std::string& why) {
         std::string m = CPLGetLastErrorMsg();
+        std::replace(m.begin(), m.end(), '\n', ' ');  // one line, as every diagnostic
         return Diagnostic{Status::WriteFailed,
                           path + ": cannot write: " + why + (m.empty() ? "" : ": " + m)};
     };

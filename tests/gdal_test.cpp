@@ -40,6 +40,7 @@ protected:
         auto add = [&](const std::string& name) {
             std::ifstream in(sourcePath("polygons/" + name + ".json"));
             json rings = json::parse(in);
+            for (json& ring : rings) ring.push_back(ring[0]);  // GeoJSON rings are closed
             features.push_back({{"type", "Feature"},
                                 {"properties", {{"name", name}}},
                                 {"geometry", {{"type", "Polygon"}, {"coordinates", rings}}}});
@@ -123,6 +124,10 @@ TEST_F(Gdal, LayerFeatureAndWhereChoose) {
     d = gdal::readFeatures(two, {"first", 2, "name = 'comb'"});  // both must hold
     EXPECT_EQ(d.features[0].read.diagnostic.status, Status::Malformed);
     EXPECT_NE(d.features[0].read.diagnostic.message.find("no polygon found"), std::string::npos);
+    RunResult missing = runCli("check " + path("absent.gpkg"));
+    EXPECT_EQ(missing.code, 3);
+    EXPECT_NE(missing.out.find("cannot open file: No such file or directory"), std::string::npos)
+        << missing.out;
     // Through the command line: the feature chosen is the one triangulated.
     RunResult r = runCli("verify " + two + " --layer first --where \"name = 'comb'\"");
     EXPECT_EQ(r.code, 0) << r.out;
@@ -149,6 +154,22 @@ TEST_F(Gdal, CheckReportsVerdictsWithFidsAndNames) {
     r = runCli("check " + path("source.gpkg") + " --where \"name = 'invalid/hole-outside'\"");
     EXPECT_EQ(r.code, 4);
     EXPECT_NE(r.out.find("source.gpkg  0        6        8         invalid"), std::string::npos) << r.out;
+}
+
+// A folder's GIS datasets are found with its GeoJSON: every .fgb, .shp, ... is a file checked.
+TEST_F(Gdal, CheckFindsGisFilesInFolders) {
+    const std::string folder = path("folder");
+    fs::create_directories(folder + "/deeper");
+    shell("ogr2ogr -f FlatGeobuf " + folder + "/a.fgb " + path("source.geojson"));
+    shell("ogr2ogr -f 'ESRI Shapefile' " + folder + "/deeper/b.shp " + path("source.geojson"));
+    RunResult r = runCli("check --json " + folder + " 2>/dev/null");
+    EXPECT_EQ(r.code, 4) << r.out;
+    json s = json::parse(r.out)["summary"];
+    EXPECT_EQ(s["files"], 2);  // the Shapefile's .dbf, .shx, .prj are not datasets of their own
+    EXPECT_EQ(s["features"], 2 * (kValid.size() + kInvalid.size()));
+    // A Shapefile keeps no hole-to-outer link: OGR reassembles rings by containment, so the
+    // hole outside its outer ring comes back as a second part, and that feature is valid.
+    EXPECT_EQ(s["verdicts"]["invalid"], 2 * kInvalid.size() - 1);
 }
 
 double ringArea(const std::vector<Point>& v) {
@@ -191,6 +212,15 @@ TEST_F(Gdal, TrianglesWrittenAsGeoPackageAndFlatGeobufReadBack) {
             EXPECT_EQ(sum, area);
         }
     }
+    // A folder that does not exist: exit 8, the reason on one line, nothing left behind.
+    for (const std::string ext : {"gpkg", "fgb"}) {
+        RunResult r = runCli("triangulate " + sourcePath("polygons/hole.json") + " -o " +
+                             path("missing/t." + ext));
+        EXPECT_EQ(r.code, 8) << r.out;
+        EXPECT_EQ(r.out.rfind("error: " + path("missing/t." + ext) + ": cannot write: ", 0), 0u) << r.out;
+        EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
+    }
+    EXPECT_FALSE(fs::exists(path("missing")));
     // ogrinfo, as a user would look: the layer and its count.
     std::string info = shell("ogrinfo -so " + path("comb-triangles.gpkg") + " triangles");
     EXPECT_NE(info.find("Feature Count: 16"), std::string::npos) << info;

@@ -156,6 +156,34 @@ TEST_F(Gdal, CheckReportsVerdictsWithFidsAndNames) {
     EXPECT_NE(r.out.find("source.gpkg  0        6        8         invalid"), std::string::npos) << r.out;
 }
 
+// A curve is linearised by OGR; a point feature is skipped with a warning, as GeoJSON's are.
+TEST_F(Gdal, CurvesAreLinearisedAndOtherGeometriesSkipped) {
+    GDALAllRegister();
+    const std::string file = path("curves.gpkg");
+    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GPKG");
+    GDALDataset* ds = driver->Create(file.c_str(), 0, 0, 0, GDT_Unknown, nullptr);
+    ASSERT_NE(ds, nullptr);
+    OGRLayer* layer = ds->CreateLayer("shapes", nullptr, wkbUnknown, nullptr);
+    for (const char* wkt : {"CURVEPOLYGON(CIRCULARSTRING(0 0,10 10,20 0,10 -10,0 0))", "POINT(1 2)"}) {
+        OGRGeometry* g = nullptr;
+        ASSERT_EQ(OGRGeometryFactory::createFromWkt(wkt, nullptr, &g), OGRERR_NONE);
+        OGRFeature* f = OGRFeature::CreateFeature(layer->GetLayerDefn());
+        f->SetGeometryDirectly(g);
+        ASSERT_EQ(layer->CreateFeature(f), OGRERR_NONE);
+        OGRFeature::DestroyFeature(f);
+    }
+    GDALClose(ds);
+    DatasetRead d = gdal::readFeatures(file, {});
+    ASSERT_EQ(d.features.size(), 1u);
+    ASSERT_TRUE(d.features[0].read.diagnostic.ok()) << d.features[0].read.diagnostic.message;
+    Polygon& p = d.features[0].read.polygon;
+    EXPECT_GT(p.vertices.size(), 16u);  // the circle as many segments
+    EXPECT_TRUE(validate(p, file).ok());
+    expectTriangulates(p, file);
+    ASSERT_EQ(d.skipped.size(), 1u);
+    EXPECT_EQ(d.skipped[0], file + ": feature 2: not polygonal (Point), skipped");
+}
+
 // A folder's GIS datasets are found with its GeoJSON: every .fgb, .shp, ... is a file checked.
 TEST_F(Gdal, CheckFindsGisFilesInFolders) {
     const std::string folder = path("folder");

@@ -35,6 +35,9 @@
 #include "io.h"
 #include "output.h"
 #include "shrink.h"
+#ifdef FLOOD_GDAL
+#include "gdal_io.h"
+#endif
 
 namespace flood::cli {
 namespace {
@@ -183,7 +186,8 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
         }
         // A whole file is copied at extraction (cannot be re-read from stdin: written anew).
         if (row.verdict != Verdict::Ok && !o.extractDir.empty())
-            row.repro = !f.wholeFile ? std::move(f.source)
+            // A GIS feature has no GeoJSON source: its polygon is written as read.
+            row.repro = !f.wholeFile ? (f.source.empty() && readable ? polygonJson(p) : std::move(f.source))
                         : row.file == "-" && readable ? polygonJson(p) : "";
     } catch (const std::bad_alloc&) {
         row.verdict = Verdict::Internal;
@@ -202,6 +206,9 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
 bool polygonFile(const fs::path& p) {
     std::string ext = p.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+#ifdef FLOOD_GDAL
+    if (gdal::gisFile(p.string())) return true;
+#endif
     return ext == ".json" || ext == ".geojson" || ext == ".wkt";
 }
 
@@ -266,6 +273,16 @@ private:
         size_t file, feature;
     };
 
+    // GIS datasets through GDAL (core_gdal/), the rest by the core's readers.
+    DatasetRead readDataset(const std::string& path) {
+#ifdef FLOOD_GDAL
+        const Selection& s = o_.selection;
+        gdal::Selection g{s.layer, s.feature, s.where};
+        if (gdal::handles(path, g)) return gdal::readFeatures(path, g);
+#endif
+        return readFeaturesFile(path, o_.maxInputBytes, !o_.extractDir.empty());
+    }
+
     void read(size_t i, std::vector<Job>& more) {
         File& f = files_[i];
         if (!f.error.empty()) {
@@ -274,7 +291,7 @@ private:
             f.features.push_back(std::move(failed));
         } else {
             try {
-                DatasetRead d = readFeaturesFile(f.path, o_.maxInputBytes, !o_.extractDir.empty());
+                DatasetRead d = readDataset(f.path);
                 f.features = std::move(d.features);
                 f.warnings = std::move(d.skipped);
             } catch (const std::bad_alloc&) {

@@ -7,6 +7,14 @@
 
 namespace flood::cli {
 
+// --layer, --feature, --where: which features of a GIS dataset are read (through GDAL).
+struct Selection {
+    std::string layer;
+    int64_t feature = -1;  // an FID, or -1 for all
+    std::string where;
+    bool any() const { return !layer.empty() || feature >= 0 || !where.empty(); }
+};
+
 struct CheckOptions {
     std::vector<std::string> inputs;  // files and folders ("-" is stdin)
     bool json = false;                // one JSON document instead of the table
@@ -14,6 +22,7 @@ struct CheckOptions {
     unsigned jobs = 1;                // worker threads
     uint64_t maxInputBytes = 0;       // per file, as --max-input-bytes
     bool validate = true;             // false: --no-validate, the machine diagnoses
+    Selection selection;              // GIS datasets only
 };
 
 // Returns the exit code: 0 when every feature passed, else the largest code of a failing

@@ -30,6 +30,9 @@
 #include "trace_io.h"
 #include "transcript.h"
 #include "verify.h"
+#ifdef FLOOD_GDAL
+#include "gdal_io.h"
+#endif
 
 namespace {
 
@@ -40,6 +43,18 @@ int code(Status s) { return int(s); }
 
 // --max-input-bytes of the subcommand that reads.
 uint64_t maxInputBytes = kDefaultMaxInputBytes;
+// --layer, --feature, --where of the subcommand that reads (GDAL datasets).
+cli::Selection selection;
+
+// GIS datasets go to GDAL (core_gdal/), everything else to the core's own readers: the
+// dispatch is here and in cli/check.cpp, so the core library never depends on GDAL.
+ReadResult readInput(const std::string& path) {
+#ifdef FLOOD_GDAL
+    gdal::Selection s{selection.layer, selection.feature, selection.where};
+    if (gdal::handles(path, s)) return gdal::readPolygon(path, s);
+#endif
+    return readPolygonFile(path, maxInputBytes);
+}
 
 // 1234567 -> "1,234,567".
 std::string grouped(size_t n) {
@@ -53,7 +68,7 @@ std::string grouped(size_t n) {
 // diagnoses invalid input (docs/ERRORS.md, forbidden transitions); the T-junctions the machine
 // needs are then found by findTouches(), which is safe on invalid input.
 Status prepare(const std::string& path, Polygon& polygon, bool check = true) {
-    ReadResult rr = readPolygonFile(path, maxInputBytes);
+    ReadResult rr = readInput(path);
     for (const std::string& w : rr.warnings) std::cerr << "warning: " << w << "\n";
     if (rr.warningsOmitted)
         std::cerr << "warning: " << (path == "-" ? "<stdin>" : path) << ": \u2026 and "
@@ -125,7 +140,23 @@ int cmdTriangulate(const std::string& in, const std::string& out, std::string fo
             std::string e = ext;
             return out.size() >= e.size() && out.compare(out.size() - e.size(), e.size(), e) == 0;
         };
-        format = ends(".svg") ? "svg" : ends(".obj") ? "obj" : "json";
+        format = ends(".svg") ? "svg" : ends(".obj") ? "obj" : ends(".gpkg") ? "gpkg"
+                 : ends(".fgb") ? "fgb" : "json";
+    }
+    if (format == "gpkg" || format == "fgb") {
+#ifdef FLOOD_GDAL
+        if (out == "-") {
+            std::cerr << "error: --format " << format << " needs a file: give -o FILE\n";
+            return code(Status::Usage);
+        }
+        Diagnostic w = gdal::writeTriangles(out, format, polygon, r.triangles);
+        if (!w.ok()) std::cerr << "error: " << w.message << "\n";
+        return code(w.status);
+#else
+        std::cerr << "error: --format " << format << " needs GDAL: this flood was built without "
+                  << "it (install libgdal-dev, reconfigure with -DFLOOD_GDAL=ON)\n";
+        return code(Status::Usage);
+#endif
     }
     Output o(out);
     if (format == "svg") writeSvg(o.stream(), polygon, r.triangles);
@@ -322,8 +353,9 @@ int run(int argc, char** argv) {
     auto* tri = app.add_subcommand("triangulate", "Triangulate a polygon and write the result");
     tri->add_option("IN", in, "Input polygon (GeoJSON, ring array or WKT; - for stdin)")->required();
     tri->add_option("-o,--output", out, "Output file (- for stdout, the default)");
-    tri->add_option("--format", format, "json, svg or obj (default: from the output extension, else json)")
-        ->check(CLI::IsMember({"json", "svg", "obj"}));
+    tri->add_option("--format", format, "json, svg, obj, or with GDAL gpkg (GeoPackage) or fgb (FlatGeobuf): a layer of "
+                   "triangle polygons (default: from the output extension, else json)")
+        ->check(CLI::IsMember({"json", "svg", "obj", "gpkg", "fgb"}));
     addUp(tri, up);
     addNoValidate(tri);
 
@@ -388,6 +420,17 @@ int run(int argc, char** argv) {
                         "1024-based)")
             ->transform(CLI::AsSizeValue(false))
             ->check(CLI::Range(uint64_t(1), UINT64_MAX));
+    for (CLI::App* cmd : {tri, trace, tr, ver, bench, shr, chk}) {
+        cmd->add_option("--layer", selection.layer, "GIS dataset (through GDAL): the layer to read "
+                                                    "(needed when there are several)")
+            ->type_name("NAME");
+        cmd->add_option("--feature", selection.feature, "GIS dataset: only the feature with this FID")
+            ->type_name("FID")
+            ->check(CLI::NonNegativeNumber);
+        cmd->add_option("--where", selection.where,
+                        "GIS dataset: only the features this OGR SQL filter keeps, e.g. \"name = 'x'\"")
+            ->type_name("FILTER");
+    }
 
     // CLI11 would say "A subcommand is required" for a misspelt one: name it and the choices.
     if (argc > 1 && argv[1][0] != '-') {
@@ -416,6 +459,13 @@ int run(int argc, char** argv) {
         app.exit(e);
         return code(Status::Usage);
     }
+#ifndef FLOOD_GDAL
+    if (selection.any()) {
+        std::cerr << "error: --layer, --feature and --where read GIS datasets through GDAL: this "
+                     "flood was built without it (install libgdal-dev, reconfigure)\n";
+        return code(Status::Usage);
+    }
+#endif
     // -o naming the input (shrink IN -o IN) would replace the very file being read.
     if ((tri->parsed() || trace->parsed() || shr->parsed()) && out != "-" &&
         cli::sameFile(in, out)) {
@@ -434,6 +484,7 @@ int run(int argc, char** argv) {
         if (chk->parsed()) {
             checkOptions.maxInputBytes = maxInputBytes;
             checkOptions.validate = !noValidate;
+            checkOptions.selection = selection;
             return cli::runCheck(checkOptions);
         }
     } catch (const std::exception& e) {

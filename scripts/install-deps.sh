@@ -8,6 +8,7 @@ packages=(
   nlohmann-json3-dev libcli11-dev libgmp-dev          # core + CLI
   libgtest-dev libbenchmark-dev                       # tests, benchmarks
   libgeos-dev                                         # GEOS, the validity oracle of tests/geos_diff_test.cpp
+  libgdal-dev gdal-bin                                # GIS formats through GDAL (core_gdal/, optional)
   libglfw3-dev libglm-dev libimgui-dev libstb-dev     # viewer
   python3-glad python3-jinja2                         # GL loader generated at build time
   xvfb xauth                                          # headless GUI tests

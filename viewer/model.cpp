@@ -20,6 +20,9 @@
 #include "predicates.h"
 #include "trace_io.h"
 #include "transcript.h"
+#ifdef FLOOD_GDAL
+#include "gdal_io.h"
+#endif
 
 #ifndef FLOOD_SOURCE_DIR
 #define FLOOD_SOURCE_DIR "."
@@ -405,6 +408,11 @@ void Model::open(const std::string& path) {
     const bool isTrace = isTracePath(path);
     try {
         if (isTrace) r.diagnostic = readTraceFile(path, t);
+#ifdef FLOOD_GDAL
+        // GIS datasets (Shapefile, GeoPackage, ...) through GDAL: all of the only layer's
+        // polygonal features as one polygon, as `flood triangulate FILE` reads them.
+        else if (gdal::handles(path, {})) r = gdal::readPolygon(path, {});
+#endif
         else r = readPolygonFile(path);
     } catch (const std::exception& ex) {
         r.diagnostic = {Status::Malformed, path + ": " + ex.what()};

@@ -9,6 +9,9 @@
 #include <filesystem>
 
 #include "panels.h"
+#ifdef FLOOD_GDAL
+#include "gdal_io.h"
+#endif
 
 namespace flood::view {
 
@@ -112,6 +115,9 @@ void drawOpen(Ui& ui) {
             std::string ext = e.path().extension().string();
             if (e.is_directory(ec)) dirs.push_back(name);
             else if (ext == ".json" || ext == ".wkt" || ext == ".jsonl" || ext == ".geojson") files.push_back(name);
+#ifdef FLOOD_GDAL
+            else if (gdal::gisFile(name)) files.push_back(name);  // opened through GDAL
+#endif
         }
         std::sort(dirs.begin(), dirs.end());
         std::sort(files.begin(), files.end());

@@ -35,13 +35,10 @@ struct CheckRun {
 CheckRun cli(const std::string& args) {
     fs::path err = fs::temp_directory_path() / ("flood-check-stderr-" + std::to_string(getpid()));
     std::string cmd = std::string(FLOOD_CLI) + " " + args + " 2>" + err.string();
+    RunResult run = runShell(cmd);
     CheckRun r;
-    FILE* p = popen(cmd.c_str(), "r");
-    if (!p) return r;
-    char buf[4096];
-    for (size_t k; (k = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, k);
-    int st = pclose(p);
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
+    r.code = run.code;
+    r.out = std::move(run.out);
     r.err = slurp(err);
     fs::remove(err);
     return r;

@@ -115,18 +115,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// Runs a shell command line as given (its own redirections: stdout is what is read).
-RunResult shell(const std::string& command) {
-    RunResult r;
-    FILE* p = popen(command.c_str(), "r");
-    if (!p) return r;
-    char buf[4096];
-    for (size_t k; (k = fread(buf, 1, sizeof buf, p)) > 0;) r.out.append(buf, k);
-    int st = pclose(p);
-    r.code = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-    return r;
-}
-
 std::vector<std::string> listing(const fs::path& d) {
     std::vector<std::string> names;
     for (auto& e : fs::directory_iterator(d)) names.push_back(e.path().filename().string());
@@ -169,13 +157,13 @@ TEST(Cli, StdoutThatCannotBeWrittenIsAnError) {
     for (std::string args : {"transcript " + hole, "transcript --narrate " + hole, "verify " + hole,
                              "bench --repeat 1 " + hole, "triangulate " + hole, "trace " + hole,
                              std::string("generate circle-jagged 100"), std::string("--help")}) {
-        RunResult r = shell(std::string(FLOOD_CLI) + " " + args + " 2>&1 >/dev/full");
+        RunResult r = runShell(std::string(FLOOD_CLI) + " " + args + " 2>&1 >/dev/full");
         EXPECT_EQ(r.code, 8) << args << ": " << r.out;
         EXPECT_TRUE(has(r.out, "error: cannot write standard output: No space left on device"))
             << args << ": " << r.out;
     }
     // A failing command keeps its own exit code and still reports the lost output.
-    RunResult bad = shell(std::string(FLOOD_CLI) + " verify " +
+    RunResult bad = runShell(std::string(FLOOD_CLI) + " verify " +
                           src("polygons/invalid/zero-area.json") + " 2>&1 >/dev/full");
     EXPECT_EQ(bad.code, 4) << bad.out;
 }
@@ -293,7 +281,7 @@ TEST(Cli, InputLimitsAndWhatTheInputIs) {
         EXPECT_TRUE(has(f.out, "holes.json: input is larger than the limit of 20 bytes (--max-input-bytes)"))
             << cmd << ": " << f.out;
     }
-    RunResult pipe = shell("yes '[' | head -c 100000 | " + std::string(FLOOD_CLI) +
+    RunResult pipe = runShell("yes '[' | head -c 100000 | " + std::string(FLOOD_CLI) +
                            " verify --max-input-bytes 1k - 2>&1");
     EXPECT_EQ(pipe.code, 3) << pipe.out;
     EXPECT_TRUE(has(pipe.out, "<stdin>: input is larger than the limit of 1024 bytes")) << pipe.out;

@@ -54,16 +54,19 @@ struct RunResult {
     int code = -1;
     std::string out;
 };
-inline RunResult runCli(const std::string& args) {
-    std::string cmd = std::string(FLOOD_CLI) + " " + args + " 2>&1";
+// Runs a shell command line as given (its own redirections: stdout is what is read).
+inline RunResult runShell(const std::string& command) {
     RunResult r;
-    FILE* p = popen(cmd.c_str(), "r");
+    FILE* p = popen(command.c_str(), "r");
     if (!p) return r;
     std::array<char, 4096> buf;
     for (size_t n; (n = fread(buf.data(), 1, buf.size(), p)) > 0;) r.out.append(buf.data(), n);
     int status = pclose(p);
     r.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
+}
+inline RunResult runCli(const std::string& args) {
+    return runShell(std::string(FLOOD_CLI) + " " + args + " 2>&1");
 }
 
 // Reads a polygon, and validates it as the CLI does, so a valid one carries its T-junctions

@@ -1183,4 +1183,12 @@ void FeatureScan::wait() {
     if (thread_.joinable()) thread_.join();
 }
 
+const StateTable& Model::stateTable() const {
+    if (stateTableFor_ != generation_) {
+        stateTable_ = buildStateTable(polygon(), trace().events);
+        stateTableFor_ = generation_;
+    }
+    return stateTable_;
+}
+
 }  // namespace flood::view

@@ -21,6 +21,7 @@
 #include "polygon.h"
 #include "replay.h"
 #include "shrink.h"
+#include "state_table.h"
 #include "status.h"
 #include "vertex_class.h"
 
@@ -294,6 +295,8 @@ public:
 
     const std::string& path() const { return path_; }
     uint64_t generation() const { return generation_; }  // changes with every open
+    // The Fig. 10 state table of the loaded trace, built on first use after each open.
+    const StateTable& stateTable() const;
     const Trace& trace() const { return *trace_; }
     const Polygon& polygon() const { return trace_->polygon; }
     const Diagnostic& inputDiagnostic() const { return input_; }
@@ -420,6 +423,8 @@ private:
     uint32_t step_ = 0;
     double playClock_ = 0;
     uint64_t generation_ = 0;
+    mutable StateTable stateTable_;               // cache of stateTable()
+    mutable uint64_t stateTableFor_ = ~0ull;      // the generation it was built for
 };
 
 // Where to look for polygons: FLOOD_SOURCE_DIR/polygons unless overridden.

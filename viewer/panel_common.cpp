@@ -11,6 +11,16 @@ void placeWindow(const Rect& r) {
     ImGui::SetNextWindowSize(ImVec2(float(r.w), float(r.h)), ImGuiCond_Always);
 }
 
+bool beginFloating(Ui& ui, const char* title, bool* open, float w, float h, float dx, float dy) {
+    ImGui::SetNextWindowSize(ImVec2(w * ui.scale, h * ui.scale), ImGuiCond_FirstUseEver);
+    ImGui::SetNextWindowPos(ImVec2(float(ui.layout.canvas.x + dx * ui.scale),
+                                   float(ui.layout.canvas.y + dy * ui.scale)),
+                            ImGuiCond_FirstUseEver);
+    if (ImGui::Begin(title, open)) return true;
+    ImGui::End();
+    return false;
+}
+
 ImVec4 toImVec4(Rgba c) { return ImVec4(c.r / 255.f, c.g / 255.f, c.b / 255.f, c.a / 255.f); }
 unsigned toImU32(Rgba c) { return IM_COL32(c.r, c.g, c.b, c.a); }
 

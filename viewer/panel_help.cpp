@@ -41,14 +41,7 @@ void handleShortcuts(Ui& ui) {
 
 void drawHelp(Ui& ui) {
     if (!ui.showHelp) return;
-    ImGui::SetNextWindowSize(ImVec2(520 * ui.scale, 480 * ui.scale), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowPos(ImVec2(float(ui.layout.canvas.x + 40 * ui.scale),
-                                   float(ui.layout.canvas.y + 40 * ui.scale)),
-                            ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Help", &ui.showHelp)) {
-        ImGui::End();
-        return;
-    }
+    if (!beginFloating(ui, "Help", &ui.showHelp, 520, 480, 40, 40)) return;
     static const char* const keys[][2] = {
         {"Space", "play / pause"},
         {"Left / Right", "one step back / forward"},

@@ -18,14 +18,7 @@ namespace flood::view {
 void drawOpen(Ui& ui) {
     if (!ui.showOpen) return;
     Model& m = ui.model;
-    ImGui::SetNextWindowSize(ImVec2(460 * ui.scale, 420 * ui.scale), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowPos(ImVec2(float(ui.layout.canvas.x + 20 * ui.scale),
-                                   float(ui.layout.canvas.y + 20 * ui.scale)),
-                            ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("Open polygon", &ui.showOpen)) {
-        ImGui::End();
-        return;
-    }
+    if (!beginFloating(ui, "Open polygon", &ui.showOpen, 460, 420, 20, 20)) return;
     static char path[1024] = "";
     bool go = ImGui::InputText("path", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();

@@ -29,21 +29,8 @@ const char* columnLetter(Action a) {
 void drawStateTable(Ui& ui) {
     if (!ui.showStateTable) return;
     Model& m = ui.model;
-    ImGui::SetNextWindowSize(ImVec2(520 * ui.scale, 320 * ui.scale), ImGuiCond_FirstUseEver);
-    ImGui::SetNextWindowPos(ImVec2(float(ui.layout.canvas.x + 40 * ui.scale),
-                                   float(ui.layout.canvas.y + 40 * ui.scale)),
-                            ImGuiCond_FirstUseEver);
-    if (!ImGui::Begin("State table (Fig. 10)", &ui.showStateTable)) {
-        ImGui::End();
-        return;
-    }
-    // One scan of the log per opened trace.
-    static uint64_t builtFor = ~0ull;
-    static StateTable table;
-    if (builtFor != m.generation()) {
-        table = buildStateTable(m.polygon(), m.trace().events);
-        builtFor = m.generation();
-    }
+    if (!beginFloating(ui, "State table (Fig. 10)", &ui.showStateTable, 520, 320, 40, 40)) return;
+    const StateTable& table = m.stateTable();  // one scan of the log per opened trace
     const StateCell* cur = m.step() == 0 || m.step() > table.cellOf.size() ? nullptr
                                                                            : &table.cellOf[m.step() - 1];
     ImGui::TextDisabled("C: the end of the chain that acts; Next: its finger; rows the run met");

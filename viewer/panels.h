@@ -83,6 +83,9 @@ void handleShortcuts(Ui& ui);    // panel_help.cpp: the keys the help window lis
 
 // Helpers shared by panels (panel_common.cpp).
 void placeWindow(const Rect& r);  // tiles a panel at a layout rectangle
+// Begins a floating window of `w` x `h` (scaled) placed at (dx, dy) from the canvas corner
+// the first time it is shown. False when it is collapsed: the window is already ended then.
+bool beginFloating(Ui& ui, const char* title, bool* open, float w, float h, float dx, float dy);
 ImVec4 toImVec4(Rgba c);
 unsigned toImU32(Rgba c);
 // Writes the current step as "<name>-step<N>.svg" in the working directory.

@@ -229,10 +229,13 @@ void drawTimeline(Ui& ui) {
     } else {
         ImGui::TextDisabled("step 0: before the first event");
     }
-    const std::string& verdict = m.verdict();
-    bool bad = !m.inputDiagnostic().ok() || verdict.rfind("ok:", 0) != 0;
-    ImGui::TextColored(bad ? toImVec4(palette::kCulprit) : ImVec4(0.6f, 0.9f, 0.6f, 1), "%s",
-                       verdict.c_str());
+    // The verdict, a line per finding: each failure red, a note grey, ok green.
+    for (const VerdictLine& line : m.verdictLines()) {
+        if (line.kind == VerdictKind::Note) ImGui::TextDisabled("%s", line.text.c_str());
+        else
+            ImGui::TextColored(line.failure() ? toImVec4(palette::kCulprit) : ImVec4(0.6f, 0.9f, 0.6f, 1),
+                               "%s", line.text.c_str());
+    }
     for (const auto& w : m.warnings()) ImGui::TextDisabled("warning: %s", w.c_str());
     if (!ui.message.empty()) ImGui::TextDisabled("%s", ui.message.c_str());
     ImGui::PopTextWrapPos();

@@ -21,6 +21,13 @@ bool beginFloating(Ui& ui, const char* title, bool* open, float w, float h, floa
     return false;
 }
 
+void clickable(Ui& ui, const char* text, char kind) {
+    ImGui::TextUnformatted(text);
+    if (text[0] == '-' || !ImGui::IsItemHovered()) return;
+    ImGui::SetTooltip("click: find %c%s", kind, text);
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) ui.message = ui.model.find(kind + std::string(text)).message;
+}
+
 ImVec4 toImVec4(Rgba c) { return ImVec4(c.r / 255.f, c.g / 255.f, c.b / 255.f, c.a / 255.f); }
 unsigned toImU32(Rgba c) { return IM_COL32(c.r, c.g, c.b, c.a); }
 

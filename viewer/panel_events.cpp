@@ -12,13 +12,6 @@ const char* vname(Index v, char* buf, size_t n) {
     snprintf(buf, n, "%u", v);
     return buf;
 }
-// A vertex or triangle number that finds its target when clicked (Model::find).
-void clickable(Ui& ui, const char* text, char kind) {
-    ImGui::TextUnformatted(text);
-    if (text[0] == '-' || !ImGui::IsItemHovered()) return;
-    ImGui::SetTooltip("click: find %c%s", kind, text);
-    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) ui.message = ui.model.find(kind + std::string(text)).message;
-}
 }  // namespace
 
 void drawEvents(Ui& ui) {

@@ -55,17 +55,17 @@ void drawPredicates(Ui& ui) {
             ImGui::TableNextColumn();
             ImGui::TextUnformatted(r.predicate.c_str());
             ImGui::TableNextColumn();
-            std::string args;
-            for (Index v : r.args) {
-                char buf[96];
-                if (v < p.vertices.size())
-                    std::snprintf(buf, sizeof buf, "%sv%u (%.17g, %.17g)", args.empty() ? "" : "\n", v,
-                                  p.vertices[v].x, p.vertices[v].y);
-                else
-                    std::snprintf(buf, sizeof buf, "%s-", args.empty() ? "" : "\n");
-                args += buf;
+            for (Index v : r.args) {  // one line each: the number finds the vertex when clicked
+                if (v >= p.vertices.size()) {
+                    ImGui::TextUnformatted("-");
+                    continue;
+                }
+                char num[16];
+                std::snprintf(num, sizeof num, "%u", v);
+                clickable(ui, num, 'v');
+                ImGui::SameLine(0, 4 * ui.scale);
+                ImGui::TextDisabled("(%.17g, %.17g)", p.vertices[v].x, p.vertices[v].y);
             }
-            ImGui::TextUnformatted(args.c_str());
             ImGui::TableNextColumn();
             if (r.hasValue) ImGui::Text("%.6g", r.value);
             else ImGui::TextDisabled("-");

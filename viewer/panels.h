@@ -86,6 +86,9 @@ void placeWindow(const Rect& r);  // tiles a panel at a layout rectangle
 // Begins a floating window of `w` x `h` (scaled) placed at (dx, dy) from the canvas corner
 // the first time it is shown. False when it is collapsed: the window is already ended then.
 bool beginFloating(Ui& ui, const char* title, bool* open, float w, float h, float dx, float dy);
+// A vertex ('v'), triangle ('t') or step ('s') number that finds its target when clicked
+// (Model::find); "-" is drawn plain.
+void clickable(Ui& ui, const char* text, char kind);
 ImVec4 toImVec4(Rgba c);
 unsigned toImU32(Rgba c);
 // Writes the current step as "<name>-step<N>.svg" in the working directory.

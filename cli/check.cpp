@@ -83,6 +83,7 @@ struct Row {
     bool wholeFile = true;
     size_t feature = 0;
     std::string id, name;
+    std::vector<std::pair<std::string, std::string>> attributes;  // the feature's properties
     size_t vertices = 0;
     Verdict verdict = Verdict::Ok;
     std::string at;      // ring and vertex, or the forbidden transition
@@ -162,6 +163,7 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
     row.feature = f.index;
     row.id = f.id;
     row.name = f.name;
+    row.attributes = f.attributes;
     bool readable = f.read.diagnostic.ok();
     try {
         Polygon& p = f.read.polygon;
@@ -465,17 +467,21 @@ int runCheck(const CheckOptions& o) {
     using json = nlohmann::ordered_json;  // fields in the order of the table
     auto orNull = [](const std::string& s) { return s.empty() ? json(nullptr) : json(s); };
     json records = json::array();
-    for (const Row* r : rows)
+    for (const Row* r : rows) {
+        json attributes = json::object();
+        for (const auto& [key, value] : r->attributes) attributes[key] = value;
         records.push_back({{"file", r->file},
                            {"feature", r->wholeFile ? json(nullptr) : json(r->feature)},
                            {"id", orNull(r->id)},
                            {"name", orNull(r->name)},
+                           {"attributes", attributes},
                            {"vertices", r->vertices},
                            {"verdict", verdictName(r->verdict)},
                            {"code", int(verdictStatus(r->verdict))},
                            {"at", orNull(r->at)},
                            {"reason", orNull(r->reason)},
                            {"extracted", orNull(r->extracted)}});
+    }
     json counts = json::object();
     for (size_t v = 0; v < count.size(); ++v) counts[verdictName(Verdict(v))] = count[v];
     json doc = {{"features", records},

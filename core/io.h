@@ -4,6 +4,7 @@
 #include <iosfwd>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "polygon.h"
@@ -43,6 +44,9 @@ struct FeatureRead {
     bool wholeFile = true;  // not a FeatureCollection's feature (any other document, or unreadable)
     size_t index = 0;       // position in the collection's "features" array
     std::string id, name;   // the Feature's "id" and "properties.name" (cut to 60 bytes), or ""
+    // Every property (a GIS feature's fields) as text, in file order, each cut to 60 bytes:
+    // what `flood check --json` reports beside the verdict. Null values are left out.
+    std::vector<std::pair<std::string, std::string>> attributes;
     std::string source;     // the Feature as GeoJSON text, when asked for (for extraction)
     ReadResult read;        // as parsePolygon reads it alone; messages say "NAME: feature N ..."
 };

@@ -327,6 +327,9 @@ FeatureRead readFeature(const std::string& name, const json& item, size_t i, boo
         if (item.is_object() && item.contains("properties") && item["properties"].is_object() &&
             item["properties"].contains("name") && !item["properties"]["name"].is_null())
             f.name = propertyText(item["properties"]["name"]);
+        if (item.is_object() && item.contains("properties") && item["properties"].is_object())
+            for (const auto& [key, value] : item["properties"].items())
+                if (!value.is_null()) f.attributes.emplace_back(echo(key), propertyText(value));
         if (keepSource) f.source = item.dump();
         if (!item.is_object() || !item.contains("geometry"))
             throw BadStructure{ctx + ": not a Feature with a geometry"};

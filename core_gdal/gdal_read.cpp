@@ -163,6 +163,10 @@ struct Reader {
         r.index = index;
         r.id = fid;
         r.name = fieldText(f, "name");
+        for (int i = 0; i < f.GetFieldCount(); ++i)
+            if (f.IsFieldSetAndNotNull(i))
+                r.attributes.emplace_back(io_detail::echo(f.GetFieldDefnRef(i)->GetNameRef()),
+                                          io_detail::echo(f.GetFieldAsString(i)));
         std::unique_ptr<OGRGeometry> linear;
         if (g->hasCurveGeometry()) {
             linear.reset(g->getLinearGeometry());

@@ -115,6 +115,9 @@ TEST(Check, CountsPerVerdictInTheTableAndTheJson) {
     EXPECT_EQ(rows[5]["reason"],
               "feature 5 polygon 0 ring 0 vertex 2: coordinate is not a pair of numbers (got [10,\"ten\"])");
     EXPECT_EQ(rows[2]["vertices"], 12);
+    // The feature's properties come with its row.
+    EXPECT_EQ(rows[1]["attributes"], json({{"name", "bow-tie"}})) << rows[1];
+    EXPECT_TRUE(rows[0]["attributes"].empty()) << rows[0];
     // The table shows the id where there is one, else the name.
     EXPECT_TRUE(std::regex_search(t.out, std::regex("mixed.geojson +8 +triangle +3 +ok"))) << t.out;
     EXPECT_TRUE(std::regex_search(t.out, std::regex("mixed.geojson +1 +bow-tie +4 +invalid +ring 0 vertex 0"))) << t.out;

@@ -37,16 +37,16 @@ protected:
         fs::create_directories(dir_);
         // One GeoJSON FeatureCollection: each polygon a Feature named after its file.
         json features = json::array();
-        auto add = [&](const std::string& name) {
+        auto add = [&](const std::string& name, const char* kind) {
             std::ifstream in(sourcePath("polygons/" + name + ".json"));
             json rings = json::parse(in);
             for (json& ring : rings) ring.push_back(ring[0]);  // GeoJSON rings are closed
             features.push_back({{"type", "Feature"},
-                                {"properties", {{"name", name}}},
+                                {"properties", {{"name", name}, {"kind", kind}}},
                                 {"geometry", {{"type", "Polygon"}, {"coordinates", rings}}}});
         };
-        for (const std::string& n : kValid) add(n);
-        for (const std::string& n : kInvalid) add(n);
+        for (const std::string& n : kValid) add(n, "valid");
+        for (const std::string& n : kInvalid) add(n, "invalid");
         std::ofstream(dir_ / "source.geojson")
             << json{{"type", "FeatureCollection"}, {"features", features}}.dump();
         for (const auto& [driver, file] : formats())
@@ -147,6 +147,9 @@ TEST_F(Gdal, CheckReportsVerdictsWithFidsAndNames) {
         EXPECT_EQ(rows[k]["name"], name);
         EXPECT_EQ(rows[k]["feature"], k);
         EXPECT_EQ(rows[k]["verdict"], valid ? "ok" : "invalid") << rows[k];
+        // Every field of the feature is reported with it.
+        EXPECT_EQ(rows[k]["attributes"]["name"], name) << rows[k];
+        EXPECT_EQ(rows[k]["attributes"]["kind"], valid ? "valid" : "invalid") << rows[k];
     }
     EXPECT_EQ(rows[kValid.size()]["reason"],
               "hole (ring 1) lies outside its outer ring (ring 0) (global vertex 4)");

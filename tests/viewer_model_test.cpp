@@ -17,9 +17,13 @@
 #include "transcript.h"
 #include "trace_io.h"
 #include "io.h"
+#include "test_support.h"
 
 using namespace flood;
 using namespace flood::view;
+using flood::testing::RunResult;
+using flood::testing::runShell;
+using flood::testing::scratch;
 
 namespace {
 
@@ -1125,4 +1129,26 @@ TEST(ViewerDeclutter, BridgesHaveTheirOwnColourAndGorgeFocusHasABox) {
     for (const Scene::Line& l : buildScene(m, o).lines)
         EXPECT_FALSE(l.color.r == palette::kBridge.r && l.color.g == palette::kBridge.g && l.color.b == palette::kBridge.b);
 }
+#ifdef FLOOD_GDAL
+// The viewer opens a GIS dataset like a polygon file (core_gdal/): a GeoPackage made here
+// with ogr2ogr from a GeoJSON square with a hole.
+TEST(ViewerGdal, OpensAGeoPackage) {
+    std::filesystem::path d = scratch("viewer-gdal");
+    std::ofstream(d / "square.geojson")
+        << R"({"type": "FeatureCollection", "features": [{"type": "Feature", "properties": {"name": "sq"},
+             "geometry": {"type": "Polygon", "coordinates": [[[0,0],[10,0],[10,10],[0,10],[0,0]],
+                                                           [[3,3],[3,7],[7,7],[7,3],[3,3]]]}}]})";
+    RunResult made = runShell("ogr2ogr -f GPKG " + (d / "square.gpkg").string() + " " +
+                              (d / "square.geojson").string() + " 2>&1");
+    ASSERT_EQ(made.code, 0) << made.out;
+    Model m;
+    m.open((d / "square.gpkg").string());
+    EXPECT_EQ(m.exitCode(), 0) << m.verdict();
+    EXPECT_EQ(m.polygon().vertices.size(), 8u);
+    EXPECT_EQ(m.polygon().rings.size(), 2u);
+    EXPECT_FALSE(m.failed()) << m.verdict();
+    std::filesystem::remove_all(d);
+}
+#endif
+
 #endif

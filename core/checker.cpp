@@ -331,8 +331,13 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
 
     // Rule 8: parts do not overlap. A single part has nothing to overlap.
     if (polygon.parts.size() > 1) {
-        std::string overlap = partsOverlap(V, partOfVertex, boundaryEdges);
-        if (!overlap.empty()) return fail(overlap);
+        PartsOverlap overlap = partsOverlap(V, partOfVertex, boundaryEdges);
+        if (!overlap.reason.empty()) {
+            std::vector<uint32_t> rings;  // the overlapping parts' outer rings
+            for (Index p : overlap.parts)
+                if (p < polygon.parts.size()) rings.push_back(polygon.parts[p].firstRing);
+            return fail(overlap.reason, {}, std::move(overlap.vertices), std::move(rings));
+        }
     }
     return {true, "", {}};
 }

@@ -97,17 +97,18 @@ std::string vertexName(const std::vector<Point>& V, Index v) {
     return o.str();
 }
 
-std::string crossing(const Segment& s, const Segment& t, const std::string& where) {
-    return "parts-overlap: " + edgeName(s) + " crosses " + edgeName(t) + where;
+PartsOverlap crossing(const Segment& s, const Segment& t, const std::string& where) {
+    return {"parts-overlap: " + edgeName(s) + " crosses " + edgeName(t) + where,
+            {s.a, s.b, t.a, t.b}, {s.part, t.part}};
 }
 
 }  // namespace
 
-std::string partsOverlap(const std::vector<Point>& V, const std::vector<Index>& partOfVertex,
-                         const std::vector<BoundaryEdge>& boundary) {
+PartsOverlap partsOverlap(const std::vector<Point>& V, const std::vector<Index>& partOfVertex,
+                          const std::vector<BoundaryEdge>& boundary) {
     for (Index v = 0; v < V.size(); ++v)
         if (!std::isfinite(V[v].x) || !std::isfinite(V[v].y))
-            return "non-finite-coordinate: " + vertexName(V, v) + " cannot be swept";
+            return {"non-finite-coordinate: " + vertexName(V, v) + " cannot be swept", {v}, {}};
 
     std::vector<Segment> segs;
     segs.reserve(boundary.size());
@@ -151,7 +152,7 @@ std::string partsOverlap(const std::vector<Point>& V, const std::vector<Index>& 
             o << "parts-overlap: part " << (covering.empty() ? kNone : covering[0])
               << " covers an area twice";
         o << " beside " << vertexName(V, vertex);
-        return o.str();
+        return PartsOverlap{o.str(), {vertex}, covering};
     };
     for (size_t e0 = 0, e1; e0 < ends.size(); e0 = e1) {
         const Point p = ends[e0].p;
@@ -193,7 +194,7 @@ std::string partsOverlap(const std::vector<Point>& V, const std::vector<Index>& 
                 crossProperly(segs[*std::prev(upper)], segs[*upper]))
                 return crossing(segs[*std::prev(upper)], segs[*upper], "");
     }
-    return "";
+    return {};
 }
 
 }  // namespace flood

@@ -16,10 +16,15 @@ struct BoundaryEdge {
 // Given that rules 1-7 hold (each part's triangles tile that part exactly), proves that
 // triangles of different parts have disjoint interiors: the parts' boundary winding numbers
 // sum to at most 1 everywhere. Parts may touch at points, T-junctions and collinear stretches.
-// Returns "" when they do not overlap, else the reason ("parts-overlap: ..."), naming the two
-// parts and a vertex or the two crossing edges. Exact (orient and coordinate comparisons),
+// Returns an empty reason when they do not overlap, else the reason ("parts-overlap: ..."),
+// naming the two parts and a vertex or the two crossing edges, with those as data. Exact (orient and coordinate comparisons),
 // O(n log n): a sweep over the boundary edges.
-std::string partsOverlap(const std::vector<Point>& vertices, const std::vector<Index>& partOfVertex,
-                         const std::vector<BoundaryEdge>& boundary);
+struct PartsOverlap {
+    std::string reason;            // "" when the parts do not overlap
+    std::vector<Index> vertices;   // the vertex beside the overlap, or the crossing edges' ends
+    std::vector<Index> parts;      // the parts that overlap
+};
+PartsOverlap partsOverlap(const std::vector<Point>& vertices, const std::vector<Index>& partOfVertex,
+                          const std::vector<BoundaryEdge>& boundary);
 
 }  // namespace flood

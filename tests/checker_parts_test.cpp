@@ -145,6 +145,9 @@ TEST(CheckerParts, ReasonNamesTheTwoPartsAndAVertex) {
     ASSERT_FALSE(c.ok);
     EXPECT_NE(c.reason.find("parts-overlap: parts 0 and 2 overlap beside vertex 8 (2, 3)"), std::string::npos)
         << c.reason;
+    // ... and as data, for the viewer's error view: the vertex and the two parts' outer rings.
+    EXPECT_EQ(c.culprits.vertices, std::vector<uint32_t>{8});
+    EXPECT_EQ(c.culprits.rings, (std::vector<uint32_t>{0, 2}));
     // The cross: the vertical bar's left edge, directed down, crosses the bar's bottom edge.
     t = together({part(box(0, 1, 6, 3)), part(box(2, 0, 4, 4))});
     c = checkTriangulation(t.polygon, t.triangles);
@@ -152,6 +155,8 @@ TEST(CheckerParts, ReasonNamesTheTwoPartsAndAVertex) {
     EXPECT_NE(c.reason.find("parts-overlap: edge (7, 4) of part 1 crosses edge (0, 1) of part 0"),
               std::string::npos)
         << c.reason;
+    EXPECT_EQ(c.culprits.vertices, (std::vector<uint32_t>{7, 4, 0, 1}));
+    EXPECT_EQ(c.culprits.rings, (std::vector<uint32_t>{1, 0}));
 }
 
 // [SECTION] touching parts: accepted

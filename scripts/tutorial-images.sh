@@ -64,4 +64,7 @@ shot fig11-b                  invalid/fig11-b-ceiling.json   Forbidden 1
 # "Why does my face fail?": the face as it opens, then its error view (the E key).
 viewer polygons/tutorial/crossing-face.json --screenshot docs/img/why-fails-open.png --size 900x600
 viewer polygons/tutorial/crossing-face.json --show-error --screenshot docs/img/why-fails-error.png --size 900x600
+# Presenter mode (Tab) in the light theme, as a slide would show it.
+viewer polygons/paper-figure-7.json --presenter --theme light --step "$(step_after paper-figure-7.json Bridge 2)" \
+  --screenshot docs/img/presenter-light.png --size 900x600
 echo "docs/img: $(ls docs/img/*.png | wc -l) images"

@@ -1,5 +1,6 @@
 // flood-viewer: replays the flooding triangulation of a polygon step by step.
 //   flood-viewer [FILE] [--feature N] [--step N] [--screenshot OUT.png] [--size WxH]
+//                [--scale S] [--presenter] [--theme light|dark]
 // Without a display it prints a summary of the run instead and says how to get pictures.
 #include <imgui.h>
 
@@ -32,11 +33,16 @@ struct Args {
     bool bench = false;  // measure open, seek and frame times, print them, exit
     bool showError = false;  // open in the error view (as the E key does)
     long feature = -1;       // --feature N: that feature of a FeatureCollection
+    float scale = 0;         // --scale S: the content scale, instead of the monitor's
+    bool presenter = false;  // --presenter: start in presenter view (Tab)
+    bool themeGiven = false;
+    Theme theme = Theme::Dark;  // --theme
+    bool printLayout = false;   // --print-layout: where the caption and toolbar end were
 };
 
 const char* const kUsage =
     "usage: flood-viewer [FILE] [--feature N] [--step N] [--show-error] [--screenshot OUT.png]\n"
-    "                    [--size WxH]\n"
+    "                    [--size WxH] [--scale S] [--presenter] [--theme light|dark]\n"
     "  FILE              polygon (GeoJSON, ring arrays or WKT) or a trace from `flood trace`\n"
     "                    (*.jsonl); default: polygons/paper-figure-7.json\n"
     "  --feature N       open feature N (0-based, as `flood check` numbers them) of a\n"
@@ -47,6 +53,11 @@ const char* const kUsage =
     "  --screenshot OUT  render once in a hidden window, write OUT as PNG and exit; the exit\n"
     "                    code is the CLI's: 3 unreadable, 4 invalid, 5 forbidden, 6 checker\n"
     "  --size WxH        window size in pixels (default 1280x800)\n"
+    "  --scale S         UI scale 0.5..4 instead of the monitor's (screenshots: 1)\n"
+    "  --presenter       start in presenter view: the canvas and a large caption (Tab)\n"
+    "  --theme T         light or dark (default: the last one chosen, else dark)\n"
+    "  --print-layout    with --screenshot: print where the caption and the toolbar's last\n"
+    "                    button were drawn (x y w h, logical pixels)\n"
     "  --bench           time opening, seeking and drawing (hidden window), print, exit\n"
     "keys in the viewer: F1 or ?\n";
 
@@ -79,6 +90,24 @@ int parseArgs(int argc, char** argv, Args& a) {
                 if (v) std::fprintf(stderr, "flood-viewer: --feature wants a number >= 0, got '%s'\n", v);
                 return 2 + 1;
             }
+        } else if (s == "--scale") {
+            const char* v = value("--scale");
+            char* end = nullptr;
+            if (!v || (a.scale = std::strtof(v, &end), *end != 0) || !(a.scale >= 0.5f && a.scale <= 4)) {
+                if (v) std::fprintf(stderr, "flood-viewer: --scale wants a number in 0.5..4, got '%s'\n", v);
+                return 2 + 1;
+            }
+        } else if (s == "--theme") {
+            const char* v = value("--theme");
+            if (!v || !palette::parseTheme(v, a.theme)) {
+                if (v) std::fprintf(stderr, "flood-viewer: --theme wants light or dark, got '%s'\n", v);
+                return 2 + 1;
+            }
+            a.themeGiven = true;
+        } else if (s == "--presenter") {
+            a.presenter = true;
+        } else if (s == "--print-layout") {
+            a.printLayout = true;
         } else if (s == "--show-error") {
             a.showError = true;
         } else if (s == "--bench") {
@@ -206,16 +235,22 @@ int main(int argc, char** argv) {
     if (args.file.empty()) args.file = defaultPolygonPath();
 
     Model model;
-    // Screenshots stay reproducible: they neither read nor write the recent list.
-    std::string recentFile;
+    // Screenshots stay reproducible: they neither read nor write the recent list or settings.
+    std::string recentFile, settingsFile;
+    ViewerSettings settings;
     if (args.screenshot.empty()) {
         const char* xdg = std::getenv("XDG_CONFIG_HOME");
         const char* home = std::getenv("HOME");
-        if (xdg && *xdg) recentFile = std::string(xdg) + "/flood-viewer/recent.txt";
-        else if (home && *home) recentFile = std::string(home) + "/.config/flood-viewer/recent.txt";
+        std::string dir;
+        if (xdg && *xdg) dir = std::string(xdg) + "/flood-viewer/";
+        else if (home && *home) dir = std::string(home) + "/.config/flood-viewer/";
+        if (!dir.empty()) recentFile = dir + "recent.txt", settingsFile = dir + "settings.txt";
         if (!recentFile.empty()) model.loadRecent(recentFile);
         model.recentPath = recentFile;  // saved on every open
+        if (!settingsFile.empty()) settings = loadSettings(settingsFile);
     }
+    if (args.themeGiven) settings.theme = args.theme;
+    palette::setTheme(settings.theme);
     double openStart = now();
     if (args.feature >= 0) {
         // A feature that cannot be opened is the answer: say so before any window.
@@ -257,16 +292,16 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "flood-viewer: %s\n", error.c_str());
         return int(Status::Internal);
     }
-    // Screenshots use scale 1 so the same command gives the same pixels on every machine.
-    float scale = shot ? 1.f : platform::contentScale();
-    ImFontConfig font;
-    font.SizePixels = 13.f * scale;
-    io.Fonts->AddFontDefault(&font);
-    ImGui::StyleColorsDark();
-    ImGui::GetStyle().ScaleAllSizes(scale);
-
+    // Screenshots use scale 1 (or --scale) so the same command gives the same pixels on
+    // every machine.
     Ui ui(model, renderer);
-    ui.scale = scale;
+    ui.uiScale.setContentScale(args.scale > 0 ? args.scale : shot ? 1.f : platform::contentScale());
+    if (!shot) ui.uiScale.setZoomStep(settings.zoomStep);
+    ui.theme = settings.theme;
+    ui.presenter = args.presenter;
+    applyStyle(ui);
+    uint64_t styled = ui.uiScale.generation();
+    Theme styledTheme = ui.theme;
 
     int exitCode = 0;
     uint64_t titled = model.generation();
@@ -283,11 +318,34 @@ int main(int argc, char** argv) {
             titled = model.generation();
             platform::setTitle(title());
         }
+        // Between frames: a new monitor scale, Ctrl +/-/0 or a theme chosen in the toolbar.
+        if (float s; platform::takeContentScaleChange(&s) && args.scale <= 0 && !shot) ui.uiScale.setContentScale(s);
+        if (ui.theme != palette::theme()) {
+            palette::setTheme(ui.theme);
+            ui.canvas.generation = ~0ull;  // the canvas buffers hold the old theme's colours
+        }
+        if (styled != ui.uiScale.generation() || styledTheme != ui.theme) {
+            applyStyle(ui);
+            ui.canvas.thinKey = {};  // marker thinning cells follow the scale
+            styled = ui.uiScale.generation(), styledTheme = ui.theme;
+            // Remembered at once, as Recent is on every open.
+            if (!settingsFile.empty()) saveSettings(settingsFile, {ui.theme, ui.uiScale.zoomStep()});
+        }
+        ui.scale = ui.uiScale.value();
+        const float scale = ui.scale;
         imguiGlNewFrame();
         platform::newFrame();
         ImGui::NewFrame();
         Vec2 size = platform::windowSize();
-        ui.layout = computeLayout(size.x, size.y, scale);
+        const Rect canvasWas = ui.layout.canvas;
+        ui.layout = ui.presenter ? presenterLayout(size.x, size.y, ui.captionHeight)
+                                 : computeLayout(size.x, size.y, scale, ui.bottomWanted);
+        // While the layout settles (first frames, presenter view on or off) the camera is fitted
+        // to the canvas it ends up with; the error view keeps its own zoom.
+        const Rect& c = ui.layout.canvas;
+        bool moved = c.x != canvasWas.x || c.y != canvasWas.y || c.w != canvasWas.w || c.h != canvasWas.h;
+        if ((frame < 3 || ui.refitFrames > 0) && moved && frame > 0 && !model.errorView) model.needsFit = true;
+        if (ui.refitFrames > 0) --ui.refitFrames;
         if (frame == 0 && args.showError) {
             model.camera.setViewport(ui.layout.canvas);
             model.showError();
@@ -301,18 +359,23 @@ int main(int argc, char** argv) {
         if (args.bench && benchPhase == 1) model.seek(bench.nextStep());
         if (args.bench && benchPhase == 2) model.camera.pan(frame % 2 ? 1 : -1, 0);
         if (!shot) handleShortcuts(ui);
+        if (!shot) handlePresenterKeys(ui);
         drawCanvas(ui);
-        drawTimeline(ui);
-        drawStateMachine(ui);
-        drawDecision(ui);
-        drawPredicates(ui);
-        drawStateTable(ui);
-        drawBreakpoints(ui);
-        drawEvents(ui);
-        drawTranscript(ui);
-        drawOpen(ui);
-        drawShrink(ui);
-        drawHelp(ui);
+        if (ui.presenter) {
+            drawCaption(ui);
+        } else {
+            drawTimeline(ui);
+            drawStateMachine(ui);
+            drawDecision(ui);
+            drawPredicates(ui);
+            drawStateTable(ui);
+            drawBreakpoints(ui);
+            drawEvents(ui);
+            drawTranscript(ui);
+            drawOpen(ui);
+            drawShrink(ui);
+            drawHelp(ui);
+        }
         ImGui::Render();
 
         double built = now() - frameStart;
@@ -344,6 +407,9 @@ int main(int argc, char** argv) {
             ui.pngRequest.clear();
             if (shot) {
                 std::fprintf(ok ? stdout : stderr, "flood-viewer: %s\n", ui.message.c_str());
+                for (auto [name, r] : {std::pair{"caption", ui.captionRect}, {"toolbar-end", ui.toolbarEnd}})
+                    if (args.printLayout && r.w > 0)
+                        std::printf("flood-viewer: layout %s %.0f %.0f %.0f %.0f\n", name, r.x, r.y, r.w, r.h);
                 // The picture is written; the exit code still says what the input was.
                 exitCode = !ok ? 1 : model.exitCode();
                 platform::requestClose();

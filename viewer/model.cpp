@@ -37,10 +37,11 @@ namespace flood::view {
 
 // ========================================================================================
 // [SECTION] layout and camera
-Layout computeLayout(double width, double height, double uiScale) {
+Layout computeLayout(double width, double height, double uiScale, double bottomWanted) {
     // Side columns shrink on small windows so the canvas keeps at least half the width.
     double side = std::min(300.0 * uiScale, width * 0.25);
     double bottom = std::min(128.0 * uiScale, height * 0.3);
+    if (bottomWanted > bottom) bottom = std::min(bottomWanted, height * 0.5);
     Layout l;
     l.left = {0, 0, side, height - bottom};
     l.right = {width - side, 0, side, height - bottom};

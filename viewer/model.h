@@ -50,7 +50,9 @@ struct Rect {
 struct Layout {
     Rect canvas, left, right, bottom;
 };
-Layout computeLayout(double width, double height, double uiScale);
+// `bottomWanted`: what the timeline needed last frame (its toolbar wraps at a large scale or
+// on a narrow window); it gets that much, up to half the window, when its share is smaller.
+Layout computeLayout(double width, double height, double uiScale, double bottomWanted = 0);
 
 // World (polygon coordinates, y up) to screen (y down): screen = origin + (p - center) * scale.
 class Camera {

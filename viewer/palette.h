@@ -1,7 +1,10 @@
 // Colours of the viewer, shared by the canvas, the SVG export and the screenshot test, so a
 // pixel check can ask "is this the water colour?" without duplicating numbers.
+// Two themes: dark (the default, for screens) and light (projectors, printed handouts). The
+// k* colours are the current theme's, so every drawer and exporter follows setTheme().
 #pragma once
 #include <cstdint>
+#include <cstring>
 
 #include "events.h"
 
@@ -11,44 +14,110 @@ struct Rgba {
     uint8_t r = 0, g = 0, b = 0, a = 255;
 };
 
+enum class Theme : uint8_t { Dark, Light };
+
 namespace palette {
-constexpr Rgba kBackground{30, 32, 38, 255};
-constexpr Rgba kPolygonFill{72, 78, 70, 255};     // dry land: the not yet flooded interior
-constexpr Rgba kTriangle{120, 126, 110, 255};     // a triangle already cut (seen through water)
-constexpr Rgba kWater{40, 110, 190, 255};         // flooded triangles (opaque so tests can probe)
-constexpr Rgba kCurrent{250, 200, 60, 255};       // triangles cut by the current event
-constexpr Rgba kTriangleEdge{20, 50, 90, 255};
-constexpr Rgba kBoundary{235, 235, 235, 255};
-constexpr Rgba kWaterLevel{120, 210, 255, 255};
-constexpr Rgba kChain{255, 120, 40, 255};
-constexpr Rgba kLeft{255, 60, 200, 255};          // the Left end of the active chain
-constexpr Rgba kRight{60, 230, 90, 255};          // the Right end
-constexpr Rgba kNextLeft{255, 150, 230, 255};     // finger markers: lighter shades of L / R
-constexpr Rgba kNextRight{160, 255, 170, 255};
-constexpr Rgba kJump{200, 160, 255, 255};
-constexpr Rgba kBridge{0, 215, 175, 255};        // teal: far from the just-cut yellow
-constexpr Rgba kDormant{255, 255, 255, 255};
-constexpr Rgba kCulprit{255, 40, 40, 255};
-constexpr Rgba kHover{255, 255, 255, 255};
-constexpr Rgba kVertexNumber{200, 200, 200, 255};
+// Every colour of a theme; the k* colours below are the current theme's copy.
+struct Colours {
+    Rgba background, polygonFill, triangle, water, current, triangleEdge, boundary, waterLevel,
+        chain, left, right, nextLeft, nextRight, jump, bridge, dormant, culprit, hover,
+        vertexNumber, regular, bottom, sag, top, ceiling, ok;
+};
+constexpr Colours kDark{
+    {30, 32, 38, 255},    {72, 78, 70, 255},    {120, 126, 110, 255}, {40, 110, 190, 255},
+    {250, 200, 60, 255},  {20, 50, 90, 255},    {235, 235, 235, 255}, {120, 210, 255, 255},
+    {255, 120, 40, 255},  {255, 60, 200, 255},  {60, 230, 90, 255},   {255, 150, 230, 255},
+    {160, 255, 170, 255}, {200, 160, 255, 255}, {0, 215, 175, 255},   {255, 255, 255, 255},
+    {255, 40, 40, 255},   {255, 255, 255, 255}, {200, 200, 200, 255}, {170, 170, 170, 255},
+    {60, 200, 255, 255},  {40, 120, 255, 255},  {255, 170, 40, 255},  {255, 90, 60, 255},
+    {153, 230, 153, 255}};
+// Light: paper-white ground, sand for dry land, mid-blue water, and every line, marker and
+// label dark enough to read on white (and on a washed-out projector).
+constexpr Colours kLight{
+    {250, 250, 246, 255}, {226, 218, 196, 255}, {196, 190, 168, 255}, {110, 170, 230, 255},
+    {245, 185, 30, 255},  {30, 60, 110, 255},   {25, 25, 30, 255},    {0, 80, 190, 255},
+    {215, 85, 0, 255},    {190, 0, 140, 255},   {0, 140, 45, 255},    {225, 90, 190, 255},
+    {40, 180, 80, 255},   {110, 50, 200, 255},  {0, 140, 120, 255},   {40, 40, 40, 255},
+    {215, 0, 0, 255},     {0, 0, 0, 255},       {60, 60, 60, 255},    {110, 110, 110, 255},
+    {0, 130, 200, 255},   {20, 70, 200, 255},   {200, 115, 0, 255},   {200, 45, 25, 255},
+    {20, 130, 40, 255}};
+
+inline Rgba kBackground = kDark.background;
+inline Rgba kPolygonFill = kDark.polygonFill;    // dry land: the not yet flooded interior
+inline Rgba kTriangle = kDark.triangle;          // a triangle already cut (seen through water)
+inline Rgba kWater = kDark.water;                // flooded triangles (opaque so tests can probe)
+inline Rgba kCurrent = kDark.current;            // triangles cut by the current event
+inline Rgba kTriangleEdge = kDark.triangleEdge;
+inline Rgba kBoundary = kDark.boundary;
+inline Rgba kWaterLevel = kDark.waterLevel;
+inline Rgba kChain = kDark.chain;
+inline Rgba kLeft = kDark.left;                  // the Left end of the active chain
+inline Rgba kRight = kDark.right;                // the Right end
+inline Rgba kNextLeft = kDark.nextLeft;          // finger markers: lighter shades of L / R
+inline Rgba kNextRight = kDark.nextRight;
+inline Rgba kJump = kDark.jump;
+inline Rgba kBridge = kDark.bridge;              // teal: far from the just-cut yellow
+inline Rgba kDormant = kDark.dormant;
+inline Rgba kCulprit = kDark.culprit;
+inline Rgba kHover = kDark.hover;
+inline Rgba kVertexNumber = kDark.vertexNumber;
 
 // Vertex classes of §3 (Fig. 1).
-constexpr Rgba kRegular{170, 170, 170, 255};
-constexpr Rgba kBottom{60, 200, 255, 255};
-constexpr Rgba kSag{40, 120, 255, 255};
-constexpr Rgba kTop{255, 170, 40, 255};
-constexpr Rgba kCeiling{255, 90, 60, 255};
+inline Rgba kRegular = kDark.regular;
+inline Rgba kBottom = kDark.bottom;
+inline Rgba kSag = kDark.sag;
+inline Rgba kTop = kDark.top;
+inline Rgba kCeiling = kDark.ceiling;
 
-// One colour per action for the timeline, the event list and the state machine.
+inline Rgba kOk = kDark.ok;  // a passed check in the verdict and the invariant lane
+
+namespace detail {
+inline Theme g_theme = Theme::Dark;
+}  // namespace detail
+
+inline Theme theme() { return detail::g_theme; }
+inline void setTheme(Theme t) {
+    const Colours& c = t == Theme::Light ? kLight : kDark;
+    struct Slot {
+        Rgba* colour;
+        Rgba Colours::*field;
+    };
+    const Slot slots[] = {
+        {&kBackground, &Colours::background}, {&kPolygonFill, &Colours::polygonFill},
+        {&kTriangle, &Colours::triangle}, {&kWater, &Colours::water},
+        {&kCurrent, &Colours::current}, {&kTriangleEdge, &Colours::triangleEdge},
+        {&kBoundary, &Colours::boundary}, {&kWaterLevel, &Colours::waterLevel},
+        {&kChain, &Colours::chain}, {&kLeft, &Colours::left}, {&kRight, &Colours::right},
+        {&kNextLeft, &Colours::nextLeft}, {&kNextRight, &Colours::nextRight},
+        {&kJump, &Colours::jump}, {&kBridge, &Colours::bridge}, {&kDormant, &Colours::dormant},
+        {&kCulprit, &Colours::culprit}, {&kHover, &Colours::hover},
+        {&kVertexNumber, &Colours::vertexNumber}, {&kRegular, &Colours::regular},
+        {&kBottom, &Colours::bottom}, {&kSag, &Colours::sag}, {&kTop, &Colours::top},
+        {&kCeiling, &Colours::ceiling}, {&kOk, &Colours::ok}};
+    static_assert(sizeof(Colours) == sizeof(slots) / sizeof(slots[0]) * sizeof(Rgba), "a colour without a slot");
+    for (const Slot& s : slots) *s.colour = c.*s.field;
+    detail::g_theme = t;
+}
+inline const char* themeName(Theme t) { return t == Theme::Light ? "light" : "dark"; }
+// "light" or "dark"; false (and `out` untouched) for anything else.
+inline bool parseTheme(const char* text, Theme& out) {
+    if (std::strcmp(text, "light") == 0) return out = Theme::Light, true;
+    if (std::strcmp(text, "dark") == 0) return out = Theme::Dark, true;
+    return false;
+}
+
+// One colour per action for the timeline, the event list and the state machine; the light
+// theme's are darker so they read as text on white.
 inline Rgba action(Action a) {
+    const bool light = detail::g_theme == Theme::Light;
     switch (a) {
-        case Action::Start: return {200, 200, 200, 255};
-        case Action::Raise: return {80, 160, 255, 255};
-        case Action::Bridge: return {255, 220, 80, 255};
-        case Action::Spill: return {80, 220, 120, 255};
-        case Action::Jump: return {190, 120, 255, 255};
-        case Action::Fill: return {60, 220, 220, 255};
-        case Action::Forbidden: return {255, 50, 50, 255};
+        case Action::Start: return light ? Rgba{90, 90, 90, 255} : Rgba{200, 200, 200, 255};
+        case Action::Raise: return light ? Rgba{20, 95, 205, 255} : Rgba{80, 160, 255, 255};
+        case Action::Bridge: return light ? Rgba{170, 125, 0, 255} : Rgba{255, 220, 80, 255};
+        case Action::Spill: return light ? Rgba{10, 140, 55, 255} : Rgba{80, 220, 120, 255};
+        case Action::Jump: return light ? Rgba{125, 55, 205, 255} : Rgba{190, 120, 255, 255};
+        case Action::Fill: return light ? Rgba{0, 135, 140, 255} : Rgba{60, 220, 220, 255};
+        case Action::Forbidden: return light ? Rgba{210, 20, 20, 255} : Rgba{255, 50, 50, 255};
         default: return {128, 128, 128, 255};
     }
 }

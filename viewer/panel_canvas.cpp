@@ -364,7 +364,7 @@ void drawCanvas(Ui& ui) {
                     toImU32(palette::kCulprit), msg);
     }
     dl->PopClipRect();
-    canvasBar(ui);
+    if (!ui.presenter) canvasBar(ui);  // presenter view: nothing over the canvas but the polygon
 }
 
 }  // namespace flood::view

@@ -12,6 +12,9 @@ void placeWindow(const Rect& r) {
 }
 
 bool beginFloating(Ui& ui, const char* title, bool* open, float w, float h, float dx, float dy) {
+    // At a large scale or on a small window a floating panel still fits in the window.
+    const ImVec2 display = ImGui::GetIO().DisplaySize;
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), display);
     ImGui::SetNextWindowSize(ImVec2(w * ui.scale, h * ui.scale), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowPos(ImVec2(float(ui.layout.canvas.x + dx * ui.scale),
                                    float(ui.layout.canvas.y + dy * ui.scale)),
@@ -26,6 +29,15 @@ void clickable(Ui& ui, const char* text, char kind) {
     if (text[0] == '-' || !ImGui::IsItemHovered()) return;
     ImGui::SetTooltip("click: find %c%s", kind, text);
     if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) ui.message = ui.model.find(kind + std::string(text)).message;
+}
+
+void sameLineOrWrap(float width) {
+    const float right = ImGui::GetItemRectMax().x + ImGui::GetStyle().ItemSpacing.x + width;
+    if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
+}
+
+float buttonWidth(const char* label) {
+    return ImGui::CalcTextSize(label, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
 }
 
 ImVec4 toImVec4(Rgba c) { return ImVec4(c.r / 255.f, c.g / 255.f, c.b / 255.f, c.a / 255.f); }

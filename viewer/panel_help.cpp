@@ -58,6 +58,9 @@ void drawHelp(Ui& ui) {
         {"hover", "vertex or triangle details"},
         {"click a triangle", "go to the step that cut it"},
         {"right-click a vertex", "break when it becomes Left, Right, NextLeft or NextRight"},
+        {"Tab", "presenter view: only the canvas and a large caption (again: back)"},
+        {"F11", "fullscreen on the window's monitor (again: back)"},
+        {"Ctrl + / Ctrl - / Ctrl+0", "larger / smaller UI and fonts / back to 100%"},
     };
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
         for (auto& k : keys) {

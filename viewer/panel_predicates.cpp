@@ -25,6 +25,7 @@ void drawPredicates(Ui& ui) {
     ui.highlight.clear();
     if (!ui.showPredicates) return;
     Model& m = ui.model;
+    ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImGui::GetIO().DisplaySize);  // fits at 2x
     ImGui::SetNextWindowSize(ImVec2(640 * ui.scale, 300 * ui.scale), ImGuiCond_FirstUseEver);
     ImGui::SetNextWindowPos(ImVec2(float(ui.layout.canvas.x + 20 * ui.scale),
                                    float(ui.layout.canvas.y + ui.layout.canvas.h * 0.55)),

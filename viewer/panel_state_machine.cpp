@@ -80,18 +80,18 @@ void drawStateMachine(Ui& ui) {
         dl->AddText(mid, IM_COL32(150, 150, 160, 255), std::to_string(n).c_str());
     }
     if (from >= 0 && to >= 0 && from != to)
-        arrow(dl, pos[from], pos[to], nodeR, IM_COL32(255, 255, 255, 255), 3);
+        arrow(dl, pos[from], pos[to], nodeR, ImGui::GetColorU32(ImGuiCol_Text), 3);  // the theme's ink
     for (int i = 0; i < kNodeCount; ++i) {
         Rgba color = palette::action(kNodes[i]);
         bool active = i == to;
         if (active) dl->AddCircleFilled(pos[i], nodeR, toImU32(color));
         dl->AddCircle(pos[i], nodeR, toImU32(color), 0, active ? 3.f : 1.5f);
         if (active && from == to)  // a self-loop (Raise after Raise): a ring around the node
-            dl->AddCircle(pos[i], nodeR + 4, IM_COL32(255, 255, 255, 255), 0, 2);
+            dl->AddCircle(pos[i], nodeR + 4, ImGui::GetColorU32(ImGuiCol_Text), 0, 2);
         const char* name = actionName(kNodes[i]);
         ImVec2 ts = ImGui::CalcTextSize(name);
         dl->AddText(ImVec2(pos[i].x - ts.x / 2, pos[i].y - ts.y / 2),
-                    active ? IM_COL32(0, 0, 0, 255) : IM_COL32(230, 230, 230, 255), name);
+                    active ? IM_COL32(0, 0, 0, 255) : ImGui::GetColorU32(ImGuiCol_Text), name);
     }
     ImGui::Dummy(ImVec2(avail.x, side));
     if (ImGui::SmallButton("State table...")) ui.showStateTable = true;  // Fig. 10

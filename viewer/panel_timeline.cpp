@@ -146,7 +146,7 @@ void invariantStatus(Ui& ui) {
         return;
     }
     if (v.empty()) {
-        ImGui::TextColored(ImVec4(0.6f, 0.9f, 0.6f, 1), "invariants: none broken");
+        ImGui::TextColored(toImVec4(palette::kOk), "invariants: none broken");
         return;
     }
     ImGui::TextColored(ImVec4(1, 0.55f, 0.2f, 1), "invariants: %zu steps break one; first at step %u: %s (%s)",
@@ -167,30 +167,36 @@ void drawTimeline(Ui& ui) {
     ImGui::Begin("Timeline", nullptr,
                  ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                      ImGuiWindowFlags_NoTitleBar);
+    // The toolbar wraps onto more lines when the window is narrow or the scale large.
+    const ImGuiStyle& style = ImGui::GetStyle();
+    auto labelled = [&](float width, const char* label) {
+        return width + style.ItemInnerSpacing.x + ImGui::CalcTextSize(label, nullptr, true).x;
+    };
     if (ImGui::Button("|<")) m.first();
-    ImGui::SameLine();
+    sameLineOrWrap(buttonWidth("<"));
     ImGui::PushButtonRepeat(true);
     if (ImGui::Button("<")) m.stepBack();
-    ImGui::SameLine();
+    sameLineOrWrap(buttonWidth("Pause"));
     if (ImGui::Button(m.playing ? "Pause" : "Play ")) m.togglePlay();
-    ImGui::SameLine();
+    sameLineOrWrap(buttonWidth(">"));
     if (ImGui::Button(">")) m.stepForward();
     ImGui::PopButtonRepeat();
-    ImGui::SameLine();
+    sameLineOrWrap(buttonWidth(">|"));
     if (ImGui::Button(">|")) m.last();
-    ImGui::SameLine();
+    sameLineOrWrap(labelled(110 * ui.scale, "step"));
     int step = int(m.step());
     ImGui::SetNextItemWidth(110 * ui.scale);
     if (ImGui::InputInt("step", &step, 1, 10, ImGuiInputTextFlags_EnterReturnsTrue))
         m.seek(uint32_t(std::max(step, 0)));
-    ImGui::SameLine();
-    ImGui::Text("/ %u", m.steps());
-    ImGui::SameLine();
+    const std::string total = "/ " + std::to_string(m.steps());
+    sameLineOrWrap(ImGui::CalcTextSize(total.c_str()).x);
+    ImGui::TextUnformatted(total.c_str());
+    sameLineOrWrap(labelled(120 * ui.scale, "steps/s"));
     float speed = float(m.speed);
     ImGui::SetNextItemWidth(120 * ui.scale);
     if (ImGui::SliderFloat("steps/s", &speed, 0.5f, 200.f, "%.1f", ImGuiSliderFlags_Logarithmic))
         m.speed = speed;
-    ImGui::SameLine();
+    sameLineOrWrap(100 * ui.scale);
     ImGui::SetNextItemWidth(100 * ui.scale);
     if (ImGui::BeginCombo("##kind", actionName(ui.seekKind))) {
         for (int a = 0; a < int(Action::Count); ++a)
@@ -198,26 +204,36 @@ void drawTimeline(Ui& ui) {
                 ui.seekKind = Action(a);
         ImGui::EndCombo();
     }
-    ImGui::SameLine();
+    sameLineOrWrap(buttonWidth("prev"));
     if (ImGui::Button("prev")) m.seekAction(ui.seekKind, -1);
-    ImGui::SameLine();
+    sameLineOrWrap(buttonWidth("next"));
     if (ImGui::Button("next")) m.seekAction(ui.seekKind, +1);
-    ImGui::SameLine();
+    sameLineOrWrap(buttonWidth("Open..."));
     if (ImGui::Button("Open...")) ui.showOpen = true;
-    ImGui::SameLine();
+    sameLineOrWrap(buttonWidth("Fit"));
     if (ImGui::Button("Fit")) m.needsFit = true;
-    ImGui::SameLine();
+    sameLineOrWrap(buttonWidth("Save PNG"));
     if (ImGui::Button("Save PNG")) {
         std::string name = "flood-step" + std::to_string(m.step()) + ".png";
         ui.pngRequest = name;
     }
-    ImGui::SameLine();
+    sameLineOrWrap(buttonWidth("SVG"));
     if (ImGui::Button("SVG")) exportSvg(ui);
-    ImGui::SameLine();
+    const char* themeButton = ui.theme == Theme::Light ? "Dark theme" : "Light theme";
+    sameLineOrWrap(buttonWidth(themeButton));
+    if (ImGui::Button(themeButton)) ui.theme = ui.theme == Theme::Light ? Theme::Dark : Theme::Light;
+    sameLineOrWrap(buttonWidth("Present (Tab)"));
+    if (ImGui::Button("Present (Tab)")) ui.presenter = true, ui.refitFrames = 2;
+    sameLineOrWrap(buttonWidth("Help"));
     if (ImGui::Button("Help")) ui.showHelp = true;
+    ImVec2 end0 = ImGui::GetItemRectMin(), end1 = ImGui::GetItemRectMax();
+    ui.toolbarEnd = {end0.x, end0.y, end1.x - end0.x, end1.y - end0.y};
 
     strip(ui);
     invariantStatus(ui);
+    // The layout gives the timeline at least this much next frame: the toolbar however many
+    // lines it wraps to, the strip and its lane's status; the lines below may scroll.
+    ui.bottomWanted = ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y;
 
     const Event* e = m.currentEvent();
     ImGui::PushTextWrapPos(0);
@@ -233,7 +249,7 @@ void drawTimeline(Ui& ui) {
     for (const VerdictLine& line : m.verdictLines()) {
         if (line.kind == VerdictKind::Note) ImGui::TextDisabled("%s", line.text.c_str());
         else
-            ImGui::TextColored(line.failure() ? toImVec4(palette::kCulprit) : ImVec4(0.6f, 0.9f, 0.6f, 1),
+            ImGui::TextColored(line.failure() ? toImVec4(palette::kCulprit) : toImVec4(palette::kOk),
                                "%s", line.text.c_str());
     }
     for (const auto& w : m.warnings()) ImGui::TextDisabled("warning: %s", w.c_str());

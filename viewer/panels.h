@@ -9,10 +9,12 @@
 
 #include "canvas_geometry.h"
 #include "model.h"
+#include "presenter.h"
 #include "renderer.h"
 #include "scene.h"
 
 struct ImVec4;
+struct ImFont;
 
 namespace flood::view {
 
@@ -65,6 +67,15 @@ struct Ui {
     uint64_t shrinkGeneration = 0;     // Model::generation() the running shrink started from
     char savePath[1024] = "";          // where the Shrink panel saves the repro
     std::string shrinkNote;            // the Shrink panel's last outcome
+    // Presenter mode (panel_caption.cpp, style.cpp). `scale` is uiScale.value() each frame.
+    UiScale uiScale;
+    Theme theme = Theme::Dark;         // wanted; main applies a change between frames
+    bool presenter = false;            // Tab: the canvas and the caption only
+    int refitFrames = 0;               // fit the canvas again while the layout settles
+    double bottomWanted = 0;           // height the timeline needed last frame (wrapped toolbar)
+    double captionHeight = 0;          // height the caption needed last frame
+    ImFont* captionFont = nullptr;     // the caption's larger font, rebuilt with the scale
+    Rect toolbarEnd, captionRect;      // where the last toolbar button and the caption were
 };
 
 void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, labels, input
@@ -80,6 +91,11 @@ void drawOpen(Ui& ui);           // panel_open.cpp: polygons/ and recent files
 void drawShrink(Ui& ui);         // panel_shrink.cpp: shrink a failure, open and save the repro
 void drawHelp(Ui& ui);           // panel_help.cpp: keys and glossary
 void handleShortcuts(Ui& ui);    // panel_help.cpp: the keys the help window lists
+void drawCaption(Ui& ui);        // panel_caption.cpp: presenter view's step, action, sentence
+void handlePresenterKeys(Ui& ui);  // panel_caption.cpp: Tab, F11, Ctrl +/-/0
+// style.cpp: ImGui's fonts rasterised at ui.uiScale and its colours for the current theme;
+// between frames only (the font texture is uploaded again).
+void applyStyle(Ui& ui);
 
 // Helpers shared by panels (panel_common.cpp).
 void placeWindow(const Rect& r);  // tiles a panel at a layout rectangle
@@ -89,6 +105,9 @@ bool beginFloating(Ui& ui, const char* title, bool* open, float w, float h, floa
 // A vertex ('v'), triangle ('t') or step ('s') number that finds its target when clicked
 // (Model::find); "-" is drawn plain.
 void clickable(Ui& ui, const char* text, char kind);
+// Toolbars wrap: the next item goes on this line only if `width` more still fits in it.
+void sameLineOrWrap(float width);
+float buttonWidth(const char* label);
 ImVec4 toImVec4(Rgba c);
 unsigned toImU32(Rgba c);
 // Writes the current step as "<name>-step<N>.svg" in the working directory.

@@ -13,6 +13,11 @@ namespace flood::view::platform {
 const int kKeyF = GLFW_KEY_F;
 const int kKeyF1 = GLFW_KEY_F1;
 const int kKeyLeft = GLFW_KEY_LEFT, kKeyRight = GLFW_KEY_RIGHT;
+const int kKeyF11 = GLFW_KEY_F11, kKeyTab = GLFW_KEY_TAB;
+// '+' shares its key with '=' on most layouts; Ctrl+= is what a user presses for Ctrl++.
+const int kKeyPlus[2] = {GLFW_KEY_EQUAL, GLFW_KEY_KP_ADD};
+const int kKeyMinus[2] = {GLFW_KEY_MINUS, GLFW_KEY_KP_SUBTRACT};
+const int kKeyZero[2] = {GLFW_KEY_0, GLFW_KEY_KP_0};
 
 namespace {
 GLFWwindow* g_window = nullptr;
@@ -31,6 +36,32 @@ void onKey(GLFWwindow* w, int key, int scancode, int action, int mods) {
 
 void onDrop(GLFWwindow*, int count, const char** paths) {
     for (int i = 0; i < count; ++i) g_dropped.emplace_back(paths[i]);
+}
+
+bool g_scaleChanged = false;
+float g_scale = 1;
+void onContentScale(GLFWwindow*, float x, float) {
+    g_scale = x;
+    g_scaleChanged = true;
+}
+
+int g_windowed[4] = {0, 0, 0, 0};  // x, y, w, h before fullscreen
+
+// The monitor holding the window's centre; the primary one if none does.
+GLFWmonitor* monitorOfWindow() {
+    int x = 0, y = 0, w = 0, h = 0, count = 0;
+    glfwGetWindowPos(g_window, &x, &y);
+    glfwGetWindowSize(g_window, &w, &h);
+    GLFWmonitor** monitors = glfwGetMonitors(&count);
+    for (int i = 0; i < count; ++i) {
+        int mx = 0, my = 0;
+        glfwGetMonitorPos(monitors[i], &mx, &my);
+        const GLFWvidmode* mode = glfwGetVideoMode(monitors[i]);
+        if (mode && x + w / 2 >= mx && x + w / 2 < mx + mode->width && y + h / 2 >= my &&
+            y + h / 2 < my + mode->height)
+            return monitors[i];
+    }
+    return glfwGetPrimaryMonitor();
 }
 }  // namespace
 
@@ -77,6 +108,7 @@ bool createWindow(const WindowOptions& o, std::string* error) {
         return false;
     }
     glfwSetDropCallback(g_window, onDrop);
+    glfwSetWindowContentScaleCallback(g_window, onContentScale);
     ImGui_ImplGlfw_InitForOpenGL(g_window, true);
     g_imguiKey = glfwSetKeyCallback(g_window, onKey);
     return true;
@@ -84,6 +116,7 @@ bool createWindow(const WindowOptions& o, std::string* error) {
 
 void destroyWindow() {
     if (!g_window) return;
+    if (fullscreen()) toggleFullscreen();  // the desktop gets its video mode back first
     ImGui_ImplGlfw_Shutdown();
     glfwDestroyWindow(g_window);
     g_window = nullptr;
@@ -114,6 +147,30 @@ float contentScale() {
 void setTitle(const std::string& title) { glfwSetWindowTitle(g_window, title.c_str()); }
 
 std::vector<KeyPress> takeKeyPresses() { return g_keys.take(); }
+
+bool fullscreen() { return g_window && glfwGetWindowMonitor(g_window) != nullptr; }
+
+void toggleFullscreen() {
+    if (!g_window) return;
+    if (fullscreen()) {
+        glfwSetWindowMonitor(g_window, nullptr, g_windowed[0], g_windowed[1], g_windowed[2],
+                             g_windowed[3], 0);
+        return;
+    }
+    GLFWmonitor* monitor = monitorOfWindow();
+    const GLFWvidmode* mode = monitor ? glfwGetVideoMode(monitor) : nullptr;
+    if (!mode) return;  // no monitor to cover (headless): stay windowed
+    glfwGetWindowPos(g_window, &g_windowed[0], &g_windowed[1]);
+    glfwGetWindowSize(g_window, &g_windowed[2], &g_windowed[3]);
+    glfwSetWindowMonitor(g_window, monitor, 0, 0, mode->width, mode->height, mode->refreshRate);
+}
+
+bool takeContentScaleChange(float* scale) {
+    if (!g_scaleChanged) return false;
+    g_scaleChanged = false;
+    if (scale) *scale = g_scale;
+    return true;
+}
 
 std::vector<std::string> takeDroppedPaths() {
     std::vector<std::string> out;

@@ -47,4 +47,15 @@ extern const int kKeyF;
 extern const int kKeyF1;
 extern const int kKeyLeft, kKeyRight;
 
+// Presenter mode (panel_caption.cpp).
+extern const int kKeyF11, kKeyTab;
+extern const int kKeyPlus[2], kKeyMinus[2], kKeyZero[2];  // main row and keypad
+// F11: the window covers the monitor it is on at that monitor's video mode; again (or
+// destroyWindow) gives back the window where and as large as it was.
+void toggleFullscreen();
+bool fullscreen();
+// True once after the window's content scale changed (moved to another monitor, DPI
+// changed), with the new scale.
+bool takeContentScaleChange(float* scale);
+
 }  // namespace flood::view::platform

@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
+#include <map>
 #include <string>
 #include <tuple>
 
@@ -17,6 +18,7 @@
 
 #include "model.h"
 #include "palette.h"
+#include "presenter.h"
 
 using namespace flood;
 using namespace flood::view;
@@ -190,6 +192,154 @@ int checkDenseFace(const std::string& dir, int W, int H, const Layout& layout) {
     return failures;
 }
 
+
+// ---- presenter mode: --scale, --presenter, --theme and --print-layout ----------------------
+
+// Runs flood-viewer with `args` into `out` and loads it; `layout` gets its --print-layout
+// lines ("NAME x y w h").
+bool shootPrinted(const std::string& input, const std::string& args, const std::string& out, int W,
+                  int H, Image& img, std::map<std::string, Rect>& layout) {
+    std::remove(out.c_str());
+    std::string cmd = std::string("'") + FLOOD_VIEWER + "' '" + input + "' " + args +
+                      " --print-layout --screenshot '" + out + "' --size " + std::to_string(W) + "x" +
+                      std::to_string(H);
+    std::printf("%s\n", cmd.c_str());
+    std::fflush(stdout);
+    FILE* pipe = popen(cmd.c_str(), "r");
+    if (!pipe) return false;
+    char line[512];
+    while (std::fgets(line, sizeof line, pipe)) {
+        std::fputs(line, stdout);
+        char name[64];
+        Rect r;
+        if (std::sscanf(line, "flood-viewer: layout %63s %lf %lf %lf %lf", name, &r.x, &r.y, &r.w, &r.h) == 5)
+            layout[name] = r;
+    }
+    int rc = pclose(pipe);
+    if (rc == -1 || !WIFEXITED(rc) || WEXITSTATUS(rc) != 0) {
+        std::fprintf(stderr, "FAIL: flood-viewer %s did not exit 0\n", args.c_str());
+        return false;
+    }
+    int channels = 0;
+    img.px = stbi_load(out.c_str(), &img.w, &img.h, &channels, 4);
+    if (!img.px || img.w != W || img.h != H) {
+        std::fprintf(stderr, "FAIL: %s is missing or not %dx%d\n", out.c_str(), W, H);
+        return false;
+    }
+    return true;
+}
+
+bool inside(const Rect& r, int W, int H) { return r.w > 0 && r.h > 0 && r.x >= 0 && r.y >= 0 && r.x + r.w <= W && r.y + r.h <= H; }
+
+// Pixels of `r` (clipped to the image) for which `is` holds.
+template <class F>
+int count(const Image& img, const Rect& r, F is) {
+    int n = 0;
+    for (int y = std::max(0, int(r.y)); y < std::min(img.h, int(r.y + r.h)); ++y)
+        for (int x = std::max(0, int(r.x)); x < std::min(img.w, int(r.x + r.w)); ++x) n += is(img.at(x, y));
+    return n;
+}
+
+double luminance(Rgba c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
+
+int failWith(const std::string& what) {
+    std::fprintf(stderr, "FAIL: %s\n", what.c_str());
+    return 1;
+}
+
+// Presenter view at 2x on 1024x768: no toolbar, the caption whole inside the frame with its
+// last line above its bottom padding, the action's name in its colour, and the canvas fitted
+// to the space left (the Left marker where the presenter layout puts it).
+int checkPresenter(const std::string& dir, const std::string& input, Model& model, uint32_t step) {
+    const int W = 1024, H = 768;
+    Image img;
+    std::map<std::string, Rect> layout;
+    if (!shootPrinted(input, "--scale 2 --presenter --step " + std::to_string(step),
+                      dir + "/screenshot-test-presenter.png", W, H, img, layout))
+        return 1;
+    int failures = 0;
+    const Rect caption = layout["caption"];
+    if (layout.count("toolbar-end")) failures += failWith("presenter view drew the toolbar");
+    if (!inside(caption, W, H) || caption.h > H / 2 || caption.y + caption.h != H)
+        failures += failWith("the caption is not whole at the bottom of the frame");
+    // Text is the style's white; the lowest text row must stay clear of the bottom edge.
+    int lowest = -1;
+    for (int y = int(caption.y); y < int(caption.y + caption.h) && y < H; ++y)
+        if (count(img, {caption.x, double(y), caption.w, 1}, [](Rgba c) { return luminance(c) > 200; }) > 0)
+            lowest = y;
+    if (lowest < 0 || lowest > caption.y + caption.h - 8)
+        failures += failWith("the caption's text is missing or runs into its bottom edge (lowest row " +
+                             std::to_string(lowest) + ")");
+    model.seek(step);
+    Rgba actionColour = palette::action(model.currentEvent()->action);
+    int named = count(img, caption, [&](Rgba c) { return close(c, actionColour, 8); });
+    if (named < 40)
+        failures += failWith("the action's name is not drawn in its colour in the caption (" +
+                             std::to_string(named) + " pixels)");
+    model.camera.fit(model.polygon(), presenterLayout(W, H, caption.h).canvas);
+    Rgba seen;
+    Vec2 left = model.camera.toScreen(model.polygon().vertices[model.state().fingers.left]);
+    if (!near(img, left, palette::kLeft, 2, &seen)) failures += fail("presenter Left marker", left, palette::kLeft, seen);
+    Vec2 corner{W - 3.0, 3.0};  // where the Events panel is in the normal view
+    if (!near(img, corner, palette::kBackground, 0, &seen))
+        failures += fail("canvas background where a panel would be", corner, palette::kBackground, seen);
+    stbi_image_free(img.px);
+    return failures;
+}
+
+// The normal view at 2x on 1024x768: the toolbar wraps, so its last button is whole inside
+// the frame: a button (mostly the style's blue) with white text, ending where it says.
+int checkToolbarAtScale2(const std::string& dir, const std::string& input) {
+    const int W = 1024, H = 768;
+    Image img;
+    std::map<std::string, Rect> layout;
+    if (!shootPrinted(input, "--scale 2", dir + "/screenshot-test-scale2.png", W, H, img, layout)) return 1;
+    int failures = 0;
+    const Rect b = layout["toolbar-end"];
+    if (!inside(b, W, H)) {
+        failures += failWith("the toolbar's last button is outside the 1024x768 frame at 2x (" +
+                             std::to_string(b.x) + ", " + std::to_string(b.y) + ")");
+    } else {
+        const int area = int(b.w) * int(b.h);
+        int blue = count(img, b, [](Rgba c) { return c.b > c.r + 40; });
+        int text = count(img, b, [](Rgba c) { return luminance(c) > 200; });
+        if (blue < area / 2 || text < 20)
+            failures += failWith("no button drawn at the toolbar's end (" + std::to_string(blue) + " blue, " +
+                                 std::to_string(text) + " text pixels of " + std::to_string(area) + ")");
+    }
+    stbi_image_free(img.px);
+    return failures;
+}
+
+// The light theme: the same probes as the dark shot in the light colours (background,
+// water, dry land, Left marker), the boundary drawn dark, the panels light.
+int checkLightTheme(const std::string& dir, const std::string& input, Model& model, uint32_t step,
+                    const Layout& layout) {
+    palette::setTheme(Theme::Light);
+    Image img;
+    std::map<std::string, Rect> printed;
+    int failures = 0;
+    if (!shootPrinted(input, "--theme light --step " + std::to_string(step),
+                      dir + "/screenshot-test-light.png", int(layout.bottom.w),
+                      int(layout.bottom.y + layout.bottom.h), img, printed))
+        return 1;
+    model.seek(step);
+    model.camera.fit(model.polygon(), layout.canvas);
+    failures += checkShot(model, layout, img, false);
+    if (luminance(palette::kBackground) < 200) failures += failWith("the light background is not light");
+    Rgba seen;
+    // The outer ring's first edge, halfway: the boundary line.
+    const auto& v = model.polygon().vertices;
+    Vec2 mid = model.camera.toScreen({(v[0].x + v[1].x) / 2, (v[0].y + v[1].y) / 2});
+    if (!near(img, mid, palette::kBoundary, 1, &seen) || luminance(palette::kBoundary) > 60)
+        failures += fail("dark boundary line", mid, palette::kBoundary, seen);
+    Rect panel{layout.right.x + 4, layout.right.y + layout.right.h * 0.7, layout.right.w - 8, 20};
+    int light = count(img, panel, [](Rgba c) { return luminance(c) > 180; });
+    if (light < panel.w * panel.h * 0.6) failures += failWith("the panels are not light in the light theme");
+    stbi_image_free(img.px);
+    palette::setTheme(Theme::Dark);
+    return failures;
+}
 }  // namespace
 
 int main() {
@@ -282,8 +432,13 @@ int main() {
     stbi_image_free(none.px);
     if (failures) return 1;
     if (int dense = checkDenseFace(dir, W, H, layout); dense != 0) return dense;
+    failures += checkPresenter(dir, input, model, step);
+    failures += checkToolbarAtScale2(dir, input);
+    failures += checkLightTheme(dir, input, model, step, layout);
+    if (failures) return 1;
     std::printf("ok: step %u, background, water, dry land and Left marker where expected, also "
                 "after stepping back from the end; error view: crossing and culprit edge in the error colour; "
-                "a 10^5-vertex face reads as a shape\n", step);
+                "a 10^5-vertex face reads as a shape; presenter view at 2x with its caption whole; the toolbar's "
+                "last button inside 1024x768 at 2x; the light theme's ground, lines and panels\n", step);
     return 0;
 }

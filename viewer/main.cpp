@@ -38,7 +38,22 @@ struct Args {
     bool themeGiven = false;
     Theme theme = Theme::Dark;  // --theme
     bool printLayout = false;   // --print-layout: where the caption and toolbar end were
+    struct Press {
+        int key;
+        bool ctrl;
+    };
+    std::vector<Press> presses;  // --press KEY: presenter keys pressed before a screenshot
 };
+
+// --press names: the presenter keys, so a screenshot can show what they do.
+bool pressNamed(const std::string& name, Args::Press& p) {
+    if (name == "tab") return p = {platform::kKeyTab, false}, true;
+    if (name == "f11") return p = {platform::kKeyF11, false}, true;
+    if (name == "ctrl+plus") return p = {platform::kKeyPlus[0], true}, true;
+    if (name == "ctrl+minus") return p = {platform::kKeyMinus[0], true}, true;
+    if (name == "ctrl+0") return p = {platform::kKeyZero[0], true}, true;
+    return false;
+}
 
 const char* const kUsage =
     "usage: flood-viewer [FILE] [--feature N] [--step N] [--show-error] [--screenshot OUT.png]\n"
@@ -58,6 +73,8 @@ const char* const kUsage =
     "  --theme T         light or dark (default: the last one chosen, else dark)\n"
     "  --print-layout    with --screenshot: print where the caption and the toolbar's last\n"
     "                    button were drawn (x y w h, logical pixels)\n"
+    "  --press KEY       with --screenshot: press tab, f11, ctrl+plus, ctrl+minus or ctrl+0\n"
+    "                    first (repeat it for more, one frame apart)\n"
     "  --bench           time opening, seeking and drawing (hidden window), print, exit\n"
     "keys in the viewer: F1 or ?\n";
 
@@ -106,6 +123,14 @@ int parseArgs(int argc, char** argv, Args& a) {
             a.themeGiven = true;
         } else if (s == "--presenter") {
             a.presenter = true;
+        } else if (s == "--press") {
+            const char* v = value("--press");
+            Args::Press p{};
+            if (!v || !pressNamed(v, p)) {
+                if (v) std::fprintf(stderr, "flood-viewer: --press wants tab, f11, ctrl+plus, ctrl+minus or ctrl+0, got '%s'\n", v);
+                return 2 + 1;
+            }
+            a.presses.push_back(p);
         } else if (s == "--print-layout") {
             a.printLayout = true;
         } else if (s == "--show-error") {
@@ -333,6 +358,12 @@ int main(int argc, char** argv) {
         }
         ui.scale = ui.uiScale.value();
         const float scale = ui.scale;
+        // --press: key i goes down at frame 2i and up at 2i + 1, as a hand would press it.
+        if (shot && !args.presses.empty() && size_t(frame / 2) < args.presses.size()) {
+            const Args::Press& p = args.presses[size_t(frame / 2)];
+            io.KeysDown[p.key] = frame % 2 == 0;
+            io.KeyCtrl = p.ctrl && frame % 2 == 0;
+        }
         imguiGlNewFrame();
         platform::newFrame();
         ImGui::NewFrame();
@@ -359,7 +390,7 @@ int main(int argc, char** argv) {
         if (args.bench && benchPhase == 1) model.seek(bench.nextStep());
         if (args.bench && benchPhase == 2) model.camera.pan(frame % 2 ? 1 : -1, 0);
         if (!shot) handleShortcuts(ui);
-        if (!shot) handlePresenterKeys(ui);
+        if (!shot || !args.presses.empty()) handlePresenterKeys(ui);
         drawCanvas(ui);
         if (ui.presenter) {
             drawCaption(ui);
@@ -398,7 +429,9 @@ int main(int argc, char** argv) {
         }
         // ImGui places windows on the 2nd frame; the 3rd is the first settled one.
         // Each extra --step adds a frame.
-        const int shotFrame = 2 + int(args.steps.empty() ? 0 : args.steps.size() - 1);
+        // Each --press takes two frames, and the layout two more to settle after the last.
+        const int shotFrame = 2 + int(args.steps.empty() ? 0 : args.steps.size() - 1) +
+                              (args.presses.empty() ? 0 : 2 * int(args.presses.size()) + 2);
         std::string png = !args.bench && shot && frame == shotFrame ? args.screenshot : ui.pngRequest;
         if (!png.empty()) {
             std::vector<uint8_t> pixels;

@@ -10,6 +10,9 @@ namespace flood::view {
 
 void applyStyle(Ui& ui) {
     ImGuiIO& io = ImGui::GetIO();
+    // Before the first frame the backend creates the texture itself; after, it is uploaded
+    // again here. Asked first: building the atlas forgets the texture's id.
+    const bool uploaded = io.Fonts->TexID != nullptr;
     io.Fonts->Clear();
     ImFontConfig body;
     body.SizePixels = ui.uiScale.fontPixels(13);
@@ -18,8 +21,7 @@ void applyStyle(Ui& ui) {
     caption.SizePixels = ui.uiScale.fontPixels(20);
     ui.captionFont = io.Fonts->AddFontDefault(&caption);
     io.Fonts->Build();
-    // Before the first frame the backend creates the texture itself; after, upload it again.
-    if (io.Fonts->TexID) {
+    if (uploaded) {
         ImGui_ImplOpenGL3_DestroyFontsTexture();
         ImGui_ImplOpenGL3_CreateFontsTexture();
     }

@@ -367,9 +367,30 @@ int checkLightTheme(const std::string& dir, const std::string& input, Model& mod
     palette::setTheme(Theme::Dark);
     return failures;
 }
+// A bad value of a presenter option is a usage error (exit 2) naming the option and the
+// value, before any window.
+int checkPresenterUsage() {
+    int failures = 0;
+    for (const char* bad : {"--scale 9", "--scale x", "--theme sepia", "--press shift"}) {
+        std::string cmd = std::string("'") + FLOOD_VIEWER + "' " + bad + " 2>&1";
+        FILE* pipe = popen(cmd.c_str(), "r");
+        std::string said;
+        char line[512];
+        while (pipe && std::fgets(line, sizeof line, pipe)) said += line;
+        int rc = pipe ? pclose(pipe) : -1;
+        std::string option = std::string(bad).substr(0, std::string(bad).find(' '));
+        std::string value = std::string(bad).substr(option.size() + 1);
+        if (rc == -1 || !WIFEXITED(rc) || WEXITSTATUS(rc) != 2 ||
+            said.find(option) == std::string::npos || said.find("'" + value + "'") == std::string::npos)
+            failures += failWith(std::string("flood-viewer ") + bad + ": want exit 2 naming it, got: " + said);
+    }
+    return failures;
+}
+
 }  // namespace
 
 int main() {
+    if (checkPresenterUsage()) return 1;
     const char* display = std::getenv("DISPLAY");
     const char* wayland = std::getenv("WAYLAND_DISPLAY");
     if (!(display && *display) && !(wayland && *wayland)) {

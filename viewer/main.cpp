@@ -371,12 +371,12 @@ int main(int argc, char** argv) {
         const Rect canvasWas = ui.layout.canvas;
         ui.layout = ui.presenter ? presenterLayout(size.x, size.y, ui.captionHeight)
                                  : computeLayout(size.x, size.y, scale, ui.bottomWanted);
-        // While the layout settles (first frames, presenter view on or off) the camera is fitted
-        // to the canvas it ends up with; the error view keeps its own zoom.
+        // While the first frames settle the layout (the timeline's and the caption's heights are
+        // measured) the camera is fitted to the canvas it ends up with; the error view keeps its
+        // own zoom.
         const Rect& c = ui.layout.canvas;
         bool moved = c.x != canvasWas.x || c.y != canvasWas.y || c.w != canvasWas.w || c.h != canvasWas.h;
-        if ((frame < 3 || ui.refitFrames > 0) && moved && frame > 0 && !model.errorView) model.needsFit = true;
-        if (ui.refitFrames > 0) --ui.refitFrames;
+        if (frame > 0 && frame < 3 && moved && !model.errorView) model.needsFit = true;
         if (frame == 0 && args.showError) {
             model.camera.setViewport(ui.layout.canvas);
             model.showError();

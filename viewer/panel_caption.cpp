@@ -18,11 +18,10 @@ void handlePresenterKeys(Ui& ui) {
     if (io.KeyCtrl && pressed(platform::kKeyMinus)) zoomed = ui.uiScale.zoomOut();
     if (io.KeyCtrl && pressed(platform::kKeyZero)) zoomed = ui.uiScale.resetZoom();
     if (zoomed) ui.message = "UI scale " + std::to_string(int(ui.uiScale.zoom() * 100 + 0.5f)) + "%";
-    // A text field keeps its Tab.
-    if (!io.WantTextInput && !io.KeyCtrl && ImGui::IsKeyPressed(platform::kKeyTab, false)) {
+    // A text field keeps its Tab. The camera keeps its centre and zoom, so Tab twice gives
+    // back the same view (F fits the polygon to the larger canvas).
+    if (!io.WantTextInput && !io.KeyCtrl && ImGui::IsKeyPressed(platform::kKeyTab, false))
         ui.presenter = !ui.presenter;
-        ui.refitFrames = 2;  // the canvas changes size now and once more as the caption settles
-    }
 }
 
 void drawCaption(Ui& ui) {

@@ -223,7 +223,7 @@ void drawTimeline(Ui& ui) {
     sameLineOrWrap(buttonWidth(themeButton));
     if (ImGui::Button(themeButton)) ui.theme = ui.theme == Theme::Light ? Theme::Dark : Theme::Light;
     sameLineOrWrap(buttonWidth("Present (Tab)"));
-    if (ImGui::Button("Present (Tab)")) ui.presenter = true, ui.refitFrames = 2;
+    if (ImGui::Button("Present (Tab)")) ui.presenter = true;
     sameLineOrWrap(buttonWidth("Help"));
     if (ImGui::Button("Help")) ui.showHelp = true;
     ImVec2 end0 = ImGui::GetItemRectMin(), end1 = ImGui::GetItemRectMax();

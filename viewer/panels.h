@@ -71,7 +71,6 @@ struct Ui {
     UiScale uiScale;
     Theme theme = Theme::Dark;         // wanted; main applies a change between frames
     bool presenter = false;            // Tab: the canvas and the caption only
-    int refitFrames = 0;               // fit the canvas again while the layout settles
     double bottomWanted = 0;           // height the timeline needed last frame (wrapped toolbar)
     double captionHeight = 0;          // height the caption needed last frame
     ImFont* captionFont = nullptr;     // the caption's larger font, rebuilt with the scale

@@ -214,6 +214,8 @@ void drawTimeline(Ui& ui) {
     ImGui::SameLine();
     if (ImGui::Button("SVG")) exportSvg(ui);
     ImGui::SameLine();
+    if (ImGui::Button("Export...")) ui.showExport = true;
+    ImGui::SameLine();
     if (ImGui::Button("Help")) ui.showHelp = true;
 
     strip(ui);

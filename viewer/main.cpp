@@ -44,6 +44,9 @@ struct Args {
 const char* const kUsage =
     "usage: flood-viewer [FILE] [--feature N] [--step N] [--show-error] [--screenshot OUT.png]\n"
     "                    [--size WxH]\n"
+    "       flood-viewer FILE --screenshot OUT.png|OUT.svg --canvas-only [--size WxH] [--caption]\n"
+    "       flood-viewer FILE --export-gif OUT.gif|--export-png-dir DIR [--steps A:B] [--every K]\n"
+    "                    [--fps F] [--caption] [--size WxH]\n"
     "  FILE              polygon (GeoJSON, ring arrays or WKT) or a trace from `flood trace`\n"
     "                    (*.jsonl); default: polygons/paper-figure-7.json\n"
     "  --feature N       open feature N (0-based, as `flood check` numbers them) of a\n"
@@ -63,8 +66,8 @@ const char* const kUsage =
     "  --every K         a frame every K steps; the last step B always ends the animation\n"
     "  --fps F           GIF frames per second, 0.1 to 50 (default 10)\n"
     "  --caption         a line under the canvas: step, action and the step's narration\n"
-    "  a file that cannot be written: exit 8, nothing half-written left\n"
     "  --bench           time opening, seeking and drawing (hidden window), print, exit\n"
+    "a file that cannot be written: exit 8, nothing half-written left\n"
     "keys in the viewer: F1 or ?\n";
 
 // Returns 0 to go on, or an exit code + 1 (so 1 means "exit 0", e.g. after --help).

@@ -127,7 +127,7 @@ Output::~Output() {
 
 std::ostream& Output::stream() { return impl_->path == "-" ? std::cout : impl_->out; }
 
-Status Output::commit() {
+Status Output::commit(std::string* message) {
     Impl& o = *impl_;
     o.done = true;
     if (o.path == "-") {
@@ -143,7 +143,9 @@ Status Output::commit() {
         o.buf.fail(errno);
     if (!o.buf.error()) return Status::Ok;
     if (!o.temp.empty()) ::unlink(o.temp.c_str());
-    std::cerr << "error: " << o.label() << ": " << std::strerror(o.buf.error()) << "\n";
+    std::string line = "error: " + o.label() + ": " + std::strerror(o.buf.error());
+    if (message) *message = line;
+    else std::cerr << line << "\n";
     return Status::WriteFailed;
 }
 

@@ -23,8 +23,9 @@ public:
 
     std::ostream& stream();
     // Flushes, closes and renames. On failure prints "error: PATH: cannot write: REASON"
-    // (the system's reason), removes the temporary and returns WriteFailed.
-    Status commit();
+    // (the system's reason), removes the temporary and returns WriteFailed. With `message`
+    // the line goes there instead of stderr (the viewer shows it in its status line).
+    Status commit(std::string* message = nullptr);
 
 private:
     struct Impl;

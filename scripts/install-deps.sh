@@ -10,6 +10,7 @@ packages=(
   libgeos-dev                                         # GEOS, the validity oracle of tests/geos_diff_test.cpp
   libgdal-dev gdal-bin                                # GIS formats through GDAL (core_gdal/, optional)
   libglfw3-dev libglm-dev libimgui-dev libstb-dev     # viewer
+  libgif-dev                                          #   its animated GIF exports
   python3-glad python3-jinja2                         # GL loader generated at build time
   xvfb xauth                                          # headless GUI tests
   clang libclang-rt-14-dev python3                    # fuzzing pass and sanitizers in CI

@@ -1,6 +1,7 @@
 // flood-viewer: replays the flooding triangulation of a polygon step by step.
 //   flood-viewer [FILE] [--feature N] [--step N] [--screenshot OUT.png] [--size WxH]
 //                [--scale S] [--presenter] [--theme light|dark]
+//   flood-viewer FILE --export-gif OUT.gif [--steps A:B] [--every K] [--fps F] [--caption]
 // Without a display it prints a summary of the run instead and says how to get pictures.
 #include <imgui.h>
 
@@ -13,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "export_job.h"
 #include "model.h"
 #include "transcript.h"
 #include "panels.h"
@@ -43,6 +45,11 @@ struct Args {
         bool ctrl;
     };
     std::vector<Press> presses;  // --press KEY: presenter keys pressed before a screenshot
+    bool canvasOnly = false;  // --canvas-only: --screenshot renders the canvas alone
+    bool sizeGiven = false;
+    ExportSettings exports;  // canvas-only PNG, SVG, GIF, PNG sequence (export.h)
+    bool rangeGiven = false, everyGiven = false, fpsGiven = false;
+    bool exporting() const { return !exports.png.empty() || !exports.svg.empty() || exports.animated(); }
 };
 
 // --press names: the presenter keys, so a screenshot can show what they do.
@@ -58,6 +65,9 @@ bool pressNamed(const std::string& name, Args::Press& p) {
 const char* const kUsage =
     "usage: flood-viewer [FILE] [--feature N] [--step N] [--show-error] [--screenshot OUT.png]\n"
     "                    [--size WxH] [--scale S] [--presenter] [--theme light|dark]\n"
+    "       flood-viewer FILE --screenshot OUT.png|OUT.svg --canvas-only [--size WxH] [--caption]\n"
+    "       flood-viewer FILE --export-gif OUT.gif|--export-png-dir DIR [--steps A:B] [--every K]\n"
+    "                    [--fps F] [--caption] [--size WxH]\n"
     "  FILE              polygon (GeoJSON, ring arrays or WKT) or a trace from `flood trace`\n"
     "                    (*.jsonl); default: polygons/paper-figure-7.json\n"
     "  --feature N       open feature N (0-based, as `flood check` numbers them) of a\n"
@@ -67,7 +77,8 @@ const char* const kUsage =
     "  --show-error      start in the error view (zoomed to the culprits), as the E key\n"
     "  --screenshot OUT  render once in a hidden window, write OUT as PNG and exit; the exit\n"
     "                    code is the CLI's: 3 unreadable, 4 invalid, 5 forbidden, 6 checker\n"
-    "  --size WxH        window size in pixels (default 1280x800)\n"
+    "  --size WxH        window size in pixels (default 1280x800); with --canvas-only, an\n"
+    "                    SVG or an export below: the picture's size (the window keeps 1280x800)\n"
     "  --scale S         UI scale 0.5..4 instead of the monitor's (screenshots: 1)\n"
     "  --presenter       start in presenter view: the canvas and a large caption (Tab)\n"
     "  --theme T         light or dark (default: the last one chosen, else dark)\n"
@@ -75,7 +86,16 @@ const char* const kUsage =
     "                    button were drawn (x y w h, logical pixels)\n"
     "  --press KEY       with --screenshot: press tab, f11, ctrl+plus, ctrl+minus or ctrl+0\n"
     "                    first (repeat it for more, one frame apart)\n"
+    "  --canvas-only     --screenshot renders the canvas alone (no panels), offscreen at --size;\n"
+    "                    OUT ending in .svg is always the canvas alone, as SVG\n"
+    "  --export-gif OUT  the flood (or --steps) as an animated GIF of the canvas, then exit\n"
+    "  --export-png-dir DIR  the same as numbered PNGs DIR/frame-0000.png, ... (DIR is made)\n"
+    "  --steps A:B       the steps exported (A: or :B for an open end; default the whole flood)\n"
+    "  --every K         a frame every K steps; the last step B always ends the animation\n"
+    "  --fps F           GIF frames per second, 0.1 to 50 (default 10)\n"
+    "  --caption         a line under the canvas: step, action and the step's narration\n"
     "  --bench           time opening, seeking and drawing (hidden window), print, exit\n"
+    "a file that cannot be written: exit 8, nothing half-written left\n"
     "keys in the viewer: F1 or ?\n";
 
 // Returns 0 to go on, or an exit code + 1 (so 1 means "exit 0", e.g. after --help).
@@ -148,6 +168,44 @@ int parseArgs(int argc, char** argv, Args& a) {
                 if (v) std::fprintf(stderr, "flood-viewer: --size wants WxH (64..16384), got '%s'\n", v);
                 return 2 + 1;
             }
+            a.sizeGiven = true;
+        } else if (s == "--canvas-only") {
+            a.canvasOnly = true;
+        } else if (s == "--caption") {
+            a.exports.caption = true;
+        } else if (s == "--export-gif" || s == "--export-png-dir") {
+            const char* v = value(s.c_str());
+            if (!v) return 2 + 1;
+            (s == "--export-gif" ? a.exports.gif : a.exports.pngDir) = v;
+        } else if (s == "--steps") {
+            const char* v = value("--steps");
+            std::string error;
+            if (!v) return 2 + 1;
+            if (!parseStepRange(v, a.exports.first, a.exports.last, &error)) {
+                std::fprintf(stderr, "flood-viewer: %s\n", error.c_str());
+                return 2 + 1;
+            }
+            a.rangeGiven = true;
+        } else if (s == "--every") {
+            const char* v = value("--every");
+            char* end = nullptr;
+            long k = v ? std::strtol(v, &end, 10) : 0;
+            if (!v || *end != 0 || k < 1 || k > 1000000000L) {
+                if (v) std::fprintf(stderr, "flood-viewer: --every wants a number of steps >= 1, got '%s'\n", v);
+                return 2 + 1;
+            }
+            a.exports.every = uint32_t(k);
+            a.everyGiven = true;
+        } else if (s == "--fps") {
+            const char* v = value("--fps");
+            char* end = nullptr;
+            double f = v ? std::strtod(v, &end) : 0;
+            if (!v || *end != 0 || !(f >= kMinFps && f <= kMaxFps)) {
+                if (v) std::fprintf(stderr, "flood-viewer: --fps wants frames per second from 0.1 to 50, got '%s'\n", v);
+                return 2 + 1;
+            }
+            a.exports.fps = f;
+            a.fpsGiven = true;
         } else if (!s.empty() && s[0] == '-' && s != "-") {
             std::fprintf(stderr, "flood-viewer: unknown option %s\n%s", s.c_str(), kUsage);
             return 2 + 1;
@@ -158,16 +216,42 @@ int parseArgs(int argc, char** argv, Args& a) {
             return 2 + 1;
         }
     }
+    // The screenshot is an export when it is the canvas alone (or an SVG, which only can be).
+    const std::string& shot = a.screenshot;
+    bool svg = shot.size() >= 4 && shot.compare(shot.size() - 4, 4, ".svg") == 0;
+    if (svg) a.exports.svg = shot;
+    else if (a.canvasOnly && !shot.empty()) a.exports.png = shot;
+    const char* needs = nullptr;
+    if (a.canvasOnly && shot.empty()) needs = "--canvas-only needs --screenshot OUT";
+    else if ((a.rangeGiven || a.everyGiven) && !a.exports.animated())
+        needs = "--steps and --every need --export-gif or --export-png-dir";
+    else if (a.fpsGiven && a.exports.gif.empty()) needs = "--fps needs --export-gif";
+    else if (a.exports.caption && !a.exporting()) needs = "--caption needs --canvas-only, an SVG or an export";
+    else if (a.exporting() && a.bench) needs = "--bench cannot be combined with exports";
+#ifndef FLOOD_GIF
+    if (!a.exports.gif.empty()) needs = "--export-gif: this flood-viewer was built without giflib (FLOOD_GIF)";
+#endif
+    if (needs) {
+        std::fprintf(stderr, "flood-viewer: %s\n%s", needs, kUsage);
+        return 2 + 1;
+    }
+    if (a.exporting()) {
+        a.exports.width = a.width, a.exports.height = a.height;
+        if (!a.sizeGiven) a.exports.width = 1280, a.exports.height = 800;
+        a.width = 1280, a.height = 800;  // the hidden window's; the pictures have their own size
+    }
     return 0;
 }
 
 // No display: say so, then print what can be known without one.
 int printSummary(const std::string& why, Model& model, const Args& args) {
     std::printf("flood-viewer: %s.\n", why.c_str());
-    if (!args.screenshot.empty()) {
+    if (!args.screenshot.empty() || args.exports.animated()) {
+        std::string out = !args.screenshot.empty() ? args.screenshot
+                          : !args.exports.gif.empty() ? args.exports.gif : args.exports.pngDir;
         std::fprintf(stderr, "flood-viewer: cannot write %s without a display; try\n"
                              "  xvfb-run -a flood-viewer %s --screenshot %s\n",
-                     args.screenshot.c_str(), args.file.c_str(), args.screenshot.c_str());
+                     out.c_str(), args.file.c_str(), out.c_str());
         return 1;
     }
     if (model.polygon().vertices.empty()) {
@@ -288,13 +372,23 @@ int main(int argc, char** argv) {
     }
     double openSeconds = now() - openStart;
     if (!args.steps.empty()) model.seek(args.steps.front());
+    if (args.exporting() && args.exports.animated()) {
+        // A range past the flood's end is a mistake to say, not to clamp silently.
+        const ExportSettings& e = args.exports;
+        uint32_t n = model.steps();
+        if (e.first > n || (e.last != kNone && e.last > n)) {
+            std::fprintf(stderr, "flood-viewer: --steps %u:%u: %s has %u steps (0..%u)\n", e.first,
+                         e.last == kNone ? n : e.last, args.file.c_str(), n, n);
+            return int(Status::Usage);
+        }
+    }
     BenchStats bench;
     if (args.bench) bench = benchOpenAndSeek(model, openSeconds);
 
     std::string error;
     if (!platform::initialize(&error)) return printSummary(error, model, args);
 
-    const bool shot = !args.screenshot.empty() || args.bench;
+    const bool shot = !args.screenshot.empty() || args.bench || args.exporting();
     platform::WindowOptions wo;
     wo.width = args.width, wo.height = args.height, wo.hidden = shot;
     auto title = [&] {
@@ -406,6 +500,7 @@ int main(int argc, char** argv) {
             drawOpen(ui);
             drawShrink(ui);
             drawHelp(ui);
+            drawExport(ui);
         }
         ImGui::Render();
 
@@ -432,11 +527,22 @@ int main(int argc, char** argv) {
         // Each --press takes two frames, and the layout two more to settle after the last.
         const int shotFrame = 2 + int(args.steps.empty() ? 0 : args.steps.size() - 1) +
                               (args.presses.empty() ? 0 : 2 * int(args.presses.size()) + 2);
-        std::string png = !args.bench && shot && frame == shotFrame ? args.screenshot : ui.pngRequest;
+        if (args.exporting() && frame == shotFrame) {
+            // The canvas alone, offscreen: run the whole export now.
+            ExportJob job(ui, args.exports);
+            while (job.advance(0)) {
+            }
+            bool ok = job.status() == Status::Ok;
+            std::fprintf(ok ? stdout : stderr, "flood-viewer: %s\n", job.message().c_str());
+            exitCode = ok ? model.exitCode() : int(job.status());
+            platform::requestClose();
+        }
+        std::string png = !args.bench && !args.exporting() && shot && frame == shotFrame ? args.screenshot
+                                                                                         : ui.pngRequest;
         if (!png.empty()) {
             std::vector<uint8_t> pixels;
             bool ok = renderer.readPixels(fbW, fbH, pixels) && writePng(png, fbW, fbH, pixels, &error);
-            ui.message = ok ? "wrote " + png : "cannot write " + png + ": " + error;
+            ui.message = ok ? "wrote " + png : error;
             ui.pngRequest.clear();
             if (shot) {
                 std::fprintf(ok ? stdout : stderr, "flood-viewer: %s\n", ui.message.c_str());
@@ -444,9 +550,15 @@ int main(int argc, char** argv) {
                     if (args.printLayout && r.w > 0)
                         std::printf("flood-viewer: layout %s %.0f %.0f %.0f %.0f\n", name, r.x, r.y, r.w, r.h);
                 // The picture is written; the exit code still says what the input was.
-                exitCode = !ok ? 1 : model.exitCode();
+                exitCode = !ok ? int(Status::WriteFailed) : model.exitCode();
                 platform::requestClose();
             }
+        }
+        // The Export panel's export: a slice of it each frame, so the window stays live.
+        if (ui.exportJob && !ui.exportJob->advance(1.0 / 30)) {
+            ui.exportNote = ui.exportJob->message();
+            ui.message = ui.exportNote;
+            ui.exportJob.reset();
         }
         platform::swapBuffers();
 
@@ -456,6 +568,7 @@ int main(int argc, char** argv) {
     }
 
     if (!recentFile.empty()) model.saveRecent(recentFile);
+    ui.exportJob.reset();  // its framebuffer goes while the GL context exists
     rendererOwner.reset();
     imguiGlShutdown();
     platform::destroyWindow();

@@ -289,6 +289,13 @@ void drawCanvas(Ui& ui) {
     }
     m.camera.setViewport(area);
     canvasInput(ui);
+    paintCanvas(ui, ImGui::GetBackgroundDrawList());
+    if (!ui.presenter) canvasBar(ui);  // presenter view: nothing over the canvas but the polygon
+}
+
+void paintCanvas(Ui& ui, ImDrawList* dl) {
+    Model& m = ui.model;
+    const Rect& area = ui.layout.canvas;
     syncBuffers(ui);
 
     CanvasState& cs = ui.canvas;
@@ -333,7 +340,6 @@ void drawCanvas(Ui& ui) {
                       {base.x + uy * head / 2, base.y - ux * head / 2}, l.color);
     }
 
-    ImDrawList* dl = ImGui::GetBackgroundDrawList();
     dl->PushClipRect(ImVec2(float(area.x), float(area.y)),
                      ImVec2(float(area.x + area.w), float(area.y + area.h)), true);
     if (m.errorView) errorOverlay(ui, dl);
@@ -364,7 +370,6 @@ void drawCanvas(Ui& ui) {
                     toImU32(palette::kCulprit), msg);
     }
     dl->PopClipRect();
-    if (!ui.presenter) canvasBar(ui);  // presenter view: nothing over the canvas but the polygon
 }
 
 }  // namespace flood::view

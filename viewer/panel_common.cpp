@@ -1,7 +1,6 @@
 #include <imgui.h>
 
-#include <fstream>
-
+#include "output.h"  // cli/
 #include "panels.h"
 
 namespace flood::view {
@@ -50,9 +49,10 @@ std::string exportSvg(Ui& ui) {
     // Next to the input would write into the source tree; use the working directory.
     if (slash != std::string::npos) base = base.substr(slash + 1);
     std::string out = base + "-step" + std::to_string(ui.model.step()) + ".svg";
-    std::ofstream f(out);
-    writeSceneSvg(f, buildScene(ui.model, ui.sceneOptions), ui.model.polygon(), 1000);
-    ui.message = f ? "wrote " + out : "cannot write " + out;
+    cli::Output f(out);  // atomic, as every export (export_job.h)
+    writeSceneSvg(f.stream(), buildScene(ui.model, ui.sceneOptions), ui.model.polygon(), 1000);
+    std::string error;
+    ui.message = f.commit(&error) == Status::Ok ? "wrote " + out : error;
     return out;
 }
 

@@ -224,6 +224,8 @@ void drawTimeline(Ui& ui) {
     if (ImGui::Button(themeButton)) ui.theme = ui.theme == Theme::Light ? Theme::Dark : Theme::Light;
     sameLineOrWrap(buttonWidth("Present (Tab)"));
     if (ImGui::Button("Present (Tab)")) ui.presenter = true;
+    sameLineOrWrap(buttonWidth("Export..."));
+    if (ImGui::Button("Export...")) ui.showExport = true;
     sameLineOrWrap(buttonWidth("Help"));
     if (ImGui::Button("Help")) ui.showHelp = true;
     ImVec2 end0 = ImGui::GetItemRectMin(), end1 = ImGui::GetItemRectMax();

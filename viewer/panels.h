@@ -4,10 +4,12 @@
 // frame in main.cpp, and give it a rectangle of computeLayout() (model.cpp) or let it float.
 #pragma once
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "canvas_geometry.h"
+#include "export.h"
 #include "model.h"
 #include "presenter.h"
 #include "renderer.h"
@@ -15,6 +17,11 @@
 
 struct ImVec4;
 struct ImFont;
+struct ImDrawList;
+
+namespace flood::view {
+class ExportJob;  // export_job.h
+}
 
 namespace flood::view {
 
@@ -75,9 +82,19 @@ struct Ui {
     double captionHeight = 0;          // height the caption needed last frame
     ImFont* captionFont = nullptr;     // the caption's larger font, rebuilt with the scale
     Rect toolbarEnd, captionRect;      // where the last toolbar button and the caption were
+    bool showExport = false;           // the Export panel (panel_export.cpp)
+    ExportSettings exportSettings;     // what it exports; its format and path below
+    int exportFormat = 0;              // ExportFormat
+    char exportPath[1024] = "";
+    std::shared_ptr<ExportJob> exportJob;  // running, advanced by main after each frame
+    std::string exportNote;            // the last export's outcome
 };
 
 void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, labels, input
+// What drawCanvas paints, without its input and find box: the world to the renderer (as
+// Renderer::render draws it next), labels and overlays to `dl`, at ui.layout.canvas through
+// model.camera. Exports call it with their own camera, rectangle and draw list.
+void paintCanvas(Ui& ui, ImDrawList* dl);
 void drawTimeline(Ui& ui);       // panel_timeline.cpp: strip, transport, go-to, play
 void drawStateMachine(Ui& ui);   // panel_state_machine.cpp: the six states of §4
 void drawDecision(Ui& ui);       // panel_decision.cpp: the Fig. 9 tests of the current event
@@ -89,6 +106,7 @@ void drawTranscript(Ui& ui);     // panel_transcript.cpp: the paper-style transc
 void drawOpen(Ui& ui);           // panel_open.cpp: polygons/ and recent files
 void drawShrink(Ui& ui);         // panel_shrink.cpp: shrink a failure, open and save the repro
 void drawHelp(Ui& ui);           // panel_help.cpp: keys and glossary
+void drawExport(Ui& ui);         // panel_export.cpp: canvas PNG/SVG, GIF, PNG sequence
 void handleShortcuts(Ui& ui);    // panel_help.cpp: the keys the help window lists
 void drawCaption(Ui& ui);        // panel_caption.cpp: presenter view's step, action, sentence
 void handlePresenterKeys(Ui& ui);  // panel_caption.cpp: Tab, F11, Ctrl +/-/0

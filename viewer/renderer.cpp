@@ -9,6 +9,7 @@
 #include <cmath>
 #include <initializer_list>
 
+#include "output.h"   // cli/: atomic files
 #include "shaders.h"  // generated from shaders/ by embed_shaders.cmake
 
 namespace flood::view {
@@ -393,12 +394,22 @@ void imguiGlShutdown() { ImGui_ImplOpenGL3_Shutdown(); }
 
 bool writePng(const std::string& path, int width, int height, const std::vector<uint8_t>& rgba,
               std::string* error) {
-    if (rgba.size() < size_t(width) * height * 4) {
-        if (error) *error = "no pixels to write";
+    if (width <= 0 || height <= 0 || rgba.size() < size_t(width) * height * 4) {
+        if (error) *error = "error: " + path + ": cannot write: no pixels to write";
         return false;
     }
-    if (!stbi_write_png(path.c_str(), width, height, 4, rgba.data(), width * 4)) {
-        if (error) *error = "cannot write " + path;
+    // Through the CLI's atomic output: a failed write leaves no half a PNG behind.
+    cli::Output out(path);
+    auto write = [](void* context, void* data, int size) {
+        static_cast<std::ostream*>(context)->write(static_cast<const char*>(data), size);
+    };
+    if (!stbi_write_png_to_func(write, &out.stream(), width, height, 4, rgba.data(), width * 4)) {
+        if (error) *error = "error: " + path + ": cannot write: the PNG encoder failed";
+        return false;
+    }
+    std::string reason;
+    if (out.commit(&reason) != Status::Ok) {
+        if (error) *error = reason;
         return false;
     }
     return true;

@@ -97,7 +97,8 @@ void imguiGlNewFrame();
 void imguiGlRender();  // draws ImGui's draw data over the canvas
 void imguiGlShutdown();
 
-// Writes RGBA pixels (top row first) as a PNG. Returns false with a reason in `error`.
+// Writes RGBA pixels (top row first) as a PNG, atomically. Returns false with the line to show
+// in `error`: "error: PATH: cannot write: REASON".
 bool writePng(const std::string& path, int width, int height, const std::vector<uint8_t>& rgba,
               std::string* error);
 

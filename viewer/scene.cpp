@@ -181,6 +181,22 @@ static std::string svgColor(Rgba c) {
     return buf;
 }
 
+// Text for an SVG element: the five characters XML reserves, escaped.
+static std::string xmlText(const std::string& s) {
+    std::string out;
+    for (char c : s) {
+        switch (c) {
+            case '<': out += "&lt;"; break;
+            case '>': out += "&gt;"; break;
+            case '&': out += "&amp;"; break;
+            case '"': out += "&quot;"; break;
+            case '\'': out += "&apos;"; break;
+            default: out += c;
+        }
+    }
+    return out;
+}
+
 void writeSceneSvg(std::ostream& out, const Scene& sc, const Polygon& polygon, int width) {
     // Same fit as the canvas, onto a page whose aspect follows the polygon.
     double x0 = 0, x1 = 1, y0 = 0, y1 = 1;
@@ -194,26 +210,36 @@ void writeSceneSvg(std::ostream& out, const Scene& sc, const Polygon& polygon, i
     int height = std::clamp(int(width * aspect), 64, 8 * width);
     Camera cam;
     cam.fit(polygon, Rect{0, 0, double(width), double(height)});
+    writeSceneSvg(out, sc, cam, width, height);
+}
+
+void writeSceneSvg(std::ostream& out, const Scene& sc, const Camera& cam, int width, int height,
+                   const Caption* caption) {
     auto P = [&](Point p) {
         Vec2 s = cam.toScreen(p);
         char buf[64];
         std::snprintf(buf, sizeof buf, "%.2f,%.2f", s.x, s.y);
         return std::string(buf);
     };
+    const Rect& area = cam.viewport();
     out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\""
         << height << "\" viewBox=\"0 0 " << width << " " << height << "\">\n";
+    // The canvas's rectangle clips the scene as the canvas does; a caption lies below it.
+    out << "<clipPath id=\"canvas\"><rect x=\"" << area.x << "\" y=\"" << area.y << "\" width=\""
+        << area.w << "\" height=\"" << area.h << "\"/></clipPath>\n";
     out << "<rect width=\"100%\" height=\"100%\" fill=\"" << svgColor(palette::kBackground)
-        << "\"/>\n<path fill-rule=\"evenodd\" fill=\"" << svgColor(palette::kPolygonFill)
-        << "\" d=\"";
+        << "\"/>\n<g clip-path=\"url(#canvas)\">\n<path fill-rule=\"evenodd\" fill=\""
+        << svgColor(palette::kPolygonFill) << "\" d=\"";
     for (const auto& ring : sc.rings) {
         for (size_t i = 0; i < ring.size(); ++i) out << (i ? " L" : "M") << P(ring[i]);
         out << " Z ";
     }
     out << "\"/>\n";
+    // One element per triangle, classed as the canvas colours it (water, or cut just now).
     for (const auto* tris : {&sc.water, &sc.current})
         for (const auto& t : *tris)
-            out << "<polygon points=\"" << P(t.a) << " " << P(t.b) << " " << P(t.c)
-                << "\" fill=\"" << svgColor(t.color) << "\"/>\n";
+            out << "<polygon class=\"" << (tris == &sc.water ? "water" : "current") << "\" points=\""
+                << P(t.a) << " " << P(t.b) << " " << P(t.c) << "\" fill=\"" << svgColor(t.color) << "\"/>\n";
     for (const auto& l : sc.lines)
         out << "<line x1=\"" << cam.toScreen(l.a).x << "\" y1=\"" << cam.toScreen(l.a).y
             << "\" x2=\"" << cam.toScreen(l.b).x << "\" y2=\"" << cam.toScreen(l.b).y
@@ -230,7 +256,15 @@ void writeSceneSvg(std::ostream& out, const Scene& sc, const Polygon& polygon, i
         if (l.worldArea > 0 && l.worldArea * cam.scale() * cam.scale() < l.minArea) continue;
         out << "<text x=\"" << c.x + l.dx << "\" y=\"" << c.y + l.dy + 10
             << "\" font-family=\"sans-serif\" font-size=\"11\" fill=\"" << svgColor(l.color)
-            << "\">" << l.text << "</text>\n";
+            << "\">" << xmlText(l.text) << "</text>\n";
+    }
+    out << "</g>\n";
+    if (caption) {
+        double y = area.y + area.h + 18;
+        out << "<text x=\"8\" y=\"" << y << "\" font-family=\"sans-serif\" font-size=\"13\">"
+            << "<tspan font-weight=\"bold\" fill=\"" << svgColor(caption->headColor) << "\">"
+            << xmlText(caption->head) << "</tspan><tspan fill=\"" << svgColor(palette::kBoundary)
+            << "\"> " << xmlText(caption->text) << "</tspan></text>\n";
     }
     out << "</svg>\n";
 }

@@ -68,7 +68,16 @@ Rgba vertexClassColor(VertexClass c);  // the legend's colours
 // when no gorge is active (before the start, after the end).
 bool activeGorgeBox(const Model& model, Point& lo, Point& hi);
 
-// Writes the scene as a standalone SVG of the given pixel width.
+// Writes the scene as a standalone SVG of the given pixel width, the polygon fitted.
 void writeSceneSvg(std::ostream& out, const Scene& scene, const Polygon& polygon, int width);
+// The same through `camera` (its viewport is the canvas, clipped as on screen) on a page of
+// width x height, with an optional caption line below the canvas. Triangles are <polygon>
+// elements of class "water" or "current" (cut by the current event).
+struct Caption {  // export.h's captionOf: "Step N  Action" and the narration
+    std::string head, text;
+    Rgba headColor;
+};
+void writeSceneSvg(std::ostream& out, const Scene& scene, const Camera& camera, int width, int height,
+                   const Caption* caption = nullptr);
 
 }  // namespace flood::view

@@ -1,0 +1,105 @@
+#include "export.h"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+
+#include "narrate.h"
+
+namespace flood::view {
+
+namespace {
+
+// A step number: digits only, at most 2^32 - 2 (kNone means "the end").
+bool parseStep(const std::string& s, uint32_t& out) {
+    if (s.empty() || s.size() > 10 || s.find_first_not_of("0123456789") != std::string::npos) return false;
+    unsigned long long v = std::strtoull(s.c_str(), nullptr, 10);
+    if (v >= kNone) return false;
+    out = uint32_t(v);
+    return true;
+}
+
+}  // namespace
+
+bool parseStepRange(const std::string& text, uint32_t& first, uint32_t& last, std::string* error) {
+    size_t colon = text.find(':');
+    std::string a = colon == std::string::npos ? text : text.substr(0, colon);
+    std::string b = colon == std::string::npos ? "" : text.substr(colon + 1);
+    uint32_t f = 0, l = kNone;
+    bool ok = colon != std::string::npos && (a.empty() || parseStep(a, f)) && (b.empty() || parseStep(b, l));
+    if (ok && f > l) {
+        if (error) *error = "--steps " + text + ": the first step is after the last";
+        return false;
+    }
+    if (!ok) {
+        if (error) *error = "--steps wants A:B (step numbers, A: or :B for an open end), got '" + text + "'";
+        return false;
+    }
+    first = f, last = l;
+    return true;
+}
+
+std::vector<uint32_t> exportSteps(uint32_t first, uint32_t last, uint32_t every, uint32_t steps) {
+    last = std::min(last, steps);
+    every = std::max<uint32_t>(every, 1);
+    std::vector<uint32_t> out;
+    if (first > last) return out;
+    for (uint64_t s = first; s <= last; s += every) out.push_back(uint32_t(s));
+    if (out.back() != last) out.push_back(last);
+    return out;
+}
+
+Camera exportCamera(const Camera& canvas, const Rect& area) {
+    // fitBox keeps 6% on each side: hand it the canvas's visible box shrunk by that much, so
+    // the result is the canvas's scale times min(area.w / canvas.w, area.h / canvas.h).
+    const Rect& v = canvas.viewport();
+    double w = v.w > 0 ? v.w / canvas.scale() : 1, h = v.h > 0 ? v.h / canvas.scale() : 1;
+    const double usable = 0.88;
+    Camera cam;
+    Point c = canvas.center();
+    cam.fitBox(c.x - w * usable / 2, c.y - h * usable / 2, c.x + w * usable / 2, c.y + h * usable / 2, area);
+    cam.centerOn(c);  // exactly the canvas's centre, not a rounded midpoint
+    return cam;
+}
+
+Caption captionOf(const Model& model, uint32_t step) {
+    Caption c;
+    const auto& events = model.trace().events;
+    if (step == 0 || step > events.size()) {
+        c.head = "Step 0";
+        c.headColor = palette::action(Action::Start);
+        c.text = "the polygon, dry, before the first event.";
+        return c;
+    }
+    const Event& e = events[step - 1];
+    c.head = "Step " + std::to_string(step) + "  " + actionName(e.action);
+    c.headColor = palette::action(e.action);
+    c.text = narrate(model.polygon(), e);
+    return c;
+}
+
+std::string sequenceFile(const std::string& dir, size_t frame, size_t count) {
+    int digits = 4;
+    for (size_t n = 10000; n < count; n *= 10) ++digits;
+    char name[32];
+    std::snprintf(name, sizeof name, "frame-%0*zu.png", digits, frame);
+    return dir.empty() || dir.back() == '/' ? dir + name : dir + "/" + name;
+}
+
+bool makeDirectory(const std::string& dir, std::string* error) {
+    struct stat st;
+    if (::stat(dir.c_str(), &st) == 0) {
+        if (S_ISDIR(st.st_mode)) return true;
+        if (error) *error = "error: " + dir + ": cannot write: " + std::strerror(ENOTDIR);
+        return false;
+    }
+    if (::mkdir(dir.c_str(), 0777) == 0) return true;
+    if (error) *error = "error: " + dir + ": cannot write: " + std::strerror(errno);
+    return false;
+}
+
+}  // namespace flood::view

@@ -31,6 +31,7 @@ constexpr Rgba kDormant{255, 255, 255, 255};
 constexpr Rgba kCulprit{255, 40, 40, 255};
 constexpr Rgba kHover{255, 255, 255, 255};
 constexpr Rgba kVertexNumber{200, 200, 200, 255};
+constexpr Rgba kTreePath{255, 244, 140, 255};     // the current event's path in the Fig. 9 tree
 
 // Vertex classes of §3 (Fig. 1).
 constexpr Rgba kRegular{170, 170, 170, 255};

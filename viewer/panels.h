@@ -65,12 +65,17 @@ struct Ui {
     uint64_t shrinkGeneration = 0;     // Model::generation() the running shrink started from
     char savePath[1024] = "";          // where the Shrink panel saves the repro
     std::string shrinkNote;            // the Shrink panel's last outcome
+    bool showDecisionTree = false;     // the Fig. 9 tree in a window of its own
+    std::vector<uint64_t> treeCounts;  // events through each node of the tree, over the trace
+    uint64_t treeCountsGeneration = ~0ull;  // Model::generation() they were counted for
+    bool showTodo = false;
+    uint32_t todoGorge = kNone;        // the to-do list's chosen gorge, drawn on the canvas
 };
 
 void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, labels, input
 void drawTimeline(Ui& ui);       // panel_timeline.cpp: strip, transport, go-to, play
 void drawStateMachine(Ui& ui);   // panel_state_machine.cpp: the six states of §4
-void drawDecision(Ui& ui);       // panel_decision.cpp: the Fig. 9 tests of the current event
+void drawDecision(Ui& ui);       // panel_decision.cpp: the Fig. 9 tree, the current path lit
 void drawPredicates(Ui& ui);     // panel_predicates.cpp: those tests' predicates, values, stages
 void drawStateTable(Ui& ui);     // panel_state_table.cpp: Fig. 10, combinations against states
 void drawBreakpoints(Ui& ui);    // panel_breakpoints.cpp: breakpoints, legend, display options
@@ -80,6 +85,7 @@ void drawOpen(Ui& ui);           // panel_open.cpp: polygons/ and recent files
 void drawShrink(Ui& ui);         // panel_shrink.cpp: shrink a failure, open and save the repro
 void drawHelp(Ui& ui);           // panel_help.cpp: keys and glossary
 void handleShortcuts(Ui& ui);    // panel_help.cpp: the keys the help window lists
+void drawTodo(Ui& ui);           // panel_todo.cpp: pending and held gorges, shown when clicked
 
 // Helpers shared by panels (panel_common.cpp).
 void placeWindow(const Rect& r);  // tiles a panel at a layout rectangle

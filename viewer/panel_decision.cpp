@@ -211,6 +211,7 @@ void drawDecision(Ui& ui) {
         if (e->action == Action::Forbidden)
             ImGui::TextColored(toImVec4(palette::kCulprit), "%s", forbiddenText(e->reason));
         ImGui::PopTextWrapPos();
+        if (e->sagTests) ImGui::TextDisabled("%u inside() tests against the sag list", e->sagTests);
         eventNumbers(ui, *e);
     }
     ImGui::End();

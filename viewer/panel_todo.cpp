@@ -120,7 +120,11 @@ void drawTodo(Ui& ui) {
     for (const Gorge& g : st.dormant)
         if (g.id == ui.todoGorge) chosen = &g;
     if (chosen) drawChosen(ui, *chosen);
-    if (!beginFloating(ui, "To-do list", &ui.showTodo, 420, 300, 60, 80)) return;
+    // First shown in the canvas's lower right corner, clear of the middle where gorges are.
+    const float w = 420, h = 260, s = std::max(ui.scale, 0.01f);
+    const float dx = std::max(0.0f, float(ui.layout.canvas.w) / s - w - 10),
+                dy = std::max(0.0f, float(ui.layout.canvas.h) / s - h - 10);
+    if (!beginFloating(ui, "To-do list", &ui.showTodo, w, h, dx, dy)) return;
     ImGui::TextDisabled("step %u: %zu pending, %zu held; click a gorge to see it", ui.model.step(),
                         list.pending.size(), list.held.size());
     ImGui::Separator();

@@ -63,9 +63,10 @@ void seekLeaf(Ui& ui, int leaf) {
     m.seek(uint32_t(i + 1));
 }
 
-// Draws the tree into the rectangle at the cursor, `size` logical pixels; labels when they
-// fit. Hovering a node shows what it tests; clicking a leaf seeks (when `clickLeaves`).
-void drawTree(Ui& ui, ImVec2 size, const DecisionPath& path, bool clickLeaves) {
+// Draws the tree into the rectangle at the cursor, `size` logical pixels; labels where they
+// fit. Hovering a node shows what it tests; clicking a leaf seeks. With `countBars`, a bar
+// along each box's foot shows the share of the run's events that pass there.
+void drawTree(Ui& ui, ImVec2 size, const DecisionPath& path, bool countBars) {
     const DecisionTree& t = decisionTree();
     const std::vector<uint64_t>& count = counts(ui);
     ImDrawList* dl = ImGui::GetWindowDrawList();
@@ -87,10 +88,10 @@ void drawTree(Ui& ui, ImVec2 size, const DecisionPath& path, bool clickLeaves) {
         ImVec2 ts = fontFace->CalcTextSizeA(base, 1e9f, 0, text);
         return base * std::min({1.0f, (bw - 6) / ts.x, (bh - 4) / ts.y});
     };
-    const float font = labelSize("no");  // the answers on the edges: as large as a short label
-    const bool labels = font >= legible;
 
-    // Edges first (lit ones last, on top): an elbow from the parent's right to the child's left.
+    // Edges first (lit ones last, on top): an elbow from the parent's right to the child's left,
+    // green for a yes, blue for a no (never the forbidden red); the path's are thick, in the
+    // path colour, with the answer's colour down their middle.
     for (int lit = 0; lit < 2; ++lit)
         for (size_t i = 0; i < t.nodes.size(); ++i) {
             const DecisionNode& n = t.nodes[i];
@@ -100,16 +101,14 @@ void drawTree(Ui& ui, ImVec2 size, const DecisionPath& path, bool clickLeaves) {
                 const DecisionNode& child = t.nodes[size_t(c)];
                 const bool litEdge = on[i] && on[size_t(c)];
                 if (litEdge != bool(lit)) continue;
+                const bool answers = n.kind != Kind::Action && n.yes != n.no;
+                const Rgba answer = c == n.yes ? kYes : kNo;
                 ImVec2 a = centre(n), b = centre(child);
                 float mx = a.x + cw * 0.5f;
                 ImVec2 pts[4] = {{a.x + bw / 2, a.y}, {mx, a.y}, {mx, b.y}, {b.x - bw / 2, b.y}};
-                dl->AddPolyline(pts, 4, toImU32(litEdge ? palette::kTreePath : kEdge), 0, litEdge ? thick : line);
-                if (labels && n.kind != Kind::Action && n.yes != n.no) {
-                    const bool yes = c == n.yes;
-                    Rgba colour = litEdge ? (yes ? kYes : kNo) : dim(yes ? kYes : kNo);
-                    dl->AddText(fontFace, std::min(font, base) * 0.85f, ImVec2(mx + 2, b.y - font), toImU32(colour),
-                                yes ? "yes" : "no");
-                }
+                if (litEdge) dl->AddPolyline(pts, 4, toImU32(palette::kTreePath), 0, thick);
+                if (answers || !litEdge)
+                    dl->AddPolyline(pts, 4, toImU32(answers ? (litEdge ? answer : dim(answer)) : kEdge), 0, line);
             }
         }
     // Boxes.
@@ -129,6 +128,12 @@ void drawTree(Ui& ui, ImVec2 size, const DecisionPath& path, bool clickLeaves) {
         const float r = 3 * ui.scale;
         dl->AddRectFilled(p0, p1, toImU32(fill), r);
         dl->AddRect(p0, p1, toImU32(border), r, 0, reached ? thick : line);
+        if (countBars && count[i]) {
+            const float share = float(double(count[i]) / double(std::max<size_t>(1, ui.model.steps())));
+            const float foot = std::max(2.0f, bh * 0.12f);
+            dl->AddRectFilled(ImVec2(p0.x + 2, p1.y - foot - 1), ImVec2(p0.x + 2 + (bw - 4) * share, p1.y - 1),
+                              toImU32(palette::kTreePath));
+        }
         if (const float f = labelSize(n.label); f >= legible) {
             ImVec2 ts = fontFace->CalcTextSizeA(f, 1e9f, 0, n.label);
             dl->AddText(fontFace, f, ImVec2(c.x - ts.x / 2, c.y - ts.y / 2), toImU32(text), n.label);
@@ -137,7 +142,7 @@ void drawTree(Ui& ui, ImVec2 size, const DecisionPath& path, bool clickLeaves) {
     }
     if (hoveredNode < 0) return;
     tooltip(t.nodes[size_t(hoveredNode)], count[size_t(hoveredNode)]);
-    if (clickLeaves && t.nodes[size_t(hoveredNode)].leaf() && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+    if (t.nodes[size_t(hoveredNode)].leaf() && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
         seekLeaf(ui, hoveredNode);
 }
 
@@ -201,7 +206,7 @@ void drawDecision(Ui& ui) {
     // for the large one); the sentence and the numbers below it.
     ImVec2 avail = ImGui::GetContentRegionAvail();
     avail.y = std::max(avail.y * 0.5f, 7 * decisionTree().rows * ui.scale);
-    drawTree(ui, avail, path, true);
+    drawTree(ui, avail, path, false);
     if (!e) {
         ImGui::TextDisabled("no event yet: step forward to see the decision tree at work");
     } else {
@@ -223,7 +228,8 @@ void drawDecision(Ui& ui) {
                                       .c_str()
                                 : "step 0: nothing decided yet");
     ImGui::SameLine();
-    ImGui::TextDisabled("  (hover a box: what it tests and how many events pass; click a leaf: seek)");
+    ImGui::TextDisabled("  edges: green yes, blue no; bars: share of the run's events through a box; "
+                        "hover: what it tests; click a leaf: seek");
     drawTree(ui, ImGui::GetContentRegionAvail(), path, true);
     ImGui::End();
 }

@@ -1,6 +1,7 @@
 #include "decision_tree.h"
 
 #include <algorithm>
+#include <unordered_map>
 
 namespace flood {
 
@@ -186,16 +187,38 @@ DecisionPath decisionPath(const Event& e) {
     return DecisionPath{};
 }
 
+namespace {
+// All that decisionPath() reads of an event: events with one key share one path, and a run
+// has a few dozen keys however long it is.
+uint32_t pathKey(const Event& e) {
+    return uint32_t(e.action) | uint32_t(e.reason) << 8 | uint32_t(e.tested) << 16 | uint32_t(e.passed) << 24;
+}
+}  // namespace
+
 std::vector<uint64_t> countPaths(const std::vector<Event>& events) {
+    // Per key: its events and one of them. Runs of one action share a key: count a run at once.
+    std::unordered_map<uint32_t, std::pair<uint64_t, const Event*>> byKey;
+    for (size_t i = 0; i < events.size();) {
+        const uint32_t key = pathKey(events[i]);
+        size_t j = i + 1;
+        while (j < events.size() && pathKey(events[j]) == key) ++j;
+        auto& entry = byKey.try_emplace(key, 0, &events[i]).first->second;
+        entry.first += j - i;
+        i = j;
+    }
     std::vector<uint64_t> counts(decisionTree().nodes.size(), 0);
-    for (const Event& e : events)
-        for (const PathStep& s : decisionPath(e).steps) ++counts[size_t(s.node)];
+    for (const auto& [key, entry] : byKey)
+        for (const PathStep& s : decisionPath(*entry.second).steps) counts[size_t(s.node)] += entry.first;
     return counts;
 }
 
 size_t nextEventEndingAt(const std::vector<Event>& events, int leaf, size_t from) {
-    for (size_t i = from; i < events.size(); ++i)
-        if (decisionPath(events[i]).leaf == leaf) return i;
+    std::unordered_map<uint32_t, bool> endsThere;
+    for (size_t i = from; i < events.size(); ++i) {
+        auto [it, fresh] = endsThere.try_emplace(pathKey(events[i]), false);
+        if (fresh) it->second = decisionPath(events[i]).leaf == leaf;
+        if (it->second) return i;
+    }
     return events.size();
 }
 

@@ -1,9 +1,12 @@
 #include "todo_list.h"
 
+#include <unordered_map>
+
 namespace flood {
 
 TodoList todoList(const ReplayState& state) {
     TodoList list;
+    std::unordered_map<Index, Index> jumpOf(state.jumps.begin(), state.jumps.end());  // top -> target
     // ReplayState::dormant is in the order the gorges were put away: the machine's to-do list
     // is a stack (Machine::takeNextGorge pops its back), so reading it backwards is stack order.
     for (size_t i = state.dormant.size(); i-- > 0;) {
@@ -17,8 +20,7 @@ TodoList todoList(const ReplayState& state) {
             continue;
         }
         t.top = g.top;
-        for (const auto& [top, target] : state.jumps)
-            if (top == g.top) t.jumpTarget = target;
+        if (auto j = jumpOf.find(g.top); j != jumpOf.end()) t.jumpTarget = j->second;
         list.held.push_back(t);
     }
     return list;

@@ -9,7 +9,6 @@
 #include <cstdio>
 
 #include "panels.h"
-#include "todo_list.h"
 
 namespace flood::view {
 
@@ -114,7 +113,12 @@ void drawTodo(Ui& ui) {
         return;
     }
     const ReplayState& st = ui.model.state();
-    const TodoList list = todoList(st);
+    // Read once per step: thousands of gorges may wait at once.
+    if (ui.todoFor != std::array<uint64_t, 2>{ui.model.generation(), ui.model.step()}) {
+        ui.todo = todoList(st);
+        ui.todoFor = {ui.model.generation(), ui.model.step()};
+    }
+    const TodoList& list = ui.todo;
     // The chosen gorge, while this step still has it.
     const Gorge* chosen = nullptr;
     for (const Gorge& g : st.dormant)

@@ -11,6 +11,7 @@
 #include "model.h"
 #include "renderer.h"
 #include "scene.h"
+#include "todo_list.h"
 
 struct ImVec4;
 
@@ -70,6 +71,8 @@ struct Ui {
     uint64_t treeCountsGeneration = ~0ull;  // Model::generation() they were counted for
     bool showTodo = false;
     uint32_t todoGorge = kNone;        // the to-do list's chosen gorge, drawn on the canvas
+    TodoList todo;                     // the to-do list of the step below (panel_todo.cpp)
+    std::array<uint64_t, 2> todoFor{~0ull, ~0ull};  // Model::generation() and step it was read at
 };
 
 void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, labels, input

@@ -501,6 +501,7 @@ int main(int argc, char** argv) {
             drawShrink(ui);
             drawHelp(ui);
             drawExport(ui);
+            drawTodo(ui);
         }
         ImGui::Render();
 

@@ -21,7 +21,7 @@ namespace palette {
 struct Colours {
     Rgba background, polygonFill, triangle, water, current, triangleEdge, boundary, waterLevel,
         chain, left, right, nextLeft, nextRight, jump, bridge, dormant, culprit, hover,
-        vertexNumber, regular, bottom, sag, top, ceiling, ok;
+        vertexNumber, regular, bottom, sag, top, ceiling, ok, treePath;
 };
 constexpr Colours kDark{
     {30, 32, 38, 255},    {72, 78, 70, 255},    {120, 126, 110, 255}, {40, 110, 190, 255},
@@ -30,7 +30,7 @@ constexpr Colours kDark{
     {160, 255, 170, 255}, {200, 160, 255, 255}, {0, 215, 175, 255},   {255, 255, 255, 255},
     {255, 40, 40, 255},   {255, 255, 255, 255}, {200, 200, 200, 255}, {170, 170, 170, 255},
     {60, 200, 255, 255},  {40, 120, 255, 255},  {255, 170, 40, 255},  {255, 90, 60, 255},
-    {153, 230, 153, 255}};
+    {153, 230, 153, 255}, {255, 244, 140, 255}};
 // Light: paper-white ground, sand for dry land, mid-blue water, and every line, marker and
 // label dark enough to read on white (and on a washed-out projector).
 constexpr Colours kLight{
@@ -40,7 +40,7 @@ constexpr Colours kLight{
     {40, 180, 80, 255},   {110, 50, 200, 255},  {0, 140, 120, 255},   {40, 40, 40, 255},
     {215, 0, 0, 255},     {0, 0, 0, 255},       {60, 60, 60, 255},    {110, 110, 110, 255},
     {0, 130, 200, 255},   {20, 70, 200, 255},   {200, 115, 0, 255},   {200, 45, 25, 255},
-    {20, 130, 40, 255}};
+    {20, 130, 40, 255},   {185, 95, 0, 255}};
 
 inline Rgba kBackground = kDark.background;
 inline Rgba kPolygonFill = kDark.polygonFill;    // dry land: the not yet flooded interior
@@ -70,6 +70,7 @@ inline Rgba kTop = kDark.top;
 inline Rgba kCeiling = kDark.ceiling;
 
 inline Rgba kOk = kDark.ok;  // a passed check in the verdict and the invariant lane
+inline Rgba kTreePath = kDark.treePath;  // the current event's path in the Fig. 9 tree
 
 namespace detail {
 inline Theme g_theme = Theme::Dark;
@@ -93,7 +94,7 @@ inline void setTheme(Theme t) {
         {&kCulprit, &Colours::culprit}, {&kHover, &Colours::hover},
         {&kVertexNumber, &Colours::vertexNumber}, {&kRegular, &Colours::regular},
         {&kBottom, &Colours::bottom}, {&kSag, &Colours::sag}, {&kTop, &Colours::top},
-        {&kCeiling, &Colours::ceiling}, {&kOk, &Colours::ok}};
+        {&kCeiling, &Colours::ceiling}, {&kOk, &Colours::ok}, {&kTreePath, &Colours::treePath}};
     static_assert(sizeof(Colours) == sizeof(slots) / sizeof(slots[0]) * sizeof(Rgba), "a colour without a slot");
     for (const Slot& s : slots) *s.colour = c.*s.field;
     detail::g_theme = t;

@@ -14,6 +14,7 @@
 #include "presenter.h"
 #include "renderer.h"
 #include "scene.h"
+#include "todo_list.h"
 
 struct ImVec4;
 struct ImFont;
@@ -88,6 +89,13 @@ struct Ui {
     char exportPath[1024] = "";
     std::shared_ptr<ExportJob> exportJob;  // running, advanced by main after each frame
     std::string exportNote;            // the last export's outcome
+    bool showDecisionTree = false;     // the Fig. 9 tree in a window of its own
+    std::vector<uint64_t> treeCounts;  // events through each node of the tree, over the trace
+    uint64_t treeCountsGeneration = ~0ull;  // Model::generation() they were counted for
+    bool showTodo = false;
+    uint32_t todoGorge = kNone;        // the to-do list's chosen gorge, drawn on the canvas
+    TodoList todo;                     // the to-do list of the step below (panel_todo.cpp)
+    std::array<uint64_t, 2> todoFor{~0ull, ~0ull};  // Model::generation() and step it was read at
 };
 
 void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, labels, input
@@ -97,7 +105,7 @@ void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, 
 void paintCanvas(Ui& ui, ImDrawList* dl);
 void drawTimeline(Ui& ui);       // panel_timeline.cpp: strip, transport, go-to, play
 void drawStateMachine(Ui& ui);   // panel_state_machine.cpp: the six states of §4
-void drawDecision(Ui& ui);       // panel_decision.cpp: the Fig. 9 tests of the current event
+void drawDecision(Ui& ui);       // panel_decision.cpp: the Fig. 9 tree, the current path lit
 void drawPredicates(Ui& ui);     // panel_predicates.cpp: those tests' predicates, values, stages
 void drawStateTable(Ui& ui);     // panel_state_table.cpp: Fig. 10, combinations against states
 void drawBreakpoints(Ui& ui);    // panel_breakpoints.cpp: breakpoints, legend, display options
@@ -113,6 +121,7 @@ void handlePresenterKeys(Ui& ui);  // panel_caption.cpp: Tab, F11, Ctrl +/-/0
 // style.cpp: ImGui's fonts rasterised at ui.uiScale and its colours for the current theme;
 // between frames only (the font texture is uploaded again).
 void applyStyle(Ui& ui);
+void drawTodo(Ui& ui);           // panel_todo.cpp: pending and held gorges, shown when clicked
 
 // Helpers shared by panels (panel_common.cpp).
 void placeWindow(const Rect& r);  // tiles a panel at a layout rectangle

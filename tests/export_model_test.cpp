@@ -80,10 +80,10 @@ TEST(Export, CaptionIsTheStepTheActionAndTheNarration) {
     Model m;
     m.open(flood::testing::sourcePath("polygons/paper-figure-7.json"));
     ASSERT_GT(m.steps(), 3u);
-    Caption c0 = captionOf(m, 0);
+    CaptionLine c0 = captionOf(m, 0);
     EXPECT_EQ(c0.head, "Step 0");
     const Event& e = m.trace().events[2];
-    Caption c = captionOf(m, 3);
+    CaptionLine c = captionOf(m, 3);
     EXPECT_EQ(c.head, std::string("Step 3  ") + actionName(e.action));
     EXPECT_EQ(c.text, narrate(m.polygon(), e));
     EXPECT_EQ(c.headColor.r, palette::action(e.action).r);
@@ -192,7 +192,7 @@ TEST(Export, SvgThroughTheExportCameraHasOneElementPerTriangle) {
     Camera cam;
     cam.fit(m.polygon(), Rect{0, 0, 640, 420});
     std::ostringstream svg;
-    Caption c = captionOf(m, m.step());
+    CaptionLine c = captionOf(m, m.step());
     c.text += " <&> \"quoted\"";  // escaped, so the file stays well-formed
     writeSceneSvg(svg, buildScene(m), cam, 640, 480, &c);
     std::string text = svg.str();

@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "narrate.h"
+#include "presenter.h"
 
 namespace flood::view {
 
@@ -66,20 +67,15 @@ Camera exportCamera(const Camera& canvas, const Rect& area) {
     return cam;
 }
 
-Caption captionOf(const Model& model, uint32_t step) {
-    Caption c;
-    const auto& events = model.trace().events;
-    if (step == 0 || step > events.size()) {
-        c.head = "Step 0";
-        c.headColor = palette::action(Action::Start);
-        c.text = "the polygon, dry, before the first event.";
-        return c;
-    }
-    const Event& e = events[step - 1];
-    c.head = "Step " + std::to_string(step) + "  " + actionName(e.action);
-    c.headColor = palette::action(e.action);
-    c.text = narrate(model.polygon(), e);
-    return c;
+// The presenter's caption (presenter.h) as one line: an export shows no step count.
+CaptionLine captionOf(const Model& model, uint32_t step) {
+    const Caption c = captionAt(model, step);
+    CaptionLine line;
+    line.head = "Step " + std::to_string(step);
+    if (c.hasAction) line.head += std::string("  ") + actionName(c.action);
+    line.headColor = palette::action(c.hasAction ? c.action : Action::Start);
+    line.text = c.sentence;
+    return line;
 }
 
 std::string sequenceFile(const std::string& dir, size_t frame, size_t count) {

@@ -9,7 +9,7 @@
 
 #include "model.h"
 #include "palette.h"
-#include "scene.h"  // Caption
+#include "scene.h"  // CaptionLine
 
 namespace flood::view {
 
@@ -44,7 +44,7 @@ Camera exportCamera(const Camera& canvas, const Rect& area);
 
 // The caption of the current step: "Step N  Action" (in the action's colour) and the
 // narration sentence (core/narrate); at step 0, the polygon before the first event.
-Caption captionOf(const Model& model, uint32_t step);
+CaptionLine captionOf(const Model& model, uint32_t step);
 
 // The files of a PNG sequence: DIR/frame-0000.png, ... wide enough for `count` frames.
 std::string sequenceFile(const std::string& dir, size_t frame, size_t count);

@@ -115,7 +115,7 @@ struct ExportJob::Impl {
         dl.PushClipRect(ImVec2(0, 0), ImVec2(float(s.width), float(s.height)));
         paintCanvas(ui, &dl);
         if (s.caption) {
-            Caption c = captionOf(m, step);
+            CaptionLine c = captionOf(m, step);
             float y = float(area.h) + pad;
             dl.AddText(font(), fontSize, ImVec2(pad, y), toImU32(c.headColor), c.head.c_str());
             dl.AddText(font(), fontSize, ImVec2(textX(), y), toImU32(palette::kBoundary), c.text.c_str(), nullptr,
@@ -151,7 +151,7 @@ struct ExportJob::Impl {
         if (!s.png.empty() && render(startStep) && png(s.png)) written.push_back(s.png);
         if (!s.svg.empty() && status == Status::Ok) {
             cli::Output out(s.svg);
-            std::optional<Caption> c;
+            std::optional<CaptionLine> c;
             if (s.caption) c = captionOf(ui.model, startStep);
             writeSceneSvg(out.stream(), buildScene(ui.model, ui.sceneOptions), camera, s.width, s.height,
                           c ? &*c : nullptr);

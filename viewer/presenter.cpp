@@ -77,13 +77,17 @@ Layout presenterLayout(double width, double height, double captionHeight) {
     return l;
 }
 
-Caption buildCaption(const Model& m) {
+Caption buildCaption(const Model& m) { return captionAt(m, m.step()); }
+
+Caption captionAt(const Model& m, uint32_t step) {
     Caption c;
-    c.heading = "Step " + std::to_string(m.step()) + " of " + std::to_string(m.steps());
-    if (const Event* e = m.currentEvent()) {
+    c.heading = "Step " + std::to_string(step) + " of " + std::to_string(m.steps());
+    const auto& events = m.trace().events;
+    if (step > 0 && step <= events.size()) {
+        const Event& e = events[step - 1];
         c.hasAction = true;
-        c.action = e->action;
-        c.sentence = narrate(m.polygon(), *e);
+        c.action = e.action;
+        c.sentence = narrate(m.polygon(), e);
     } else if (m.polygon().vertices.empty()) {
         c.sentence = m.inputDiagnostic().ok() ? "No polygon: open one." : m.inputDiagnostic().message;
     } else {

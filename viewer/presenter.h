@@ -52,13 +52,14 @@ bool saveSettings(const std::string& file, const ViewerSettings& settings);
 // tall (what it needed last frame) but never more than half the window.
 Layout presenterLayout(double width, double height, double captionHeight);
 
-// The presenter's caption for the current step.
+// The caption of a step: the presenter view shows it, exports draw it under the canvas.
 struct Caption {
     std::string heading;     // "Step 12 of 40"
     bool hasAction = false;  // false at step 0 (no event yet)
     Action action = Action::Start;
     std::string sentence;    // core/narrate's sentence, or what step 0 shows
 };
-Caption buildCaption(const Model& model);
+Caption captionAt(const Model& model, uint32_t step);
+Caption buildCaption(const Model& model);  // at the current step
 
 }  // namespace flood::view

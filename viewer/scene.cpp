@@ -214,7 +214,7 @@ void writeSceneSvg(std::ostream& out, const Scene& sc, const Polygon& polygon, i
 }
 
 void writeSceneSvg(std::ostream& out, const Scene& sc, const Camera& cam, int width, int height,
-                   const Caption* caption) {
+                   const CaptionLine* caption) {
     auto P = [&](Point p) {
         Vec2 s = cam.toScreen(p);
         char buf[64];

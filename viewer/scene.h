@@ -73,11 +73,11 @@ void writeSceneSvg(std::ostream& out, const Scene& scene, const Polygon& polygon
 // The same through `camera` (its viewport is the canvas, clipped as on screen) on a page of
 // width x height, with an optional caption line below the canvas. Triangles are <polygon>
 // elements of class "water" or "current" (cut by the current event).
-struct Caption {  // export.h's captionOf: "Step N  Action" and the narration
+struct CaptionLine {  // export.h's captionOf: "Step N  Action" and the narration
     std::string head, text;
     Rgba headColor;
 };
 void writeSceneSvg(std::ostream& out, const Scene& scene, const Camera& camera, int width, int height,
-                   const Caption* caption = nullptr);
+                   const CaptionLine* caption = nullptr);
 
 }  // namespace flood::view

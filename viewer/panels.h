@@ -89,6 +89,10 @@ bool beginFloating(Ui& ui, const char* title, bool* open, float w, float h, floa
 // A vertex ('v'), triangle ('t') or step ('s') number that finds its target when clicked
 // (Model::find); "-" is drawn plain.
 void clickable(Ui& ui, const char* text, char kind);
+// "first-last" (or "first" when count < 2), each end clickable as above.
+void clickableRange(Ui& ui, uint32_t first, uint32_t count, char kind);
+// "label v", v clickable; nothing for kNone.
+void clickableVertex(Ui& ui, const char* label, Index v);
 ImVec4 toImVec4(Rgba c);
 unsigned toImU32(Rgba c);
 // Writes the current step as "<name>-step<N>.svg" in the working directory.

@@ -34,6 +34,10 @@ struct CanvasState {
     std::array<double, 6> pickKey{};  // mouse x, y, camera centre x, y, scale, step
     Index pickedVertex = kNone;
     int64_t pickedTriangle = -1;
+    // "Current gorge only": the dimmed rows outside the gorge's outline, and what they were
+    // computed for (camera centre x, y, scale, canvas x, y, w, h, generation and step).
+    std::array<double, 8> focusKey{};
+    std::vector<Rect> focusDim;
 };
 
 struct Ui {

@@ -1,5 +1,6 @@
 // flood-viewer: replays the flooding triangulation of a polygon step by step.
-//   flood-viewer [FILE] [--feature N] [--step N] [--screenshot OUT.png] [--size WxH]
+//   flood-viewer [FILE] [--feature N] [--layer NAME] [--where SQL] [--step N]
+//                [--screenshot OUT.png] [--size WxH]
 // Without a display it prints a summary of the run instead and says how to get pictures.
 #include <imgui.h>
 
@@ -32,11 +33,12 @@ struct Args {
     bool bench = false;  // measure open, seek and frame times, print them, exit
     bool showError = false;  // open in the error view (as the E key does)
     long feature = -1;       // --feature N: that feature of a FeatureCollection
+    std::string layer, where;  // --layer, --where: a GIS dataset's layer and feature filter
 };
 
 const char* const kUsage =
-    "usage: flood-viewer [FILE] [--feature N] [--step N] [--show-error] [--screenshot OUT.png]\n"
-    "                    [--size WxH]\n"
+    "usage: flood-viewer [FILE] [--feature N] [--layer NAME] [--where SQL] [--step N]\n"
+    "                    [--show-error] [--screenshot OUT.png] [--size WxH]\n"
     "  FILE              polygon (GeoJSON, ring arrays or WKT) or a trace from `flood trace`\n"
     "                    (*.jsonl); default: polygons/paper-figure-7.json\n"
     "  --feature N       open feature N (0-based, as `flood check` numbers them) of a\n"
@@ -47,6 +49,9 @@ const char* const kUsage =
     "  --screenshot OUT  render once in a hidden window, write OUT as PNG and exit; the exit\n"
     "                    code is the CLI's: 3 unreadable, 4 invalid, 5 forbidden, 6 checker\n"
     "  --size WxH        window size in pixels (default 1280x800)\n"
+    "  --layer NAME      a GIS dataset's layer (GDAL; default: its only layer)\n"
+    "  --where 'SQL'     only the GIS features an OGR SQL attribute filter keeps\n"
+    "                    (with --feature N: the Nth of those)\n"
     "  --bench           time opening, seeking and drawing (hidden window), print, exit\n"
     "keys in the viewer: F1 or ?\n";
 
@@ -79,6 +84,10 @@ int parseArgs(int argc, char** argv, Args& a) {
                 if (v) std::fprintf(stderr, "flood-viewer: --feature wants a number >= 0, got '%s'\n", v);
                 return 2 + 1;
             }
+        } else if (s == "--layer" || s == "--where") {
+            const char* v = value(s.c_str());
+            if (!v) return 2 + 1;
+            (s == "--layer" ? a.layer : a.where) = v;
         } else if (s == "--show-error") {
             a.showError = true;
         } else if (s == "--bench") {
@@ -216,6 +225,7 @@ int main(int argc, char** argv) {
         if (!recentFile.empty()) model.loadRecent(recentFile);
         model.recentPath = recentFile;  // saved on every open
     }
+    model.gisLayer = args.layer, model.gisWhere = args.where;
     double openStart = now();
     if (args.feature >= 0) {
         // A feature that cannot be opened is the answer: say so before any window.

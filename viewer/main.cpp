@@ -34,11 +34,16 @@ struct Args {
     bool showError = false;  // open in the error view (as the E key does)
     long feature = -1;       // --feature N: that feature of a FeatureCollection
     std::string layer, where;  // --layer, --where: a GIS dataset's layer and feature filter
+    bool predicates = false;   // --predicates: the predicate inspector open
+    bool gorgeFocus = false;   // --gorge-focus: "current gorge only"
+    bool mouse = false;        // --mouse X,Y (screenshots): the pointer there, for hover pictures
+    float mouseX = 0, mouseY = 0;
 };
 
 const char* const kUsage =
     "usage: flood-viewer [FILE] [--feature N] [--layer NAME] [--where SQL] [--step N]\n"
-    "                    [--show-error] [--screenshot OUT.png] [--size WxH]\n"
+    "                    [--show-error] [--predicates] [--gorge-focus] [--screenshot OUT.png]\n"
+    "                    [--size WxH] [--mouse X,Y]\n"
     "  FILE              polygon (GeoJSON, ring arrays or WKT) or a trace from `flood trace`\n"
     "                    (*.jsonl); default: polygons/paper-figure-7.json\n"
     "  --feature N       open feature N (0-based, as `flood check` numbers them) of a\n"
@@ -52,6 +57,8 @@ const char* const kUsage =
     "  --layer NAME      a GIS dataset's layer (GDAL; default: its only layer)\n"
     "  --where 'SQL'     only the GIS features an OGR SQL attribute filter keeps\n"
     "                    (with --feature N: the Nth of those)\n"
+    "  --predicates      open the predicate inspector; --gorge-focus: current gorge only\n"
+    "  --mouse X,Y       with --screenshot: the pointer at X,Y (what hovering there shows)\n"
     "  --bench           time opening, seeking and drawing (hidden window), print, exit\n"
     "keys in the viewer: F1 or ?\n";
 
@@ -88,6 +95,17 @@ int parseArgs(int argc, char** argv, Args& a) {
             const char* v = value(s.c_str());
             if (!v) return 2 + 1;
             (s == "--layer" ? a.layer : a.where) = v;
+        } else if (s == "--predicates") {
+            a.predicates = true;
+        } else if (s == "--gorge-focus") {
+            a.gorgeFocus = true;
+        } else if (s == "--mouse") {
+            const char* v = value("--mouse");
+            if (!v || std::sscanf(v, "%f,%f", &a.mouseX, &a.mouseY) != 2) {
+                if (v) std::fprintf(stderr, "flood-viewer: --mouse wants X,Y, got '%s'\n", v);
+                return 2 + 1;
+            }
+            a.mouse = true;
         } else if (s == "--show-error") {
             a.showError = true;
         } else if (s == "--bench") {
@@ -277,6 +295,10 @@ int main(int argc, char** argv) {
 
     Ui ui(model, renderer);
     ui.scale = scale;
+    ui.showPredicates = args.predicates;
+    ui.sceneOptions.gorgeFocus = args.gorgeFocus;
+    // A picture shows the invariant lane complete (and the landing on its first violation).
+    if (shot) model.waitForInvariants();
 
     int exitCode = 0;
     uint64_t titled = model.generation();
@@ -295,6 +317,7 @@ int main(int argc, char** argv) {
         }
         imguiGlNewFrame();
         platform::newFrame();
+        if (shot && args.mouse) io.MousePos = ImVec2(args.mouseX, args.mouseY);
         ImGui::NewFrame();
         Vec2 size = platform::windowSize();
         ui.layout = computeLayout(size.x, size.y, scale);

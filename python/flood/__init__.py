@@ -56,8 +56,9 @@ class Diagnostic:
     status: "ok", "malformed", "invalid", "forbidden" or "internal"; code: the exit code the
     ``flood`` command would end with (0, 3, 4, 5, 6); message: the command's one-line message;
     reason: the message without the input's name and the location; ring, vertex: where the
-    problem is (rings numbered across all parts as the CLI numbers them, the vertex within its
-    ring), None where the message names none.
+    problem is, from the diagnostic's culprits (its first vertex, else its first ring; rings
+    numbered across all parts as the CLI numbers them, the vertex within its ring), None where
+    the culprits name none.
     """
 
     status: str

@@ -31,6 +31,7 @@
 #include <thread>
 
 #include "checker.h"
+#include "diagnostic_where.h"
 #include "flood.h"
 #include "io.h"
 #include "output.h"
@@ -109,35 +110,16 @@ std::string oneLine(std::string s) {
     return s;
 }
 
-// Messages start with the file's name, which the row has in a column of its own.
-std::string withoutName(const std::string& message, const std::string& name) {
-    if (message.compare(0, name.size(), name) != 0) return message;
-    size_t i = name.size();
-    if (message.compare(i, 2, ": ") == 0) i += 2;
-    else if (message.compare(i, 1, ":") == 0) i += 1;
-    return message.substr(i);
-}
-
-// validate()'s "ring R vertex V (x, y): reason" (docs/ERRORS.md) split into where and why;
-// the ring's part is added when the feature has several.
-void splitInvalid(Row& row, const std::string& text, const Polygon& p) {
-    size_t end = std::string::npos;
-    if (text.compare(0, 5, "ring ") == 0) {
-        size_t point = text.find("): ");
-        end = point != std::string::npos ? point + 1 : text.find(": ");
-    }
-    if (end == std::string::npos) {
-        row.reason = text;
-        return;
-    }
-    row.at = text.substr(0, end);
-    row.reason = text.substr(end + 2);
-    if (p.parts.size() > 1) {
-        size_t ring = std::strtoul(text.c_str() + 5, nullptr, 10);
+// validate()'s diagnostic split into where (from its culprits) and why; the ring's part is
+// added when the feature has several.
+void splitInvalid(Row& row, const Diagnostic& d, const std::string& name, const Polygon& p) {
+    Where where = whereOf(p, d.culprits);
+    row.at = where.text;
+    row.reason = reasonOf(d.message, name, where);
+    if (p.parts.size() > 1 && where.ring != kNone)
         for (size_t k = 0; k < p.parts.size(); ++k)
-            if (ring >= p.parts[k].firstRing && ring < p.parts[k].firstRing + p.parts[k].ringCount)
+            if (where.ring >= p.parts[k].firstRing && where.ring < p.parts[k].firstRing + p.parts[k].ringCount)
                 row.at += " (part " + std::to_string(k) + ")";
-    }
 }
 
 // Numbered as describeForbidden() numbers them (steps from 1).
@@ -171,10 +153,10 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
         if (!readable) {
             row.verdict = f.read.diagnostic.status == Status::Internal ? Verdict::Internal
                                                                         : Verdict::Malformed;
-            row.reason = withoutName(f.read.diagnostic.message, name);
+            row.reason = reasonOf(f.read.diagnostic.message, name, {});  // the name has a column
         } else if (Diagnostic d = o.validate ? validate(p, name) : Diagnostic{}; !d.ok()) {
             row.verdict = Verdict::Invalid;
-            splitInvalid(row, withoutName(d.message, name), p);
+            splitInvalid(row, d, name, p);
         } else {
             FloodResult r = triangulate(p);
             if (!r.diagnostic.ok()) {

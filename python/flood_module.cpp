@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "checker.h"
+#include "diagnostic_where.h"
 #include "flood.h"
 #include "generate.h"
 #include "io.h"
@@ -78,6 +79,7 @@ struct Outcome {
     std::vector<std::string> warnings;
     Polygon polygon;
     std::vector<Triangle> triangles;
+    Where where;  // check() keeps where the diagnostic points, not the polygon
 };
 
 // Validation and, with `flooded`, flooding and the checker's verdict. No GIL needed.
@@ -93,7 +95,7 @@ void run(Outcome& o, bool validateFirst, const Options& options, const std::stri
     CheckResult c = checkTriangulation(o.polygon, r.triangles);
     if (!c.ok)
         o.diagnostic = {Status::Internal,
-                        name + ": the exact checker rejects the triangulation: " + c.reason};
+                        name + ": the exact checker rejects the triangulation: " + c.reason, c.culprits};
     else o.triangles = std::move(r.triangles);
 }
 
@@ -131,7 +133,15 @@ std::vector<Index> ringCounts(const Polygon& p) {
     return counts;
 }
 
-py::tuple diagnosticTuple(const Diagnostic& d) { return py::make_tuple(int(d.status), d.message); }
+py::object index(Index i) { return i == kNone ? py::object(py::none()) : py::object(py::int_(i)); }
+
+// (status code, message, reason, ring, vertex): where it points read from its culprits
+// (core/diagnostic_where.h), None for "names none".
+py::tuple diagnosticTuple(const Diagnostic& d, const Polygon& polygon, const std::string& name) {
+    Where w = whereOf(polygon, d.culprits);
+    return py::make_tuple(int(d.status), d.message, reasonOf(d.message, name, w), index(w.ring),
+                          index(w.vertex));
+}
 
 // The numpy dtype of flood::Event: field names, types and offsets as core/events.h has them,
 // so the log is copied into the array byte for byte.
@@ -193,6 +203,7 @@ struct TraceHandle {
     Trace trace;
     std::unique_ptr<Replay> replay;
     std::vector<std::string> warnings;
+    std::string name;  // the input's name, which its diagnostic's message starts with
 };
 
 }  // namespace
@@ -223,7 +234,7 @@ PYBIND11_MODULE(_flood, m) {
             py::gil_scoped_release unlocked;
             if (o.diagnostic.ok()) o.diagnostic = validate(o.polygon, name);
         }
-        return py::make_tuple(diagnosticTuple(o.diagnostic), o.warnings);
+        return py::make_tuple(diagnosticTuple(o.diagnostic, o.polygon, name), o.warnings);
     });
 
     m.def("triangulate", [](py::handle input, bool validateFirst, const std::string& up,
@@ -235,13 +246,13 @@ PYBIND11_MODULE(_flood, m) {
             py::gil_scoped_release unlocked;
             run(o, validateFirst, options, name);
         }
-        return py::make_tuple(diagnosticTuple(o.diagnostic), o.warnings, verticesArray(o.polygon),
+        return py::make_tuple(diagnosticTuple(o.diagnostic, o.polygon, name), o.warnings, verticesArray(o.polygon),
                               trianglesArray(o.triangles), ringCounts(o.polygon));
     });
 
     // Many features at once on `threads` C++ threads: arrays are read first (they need the
     // GIL), texts (WKT, GeoJSON) by the threads; then every feature is validated, flooded and
-    // checked without the GIL. One (status, message, triangle count) per feature, in order.
+    // checked without the GIL. One (status, message, reason, ring, vertex, triangle count) per feature, in order.
     m.def("check", [](py::sequence inputs, bool validateFirst, const std::string& up,
                       unsigned threads, const std::vector<std::string>& names) {
         Options options;
@@ -269,6 +280,7 @@ PYBIND11_MODULE(_flood, m) {
                         std::string().swap(texts[i]);
                     }
                     run(o, validateFirst, options, names[i]);
+                    o.where = whereOf(o.polygon, o.diagnostic.culprits);
                     o.polygon = {};  // the verdict is all that is kept
                 }
             };
@@ -282,7 +294,8 @@ PYBIND11_MODULE(_flood, m) {
         py::list verdicts;
         for (const Outcome& o : outcomes)
             verdicts.append(py::make_tuple(int(o.diagnostic.status), o.diagnostic.message,
-                                           o.triangles.size()));
+                                           reasonOf(o.diagnostic.message, names[&o - outcomes.data()], o.where),
+                                           index(o.where.ring), index(o.where.vertex), o.triangles.size()));
         return verdicts;
     });
 
@@ -354,7 +367,7 @@ PYBIND11_MODULE(_flood, m) {
         })
         .def_property_readonly("vertices", [](const TraceHandle& t) { return verticesArray(t.trace.polygon); })
         .def_property_readonly("triangles", [](const TraceHandle& t) { return trianglesArray(t.trace.triangles); })
-        .def_property_readonly("diagnostic", [](const TraceHandle& t) { return diagnosticTuple(t.trace.diagnostic); })
+        .def_property_readonly("diagnostic", [](const TraceHandle& t) { return diagnosticTuple(t.trace.diagnostic, t.trace.polygon, t.name); })
         .def_readonly("warnings", &TraceHandle::warnings)
         .def("__len__", [](const TraceHandle& t) { return t.trace.events.size(); })
         .def("seek", [](TraceHandle& t, uint32_t step) {
@@ -373,6 +386,7 @@ PYBIND11_MODULE(_flood, m) {
         Outcome o = prepare(input, name);
         auto t = std::make_shared<TraceHandle>();
         t->warnings = o.warnings;
+        t->name = name;
         {
             py::gil_scoped_release unlocked;
             if (o.diagnostic.ok() && validateFirst) o.diagnostic = validate(o.polygon, name);
@@ -381,12 +395,12 @@ PYBIND11_MODULE(_flood, m) {
                 if (t->trace.diagnostic.ok()) {
                     CheckResult c = checkTriangulation(t->trace.polygon, t->trace.triangles);
                     if (!c.ok)
-                        t->trace.diagnostic = {Status::Internal, name + ": the exact checker rejects the triangulation: " + c.reason};
+                        t->trace.diagnostic = {Status::Internal, name + ": the exact checker rejects the triangulation: " + c.reason, c.culprits};
                 }
                 t->replay = std::make_unique<Replay>(t->trace);
             }
         }
-        if (!o.diagnostic.ok()) return diagnosticTuple(o.diagnostic);
+        if (!o.diagnostic.ok()) return diagnosticTuple(o.diagnostic, o.polygon, name);
         return py::cast(t);
     });
 }

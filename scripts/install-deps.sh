@@ -17,6 +17,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy              # Python module (python/)
   python3-shapely python3-pytest                      #   its inputs and tests
   python3-dask python3-distributed python3-pandas     #   flood.dask (bags, dataframes)
+  python3-pip python3-venv python3-setuptools         #   `pip install ./python` (ctest python.pip-install)
 )
 label=install-deps
 if [ $# -gt 0 ]; then packages=("$@"); label="${FLOOD_INSTALL_LABEL:-install-deps}"; fi

@@ -11,6 +11,7 @@
 #include <sstream>
 
 #include "canvas_geometry.h"
+#include "gorge_focus.h"
 #include "generate.h"
 #include "model.h"
 #include "scene.h"
@@ -1103,7 +1104,7 @@ TEST(ViewerDeclutter, VertexLabelsOnlyWhereTheyDoNotOverlap) {
     EXPECT_GT(triangleCounts[1], 0u);
 }
 
-TEST(ViewerDeclutter, BridgesHaveTheirOwnColourAndGorgeFocusHasABox) {
+TEST(ViewerDeclutter, BridgesHaveTheirOwnColourAndGorgeFocusHasAnOutline) {
     // Bridges must not read as the just-cut triangles (both were yellow).
     auto dist = [](Rgba a, Rgba b) { return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b); };
     for (Rgba other : {palette::kCurrent, palette::kWater, palette::kPolygonFill, palette::kChain,
@@ -1114,11 +1115,13 @@ TEST(ViewerDeclutter, BridgesHaveTheirOwnColourAndGorgeFocusHasABox) {
     bool sawBridge = false;
     for (uint32_t s = 1; s <= m.steps(); ++s) {
         m.seek(s);
-        Point lo, hi;
-        if (!activeGorgeBox(m, lo, hi)) continue;
+        // The focus's outline (gorge_focus.h) runs through every vertex of the active chain.
+        std::vector<Point> outline = activeGorgeOutline(m);
         for (Index i : m.state().chain) {
             Point p = m.polygon().vertices[i];
-            ASSERT_TRUE(p.x >= lo.x && p.x <= hi.x && p.y >= lo.y && p.y <= hi.y) << "step " << s;
+            ASSERT_TRUE(std::any_of(outline.begin(), outline.end(),
+                                    [&](Point q) { return q.x == p.x && q.y == p.y; }))
+                << "step " << s;
         }
         sawBridge |= !m.state().bridges.empty();
     }

@@ -1,6 +1,6 @@
 // flood-viewer: replays the flooding triangulation of a polygon step by step.
-//   flood-viewer [FILE] [--feature N] [--step N] [--screenshot OUT.png] [--size WxH]
-//                [--scale S] [--presenter] [--theme light|dark]
+//   flood-viewer [FILE] [--feature N] [--layer NAME] [--where SQL] [--step N]
+//                [--screenshot OUT.png] [--size WxH] [--scale S] [--presenter] [--theme light|dark]
 //   flood-viewer FILE --export-gif OUT.gif [--steps A:B] [--every K] [--fps F] [--caption]
 // Without a display it prints a summary of the run instead and says how to get pictures.
 #include <imgui.h>
@@ -50,6 +50,11 @@ struct Args {
     ExportSettings exports;  // canvas-only PNG, SVG, GIF, PNG sequence (export.h)
     bool rangeGiven = false, everyGiven = false, fpsGiven = false;
     bool exporting() const { return !exports.png.empty() || !exports.svg.empty() || exports.animated(); }
+    std::string layer, where;  // --layer, --where: a GIS dataset's layer and feature filter
+    bool predicates = false;   // --predicates: the predicate inspector open
+    bool gorgeFocus = false;   // --gorge-focus: "current gorge only"
+    bool mouse = false;        // --mouse X,Y (screenshots): the pointer there, for hover pictures
+    float mouseX = 0, mouseY = 0;
 };
 
 // --press names: the presenter keys, so a screenshot can show what they do.
@@ -63,8 +68,9 @@ bool pressNamed(const std::string& name, Args::Press& p) {
 }
 
 const char* const kUsage =
-    "usage: flood-viewer [FILE] [--feature N] [--step N] [--show-error] [--screenshot OUT.png]\n"
-    "                    [--size WxH] [--scale S] [--presenter] [--theme light|dark]\n"
+    "usage: flood-viewer [FILE] [--feature N] [--layer NAME] [--where SQL] [--step N]\n"
+    "                    [--show-error] [--predicates] [--gorge-focus] [--screenshot OUT.png]\n"
+    "                    [--size WxH] [--mouse X,Y] [--scale S] [--presenter] [--theme light|dark]\n"
     "       flood-viewer FILE --screenshot OUT.png|OUT.svg --canvas-only [--size WxH] [--caption]\n"
     "       flood-viewer FILE --export-gif OUT.gif|--export-png-dir DIR [--steps A:B] [--every K]\n"
     "                    [--fps F] [--caption] [--size WxH]\n"
@@ -94,6 +100,11 @@ const char* const kUsage =
     "  --every K         a frame every K steps; the last step B always ends the animation\n"
     "  --fps F           GIF frames per second, 0.1 to 50 (default 10)\n"
     "  --caption         a line under the canvas: step, action and the step's narration\n"
+    "  --layer NAME      a GIS dataset's layer (GDAL; default: its only layer)\n"
+    "  --where 'SQL'     only the GIS features an OGR SQL attribute filter keeps\n"
+    "                    (with --feature N: the Nth of those)\n"
+    "  --predicates      open the predicate inspector; --gorge-focus: current gorge only\n"
+    "  --mouse X,Y       with --screenshot: the pointer at X,Y (what hovering there shows)\n"
     "  --bench           time opening, seeking and drawing (hidden window), print, exit\n"
     "a file that cannot be written: exit 8, nothing half-written left\n"
     "keys in the viewer: F1 or ?\n";
@@ -153,6 +164,21 @@ int parseArgs(int argc, char** argv, Args& a) {
             a.presses.push_back(p);
         } else if (s == "--print-layout") {
             a.printLayout = true;
+        } else if (s == "--layer" || s == "--where") {
+            const char* v = value(s.c_str());
+            if (!v) return 2 + 1;
+            (s == "--layer" ? a.layer : a.where) = v;
+        } else if (s == "--predicates") {
+            a.predicates = true;
+        } else if (s == "--gorge-focus") {
+            a.gorgeFocus = true;
+        } else if (s == "--mouse") {
+            const char* v = value("--mouse");
+            if (!v || std::sscanf(v, "%f,%f", &a.mouseX, &a.mouseY) != 2) {
+                if (v) std::fprintf(stderr, "flood-viewer: --mouse wants X,Y, got '%s'\n", v);
+                return 2 + 1;
+            }
+            a.mouse = true;
         } else if (s == "--show-error") {
             a.showError = true;
         } else if (s == "--bench") {
@@ -360,6 +386,7 @@ int main(int argc, char** argv) {
     }
     if (args.themeGiven) settings.theme = args.theme;
     palette::setTheme(settings.theme);
+    model.gisLayer = args.layer, model.gisWhere = args.where;
     double openStart = now();
     if (args.feature >= 0) {
         // A feature that cannot be opened is the answer: say so before any window.
@@ -421,6 +448,10 @@ int main(int argc, char** argv) {
     applyStyle(ui);
     uint64_t styled = ui.uiScale.generation();
     Theme styledTheme = ui.theme;
+    ui.showPredicates = args.predicates;
+    ui.sceneOptions.gorgeFocus = args.gorgeFocus;
+    // A picture shows the invariant lane complete (and the landing on its first violation).
+    if (shot) model.waitForInvariants();
 
     int exitCode = 0;
     uint64_t titled = model.generation();
@@ -460,6 +491,7 @@ int main(int argc, char** argv) {
         }
         imguiGlNewFrame();
         platform::newFrame();
+        if (shot && args.mouse) io.MousePos = ImVec2(args.mouseX, args.mouseY);
         ImGui::NewFrame();
         Vec2 size = platform::windowSize();
         const Rect canvasWas = ui.layout.canvas;

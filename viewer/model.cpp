@@ -393,6 +393,13 @@ Model::~Model() { cancelInvariants(); }
 
 // A trace by its name (*.jsonl, what `flood trace` is given) or by its header line, so a
 // trace saved under any name opens as one.
+#ifndef FLOOD_GDAL
+static Diagnostic gisUnavailable(const std::string& path) {
+    return {Status::Usage, path + ": --layer and --where need GIS support: this viewer was built without "
+                                  "GDAL (install libgdal-dev and reconfigure)"};
+}
+#endif
+
 static bool isTracePath(const std::string& path) {
     if (path.size() > 6 && path.compare(path.size() - 6, 6, ".jsonl") == 0) return true;
     std::ifstream in(path, std::ios::binary);
@@ -410,9 +417,11 @@ void Model::open(const std::string& path) {
     try {
         if (isTrace) r.diagnostic = readTraceFile(path, t);
 #ifdef FLOOD_GDAL
-        // GIS datasets (Shapefile, GeoPackage, ...) through GDAL: all of the only layer's
+        // GIS datasets (Shapefile, GeoPackage, ...) through GDAL: the selected layer's
         // polygonal features as one polygon, as `flood triangulate FILE` reads them.
-        else if (gdal::handles(path, {})) r = gdal::readPolygon(path, {});
+        else if (gdal::handles(path, {gisLayer, -1, gisWhere})) r = gdal::readPolygon(path, {gisLayer, -1, gisWhere});
+#else
+        else if (!gisLayer.empty() || !gisWhere.empty()) r.diagnostic = gisUnavailable(path);
 #endif
         else r = readPolygonFile(path);
     } catch (const std::exception& ex) {
@@ -979,6 +988,16 @@ namespace flood::view {
 bool Model::openFeature(const std::string& path, size_t index) {
     DatasetRead d;
     try {
+#ifdef FLOOD_GDAL
+        // A GIS layer's features, numbered by position among those --where keeps.
+        if (gdal::handles(path, {gisLayer, -1, gisWhere})) d = gdal::readFeatures(path, {gisLayer, -1, gisWhere});
+        else
+#else
+        if (!gisLayer.empty() || !gisWhere.empty()) {
+            openDiag_ = gisUnavailable(path);
+            return false;
+        }
+#endif
         d = readFeaturesFile(path, kDefaultMaxInputBytes, false);
     } catch (const std::exception& ex) {
         openDiag_ = {Status::Malformed, path + ": " + ex.what()};

@@ -279,6 +279,10 @@ public:
     void openTrace(Trace trace, const std::string& name);
     const Diagnostic& openDiagnostic() const { return openDiag_; }  // the last open's read
     std::string recentPath;
+    // A GIS dataset's layer and OGR SQL attribute filter (--layer, --where), for what
+    // open() and openFeature() read through GDAL; "" = the only layer, every feature. Set
+    // without GDAL, an open fails (Usage) saying so rather than ignoring them.
+    std::string gisLayer, gisWhere;
     void openPolygon(Polygon polygon, const std::string& name, Diagnostic input,
                      std::vector<std::string> warnings = {});
     // Feature `index` (its position in "features") of a FeatureCollection, named

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdio>
 
+#include "gorge_focus.h"
 #include "panels.h"
 #include "platform_glfw.h"
 
@@ -156,28 +157,27 @@ void vertexLabels(Ui& ui, ImDrawList* dl) {
     }
 }
 
-// "Current gorge only": everything outside the active gorge's box dimmed like the error view.
+// "Current gorge only": everything outside the active gorge's outline dimmed like the error
+// view (gorge_focus.h), the dim rows rebuilt only when the step or the camera moved.
 void gorgeFocus(Ui& ui) {
     const Model& m = ui.model;
     const Rect& area = ui.layout.canvas;
-    Point lo, hi;
-    if (!activeGorgeBox(m, lo, hi)) return;
-    const float pad = 12 * ui.scale;
-    Vec2 a = m.camera.toScreen({lo.x, hi.y}), b = m.camera.toScreen({hi.x, lo.y});
-    double x0 = std::clamp(a.x - pad, area.x, area.x + area.w), x1 = std::clamp(b.x + pad, area.x, area.x + area.w);
-    double y0 = std::clamp(a.y - pad, area.y, area.y + area.h), y1 = std::clamp(b.y + pad, area.y, area.y + area.h);
+    CanvasState& cs = ui.canvas;
+    const Camera& cam = m.camera;
+    std::array<double, 8> key{cam.center().x, cam.center().y, cam.scale(), area.x, area.y, area.w, area.h,
+                              double(m.step()) + double(m.generation()) * 4294967296.0};
+    if (key != cs.focusKey) {
+        cs.focusKey = key;
+        std::vector<Vec2> outline;
+        for (Point p : activeGorgeOutline(m)) outline.push_back(cam.toScreen(p));
+        cs.focusDim = outline.size() >= 3 ? outsideOf(outline, area) : std::vector<Rect>{};
+    }
     Rgba dim = palette::kBackground;
     dim.a = 200;
-    auto rect = [&](double l, double t, double r, double btm) {
-        if (r <= l || btm <= t) return;
-        ui.renderer.addTriangle(Layer::Lines, {l, t}, {r, t}, {r, btm}, dim);
-        ui.renderer.addTriangle(Layer::Lines, {l, t}, {r, btm}, {l, btm}, dim);
-    };
-    double L = area.x, T = area.y, R = area.x + area.w, B = area.y + area.h;
-    rect(L, T, R, y0);    // above
-    rect(L, y1, R, B);    // below
-    rect(L, y0, x0, y1);  // left
-    rect(x1, y0, R, y1);  // right
+    for (const Rect& r : cs.focusDim) {
+        ui.renderer.addTriangle(Layer::Lines, {r.x, r.y}, {r.x + r.w, r.y}, {r.x + r.w, r.y + r.h}, dim);
+        ui.renderer.addTriangle(Layer::Lines, {r.x, r.y}, {r.x + r.w, r.y + r.h}, {r.x, r.y + r.h}, dim);
+    }
 }
 
 // The error view: the canvas dimmed, the culprit edges thick, the crossing point ringed and

@@ -1,5 +1,8 @@
 #include <imgui.h>
 
+#include <cstdio>
+#include <fstream>
+
 #include "output.h"  // cli/
 #include "panels.h"
 
@@ -37,6 +40,27 @@ void sameLineOrWrap(float width) {
 
 float buttonWidth(const char* label) {
     return ImGui::CalcTextSize(label, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
+}
+
+void clickableRange(Ui& ui, uint32_t first, uint32_t count, char kind) {
+    char a[16], b[16];
+    std::snprintf(a, sizeof a, "%u", first);
+    clickable(ui, a, kind);
+    if (count < 2) return;
+    std::snprintf(b, sizeof b, "%u", first + count - 1);
+    ImGui::SameLine(0, 0);
+    ImGui::TextUnformatted("-");
+    ImGui::SameLine(0, 0);
+    clickable(ui, b, kind);
+}
+
+void clickableVertex(Ui& ui, const char* label, Index v) {
+    if (v == kNone) return;
+    char num[16];
+    std::snprintf(num, sizeof num, "%u", v);
+    ImGui::TextDisabled("%s", label);
+    ImGui::SameLine(0, 4 * ui.scale);
+    clickable(ui, num, 'v');
 }
 
 ImVec4 toImVec4(Rgba c) { return ImVec4(c.r / 255.f, c.g / 255.f, c.b / 255.f, c.a / 255.f); }

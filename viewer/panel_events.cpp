@@ -69,11 +69,7 @@ void drawEvents(Ui& ui) {
                 ImGui::TableNextColumn();
                 clickable(ui, vname(e.after.nextRight, b[3], 16), 'v');
                 ImGui::TableNextColumn();
-                char t[16];
-                if (e.triangleCount == 1)
-                    snprintf(t, sizeof t, "%u", e.firstTriangle), clickable(ui, t, 't');
-                else if (e.triangleCount > 1)
-                    ImGui::Text("%u-%u", e.firstTriangle, e.firstTriangle + e.triangleCount - 1);
+                if (e.triangleCount) clickableRange(ui, e.firstTriangle, e.triangleCount, 't');
             }
         }
         ImGui::EndTable();

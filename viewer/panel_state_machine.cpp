@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstdio>
 #include <map>
 
 #include "panels.h"
@@ -35,6 +36,36 @@ void arrow(ImDrawList* dl, ImVec2 a, ImVec2 b, float inset, ImU32 col, float thi
                           ImVec2(e.x - ux * hs + uy * hs / 2, e.y - uy * hs - ux * hs / 2), col);
 }
 
+// The step and the vertices and triangles of its event, each number clickable (find).
+void where(Ui& ui, const Event& e) {
+    const float gap = 10 * ui.scale;
+    ImGui::TextDisabled("step");
+    ImGui::SameLine(0, 4 * ui.scale);
+    char step[16];
+    std::snprintf(step, sizeof step, "%u", e.step + 1);
+    clickable(ui, step, 's');
+    ImGui::SameLine(0, gap);
+    clickableVertex(ui, "at", e.culprit);
+    if (e.culprit != kNone) ImGui::SameLine(0, gap);
+    clickableVertex(ui, "and", e.culprit2);
+    if (e.culprit2 != kNone) ImGui::SameLine(0, gap);
+    if (e.triangleCount) {
+        ImGui::TextDisabled("cut");
+        ImGui::SameLine(0, 4 * ui.scale);
+        clickableRange(ui, e.firstTriangle, e.triangleCount, 't');
+    } else {
+        ImGui::NewLine();
+    }
+    // The fingers after it, two to a line so a narrow column shows them whole.
+    const char* names[] = {"Left", "Right", "NextLeft", "NextRight"};
+    const Index fingers[] = {e.after.left, e.after.right, e.after.nextLeft, e.after.nextRight};
+    for (int k = 0; k < 4; k += 2) {
+        clickableVertex(ui, names[k], fingers[k]);
+        if (fingers[k] != kNone && fingers[k + 1] != kNone) ImGui::SameLine(0, gap);
+        clickableVertex(ui, names[k + 1], fingers[k + 1]);
+    }
+}
+
 }  // namespace
 
 void drawStateMachine(Ui& ui) {
@@ -64,7 +95,7 @@ void drawStateMachine(Ui& ui) {
     ImDrawList* dl = ImGui::GetWindowDrawList();
     ImVec2 origin = ImGui::GetCursorScreenPos();
     ImVec2 avail = ImGui::GetContentRegionAvail();
-    float textH = ImGui::GetTextLineHeightWithSpacing() * 3;
+    float textH = ImGui::GetTextLineHeightWithSpacing() * 6;  // button, state, step, 2 of fingers
     float side = std::max(40.f, std::min(avail.x, avail.y - textH));
     ImVec2 c(origin.x + avail.x / 2, origin.y + side / 2);
     float R = side * 0.36f, nodeR = std::max(12.f, side * 0.1f);
@@ -108,6 +139,7 @@ void drawStateMachine(Ui& ui) {
         ImGui::TextDisabled("%s", actionMeaning(cur->action));
     }
     ImGui::PopTextWrapPos();
+    if (cur) where(ui, *cur);
     ImGui::End();
 }
 

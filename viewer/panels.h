@@ -44,6 +44,10 @@ struct CanvasState {
     std::array<double, 6> pickKey{};  // mouse x, y, camera centre x, y, scale, step
     Index pickedVertex = kNone;
     int64_t pickedTriangle = -1;
+    // "Current gorge only": the dimmed rows outside the gorge's outline, and what they were
+    // computed for (camera centre x, y, scale, canvas x, y, w, h, generation and step).
+    std::array<double, 8> focusKey{};
+    std::vector<Rect> focusDim;
 };
 
 struct Ui {
@@ -134,6 +138,10 @@ void clickable(Ui& ui, const char* text, char kind);
 // Toolbars wrap: the next item goes on this line only if `width` more still fits in it.
 void sameLineOrWrap(float width);
 float buttonWidth(const char* label);
+// "first-last" (or "first" when count < 2), each end clickable as above.
+void clickableRange(Ui& ui, uint32_t first, uint32_t count, char kind);
+// "label v", v clickable; nothing for kNone.
+void clickableVertex(Ui& ui, const char* label, Index v);
 ImVec4 toImVec4(Rgba c);
 unsigned toImU32(Rgba c);
 // Writes the current step as "<name>-step<N>.svg" in the working directory.

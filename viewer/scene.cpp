@@ -52,23 +52,6 @@ Rgba vertexClassColor(VertexClass c) {
     }
 }
 
-bool activeGorgeBox(const Model& model, Point& lo, Point& hi) {
-    const Polygon& poly = model.polygon();
-    const ReplayState& s = model.state();
-    lo = {INFINITY, INFINITY}, hi = {-INFINITY, -INFINITY};
-    auto add = [&](Point p) {
-        lo = {std::min(lo.x, p.x), std::min(lo.y, p.y)}, hi = {std::max(hi.x, p.x), std::max(hi.y, p.y)};
-    };
-    for (Index i : s.chain)
-        if (valid(poly, i)) add(poly.vertices[i]);
-    const Fingers& f = s.fingers;
-    for (Index i : {f.left, f.right, f.nextLeft, f.nextRight})
-        if (valid(poly, i)) add(poly.vertices[i]);
-    Point a, b;
-    if (waterLevel(poly, s, a, b)) add(a), add(b);
-    return lo.x <= hi.x && lo.y <= hi.y;
-}
-
 Scene buildScene(const Model& model, const SceneOptions& o) {
     Scene sc;
     const Polygon& poly = model.polygon();

@@ -64,10 +64,6 @@ struct SceneOptions {
 Scene buildScene(const Model& model, const SceneOptions& options = {});
 Rgba vertexClassColor(VertexClass c);  // the legend's colours
 
-// The world box of the active gorge: its chain, the finger edges and the water level. False
-// when no gorge is active (before the start, after the end).
-bool activeGorgeBox(const Model& model, Point& lo, Point& hi);
-
 // Writes the scene as a standalone SVG of the given pixel width, the polygon fitted.
 void writeSceneSvg(std::ostream& out, const Scene& scene, const Polygon& polygon, int width);
 // The same through `camera` (its viewport is the canvas, clipped as on screen) on a page of

@@ -6,6 +6,7 @@
 // flood-order triangles, which must shrink). Exit 77 (skipped) without a display, except in CI.
 #include <stb_image.h>  // implementation lives in Debian's libstb
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 #include <map>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include <sys/wait.h>
 
@@ -387,6 +389,134 @@ int checkPresenterUsage() {
     return failures;
 }
 
+// The predicate inspector (--predicates) draws its rows, and hovering its first row
+// (--mouse) rings that test's first argument on the canvas. The window's place is its first
+// use's (panel_predicates.cpp) and ImGui's default style at scale 1: title bar 19 px, padding
+// 8 px, the header row 17 px; the first row's first line is below that.
+int checkInspector(const std::string& input, Model& model, const Layout& layout, int W, int H,
+                   const std::string& dir) {
+    const Rect& c = layout.canvas;
+    const Rect win{c.x + 20, c.y + c.h * 0.55, 640, 300};
+    const Rgba ring{80, 220, 255, 255};
+    // A step whose first row names a vertex the window does not cover.
+    uint32_t step = 0;
+    Index arg = kNone;
+    for (uint32_t s = 1; s <= model.steps() && !step; ++s) {
+        model.seek(s);
+        const auto& rows = model.inspection();
+        if (rows.empty() || rows[0].args.empty() || rows[0].args[0] >= model.polygon().vertices.size()) continue;
+        Vec2 p = model.camera.toScreen(model.polygon().vertices[rows[0].args[0]]);
+        if (!win.contains(p) && c.contains(p)) step = s, arg = rows[0].args[0];
+    }
+    if (!step) {
+        std::fprintf(stderr, "FAIL: inspector: no step whose first predicate names a visible vertex\n");
+        return 1;
+    }
+    model.seek(step);
+    Vec2 mouse{win.x + 60, win.y + 19 + 8 + 17 + 6};
+    char opts[160];
+    std::snprintf(opts, sizeof opts, "--step %u --step %u --predicates --mouse %.0f,%.0f", step, step, mouse.x, mouse.y);
+    Image img;
+    if (!shoot(input, opts, dir + "/screenshot-test-inspector.png", W, H, img)) return 1;
+    int failures = 0;
+    // Its rows: text in the first row's line, and more in the rows below it.
+    int bright = 0;
+    for (int y = int(win.y + 19 + 8 + 17); y < int(win.y + 19 + 8 + 17 + 60); ++y)
+        for (int x = int(win.x + 8); x < int(win.x + 400); ++x) {
+            Rgba px = img.at(x, y);
+            bright += px.r + px.g + px.b > 450;
+        }
+    if (bright < 40) {
+        std::fprintf(stderr, "FAIL: inspector: its rows show no text (%d bright pixels)\n", bright);
+        ++failures;
+    }
+    // The hovered row's argument: a ring of radius 9 around the vertex.
+    Vec2 v = model.camera.toScreen(model.polygon().vertices[arg]);
+    int onRing = 0;
+    for (auto [dx, dy] : {std::pair{9.0, 0.0}, {-9.0, 0.0}, {0.0, 9.0}, {0.0, -9.0}})
+        onRing += near(img, {v.x + dx, v.y + dy}, ring, 2, nullptr);
+    if (onRing < 3) {
+        Rgba seen = img.at(int(v.x + 9), int(v.y));
+        failures += fail("inspector: the hovered row's argument ringed on the canvas", {v.x + 9, v.y}, ring, seen);
+    }
+    stbi_image_free(img.px);
+    std::printf("inspector: step %u, vertex %u ringed (%d of 4 probes), %d bright pixels in its rows\n",
+                step, arg, onRing, bright);
+    return failures;
+}
+
+// The invariant lane of an invalid input flooded anyway: a tick at each violation the model
+// finds, where the timeline puts that step, and none elsewhere. The strip's place is found on
+// the picture (the lane's own colour), so a scrollbar in the timeline does not matter.
+int checkInvariantLane(const std::string& dir, int W, int H, const Layout& layout) {
+    std::string input = std::string(FLOOD_SOURCE_DIR) + "/polygons/invalid/hole-crossing-outer.json";
+    Model model;
+    model.open(input);
+    model.waitForInvariants();
+    const std::vector<Violation>& found = model.violations();
+    if (found.empty() || model.forbiddenStep() == 0 || found.front().step >= model.forbiddenStep()) {
+        std::fprintf(stderr, "FAIL: lane: %s should break an invariant before its forbidden step\n", input.c_str());
+        return 1;
+    }
+    Image img;
+    std::string step = "--step " + std::to_string(model.forbiddenStep());
+    if (!shoot(input, step, dir + "/screenshot-test-lane.png", W, H, img, model.exitCode())) return 1;
+    // The tick's orange (255, 120, 40), also where anti-aliasing blends it half into the lane;
+    // not the first error's red (its green stays low).
+    const Rgba laneColour{34, 30, 40, 255};
+    auto orange = [](Rgba p) { return p.r - p.b > 80 && p.g > 55 && p.g < 140; };
+    // The lane: the middle of the timeline's rows with the most pixels of its colour (its top
+    // row meets the current step's tick).
+    std::vector<int> perRow(size_t(H), 0);
+    int best = 0;
+    for (int y = int(layout.bottom.y); y < H; ++y) {
+        for (int x = 0; x < W; ++x) perRow[size_t(y)] += close(img.at(x, y), laneColour, 2);
+        best = std::max(best, perRow[size_t(y)]);
+    }
+    int top = -1, bottom = -1;
+    for (int y = int(layout.bottom.y); y < H; ++y)
+        if (perRow[size_t(y)] >= best * 9 / 10) bottom = y, top = top < 0 ? y : top;
+    int laneY = (top + bottom) / 2;
+    int x0 = W, x1 = -1;
+    std::vector<int> ticks;
+    for (int x = 0; x < W && laneY >= 0; ++x) {
+        Rgba px = img.at(x, laneY);
+        bool lane = close(px, laneColour, 2), tick = orange(px), error = close(px, palette::kCulprit, 6);
+        if (lane || tick || error) x0 = std::min(x0, x), x1 = std::max(x1, x);
+        if (tick) ticks.push_back(x);
+    }
+    int failures = 0;
+    if (best < W / 2) {
+        std::fprintf(stderr, "FAIL: lane: no invariant lane in the timeline\n");
+        stbi_image_free(img.px);
+        return 1;
+    }
+    // A step sits at the right edge of its event's mark: x0 + step * width / events.
+    const double width = x1 - x0 + 1;
+    auto xOf = [&](uint32_t s) { return x0 + s * width / model.steps(); };
+    for (const Violation& v : found) {
+        bool seen = false;
+        for (int t : ticks) seen |= std::abs(t - xOf(v.step)) <= 2;
+        if (!seen) {
+            std::fprintf(stderr, "FAIL: lane: no tick for the violation at step %u (x %.1f)\n", v.step, xOf(v.step));
+            ++failures;
+        }
+    }
+    for (int t : ticks) {
+        bool expected = false;
+        for (const Violation& v : found) expected |= std::abs(t - xOf(v.step)) <= 3;
+        if (!expected) {
+            std::fprintf(stderr, "FAIL: lane: a tick at x %d where no invariant breaks\n", t);
+            ++failures;
+            break;
+        }
+    }
+    std::printf("lane: row %d, x %d..%d, %zu violations (first at step %u, forbidden at %u), %zu tick pixels\n",
+                laneY, x0, x1, found.size(), found.front().step, model.forbiddenStep(), ticks.size());
+    stbi_image_free(img.px);
+    return failures;
+}
+
 }  // namespace
 
 int main() {
@@ -484,11 +614,14 @@ int main() {
     failures += checkToolbarAtScale2(dir, input);
     failures += checkKeys(dir, input);
     failures += checkLightTheme(dir, input, model, step, layout);
+    failures += checkInspector(input, model, layout, W, H, dir);
+    failures += checkInvariantLane(dir, W, H, layout);
     if (failures) return 1;
     std::printf("ok: step %u, background, water, dry land and Left marker where expected, also "
                 "after stepping back from the end; error view: crossing and culprit edge in the error colour; "
                 "a 10^5-vertex face reads as a shape; Tab's presenter view at 2x with its caption whole; the toolbar's "
                 "last button inside 1024x768 at 2x; Ctrl+plus rebuilds the fonts; F11 fills the screen; "
-                "the light theme's ground, lines and panels\n", step);
+                "the light theme's ground, lines and panels; the predicate inspector's rows and hover; the "
+                "invariant lane's ticks\n", step);
     return 0;
 }

@@ -29,7 +29,6 @@ The GIL is released while the core runs, so Python threads triangulate in parall
 
 from __future__ import annotations
 
-import re
 from dataclasses import dataclass, field
 from typing import Any, List, NamedTuple, Optional, Sequence
 
@@ -50,12 +49,6 @@ TESTS: List[str] = list(_flood.TESTS)          # bit i of `tested` / `passed`
 FORBIDDEN: List[str] = list(_flood.FORBIDDEN)
 
 
-# "ring R vertex V" (or "ring R" alone) as the core's messages locate a problem.
-_WHERE = re.compile(r"ring (\d+)(?: vertex (\d+))?")
-# The location the validator puts before its reason: "ring R vertex V (x, y): " or "ring R: ".
-_PREFIX = re.compile(r"^ring \d+(?: vertex \d+ \([^)]*\)| edge [^:]*)?: ")
-
-
 @dataclass(frozen=True)
 class Diagnostic:
     """The outcome of reading, validating or flooding one polygon.
@@ -63,8 +56,9 @@ class Diagnostic:
     status: "ok", "malformed", "invalid", "forbidden" or "internal"; code: the exit code the
     ``flood`` command would end with (0, 3, 4, 5, 6); message: the command's one-line message;
     reason: the message without the input's name and the location; ring, vertex: where the
-    problem is (rings numbered across all parts as the CLI numbers them, the vertex within its
-    ring), None where the message names none.
+    problem is, from the diagnostic's culprits (its first vertex, else its first ring; rings
+    numbered across all parts as the CLI numbers them, the vertex within its ring), None where
+    the culprits name none.
     """
 
     status: str
@@ -80,15 +74,12 @@ class Diagnostic:
         return self.code == 0
 
     @classmethod
-    def _from(cls, pair, warnings=(), name="", **extra):
-        code, message = pair
-        rest = message[len(name) + 2:] if name and message.startswith(name + ": ") else message
-        where = _WHERE.search(rest)
-        ring = int(where.group(1)) if where else None
-        vertex = int(where.group(2)) if where and where.group(2) is not None else None
-        return cls(status=_flood.STATUS_NAMES[code], code=code, message=message,
-                   reason=_PREFIX.sub("", rest), ring=ring, vertex=vertex,
-                   warnings=list(warnings), **extra)
+    def _from(cls, found, warnings=(), **extra):
+        """From the C++ side's (code, message, reason, ring, vertex): the location comes from
+        the diagnostic's culprits there, never from the message's text."""
+        code, message, reason, ring, vertex = found
+        return cls(status=_flood.STATUS_NAMES[code], code=code, message=message, reason=reason,
+                   ring=ring, vertex=vertex, warnings=list(warnings), **extra)
 
 
 class InvalidPolygon(ValueError):
@@ -195,15 +186,15 @@ def _normalize(polygon) -> Any:
 
 def validate(polygon, *, name: str = "polygon") -> Diagnostic:
     """The validator's verdict (docs/ERRORS.md): ``.ok``, or the first problem found."""
-    pair, warnings = _flood.validate(_normalize(polygon), name)
-    return Diagnostic._from(pair, warnings, name)
+    found, warnings = _flood.validate(_normalize(polygon), name)
+    return Diagnostic._from(found, warnings)
 
 
 def triangulate(polygon, *, validate: bool = True, up: str = "+y",
                 name: str = "polygon") -> Triangulation:
     """Triangulates like ``flood triangulate``: validate, flood, check exactly."""
-    pair, warnings, vertices, triangles, _ = _flood.triangulate(_normalize(polygon), validate, up, name)
-    _raise_for(Diagnostic._from(pair, warnings, name))
+    found, warnings, vertices, triangles, _ = _flood.triangulate(_normalize(polygon), validate, up, name)
+    _raise_for(Diagnostic._from(found, warnings))
     return Triangulation(vertices, triangles)
 
 
@@ -228,11 +219,11 @@ class Trace:
     """A recorded run: ``events`` (structured array), ``replay``, ``vertices``, ``triangles``
     and ``diagnostic`` (not ok for a forbidden run, which is recorded all the same)."""
 
-    def __init__(self, handle, name):
+    def __init__(self, handle):
         self.events: np.ndarray = handle.events
         self.vertices: np.ndarray = handle.vertices
         self.triangles: np.ndarray = handle.triangles
-        self.diagnostic = Diagnostic._from(handle.diagnostic, handle.warnings, name)
+        self.diagnostic = Diagnostic._from(handle.diagnostic, handle.warnings)
         self.replay = Replay(handle)
 
 
@@ -241,8 +232,8 @@ def trace(polygon, *, validate: bool = True, up: str = "+y", name: str = "polygo
     InvalidPolygon; a run stopped in a forbidden state is returned (see Trace.diagnostic)."""
     result = _flood.trace(_normalize(polygon), validate, up, name)
     if isinstance(result, tuple):
-        _raise_for(Diagnostic._from(result, (), name))
-    return Trace(result, name)
+        _raise_for(Diagnostic._from(result))
+    return Trace(result)
 
 
 def check(features, *, validate: bool = True, up: str = "+y", threads: int = 0,
@@ -258,8 +249,7 @@ def check(features, *, validate: bool = True, up: str = "+y", threads: int = 0,
     names = [f"feature {i}" for i in ids]
     inputs = [_normalize(f) for f in features]
     out = _flood.check(inputs, validate, up, threads, names)
-    return [Verdict._from((code, message), (), names[k], index=ids[k], triangles=count)
-            for k, (code, message, count) in enumerate(out)]
+    return [Verdict._from(found[:5], index=ids[k], triangles=found[5]) for k, found in enumerate(out)]
 
 
 def generate(family: str, size: int, seed: int = 1) -> List[List[np.ndarray]]:

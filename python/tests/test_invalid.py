@@ -36,3 +36,10 @@ def test_without_validation_the_flood_machine_refuses_it():
         flood.triangulate(HOLE_OUTSIDE, validate=False)
     assert caught.value.status == "forbidden" and caught.value.code == 5
     assert "LeftBehind" in caught.value.reason
+
+
+def test_check_verdicts_say_where_from_the_culprits():
+    ok, hole, tie = flood.check([[(0, 0), (1, 0), (0, 1)], HOLE_OUTSIDE, BOW_TIE], threads=2)
+    assert (ok.ring, ok.vertex, ok.reason) == (None, None, "")
+    assert (hole.ring, hole.vertex) == (1, 0) and hole.reason.startswith("hole (ring 1) lies outside")
+    assert (tie.ring, tie.vertex) == (0, 0) and tie.message.startswith("feature 2: ring 0 vertex 0 (0, 0): ")

@@ -608,7 +608,8 @@ void Model::computeVerdictLines() {
     }
     if (P.vertices.empty()) return;  // nothing loaded
     // A completed run: the exact checker decides, never the triangle count.
-    check_ = checkTriangulation(P, trace_->triangles);
+    check_ = checked_ ? std::move(*checked_) : checkTriangulation(P, trace_->triangles);
+    checked_.reset();
     if (!check_.ok) {
         line(VerdictKind::Rejected, "the exact checker rejects the triangulation: " + check_.reason);
         if (error_.empty()) error_ = check_.culprits;

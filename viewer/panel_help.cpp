@@ -37,6 +37,7 @@ void handleShortcuts(Ui& ui) {
         ui.showHelp = false;
         ui.showOpen = false;
     }
+    editShortcuts(ui);
 }
 
 void drawHelp(Ui& ui) {
@@ -58,6 +59,12 @@ void drawHelp(Ui& ui) {
         {"hover", "vertex or triangle details"},
         {"click a triangle", "go to the step that cut it"},
         {"right-click a vertex", "break when it becomes Left, Right, NextLeft or NextRight"},
+        {"M", "edit mode: drag a vertex, double-click an edge to insert one, Delete removes the hovered one"},
+        {"Shift+drag (edit mode)", "move the whole ring"},
+        {"H (edit mode)", "new ring: click corners, Enter or the first corner closes (a hole inside, a part outside)"},
+        {"Ctrl+Z / Ctrl+Shift+Z, Ctrl+Y", "undo / redo an edit"},
+        {"Ctrl+S", "save the edited polygon as GeoJSON"},
+        {"Ctrl+N", "new empty canvas: draw your own outer ring"},
     };
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
         for (auto& k : keys) {

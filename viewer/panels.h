@@ -8,11 +8,13 @@
 #include <vector>
 
 #include "canvas_geometry.h"
+#include "edit.h"
 #include "model.h"
 #include "renderer.h"
 #include "scene.h"
 
 struct ImVec4;
+struct ImDrawList;
 
 namespace flood::view {
 
@@ -34,6 +36,24 @@ struct CanvasState {
     std::array<double, 6> pickKey{};  // mouse x, y, camera centre x, y, scale, step
     Index pickedVertex = kNone;
     int64_t pickedTriangle = -1;
+};
+
+// Live editing's UI state (panel_edit.cpp); the edits themselves are viewer/edit.h's.
+struct EditUi {
+    explicit EditUi(Model& m);
+    Editor editor;
+    bool on = false;              // edit mode (M, or the canvas's Edit button)
+    bool ringTool = false;        // "new ring" tool: clicks place corners (H)
+    Index dragVertex = kNone;     // the vertex being dragged
+    Index dragRing = kNone;       // the ring being dragged (Shift+drag)
+    Point dragStart;              // where the ring drag began (world)
+    Index selected = kNone;       // the last vertex clicked: what Delete removes when none is hovered
+    Index hoverVertex = kNone, hoverEdge = kNone;
+    Point onEdge;                 // the hovered edge's point nearest the mouse
+    bool showSave = false;
+    bool overwrite = false;       // the save panel's "overwrite it" confirmation
+    char savePath[1024] = "";
+    std::string saveNote;
 };
 
 struct Ui {
@@ -65,6 +85,7 @@ struct Ui {
     uint64_t shrinkGeneration = 0;     // Model::generation() the running shrink started from
     char savePath[1024] = "";          // where the Shrink panel saves the repro
     std::string shrinkNote;            // the Shrink panel's last outcome
+    EditUi edit{model};                // live editing (panel_edit.cpp)
 };
 
 void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, labels, input
@@ -80,6 +101,15 @@ void drawOpen(Ui& ui);           // panel_open.cpp: polygons/ and recent files
 void drawShrink(Ui& ui);         // panel_shrink.cpp: shrink a failure, open and save the repro
 void drawHelp(Ui& ui);           // panel_help.cpp: keys and glossary
 void handleShortcuts(Ui& ui);    // panel_help.cpp: the keys the help window lists
+// panel_edit.cpp: live editing. editFrame every frame before the canvas (adopts a finished
+// flood, carries a drag on); editCanvasInput with the mouse over the canvas, true when it took
+// the left button; editOverlay draws handles, pending corners and the live diagnostic;
+// editBar is the canvas's Edit toolbar and the save panel; editShortcuts its keys.
+void editFrame(Ui& ui);
+bool editCanvasInput(Ui& ui, Vec2 mouse);
+void editOverlay(Ui& ui, ImDrawList* dl);
+void editBar(Ui& ui);
+void editShortcuts(Ui& ui);
 
 // Helpers shared by panels (panel_common.cpp).
 void placeWindow(const Rect& r);  // tiles a panel at a layout rectangle

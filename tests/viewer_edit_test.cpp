@@ -86,7 +86,13 @@ TEST(ViewerEdit, ADragIsOneCommandAndUndoGoesBackToWhereItBegan) {
     Editor e(m);
     e.beginGesture();
     for (int i = 1; i <= 5; ++i) ASSERT_TRUE(e.moveVertex(5, {4, 6 + 0.25 * i}));
+    // The invariant scan waits for the drag to end: no scan to stop at every move.
+    EXPECT_FALSE(m.invariantsDone());
+    EXPECT_EQ(m.invariantProgress(), 0u);
     e.endGesture();
+    m.waitForInvariants();
+    EXPECT_TRUE(m.invariantsDone());
+    EXPECT_TRUE(m.violations().empty());
     EXPECT_EQ(e.historySize(), 1u);
     EXPECT_TRUE(m.polygon().vertices[5] == (Point{4, 7.25}));
     e.undo();

@@ -38,7 +38,7 @@ Model::EditedRun Model::floodEdit(Polygon polygon, const std::string& name) {
     return run;
 }
 
-void Model::adoptEdit(EditedRun run) {
+void Model::adoptEdit(EditedRun run, bool deferScan) {
     const uint32_t at = step_;
     const uint32_t oldSteps = steps();
     const TimelineView tl = timeline;
@@ -51,6 +51,7 @@ void Model::adoptEdit(EditedRun run) {
     input_ = std::move(run.input);
     warnings_.clear();
     if (run.checked) checked_ = std::move(run.check);
+    deferScan_ = deferScan;
     adopt(std::make_unique<Trace>(std::move(run.trace)));
     checked_.reset();  // used by adopt's verdict, or not needed there: never by a later open
     // What adopt() resets for an open stays as the user left it.
@@ -60,6 +61,12 @@ void Model::adoptEdit(EditedRun run) {
     seek(at);
     if (tl.span == 0 || steps() == oldSteps) timeline = tl;
     landingPending_ = false;
+}
+
+void Model::startDeferredInvariants() {
+    if (!scanWaiting_) return;
+    scanWaiting_ = false;
+    startInvariants();
 }
 
 // ========================================================================================
@@ -185,6 +192,7 @@ void Editor::beginGesture() {
 void Editor::endGesture() {
     gesture_ = false;
     merging_ = false;
+    if (!pending()) model_.startDeferredInvariants();
 }
 
 const std::string& Editor::undoLabel() {
@@ -390,7 +398,7 @@ bool Editor::redo() {
 // ---- flooding the edit -----------------------------------------------------------------
 void Editor::reflood() {
     if (!background) {
-        model_.adoptEdit(Model::floodEdit(polygon_, name_));
+        model_.adoptEdit(Model::floodEdit(polygon_, name_), gesture_);
         generation_ = model_.generation();
         return;
     }
@@ -412,7 +420,7 @@ void Editor::finishJob() {
     job_.join();
     // Adopted only if the model still shows what this editor edits.
     if (generation_ == model_.generation()) {
-        model_.adoptEdit(std::move(jobResult_));
+        model_.adoptEdit(std::move(jobResult_), gesture_ || dirty_);
         generation_ = model_.generation();
     }
     jobResult_ = {};
@@ -425,6 +433,7 @@ void Editor::poll() {
     }
     if (dirty_ && generation_ == model_.generation()) startJob();
     else dirty_ = false;  // overtaken by an open: nothing to show
+    if (!gesture_ && !pending()) model_.startDeferredInvariants();
 }
 
 void Editor::wait() {

@@ -12,6 +12,7 @@
 #include <limits>
 #include <sstream>
 #include <system_error>
+#include <utility>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -510,7 +511,9 @@ void Model::adopt(std::unique_ptr<Trace> trace) {
         }
     landedStep_ = step_;
     landingPending_ = true;
-    startInvariants();
+    scanWaiting_ = std::exchange(deferScan_, false);  // live editing: started once the drag ends
+    if (scanWaiting_) scan_.done = false;
+    else startInvariants();
 }
 
 bool Model::landOnFirstViolation() {

@@ -394,7 +394,10 @@ public:
     static EditedRun floodEdit(Polygon polygon, const std::string& name);
     // Makes `run` the loaded run under the same name. Unlike an open, the step (clamped to
     // the new trace), the camera and the timeline stay, and no landing moves the step.
-    void adoptEdit(EditedRun run);
+    // `deferScan` (a drag goes on): the invariant scan waits for startDeferredInvariants(),
+    // since stopping a scan still setting up would stall the UI thread at the next edit.
+    void adoptEdit(EditedRun run, bool deferScan = false);
+    void startDeferredInvariants();  // no-op unless a scan waits
 
 private:
     struct InvariantScan {
@@ -421,6 +424,7 @@ private:
     size_t originFeature_ = kNoFeature;
     CheckResult check_;
     std::optional<CheckResult> checked_;  // adoptEdit: the checker already ran with the flood
+    bool deferScan_ = false, scanWaiting_ = false;  // adoptEdit's deferred invariant scan
     std::vector<VerdictLine> verdictLines_;
     Culprits error_;
     uint32_t firstErrorStep_ = kNone;

@@ -4,7 +4,7 @@
 // Each edit moves vertex 0 (to where it is, so every run floods the same valid polygon) and
 // is timed in the editor's two halves: the flood (validate, record, exact checker, which the
 // viewer runs in a background thread) and the adoption on the UI thread (classes, transcript,
-// replay keyframes, verdict). Edits follow each other as in a drag, so the invariant scan
+// replay keyframes, verdict), then the canvas's buffers built again (before their GL upload). Edits follow each other as in a drag, so the invariant scan
 // waits for the drag's end (Model::adoptEdit); it runs in its own thread after that.
 #include <algorithm>
 #include <chrono>
@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "canvas_geometry.h"
 #include "edit.h"
 #include "generate.h"
 
@@ -43,7 +44,7 @@ int main(int argc, char** argv) {
     Polygon p = generate(family, 1, size);
     model.openPolygon(p, family, validate(p, family));
     model.seek(model.steps() / 2);
-    std::vector<double> flood, adopt, total;
+    std::vector<double> flood, adopt, canvas, total;
     for (int i = 0; i < edits; ++i) {
         Polygon edited = model.polygon();
         double t0 = now();
@@ -51,7 +52,14 @@ int main(int argc, char** argv) {
         double t1 = now();
         model.adoptEdit(std::move(run), true);  // as in a drag: the invariant scan waits
         double t2 = now();
-        flood.push_back(t1 - t0), adopt.push_back(t2 - t1), total.push_back(t2 - t0);
+        // What the canvas then rebuilds on the UI thread before the GL upload (panel_canvas.cpp).
+        CanvasGeometry g = buildCanvasGeometry(model);
+        TriangleGrid labels, vertexLabels;
+        labels.build(model.polygon(), model.trace().triangles);
+        vertexLabels.buildVertices(model.polygon());
+        CanvasOverlay o = buildCanvasOverlay(model, {}, g.origin);
+        double t3 = now();
+        flood.push_back(t1 - t0), adopt.push_back(t2 - t1), canvas.push_back(t3 - t2), total.push_back(t3 - t0);
     }
     std::printf("flood-edit-bench: %s %zu: %zu vertices, %u events, %zu triangles, %s\n", family.c_str(), size,
                 model.polygon().vertices.size(), model.steps(), model.trace().triangles.size(),
@@ -59,6 +67,7 @@ int main(int argc, char** argv) {
     std::printf("flood-edit-bench: edit -> new trace ready, median / max of %d edits (ms):\n", edits);
     std::printf("  flood (validate, record, exact checker; background thread) %.1f / %.1f\n", median(flood), maximum(flood));
     std::printf("  adopt (classes, transcript, keyframes; UI thread) %.1f / %.1f\n", median(adopt), maximum(adopt));
+    std::printf("  canvas buffers (geometry, label grids, overlay; UI thread) %.1f / %.1f\n", median(canvas), maximum(canvas));
     std::printf("  total %.1f / %.1f\n", median(total), maximum(total));
     model.cancelInvariants();
     return model.failed() ? 1 : 0;

@@ -12,6 +12,7 @@
 #include <limits>
 #include <sstream>
 #include <system_error>
+#include <utility>
 #include <unistd.h>
 
 #include <nlohmann/json.hpp>
@@ -520,7 +521,9 @@ void Model::adopt(std::unique_ptr<Trace> trace) {
         }
     landedStep_ = step_;
     landingPending_ = true;
-    startInvariants();
+    scanWaiting_ = std::exchange(deferScan_, false);  // live editing: started once the drag ends
+    if (scanWaiting_) scan_.done = false;
+    else startInvariants();
 }
 
 bool Model::landOnFirstViolation() {
@@ -618,7 +621,8 @@ void Model::computeVerdictLines() {
     }
     if (P.vertices.empty()) return;  // nothing loaded
     // A completed run: the exact checker decides, never the triangle count.
-    check_ = checkTriangulation(P, trace_->triangles);
+    check_ = checked_ ? std::move(*checked_) : checkTriangulation(P, trace_->triangles);
+    checked_.reset();
     if (!check_.ok) {
         line(VerdictKind::Rejected, "the exact checker rejects the triangulation: " + check_.reason);
         if (error_.empty()) error_ = check_.culprits;

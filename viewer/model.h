@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -388,6 +389,22 @@ public:
     bool landOnFirstViolation();
     void waitForInvariants();                           // joins it (tests)
 
+    // Live editing (viewer/edit.h). An edited polygon validated and flooded: touches no
+    // Model state, so it may run in a background thread.
+    struct EditedRun {
+        Trace trace;       // trace.polygon: the edited polygon, its T-junctions recorded
+        Diagnostic input;  // the validator's verdict on it
+        CheckResult check; // the exact checker on a completed run (checked: it ran)
+        bool checked = false;
+    };
+    static EditedRun floodEdit(Polygon polygon, const std::string& name);
+    // Makes `run` the loaded run under the same name. Unlike an open, the step (clamped to
+    // the new trace), the camera and the timeline stay, and no landing moves the step.
+    // `deferScan` (a drag goes on): the invariant scan waits for startDeferredInvariants(),
+    // since stopping a scan still setting up would stall the UI thread at the next edit.
+    void adoptEdit(EditedRun run, bool deferScan = false);
+    void startDeferredInvariants();  // no-op unless a scan waits
+
 private:
     struct InvariantScan {
         std::thread thread;
@@ -412,6 +429,8 @@ private:
     std::string origin_, originName_;  // the shrunk polygon's source file, and its display name
     size_t originFeature_ = kNoFeature;
     CheckResult check_;
+    std::optional<CheckResult> checked_;  // adoptEdit: the checker already ran with the flood
+    bool deferScan_ = false, scanWaiting_ = false;  // adoptEdit's deferred invariant scan
     std::vector<VerdictLine> verdictLines_;
     Culprits error_;
     uint32_t firstErrorStep_ = kNone;

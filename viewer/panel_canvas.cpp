@@ -27,10 +27,17 @@ void canvasInput(Ui& ui) {
     Vec2 mouse{io.MousePos.x, io.MousePos.y};
     // Only when no ImGui window wants the mouse: panels keep their clicks and scrolls.
     if (io.WantCaptureMouse || !ui.layout.canvas.contains(mouse)) return;
-    if (ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0) ||
+    // ---- live editing (panel_edit.cpp): edit mode takes the left button when it grabs a
+    // vertex, a ring or places a corner, and has its own hover; wheel and middle drag still
+    // move the view, a left drag on empty space still pans.
+    const bool editing = ui.edit.on;
+    const bool leftTaken = editing && editCanvasInput(ui, mouse);
+    if ((ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0) && !leftTaken) ||
         ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0))
         m.camera.pan(io.MouseDelta.x, io.MouseDelta.y);
     if (io.MouseWheel != 0) m.camera.zoomAt(mouse, std::pow(1.15, double(io.MouseWheel)));
+    if (editing) return;
+    // ---- end of live editing
 
     CanvasState& cs = ui.canvas;
     std::array<double, 6> key{mouse.x, mouse.y, m.camera.center().x, m.camera.center().y,
@@ -288,9 +295,13 @@ void drawCanvas(Ui& ui) {
         m.errorView = false;
     }
     m.camera.setViewport(area);
+    editFrame(ui);  // live editing: a finished flood adopted, a drag carried on
     canvasInput(ui);
     paintCanvas(ui, ImGui::GetBackgroundDrawList());
-    if (!ui.presenter) canvasBar(ui);  // presenter view: nothing over the canvas but the polygon
+    if (!ui.presenter) {  // presenter view: nothing over the canvas but the polygon
+        canvasBar(ui);
+        editBar(ui);
+    }
 }
 
 void paintCanvas(Ui& ui, ImDrawList* dl) {
@@ -363,12 +374,13 @@ void paintCanvas(Ui& ui, ImDrawList* dl) {
         dl->AddText(ImVec2(float(c.x + 10 * s), float(c.y - 18 * s)), IM_COL32(80, 220, 255, 255),
                     std::to_string(i + 1).c_str());
     }
-    if (m.polygon().vertices.empty()) {
+    if (m.polygon().vertices.empty() && !ui.edit.on) {
         const char* msg = m.inputDiagnostic().ok() ? "no polygon: open one (Ctrl+O or Open...)"
                                                    : m.inputDiagnostic().message.c_str();
         dl->AddText(ImVec2(float(area.x + 20 * s), float(area.y + 20 * s)),
                     toImU32(palette::kCulprit), msg);
     }
+    editOverlay(ui, dl);
     dl->PopClipRect();
 }
 

@@ -37,6 +37,7 @@ void handleShortcuts(Ui& ui) {
         ui.showHelp = false;
         ui.showOpen = false;
     }
+    editShortcuts(ui);
 }
 
 void drawHelp(Ui& ui) {
@@ -61,6 +62,12 @@ void drawHelp(Ui& ui) {
         {"Tab", "presenter view: only the canvas and a large caption (again: back)"},
         {"F11", "fullscreen on the window's monitor (again: back)"},
         {"Ctrl + / Ctrl - / Ctrl+0", "larger / smaller UI and fonts / back to 100%"},
+        {"M", "edit mode: drag a vertex, double-click an edge to insert one, Delete removes the hovered one"},
+        {"Shift+drag (edit mode)", "move the whole ring"},
+        {"H (edit mode)", "new ring: click corners, Enter or the first corner closes (a hole inside, a part outside)"},
+        {"Ctrl+Z / Ctrl+Shift+Z, Ctrl+Y", "undo / redo an edit"},
+        {"Ctrl+S", "save the edited polygon as GeoJSON"},
+        {"Ctrl+N", "new empty canvas: draw your own outer ring"},
     };
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
         for (auto& k : keys) {

@@ -10,6 +10,7 @@
 
 #include "canvas_geometry.h"
 #include "export.h"
+#include "edit.h"
 #include "model.h"
 #include "presenter.h"
 #include "renderer.h"
@@ -48,6 +49,24 @@ struct CanvasState {
     // computed for (camera centre x, y, scale, canvas x, y, w, h, generation and step).
     std::array<double, 8> focusKey{};
     std::vector<Rect> focusDim;
+};
+
+// Live editing's UI state (panel_edit.cpp); the edits themselves are viewer/edit.h's.
+struct EditUi {
+    explicit EditUi(Model& m);
+    Editor editor;
+    bool on = false;              // edit mode (M, or the canvas's Edit button)
+    bool ringTool = false;        // "new ring" tool: clicks place corners (H)
+    Index dragVertex = kNone;     // the vertex being dragged
+    Index dragRing = kNone;       // the ring being dragged (Shift+drag)
+    Point dragStart;              // where the ring drag began (world)
+    Index selected = kNone;       // the last vertex clicked: what Delete removes when none is hovered
+    Index hoverVertex = kNone, hoverEdge = kNone;
+    Point onEdge;                 // the hovered edge's point nearest the mouse
+    bool showSave = false;
+    bool overwrite = false;       // the save panel's "overwrite it" confirmation
+    char savePath[1024] = "";
+    std::string saveNote;
 };
 
 struct Ui {
@@ -100,6 +119,7 @@ struct Ui {
     uint32_t todoGorge = kNone;        // the to-do list's chosen gorge, drawn on the canvas
     TodoList todo;                     // the to-do list of the step below (panel_todo.cpp)
     std::array<uint64_t, 2> todoFor{~0ull, ~0ull};  // Model::generation() and step it was read at
+    EditUi edit{model};                // live editing (panel_edit.cpp)
 };
 
 void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, labels, input
@@ -126,6 +146,15 @@ void handlePresenterKeys(Ui& ui);  // panel_caption.cpp: Tab, F11, Ctrl +/-/0
 // between frames only (the font texture is uploaded again).
 void applyStyle(Ui& ui);
 void drawTodo(Ui& ui);           // panel_todo.cpp: pending and held gorges, shown when clicked
+// panel_edit.cpp: live editing. editFrame every frame before the canvas (adopts a finished
+// flood, carries a drag on); editCanvasInput with the mouse over the canvas, true when it took
+// the left button; editOverlay draws handles, pending corners and the live diagnostic;
+// editBar is the canvas's Edit toolbar and the save panel; editShortcuts its keys.
+void editFrame(Ui& ui);
+bool editCanvasInput(Ui& ui, Vec2 mouse);
+void editOverlay(Ui& ui, ImDrawList* dl);
+void editBar(Ui& ui);
+void editShortcuts(Ui& ui);
 
 // Helpers shared by panels (panel_common.cpp).
 void placeWindow(const Rect& r);  // tiles a panel at a layout rectangle

@@ -126,6 +126,7 @@ bool shouldClose() { return glfwWindowShouldClose(g_window); }
 void requestClose() { glfwSetWindowShouldClose(g_window, GLFW_TRUE); }
 void pollEvents() { glfwPollEvents(); }
 void waitEvents(double timeout) { glfwWaitEventsTimeout(timeout); }
+void wake() { glfwPostEmptyEvent(); }
 void newFrame() { ImGui_ImplGlfw_NewFrame(); }
 void swapBuffers() { glfwSwapBuffers(g_window); }
 double time() { return glfwGetTime(); }

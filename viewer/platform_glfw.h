@@ -41,6 +41,9 @@ std::vector<std::string> takeDroppedPaths();  // files dropped on the window sin
 // Key presses and repeats since the last call, every one in order (model.h's KeyQueue).
 std::vector<KeyPress> takeKeyPresses();
 
+// Wakes waitEvents() from any thread (a background flood is ready: viewer/edit.h).
+void wake();
+
 // ImGui 1.86 has no ImGuiKey for letters or function keys; its GLFW backend fills
 // io.KeysDown by GLFW key code, so these index io.KeysDown directly.
 extern const int kKeyF;

@@ -9,11 +9,16 @@
 #include <cmath>
 #include <random>
 
+#include <sstream>
+
 #include "generate.h"
+#include "invariants.h"
 #include "predicates.h"
 #include "replay.h"
 #include "test_support.h"
+#include "trace_io.h"
 #include "transcript.h"
+#include "vertex_class.h"
 #include "work.h"
 
 using namespace flood;
@@ -260,6 +265,44 @@ TEST(UpFlood, WorkPerVertexStaysLinearAtAnAngle) {
                                               << first << " at 1000";
         }
     }
+}
+
+// A trace keeps its direction: saved and loaded, and the invariants and vertex classes read it.
+TEST(UpTrace, DirectionRoundTripsAndDrivesTheInvariants) {
+    Polygon p = readOrFail(sourcePath("polygons/holes.json"));
+    for (Up up : {Up::PlusY, Up::MinusX, upFromDegrees(17), Up{1, 1e-300}}) {
+        Trace t = record(p, Options{up});
+        ASSERT_TRUE(t.diagnostic.ok()) << t.diagnostic.message;
+        std::ostringstream out;
+        writeTrace(out, t);
+        EXPECT_EQ(out.str().find("\"up\"") != std::string::npos, up != Up::PlusY) << upName(up);  // +y: as before
+        Trace back;
+        ASSERT_TRUE(parseTrace(out.str(), "t", back).ok());
+        EXPECT_EQ(back.up, up);
+        EXPECT_TRUE(checkInvariants(back).empty()) << upName(up);
+    }
+    // The classes follow the direction: a square turned 45° has one bottom at its lowest corner.
+    Polygon square;
+    square.addRing({{0, 0}, {2, 0}, {2, 2}, {0, 2}}, true);
+    std::vector<VertexClass> c = classifyVertices(square, upFromDegrees(45));
+    EXPECT_EQ(c[0], VertexClass::Bottom);
+    EXPECT_EQ(c[1], VertexClass::Regular);
+    EXPECT_EQ(c[2], VertexClass::Ceiling);
+    EXPECT_EQ(c[3], VertexClass::Regular);
+    Trace bad = record(square, Options{upFromDegrees(45)});
+    std::string text;
+    {
+        std::ostringstream out;
+        writeTrace(out, bad);
+        text = out.str();
+    }
+    const size_t at = text.find("\"up\":[");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 6, "\"up\":[0,0],\"was\":[");
+    Trace back;
+    Diagnostic d = parseTrace(text, "t", back);
+    EXPECT_EQ(d.status, Status::Malformed);
+    EXPECT_NE(d.message.find("\"up\""), std::string::npos) << d.message;
 }
 
 TEST(UpCli, AngleVectorAndAxes) {

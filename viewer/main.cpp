@@ -313,6 +313,7 @@ int main(int argc, char** argv) {
         drawOpen(ui);
         drawShrink(ui);
         drawHelp(ui);
+        drawDirection(ui);
         ImGui::Render();
 
         double built = now() - frameStart;

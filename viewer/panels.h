@@ -65,6 +65,7 @@ struct Ui {
     uint64_t shrinkGeneration = 0;     // Model::generation() the running shrink started from
     char savePath[1024] = "";          // where the Shrink panel saves the repro
     std::string shrinkNote;            // the Shrink panel's last outcome
+    bool showDirection = false;        // the flood direction dial (panel_direction.cpp)
 };
 
 void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, labels, input
@@ -80,6 +81,7 @@ void drawOpen(Ui& ui);           // panel_open.cpp: polygons/ and recent files
 void drawShrink(Ui& ui);         // panel_shrink.cpp: shrink a failure, open and save the repro
 void drawHelp(Ui& ui);           // panel_help.cpp: keys and glossary
 void handleShortcuts(Ui& ui);    // panel_help.cpp: the keys the help window lists
+void drawDirection(Ui& ui);      // panel_direction.cpp: the flood direction dial and its changes
 
 // Helpers shared by panels (panel_common.cpp).
 void placeWindow(const Rect& r);  // tiles a panel at a layout rectangle

@@ -32,11 +32,12 @@ struct Args {
     bool bench = false;  // measure open, seek and frame times, print them, exit
     bool showError = false;  // open in the error view (as the E key does)
     long feature = -1;       // --feature N: that feature of a FeatureCollection
+    std::string up;          // --up: flood along this direction, with the dial open
 };
 
 const char* const kUsage =
     "usage: flood-viewer [FILE] [--feature N] [--step N] [--show-error] [--screenshot OUT.png]\n"
-    "                    [--size WxH]\n"
+    "                    [--size WxH] [--up DIRECTION]\n"
     "  FILE              polygon (GeoJSON, ring arrays or WKT) or a trace from `flood trace`\n"
     "                    (*.jsonl); default: polygons/paper-figure-7.json\n"
     "  --feature N       open feature N (0-based, as `flood check` numbers them) of a\n"
@@ -48,6 +49,8 @@ const char* const kUsage =
     "                    code is the CLI's: 3 unreadable, 4 invalid, 5 forbidden, 6 checker\n"
     "  --size WxH        window size in pixels (default 1280x800)\n"
     "  --bench           time opening, seeking and drawing (hidden window), print, exit\n"
+    "  --up DIRECTION    flood along +y, -y, +x, -x, an angle in degrees (90 is +y) or X,Y,\n"
+    "                    with the direction dial open (it compares with the +y run)\n"
     "keys in the viewer: F1 or ?\n";
 
 // Returns 0 to go on, or an exit code + 1 (so 1 means "exit 0", e.g. after --help).
@@ -83,6 +86,13 @@ int parseArgs(int argc, char** argv, Args& a) {
             a.showError = true;
         } else if (s == "--bench") {
             a.bench = true;
+        } else if (s == "--up") {
+            const char* v = value("--up");
+            Up d;
+            std::string why;
+            if (v && !parseUp(v, d, why)) std::fprintf(stderr, "flood-viewer: --up: %s\n", why.c_str());
+            if (!v || !why.empty()) return 2 + 1;
+            a.up = v;
         } else if (s == "--screenshot") {
             const char* v = value("--screenshot");
             if (!v) return 2 + 1;
@@ -226,6 +236,12 @@ int main(int argc, char** argv) {
     } else if (!args.file.empty()) {
         model.open(args.file);
     }
+    if (!args.up.empty()) {
+        Up d;
+        std::string why;
+        parseUp(args.up, d, why);  // parseArgs has accepted it
+        model.setUp(d);
+    }
     double openSeconds = now() - openStart;
     if (!args.steps.empty()) model.seek(args.steps.front());
     BenchStats bench;
@@ -267,6 +283,7 @@ int main(int argc, char** argv) {
 
     Ui ui(model, renderer);
     ui.scale = scale;
+    ui.showDirection = !args.up.empty();
 
     int exitCode = 0;
     uint64_t titled = model.generation();

@@ -1230,10 +1230,11 @@ bool Model::setUp(Up up) {
     std::vector<std::string> warnings = warnings_;
     const size_t feature = feature_, originFeature = originFeature_;
     const std::string origin = origin_, originName = originName_;
+    const bool fit = needsFit;  // the polygon does not move: fit only if not yet fitted
     openPolygon(trace_->polygon, name, std::move(input), std::move(warnings));
     feature_ = feature, originFeature_ = originFeature;
     origin_ = origin, originName_ = originName;
-    needsFit = false;  // the polygon did not move
+    needsFit = fit;
     seek(at);
     return true;
 }

@@ -16,8 +16,10 @@
 #include "predicates.h"
 #include "replay.h"
 #include "test_support.h"
+#include "touches.h"
 #include "trace_io.h"
 #include "transcript.h"
+#include "verify.h"
 #include "vertex_class.h"
 #include "work.h"
 
@@ -180,6 +182,20 @@ TEST(UpFlood, GeneratedFamiliesAreExactValidAtAnyAngle) {
             }
 }
 
+// The axes flood as they did before any angle was possible (transcripts of the build before
+// this change: the quarter-turn fast path is unchanged).
+TEST(UpFlood, AxisTranscriptsAreAsBefore) {
+    Polygon p = readOrFail(sourcePath("polygons/overhang.json"));
+    EXPECT_EQ(transcript(record(p, Options{Up::MinusY}).events),
+              "Raise, Bridge 0, Raise 1, Spill; Raise, Jump; Raise 2-3, Fill 4; Raise 5-6, Fill 7");
+    EXPECT_EQ(transcript(record(p, Options{Up::PlusX}).events),
+              "Raise, Bridge 0, Raise 1, Spill; Raise 2, Jump; Raise 3-5, Fill 6; Fill 7");
+    EXPECT_EQ(transcript(record(p, Options{Up::MinusX}).events),
+              "Raise, Bridge 0, Raise 1, Fill 2; Raise 3, Spill; Raise, Jump; Raise 4-5, Fill 6-7");
+    EXPECT_EQ(transcript(record(p, Options{upFromDegrees(180)}).events),
+              transcript(record(p, Options{Up::MinusX}).events));
+}
+
 // An axis tilted by the least double, d = axis + 2^-1074·d⊥, orders every pair of these
 // inputs' vertices as the axis does (its tie-break is d⊥), but goes the way of every other
 // direction: exact heights sorted into ranks. The floods must be the axis floods, step for step.
@@ -230,6 +246,35 @@ TEST(UpFlood, TurningInputAndDirectionTogetherChangesNothing) {
                     << what << " at " << angle << "°, scaled by 2^" << e;
             }
         }
+}
+
+// The paper's verification (the polygon and its complement) at an angle; invalid input,
+// unvalidated, ends in a verdict at any angle (never a crash or a hang).
+TEST(UpFlood, VerificationAtAnAngle) {
+    for (const auto& [f, p] : validSamples())
+        for (double angle : {17.0, 200.0}) {
+            Verification v = verify(p, Options{upFromDegrees(angle)});
+            EXPECT_TRUE(v.ok()) << f << " at " << angle << "°\n" << v.summary();
+        }
+    Polygon bowtie;
+    bowtie.addRing({{0, 0}, {4, 4}, {4, 0}, {0, 4}}, true);
+    EXPECT_FALSE(verify(bowtie, Options{upFromDegrees(17)}).ok());
+    Polygon outside;
+    outside.addRing({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, true);
+    outside.addRing({{10, 10}, {10, 12}, {12, 12}}, false);
+    EXPECT_EQ(triangulate(outside, nullptr, Options{upFromDegrees(333)}).failure.reason, Forbidden::LeftBehind);
+    int tried = 0;
+    for (const std::string& f : filesIn(sourcePath("polygons/invalid"), ".json")) {
+        ReadResult r = readPolygonFile(f);
+        if (!r.diagnostic.ok()) continue;
+        findTouches(r.polygon);  // as --no-validate does
+        for (double angle : {17.0, 200.0}) {
+            FloodResult fr = triangulate(r.polygon, nullptr, Options{upFromDegrees(angle)});
+            if (fr.diagnostic.ok()) checkTriangulation(r.polygon, fr.triangles);
+            ++tried;
+        }
+    }
+    EXPECT_GE(tried, 40);
 }
 
 TEST(UpFlood, NoDirectionIsRefused) {

@@ -113,18 +113,23 @@ Status judge(const Polygon& polygon, const std::vector<Triangle>& triangles,
 
 Options makeOptions(const std::string& up) {
     Options o;
-    if (up == "-y") o.up = Up::MinusY;
-    else if (up == "+x" || up == "x") o.up = Up::PlusX;
-    else if (up == "-x") o.up = Up::MinusX;
-    else o.up = Up::PlusY;
+    std::string why;
+    parseUp(up, o.up, why);  // addUp's check has accepted it
     return o;
 }
 
 void addUp(CLI::App* cmd, std::string& up) {
     cmd->add_option("--up", up,
-                    "The vertical that the water rises along: +y (default), -y, +x, -x. "
-                    "Write --up=-y (with '=') for the negative ones.")
-        ->check(CLI::IsMember({"+y", "y", "-y", "+x", "x", "-x"}));
+                    "The direction the water rises along: +y (default), -y, +x, -x, an angle in "
+                    "degrees counter-clockwise from +x (90 is +y), or X,Y. Write --up=-y (with "
+                    "'=') for values starting with '-'.")
+        ->check(CLI::Validator(
+            [](std::string& v) {
+                Up d;
+                std::string why;
+                return parseUp(v, d, why) ? std::string() : why;
+            },
+            "DIRECTION"));
 }
 
 int cmdTriangulate(const std::string& in, const std::string& out, std::string format,

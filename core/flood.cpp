@@ -26,6 +26,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cmath>
+#include <numeric>
 #include <sstream>
 
 #include "predicates.h"
@@ -55,22 +56,18 @@ struct GorgeRec {
     Index top = kNone;
 };
 
-// Exact coordinate permutation making the chosen vertical +y (a rotation: keeps orientation).
+// Exact coordinate permutation making an axis direction +y (a rotation: keeps orientation).
+// Only for the axes: off them heights are compared exactly along the direction (heightRank_).
 Point toUp(Point p, Up up) {
-    switch (up) {
-        case Up::PlusY: return p;
-        case Up::MinusY: return {-p.x, -p.y};
-        case Up::PlusX: return {-p.y, p.x};
-        case Up::MinusX: return {p.y, -p.x};
-    }
-    return p;
+    if (up.x == 0) return up.y > 0 ? p : Point{-p.x, -p.y};
+    return up.x > 0 ? Point{-p.y, p.x} : Point{p.y, -p.x};
 }
 
 class Machine {
 public:
     Machine(const Polygon& poly, Listener* listener, const Options& opt)
-        : poly_(poly), listener_(listener) {
-        if (opt.up == Up::PlusY) {  // heights are the input's: no copy of the vertices
+        : poly_(poly), listener_(listener), up_(opt.up), general_(!opt.up.axis()) {
+        if (general_ || (opt.up.x == 0 && opt.up.y > 0)) {  // heights are the input's or ranks: no copy
             pts_ = poly.vertices.data();
             return;
         }
@@ -80,6 +77,12 @@ public:
     }
 
     FloodResult run() {
+        if (!up_.valid()) {
+            result_.diagnostic = {Status::Usage, "the flood direction (" + upName(up_) +
+                                                     ") is not a direction: it must be a nonzero finite vector"};
+            return std::move(result_);
+        }
+        if (general_) rankHeights();
         nodes_.reserve(poly_.vertices.size() * 3 / 2 + 16);  // bridges add two nodes per sag
         result_.triangles.reserve(poly_.vertices.size() + 2 * poly_.rings.size());
         for (uint32_t part = 0; part < poly_.parts.size() && ok(); ++part) floodPart(part);
@@ -105,13 +108,18 @@ private:
     // The paper's below, made a strict total order on nodes: coincident vertices (rings
     // touching at a point, bridge copies) are ordered by vertex index, then node id.
     bool lower(uint32_t a, uint32_t b) const {
+        if (general_) {
+            const Index va = nodes_[a].v, vb = nodes_[b].v;
+            return va != vb ? heightRank_[va] < heightRank_[vb] : a < b;
+        }
         Point pa = P(a), pb = P(b);
         if (pa.y != pb.y) return pa.y < pb.y;
         if (pa.x != pb.x) return pa.x < pb.x;
         if (nodes_[a].v != nodes_[b].v) return nodes_[a].v < nodes_[b].v;
         return a < b;
     }
-    // The same order as lower(), as a value: what the sorted sag list is searched with.
+    // The same order as lower(), as a value: what the sorted sag list is searched with. Off
+    // the axes y is the vertex's height rank and x is 0.
     struct HeightKey {
         double y, x;
         uint32_t v, node;
@@ -122,7 +130,28 @@ private:
             return node < o.node;
         }
     };
-    HeightKey key(uint32_t n) const { return {P(n).y, P(n).x, nodes_[n].v, n}; }
+    HeightKey key(uint32_t n) const {
+        if (general_) return {double(heightRank_[nodes_[n].v]), 0, nodes_[n].v, n};
+        return {P(n).y, P(n).x, nodes_[n].v, n};
+    }
+    // Off the axes no coordinate is a height: the vertices are sorted once by the exact
+    // comparison along the direction (ties along its perpendicular, then by index, as lower())
+    // and compared by rank from then on. Non-finite vertices go last (floodPart refuses them).
+    void rankHeights() {
+        std::vector<Index> order(poly_.vertices.size());
+        std::iota(order.begin(), order.end(), Index(0));
+        auto finite = [&](Index v) { return std::isfinite(pts_[v].x) && std::isfinite(pts_[v].y); };
+        std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+            const bool fa = finite(a), fb = finite(b);
+            if (fa != fb || !fa) return fa != fb ? fa : a < b;
+            int h = heightSign(up_, pts_[a], pts_[b]);
+            if (h == 0) h = acrossSign(up_, pts_[a], pts_[b]);
+            return h != 0 ? h > 0 : a < b;
+        });
+        heightRank_.resize(order.size());
+        for (size_t k = 0; k < order.size(); ++k) heightRank_[order[k]] = uint32_t(k);
+        work().nodeVisits += order.size();
+    }
     // Sorts nodes by lower(), comparing contiguous keys rather than chasing node -> vertex
     // -> point on every comparison; `keys` gets the sorted keys.
     void sortByHeight(std::vector<uint32_t>& ns, std::vector<HeightKey>& keys) const {
@@ -167,7 +196,7 @@ private:
         std::vector<Point> pointOfRank(count);
         sagY_.resize(count);
         for (size_t k = 0; k < count; ++k) {
-            pointOfRank[k] = {sagKeys_[k].x, sagKeys_[k].y};
+            pointOfRank[k] = P(sags_[k]);
             sagY_[k] = sagKeys_[k].y;
         }
         sagIndex_.build(pointOfRank);
@@ -548,15 +577,20 @@ private:
         SagIndex::Region region;
         region.xMin = std::min(std::min(l.x, r.x), std::min(nl.x, nr.x));
         region.xMax = std::max(std::max(l.x, r.x), std::max(nl.x, nr.x));
-        region.yMin = P(water_).y;
-        region.yMax = P(nx).y;
+        if (general_) {  // no coordinate is a height: the quadrangle's box bounds y too
+            region.yMin = std::min(std::min(l.y, r.y), std::min(nl.y, nr.y));
+            region.yMax = std::max(std::max(l.y, r.y), std::max(nl.y, nr.y));
+        } else {
+            region.yMin = P(water_).y;
+            region.yMax = P(nx).y;
+        }
         region.lines[0][0] = nl, region.lines[0][1] = l;
         region.lines[1][0] = r, region.lines[1][1] = nr;
         region.lineCount = 2;
         auto test = [&](uint32_t rank) {
             ++e.sagTests;
             ++work().sagTests;
-            return inside(Point{sagKeys_[rank].x, sagKeys_[rank].y}, l, r, nr, nl);
+            return inside(sagIndex_.point(rank), l, r, nr, nl);
         };
         if (!banksTried_ && treeWork_ > partNodes_ / 2) buildBanks();
         if (banks_.built()) {
@@ -577,7 +611,7 @@ private:
         for (int64_t end = std::min(hi, lo + 1 + kProbes); lo + 1 < end && k < 0;) {
             const uint32_t rank = uint32_t(++lo);
             ++work().nodeVisits;
-            const HeightKey& s = sagKeys_[rank];
+            const Point s = sagIndex_.point(rank);
             if (!sagIndex_.used(rank) && s.x >= region.xMin && s.x <= region.xMax && test(rank)) k = rank;
         }
         if (k < 0) {
@@ -596,7 +630,8 @@ private:
     // half a box per node of the part: a part whose gorges it prunes well never pays the sweep.
     // Labels are only sound on loops whose edges are the input's and meet only at their
     // ends; where points are shared (touching rings, T-junctions) the plane index alone is
-    // used. The initial links are kept for the sweep, which may run after edits.
+    // used. The initial links are kept for the sweep, which may run after edits. Off the axes
+    // the sweep runs along the direction itself (its rays are the lines across it).
     void prepareBanks(bool touching) {
         banks_.clear();
         banksTried_ = touching || sags_.empty();
@@ -614,7 +649,7 @@ private:
         for (uint32_t i = 0; i < initialNodes_; ++i) point[i] = P(partFirstNode_ + i);
         std::vector<uint32_t> sagOfRank(sags_.size());
         for (size_t k = 0; k < sags_.size(); ++k) sagOfRank[k] = sags_[k] - partFirstNode_;
-        if (!banks_.build(point, initialNext_, sagOfRank)) banks_.clear();  // crossing edges
+        if (!banks_.build(point, initialNext_, sagOfRank, general_ ? up_ : Up::PlusY)) banks_.clear();  // crossing edges
     }
     // The input edge from node a to node b, as its tail's initial node; kNil when a -> b
     // is not an input edge (a diagonal). Without shared points a vertex has one initial node.
@@ -1007,6 +1042,9 @@ private:
     Listener* listener_;
     std::vector<Point> rotated_;  // the vertices turned so that the chosen vertical is +y
     const Point* pts_ = nullptr;  // the vertices as the machine sees them (rotated_ or input)
+    const Up up_;                 // the chosen vertical
+    const bool general_;          // off the axes: heights are heightRank_, never coordinates
+    std::vector<uint32_t> heightRank_;  // per vertex, off the axes: its rank by height along up_
     std::vector<Node> nodes_;
     std::vector<uint32_t> sags_;
     SagIndex sagIndex_;  // the sags by height rank, searchable by x

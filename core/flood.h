@@ -6,14 +6,12 @@
 #include "events.h"
 #include "polygon.h"
 #include "status.h"
+#include "up.h"
 
 namespace flood {
 
-// The chosen vertical (§3). Heights are exact coordinate permutations, never rotations.
-enum class Up : uint8_t { PlusY, MinusY, PlusX, MinusX };
-
 struct Options {
-    Up up = Up::PlusY;
+    Up up = Up::PlusY;  // the chosen vertical (§3), any direction (up.h)
 };
 
 struct FloodResult {

@@ -165,12 +165,10 @@ Violation InvariantChecker::check(const ReplayState& s) {
     if (e.action == Action::Forbidden) return out;  // the machine said so itself
     const auto& tris = trace_->triangles;
     const Index w = s.water;
-    // The paper's below, with the machine's tie-break on vertex index.
+    // The paper's below along the trace's direction, with the machine's tie-break on index.
     auto higher = [&](Index a, Index b) {
         Point pa = P(a), pb = P(b);
-        if (pa.y != pb.y) return pa.y > pb.y;
-        if (pa.x != pb.x) return pa.x > pb.x;
-        return a > b;
+        return pa != pb ? belowToward(trace_->up, pb, pa) : a > b;
     };
 
     // 1. The triangles this step cut turn the polygon's way: a flat or clockwise one covers

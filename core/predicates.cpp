@@ -150,6 +150,52 @@ int orient(Point a, Point b, Point c) {
     return orientGmp(a, b, c);
 }
 
+namespace {
+// d·(b − a) by the filter: +1 or -1 when it decides, 0 when it cannot. Each term is a product
+// of an exact component and one rounded difference, so orient's error bound covers it.
+inline int heightFilter(Up d, Point a, Point b) {
+    double p = d.x * (b.x - a.x), q = d.y * (b.y - a.y);
+    double s = p + q, sum = std::fabs(p) + std::fabs(q);
+    if (std::isfinite(s) && std::isfinite(sum) && sum >= kFilterMin) {
+        double bound = kCcwErrBoundA * sum;
+        if (s > bound) return 1;
+        if (-s > bound) return -1;
+    }
+    return 0;
+}
+
+int heightExpansion(Up d, Point a, Point b) {
+    const double f[4][2] = {{d.x, b.x}, {-d.x, a.x}, {d.y, b.y}, {-d.y, a.y}};
+    double h[9];
+    int len = 0;
+    for (const auto& pr : f) {
+        double p, e;
+        twoProduct(pr[0], pr[1], p, e);
+        len = growExpansion(h, len, p);
+        len = growExpansion(h, len, e);
+    }
+    if (len == 0) return 0;
+    return h[len - 1] > 0 ? 1 : -1;
+}
+
+int heightGmp(Up d, Point a, Point b) {
+    Mpq sum;
+    mpqAddProduct(sum.q, d.x, b.x);
+    mpqAddProduct(sum.q, -d.x, a.x);
+    mpqAddProduct(sum.q, d.y, b.y);
+    mpqAddProduct(sum.q, -d.y, a.y);
+    return mpq_sgn(sum.q);
+}
+}  // namespace
+
+int heightSign(Up d, Point a, Point b) {
+    ++work().heightCalls;
+    if (int s = heightFilter(d, a, b)) return s;
+    if (safe(d.x) && safe(d.y) && safe(a.x) && safe(a.y) && safe(b.x) && safe(b.y))
+        return heightExpansion(d, a, b);
+    return heightGmp(d, a, b);
+}
+
 // The same stages as orient(), saying which decided; not counted as the machine's work.
 OrientReport orientExplained(Point a, Point b, Point c) {
     OrientReport r;

@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "polygon.h"
+#include "up.h"
 
 namespace flood {
 
@@ -18,6 +19,23 @@ int orient(Point a, Point b, Point c);
 // below(a, b): a is lower than b. Heights are y; equal heights are ordered by x, as if
 // every horizontal line were tilted slightly (the paper's lexicographic tie-break).
 inline bool below(Point a, Point b) { return a.y < b.y || (a.y == b.y && a.x < b.x); }
+
+// Heights along a direction d (up.h): heightSign is the sign of d·(b − a) (+1: b is higher),
+// acrossSign the sign of d⊥·(b − a) with d⊥ = (d.y, −d.x), d turned clockwise (+x when d is
+// +y). Exact for every finite double, by the same three stages as orient().
+int heightSign(Up d, Point a, Point b);
+inline int acrossSign(Up d, Point a, Point b) { return heightSign(Up{d.y, -d.x}, a, b); }
+
+// below() along d: a is lower than b; equal heights are ordered along d⊥, as if the level
+// lines were tilted slightly (for +y this is below()). Along an axis: coordinate compares.
+inline bool belowToward(Up d, Point a, Point b) {
+    if (d.x == 0 && d.y > 0) return below(a, b);
+    if (d.x == 0 && d.y < 0) return a.y > b.y || (a.y == b.y && a.x > b.x);
+    if (d.y == 0 && d.x > 0) return a.x < b.x || (a.x == b.x && a.y > b.y);
+    if (d.y == 0 && d.x < 0) return a.x > b.x || (a.x == b.x && a.y < b.y);
+    if (int h = heightSign(d, a, b)) return h > 0;
+    return acrossSign(d, a, b) > 0;
+}
 
 // convex(prev, v, next): the corner at v, walking prev -> v -> next with the interior on the
 // left, is strictly convex (turns left). Collinear corners count as not convex.

@@ -38,6 +38,7 @@ void backWithHugePages(void* data, size_t bytes) {
 Trace record(const Polygon& polygon, const Options& options) {
     Trace t;
     t.polygon = polygon;
+    t.up = options.up;
     Recorder rec;
     rec.events = &t.events;
     // Runs take about 1.5 events per vertex: reserve once rather than regrow (and copy) the log.

@@ -20,6 +20,7 @@ struct Trace {
     std::vector<Event> events;
     std::vector<Triangle> triangles;
     Diagnostic diagnostic;  // outcome of the run
+    Up up = Up::PlusY;      // the direction the water rose along (Options::up)
 };
 
 // Runs the machine with a recording listener.

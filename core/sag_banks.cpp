@@ -18,14 +18,18 @@ constexpr uint32_t kNoEdge = UINT32_MAX;
 struct Sweep {
     const std::vector<Point>& point;
     const std::vector<uint32_t>& next;
-    bool up(uint32_t t) const { return below(point[t], point[next[t]]); }
+    Up vertical;
+    bool up(uint32_t t) const { return belowToward(vertical, point[t], point[next[t]]); }
     Point lo(uint32_t t) const { return up(t) ? point[t] : point[next[t]]; }
     Point hi(uint32_t t) const { return up(t) ? point[next[t]] : point[t]; }
     // The side of the upward edge lo -> hi that p is on (+1 left, -1 right, 0 on it), for p
-    // strictly between its ends in height: beyond the edge's x-range no orientation is needed.
-    static int side(Point lo, Point hi, Point p) {
-        if (p.x < lo.x && p.x < hi.x) return 1;
-        if (p.x > lo.x && p.x > hi.x) return -1;
+    // strictly between its ends in height: along +y, beyond the edge's x-range no orientation
+    // is needed; off it the orientation decides alone.
+    int side(Point lo, Point hi, Point p) const {
+        if (vertical == Up::PlusY) {
+            if (p.x < lo.x && p.x < hi.x) return 1;
+            if (p.x > lo.x && p.x > hi.x) return -1;
+        }
         return orient(lo, hi, p);
     }
     // While a minimum's two edges are inserted where the search put the point: the edges
@@ -88,11 +92,11 @@ struct EdgeLess {
             if (ka >= 0 && kb >= 0) return ka < kb;
         }
         if (a.lo == b.lo) return orient(b.lo, b.hi, a.hi) > 0;  // both start here: by direction
-        if (below(b.lo, a.lo)) return Sweep::side(b.lo, b.hi, a.lo) > 0;
-        return Sweep::side(a.lo, a.hi, b.lo) < 0;
+        if (belowToward(sweep->vertical, b.lo, a.lo)) return sweep->side(b.lo, b.hi, a.lo) > 0;
+        return sweep->side(a.lo, a.hi, b.lo) < 0;
     }
-    bool operator()(const Active& e, Point p) const { return Sweep::side(e.lo, e.hi, p) < 0; }
-    bool operator()(Point p, const Active& e) const { return Sweep::side(e.lo, e.hi, p) > 0; }
+    bool operator()(const Active& e, Point p) const { return sweep->side(e.lo, e.hi, p) < 0; }
+    bool operator()(Point p, const Active& e) const { return sweep->side(e.lo, e.hi, p) > 0; }
 };
 
 }  // namespace
@@ -114,15 +118,16 @@ void SagBanks::Side::group(const std::vector<uint32_t>& label, size_t edges) {
 }
 
 bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t>& next,
-                     const std::vector<uint32_t>& sagOfRank) {
+                     const std::vector<uint32_t>& sagOfRank, Up up) {
     clear();
     const uint32_t n = uint32_t(point.size());
     std::vector<uint32_t> prev(n), rankOf(n, kNoEdge), order(n);
     for (uint32_t i = 0; i < n; ++i) prev[next[i]] = i, order[i] = i;
     for (uint32_t r = 0; r < sagOfRank.size(); ++r) rankOf[sagOfRank[r]] = r;
-    std::sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return below(point[a], point[b]); });
+    std::sort(order.begin(), order.end(),
+              [&](uint32_t a, uint32_t b) { return belowToward(up, point[a], point[b]); });
 
-    Sweep sweep{point, next};
+    Sweep sweep{point, next, up};
     using Set = std::set<Active, EdgeLess>;
     Set active(EdgeLess{&sweep});
     std::vector<Set::iterator> at(n, active.end());
@@ -159,7 +164,7 @@ bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t
         }
         // A minimum (or a point hole): where p falls among the edges crossing the line.
         Set::iterator right = active.lower_bound(point[p]);  // the first edge not left of p
-        if (right != active.end() && Sweep::side(right->lo, right->hi, point[p]) == 0) return false;  // p on an edge
+        if (right != active.end() && sweep.side(right->lo, right->hi, point[p]) == 0) return false;  // p on an edge
         if (rankOf[p] != kNoEdge) {  // a sag: the edges just left and right of it
             if (right != active.end()) label[1][rankOf[p]] = right->tail;
             if (right != active.begin()) label[0][rankOf[p]] = std::prev(right)->tail;

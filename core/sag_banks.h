@@ -3,12 +3,15 @@
 // to its right (the rays of the tilted horizontal: below() order). The lowest sag inside a
 // gorge sees both of the gorge's banks across open water, so when a bank is an input edge the
 // sags labelled with it, in rank order, hold the answer of the sag search (docs/ALGORITHM.md §4).
-// A sliver gorge then costs O(1) instead of the O(√S) boxes of the plane index.
+// A sliver gorge then costs O(1) instead of the O(√S) boxes of the plane index. Heights are
+// along a direction `up` (up.h): off the axes the horizontal is the line across it, and every
+// test stays exact (belowToward and orient).
 #pragma once
 #include <cstdint>
 #include <vector>
 
 #include "polygon.h"
+#include "up.h"
 #include "work.h"
 
 namespace flood {
@@ -20,7 +23,7 @@ public:
     // nothing built, when two edges touch or cross, or a sag lies on an edge (unvalidated
     // input): the sweep stops at the first such pair, before its order could be wrong.
     bool build(const std::vector<Point>& point, const std::vector<uint32_t>& next,
-               const std::vector<uint32_t>& sagOfRank);
+               const std::vector<uint32_t>& sagOfRank, Up up = Up::PlusY);
     bool built() const { return built_; }
     void clear();
 

@@ -32,6 +32,7 @@ public:
     void build(const std::vector<Point>& pointOfRank);
     size_t size() const { return used_.size(); }
     bool used(uint32_t rank) const { return used_[rank]; }
+    Point point(uint32_t rank) const { return byRank_[rank]; }
     void markUsed(uint32_t rank);
 
     // The lowest unused rank in (lo, hi) within `region` for which inside(rank) holds;

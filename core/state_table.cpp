@@ -34,8 +34,8 @@ Combination combinationOf(const Event& e, const std::vector<VertexClass>& classe
     return k;
 }
 
-StateTable buildStateTable(const Polygon& polygon, const std::vector<Event>& events) {
-    std::vector<VertexClass> classes = classifyVertices(polygon);
+StateTable buildStateTable(const Polygon& polygon, const std::vector<Event>& events, Up up) {
+    std::vector<VertexClass> classes = classifyVertices(polygon, up);
     StateTable t;
     t.cellOf.reserve(events.size());
     for (const Event& e : events) {

@@ -52,6 +52,6 @@ struct StateTable {
 // (a vertex it does not hold has no class).
 Combination combinationOf(const Event& e, const std::vector<VertexClass>& classes);
 
-StateTable buildStateTable(const Polygon& polygon, const std::vector<Event>& events);
+StateTable buildStateTable(const Polygon& polygon, const std::vector<Event>& events, Up up = Up::PlusY);
 
 }  // namespace flood

@@ -232,6 +232,17 @@ void parseHeader(const json& h, Polygon& p) {
         }
 }
 
+// The direction the water rose along (optional: written only when it is not +y).
+void parseUpField(const json& h, Up& up) {
+    if (!h.contains("up")) return;
+    const json& u = h["up"];
+    Up d;
+    if (!u.is_array() || u.size() != 2 || !u[0].is_number() || !u[1].is_number() ||
+        !(d = Up{u[0].get<double>(), u[1].get<double>()}).valid())
+        throw Bad{"\"up\" is not a direction [x, y] (nonzero, finite)"};
+    up = d;
+}
+
 }  // namespace
 
 void writeTrace(std::ostream& out, const Trace& trace) {
@@ -245,6 +256,7 @@ void writeTrace(std::ostream& out, const Trace& trace) {
                    {"vertices", vertices},
                    {"rings", rings},
                    {"parts", parts}};
+    if (trace.up != Up::PlusY) header["up"] = {trace.up.x, trace.up.y};
     if (!p.splits.empty()) {
         json splits = json::array();
         for (const EdgeSplit& sp : p.splits) splits.push_back({sp.edge, sp.vertex});
@@ -284,6 +296,7 @@ Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& tra
             if (!o.is_object()) throw Bad{"a line must be one JSON object"};
             if (!sawHeader) {
                 parseHeader(o, trace.polygon);
+                parseUpField(o, trace.up);
                 sawHeader = true;
             } else if (o.contains("triangles")) {
                 const json& ts = o["triangles"];

@@ -2,6 +2,7 @@
 // viewer opens. Line 1 is a header:
 //   {"format":"flood-trace","version":kTraceFormatVersion,"vertices":[[x,y],...],
 //    "rings":[[first,count],...],"parts":[[firstRing,ringCount],...]}
+// plus "up":[x,y], the direction the water rose along, when it is not +y,
 // then one object per event with every field of flood::Event (action, side, reason by name;
 // tested and passed as lists of test names; fingers as objects; kNone written as null),
 // then a last line {"triangles":[[a,b,c],...],"status":"ok","message":"..."}.

@@ -17,7 +17,7 @@ const char* vertexClassName(VertexClass c) {
     }
 }
 
-std::vector<VertexClass> classifyVertices(const Polygon& polygon) {
+std::vector<VertexClass> classifyVertices(const Polygon& polygon, Up up) {
     std::vector<VertexClass> out(polygon.vertices.size(), VertexClass::Regular);
     const auto& v = polygon.vertices;
     for (size_t r = 0; r < polygon.rings.size(); ++r) {
@@ -36,8 +36,8 @@ std::vector<VertexClass> classifyVertices(const Polygon& polygon) {
             Point cur = v[ring.first + i];
             Point next = v[ring.first + (i + 1) % ring.count];
             if (reversed) std::swap(prev, next);
-            bool isMin = below(cur, prev) && below(cur, next);
-            bool isMax = below(prev, cur) && below(next, cur);
+            bool isMin = belowToward(up, cur, prev) && belowToward(up, cur, next);
+            bool isMax = belowToward(up, prev, cur) && belowToward(up, next, cur);
             bool isConvex = convex(prev, cur, next);
             VertexClass c = VertexClass::Regular;
             if (isMin) c = isConvex ? VertexClass::Bottom : VertexClass::Sag;

@@ -5,13 +5,14 @@
 #include <vector>
 
 #include "polygon.h"
+#include "up.h"
 
 namespace flood {
 
 enum class VertexClass : uint8_t { Regular, Bottom, Sag, Top, Ceiling, Count };
 const char* vertexClassName(VertexClass c);  // "regular", "bottom", ...
 // Rings are walked with the interior on the left (outer rings counter-clockwise, holes
-// clockwise), whatever their orientation in the file.
-std::vector<VertexClass> classifyVertices(const Polygon& polygon);
+// clockwise), whatever their orientation in the file. Heights are along `up` (up.h).
+std::vector<VertexClass> classifyVertices(const Polygon& polygon, Up up = Up::PlusY);
 
 }  // namespace flood

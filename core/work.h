@@ -17,6 +17,7 @@ struct WorkCounters {
     uint64_t sagSearch = 0;       // the sag search's share of the three machine counts above
                                   // (its sweep, lists, tree and tests), to weigh it against the rest
     uint64_t invariantSteps = 0;  // grid cells and vertices the invariant checker visits
+    uint64_t heightCalls = 0;     // exact height tests along a direction off the axes (heightSign)
 };
 
 inline thread_local WorkCounters tWork;

@@ -1,7 +1,8 @@
 // Shared by the fuzz harnesses: the byte encoding of a polygon, so seeds can be generated
 // from polygon files (scripts/fuzz-seeds.py writes the same format).
 //
-//   byte 0          options: bits 0-1 = the vertical (flood::Up)
+//   byte 0          options: bits 0-1 = the vertical, +y -y +x -x; bit 2 set: off the axes
+//                   instead, at 17 + 11.25 k degrees for k = bits 3-7
 //   then rings:     header byte H: bits 0-5 = point count (63 = a uint16 LE count follows),
 //                   bit 6 = starts a new part (ignored for the first ring: always outer),
 //                   bit 7 = coordinates are raw little-endian doubles (16 bytes a point);
@@ -27,7 +28,9 @@ inline Decoded decode(const uint8_t* data, size_t size, size_t maxVertices = 409
     Decoded d;
     size_t pos = 0;
     if (size == 0) return d;
-    d.options.up = flood::Up(data[pos++] & 3);
+    const flood::Up axes[] = {flood::Up::PlusY, flood::Up::MinusY, flood::Up::PlusX, flood::Up::MinusX};
+    d.options.up = (data[pos] & 4) ? flood::upFromDegrees(17 + 11.25 * (data[pos] >> 3)) : axes[data[pos] & 3];
+    ++pos;
     while (pos < size && d.polygon.vertices.size() < maxVertices) {
         uint8_t h = data[pos++];
         size_t count = h & 63;

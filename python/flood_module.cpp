@@ -65,12 +65,12 @@ ReadResult readInput(py::handle input, const std::string& name) {
     return rr;
 }
 
-Up parseUp(const std::string& up) {
-    if (up == "+y" || up == "y") return Up::PlusY;
-    if (up == "-y") return Up::MinusY;
-    if (up == "+x" || up == "x") return Up::PlusX;
-    if (up == "-x") return Up::MinusX;
-    throw py::value_error("up must be one of +y, y, -y, +x, x, -x (got '" + up + "')");
+// The CLI's --up: an axis, an angle in degrees or "X,Y" (core/up.h).
+Up upOf(const std::string& up) {
+    Up d;
+    std::string why;
+    if (!parseUp(up, d, why)) throw py::value_error("up: " + why);
+    return d;
 }
 
 // The CLI's pipeline (cli/main.cpp): read, validate, flood, exact check of the result.
@@ -240,7 +240,7 @@ PYBIND11_MODULE(_flood, m) {
     m.def("triangulate", [](py::handle input, bool validateFirst, const std::string& up,
                             const std::string& name) {
         Options options;
-        options.up = parseUp(up);
+        options.up = upOf(up);
         Outcome o = prepare(input, name);
         {
             py::gil_scoped_release unlocked;
@@ -256,7 +256,7 @@ PYBIND11_MODULE(_flood, m) {
     m.def("check", [](py::sequence inputs, bool validateFirst, const std::string& up,
                       unsigned threads, const std::vector<std::string>& names) {
         Options options;
-        options.up = parseUp(up);
+        options.up = upOf(up);
         if (names.size() != inputs.size()) throw py::value_error("one name per feature");
         std::vector<Outcome> outcomes(inputs.size());
         std::vector<std::string> texts(inputs.size());
@@ -382,7 +382,7 @@ PYBIND11_MODULE(_flood, m) {
     m.def("trace", [](py::handle input, bool validateFirst, const std::string& up,
                       const std::string& name) -> py::object {
         Options options;
-        options.up = parseUp(up);
+        options.up = upOf(up);
         Outcome o = prepare(input, name);
         auto t = std::make_shared<TraceHandle>();
         t->warnings = o.warnings;

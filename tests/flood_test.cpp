@@ -49,7 +49,7 @@ TEST(Flood, EveryChosenVerticalGivesAValidTriangulation) {
     for (const char* family : {"comb", "spiral", "touching-holes", "rooms"}) {
         Polygon p = generate(family, 3, 200);
         for (Up up : {Up::PlusY, Up::MinusY, Up::PlusX, Up::MinusX})
-            expectTriangulates(p, std::string(family) + " up " + std::to_string(int(up)), Options{up});
+            expectTriangulates(p, std::string(family) + " up " + upName(up), Options{up});
     }
 }
 

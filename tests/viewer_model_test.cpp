@@ -1154,4 +1154,58 @@ TEST(ViewerGdal, OpensAGeoPackage) {
 }
 #endif
 
+// The flood direction dial (issue 12): turning it floods again along the new direction, at
+// the same step, and the summary says what changed against the run before.
+TEST(ViewerDirection, TurningFloodsAgainAndSaysWhatChanged) {
+    Model m;
+    m.open(std::string(FLOOD_SOURCE_DIR) + "/polygons/two-gorges.json");
+    ASSERT_FALSE(m.failed()) << m.verdict();
+    EXPECT_EQ(m.up(), Up::PlusY);
+    EXPECT_FALSE(m.hasPreviousSummary());
+    const FloodSummary along90 = m.summary();
+    m.seek(3);
+    ASSERT_TRUE(m.setUp(Up::PlusX));
+    EXPECT_EQ(m.up(), Up::PlusX);
+    EXPECT_EQ(m.trace().up, Up::PlusX);
+    EXPECT_FALSE(m.failed()) << m.verdict();
+    EXPECT_EQ(m.step(), std::min<uint32_t>(3, m.steps()));
+    EXPECT_EQ(m.path(), std::string(FLOOD_SOURCE_DIR) + "/polygons/two-gorges.json");
+    // The summary is the run's own: the same as flooding and classifying along +x directly.
+    Trace direct = record(m.polygon(), Options{Up::PlusX});
+    for (const SummaryChange& c : compareSummaries(summarizeFlood(direct, classifyVertices(m.polygon(), Up::PlusX)),
+                                                   m.summary()))
+        EXPECT_FALSE(c.changed()) << c.what;
+    // Before is the +y run; the decomposition is not the same along +x.
+    ASSERT_TRUE(m.hasPreviousSummary());
+    bool changed = false;
+    for (const SummaryChange& c : compareSummaries(along90, m.summary())) {
+        changed |= c.changed();
+        if (c.what == "triangles") EXPECT_FALSE(c.changed()) << "a triangulation has n - 2 + 2h triangles";
+    }
+    EXPECT_TRUE(changed);
+    for (const SummaryChange& c : compareSummaries(m.previousSummary(), along90)) EXPECT_FALSE(c.changed()) << c.what;
+    // Not a direction, or the same one: nothing happens.
+    EXPECT_FALSE(m.setUp(Up::PlusX));
+    EXPECT_FALSE(m.setUp(Up{0, 0}));
+    // Any angle floods exactly; opening another file keeps the dial's direction.
+    ASSERT_TRUE(m.setUp(upFromDegrees(17)));
+    EXPECT_FALSE(m.failed()) << m.verdict();
+    m.open(std::string(FLOOD_SOURCE_DIR) + "/polygons/holes.json");
+    EXPECT_EQ(m.up(), upFromDegrees(17));
+    EXPECT_FALSE(m.failed()) << m.verdict();
+}
+
+// The summary counts what the trace holds: gorges from bottoms, classes, actions.
+TEST(ViewerDirection, SummaryCountsTheRun) {
+    Trace t = record(squareWithHole(false, false));
+    FloodSummary s = summarizeFlood(t, classifyVertices(t.polygon));
+    EXPECT_EQ(s.classes[size_t(VertexClass::Bottom)], 1u);
+    EXPECT_EQ(s.classes[size_t(VertexClass::Sag)], 1u);
+    EXPECT_EQ(s.gorges, 1u);
+    EXPECT_EQ(s.actions[size_t(Action::Bridge)], 1u);
+    EXPECT_EQ(s.actions[size_t(Action::Start)], 1u);
+    EXPECT_EQ(s.triangles, 8u);
+}
+
 #endif
+

@@ -55,6 +55,7 @@ struct Args {
     bool gorgeFocus = false;   // --gorge-focus: "current gorge only"
     bool mouse = false;        // --mouse X,Y (screenshots): the pointer there, for hover pictures
     float mouseX = 0, mouseY = 0;
+    std::string up;          // --up: flood along this direction, with the dial open
 };
 
 // --press names: the presenter keys, so a screenshot can show what they do.
@@ -71,6 +72,7 @@ const char* const kUsage =
     "usage: flood-viewer [FILE] [--feature N] [--layer NAME] [--where SQL] [--step N]\n"
     "                    [--show-error] [--predicates] [--gorge-focus] [--screenshot OUT.png]\n"
     "                    [--size WxH] [--mouse X,Y] [--scale S] [--presenter] [--theme light|dark]\n"
+    "                    [--up DIRECTION]\n"
     "       flood-viewer FILE --screenshot OUT.png|OUT.svg --canvas-only [--size WxH] [--caption]\n"
     "       flood-viewer FILE --export-gif OUT.gif|--export-png-dir DIR [--steps A:B] [--every K]\n"
     "                    [--fps F] [--caption] [--size WxH]\n"
@@ -106,6 +108,8 @@ const char* const kUsage =
     "  --predicates      open the predicate inspector; --gorge-focus: current gorge only\n"
     "  --mouse X,Y       with --screenshot: the pointer at X,Y (what hovering there shows)\n"
     "  --bench           time opening, seeking and drawing (hidden window), print, exit\n"
+    "  --up DIRECTION    flood along +y, -y, +x, -x, an angle in degrees (90 is +y) or X,Y,\n"
+    "                    with the direction dial open (it compares with the +y run)\n"
     "a file that cannot be written: exit 8, nothing half-written left\n"
     "keys in the viewer: F1 or ?\n";
 
@@ -183,6 +187,13 @@ int parseArgs(int argc, char** argv, Args& a) {
             a.showError = true;
         } else if (s == "--bench") {
             a.bench = true;
+        } else if (s == "--up") {
+            const char* v = value("--up");
+            Up d;
+            std::string why;
+            if (v && !parseUp(v, d, why)) std::fprintf(stderr, "flood-viewer: --up: %s\n", why.c_str());
+            if (!v || !why.empty()) return 2 + 1;
+            a.up = v;
         } else if (s == "--screenshot") {
             const char* v = value("--screenshot");
             if (!v) return 2 + 1;
@@ -397,6 +408,12 @@ int main(int argc, char** argv) {
     } else if (!args.file.empty()) {
         model.open(args.file);
     }
+    if (!args.up.empty()) {
+        Up d;
+        std::string why;
+        parseUp(args.up, d, why);  // parseArgs has accepted it
+        model.setUp(d);
+    }
     double openSeconds = now() - openStart;
     if (!args.steps.empty()) model.seek(args.steps.front());
     if (args.exporting() && args.exports.animated()) {
@@ -452,6 +469,7 @@ int main(int argc, char** argv) {
     ui.sceneOptions.gorgeFocus = args.gorgeFocus;
     // A picture shows the invariant lane complete (and the landing on its first violation).
     if (shot) model.waitForInvariants();
+    ui.showDirection = !args.up.empty();
 
     int exitCode = 0;
     uint64_t titled = model.generation();
@@ -534,6 +552,7 @@ int main(int argc, char** argv) {
             drawHelp(ui);
             drawExport(ui);
             drawTodo(ui);
+            drawDirection(ui);
         }
         ImGui::Render();
 

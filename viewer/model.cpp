@@ -207,21 +207,21 @@ std::vector<TranscriptItem> buildTranscript(const Trace& trace) {
 // ========================================================================================
 // [SECTION] Predicate inspector
 namespace {
-// The machine's lower() on vertices: heights, then x, then vertex index (bridge copies of one
-// vertex are ordered by node, which the log does not keep: they compare equal here).
-int compareHeight(const Polygon& p, Index a, Index b) {
+// The machine's lower() on vertices: heights along `up`, then across it, then vertex index
+// (bridge copies of one vertex are ordered by node, which the log does not keep: they compare
+// equal here).
+int compareHeight(const Polygon& p, Up up, Index a, Index b) {
     Point pa = p.vertices[a], pb = p.vertices[b];
-    if (pa.y != pb.y) return pa.y < pb.y ? -1 : 1;
-    if (pa.x != pb.x) return pa.x < pb.x ? -1 : 1;
+    if (pa != pb) return belowToward(up, pa, pb) ? -1 : 1;
     return a < b ? -1 : a > b ? 1 : 0;
 }
 
-PredicateRow belowRow(const Polygon& p, Test t, const char* text, Index a, Index b) {
+PredicateRow belowRow(const Polygon& p, Up up, Test t, const char* text, Index a, Index b) {
     PredicateRow r;
     r.test = t;
     r.predicate = text;
     r.args = {a, b};
-    r.sign = compareHeight(p, a, b);
+    r.sign = compareHeight(p, up, a, b);
     r.result = r.sign < 0;
     r.stage = "comparison";
     return r;
@@ -253,12 +253,12 @@ std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState&
     add(same);
     Index nx = f.nextLeft;  // Next: where the water rises to
     if (e.didTest(Test::LeftLower)) {
-        PredicateRow r = belowRow(p, Test::LeftLower, "below(NextLeft, NextRight)", f.nextLeft, f.nextRight);
+        PredicateRow r = belowRow(p, trace.up, Test::LeftLower, "below(NextLeft, NextRight)", f.nextLeft, f.nextRight);
         const bool leftLower = r.result;
         add(std::move(r));
         Index c = leftLower ? f.left : f.right;
         nx = leftLower ? f.nextLeft : f.nextRight;
-        if (e.didTest(Test::NextAbove)) add(belowRow(p, Test::NextAbove, "below(C, Next)", c, nx));
+        if (e.didTest(Test::NextAbove)) add(belowRow(p, trace.up, Test::NextAbove, "below(C, Next)", c, nx));
         if (e.didTest(Test::CIsTop)) {
             // C's loop neighbours: the finger beyond it and the chain node inside it.
             const auto& ch = before.chain;
@@ -297,10 +297,10 @@ std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState&
     std::sort(bridged.begin(), bridged.end());
     std::vector<Index> sags;
     for (Index v = 0; v < classes.size() && v < p.vertices.size(); ++v)
-        if (classes[v] == VertexClass::Sag && before.water != kNone && compareHeight(p, before.water, v) < 0 &&
-            compareHeight(p, v, nx) < 0 && !std::binary_search(bridged.begin(), bridged.end(), v))
+        if (classes[v] == VertexClass::Sag && before.water != kNone && compareHeight(p, trace.up, before.water, v) < 0 &&
+            compareHeight(p, trace.up, v, nx) < 0 && !std::binary_search(bridged.begin(), bridged.end(), v))
             sags.push_back(v);
-    std::sort(sags.begin(), sags.end(), [&](Index a, Index b) { return compareHeight(p, a, b) < 0; });
+    std::sort(sags.begin(), sags.end(), [&](Index a, Index b) { return compareHeight(p, trace.up, a, b) < 0; });
     // The one bridged is listed even when the cap cuts the rest.
     if (e.action == Action::Bridge && std::find(sags.begin(), sags.end(), e.sag) == sags.end()) sags.insert(sags.begin(), e.sag);
     if (sags.size() > maxSags) {
@@ -465,6 +465,7 @@ void Model::openTrace(Trace trace, const std::string& name) {
     // The trace holds the run; validation of a copy only says whether its input was valid.
     Polygon copy = trace.polygon;
     input_ = copy.vertices.empty() ? Diagnostic{} : validate(copy, name);
+    up_ = trace.up;
     adopt(std::make_unique<Trace>(std::move(trace)));
 }
 
@@ -480,7 +481,7 @@ void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic inp
     auto trace = std::make_unique<Trace>();
     if (!polygon.vertices.empty()) {
         try {
-            *trace = record(polygon);
+            *trace = record(polygon, Options{up_});
         } catch (const std::exception& ex) {
             trace->diagnostic = {Status::Internal, name + ": " + ex.what()};
         }
@@ -497,7 +498,7 @@ void Model::adopt(std::unique_ptr<Trace> trace) {
     replay_.reset();
     trace_ = std::move(trace);
     replay_ = std::make_unique<Replay>(*trace_);
-    classes_ = classifyVertices(trace_->polygon);
+    classes_ = classifyVertices(trace_->polygon, trace_->up);
     transcript_ = buildTranscript(*trace_);
     triangleStep_.assign(trace_->triangles.size(), 0);
     for (const Event& e : trace_->events)
@@ -1209,10 +1210,57 @@ void FeatureScan::wait() {
 
 const StateTable& Model::stateTable() const {
     if (stateTableFor_ != generation_) {
-        stateTable_ = buildStateTable(polygon(), trace().events);
+        stateTable_ = buildStateTable(polygon(), trace().events, trace().up);
         stateTableFor_ = generation_;
     }
     return stateTable_;
+}
+
+// ========================================================================================
+// [SECTION] Flood direction
+FloodSummary summarizeFlood(const Trace& trace, const std::vector<VertexClass>& classes) {
+    FloodSummary s;
+    for (VertexClass c : classes) ++s.classes[size_t(c)];
+    for (const Event& e : trace.events) {
+        ++s.actions[size_t(e.action)];
+        s.gorges += e.bottom != kNone;
+    }
+    s.triangles = uint32_t(trace.triangles.size());
+    return s;
+}
+
+std::vector<SummaryChange> compareSummaries(const FloodSummary& before, const FloodSummary& after) {
+    std::vector<SummaryChange> out;
+    out.push_back({"gorges", before.gorges, after.gorges});
+    for (VertexClass c : {VertexClass::Bottom, VertexClass::Sag, VertexClass::Top, VertexClass::Ceiling})
+        out.push_back({std::string(vertexClassName(c)) + "s", before.classes[size_t(c)], after.classes[size_t(c)]});
+    for (size_t a = 0; a < size_t(Action::Count); ++a)
+        if (Action(a) != Action::Forbidden || before.actions[a] || after.actions[a])
+            out.push_back({actionName(Action(a)), before.actions[a], after.actions[a]});
+    out.push_back({"triangles", before.triangles, after.triangles});
+    return out;
+}
+
+bool Model::setUp(Up up) {
+    if (!up.valid() || up == trace_->up) return false;
+    previousSummary_ = summary();
+    hasPrevious_ = true;
+    up_ = up;
+    const uint32_t at = step_;
+    // What opened stays what it was: the name, the input's verdict, the feature or the
+    // shrink's origin; only the run is new.
+    const std::string name = path_;
+    Diagnostic input = input_;
+    std::vector<std::string> warnings = warnings_;
+    const size_t feature = feature_, originFeature = originFeature_;
+    const std::string origin = origin_, originName = originName_;
+    const bool fit = needsFit;  // the polygon does not move: fit only if not yet fitted
+    openPolygon(trace_->polygon, name, std::move(input), std::move(warnings));
+    feature_ = feature, originFeature_ = originFeature;
+    origin_ = origin, originName_ = originName;
+    needsFit = fit;
+    seek(at);
+    return true;
 }
 
 }  // namespace flood::view

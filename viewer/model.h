@@ -263,6 +263,25 @@ private:
     Diagnostic diag_;
 };
 // ----------------------------------------------------------------------------------------
+// How a run decomposed the polygon along its direction: the vertex classes that direction
+// gives (§3), the gorges flooded from a bottom, and the count of each action. The paper's
+// remark that the decomposition into gorges is not unique, as numbers (the direction dial).
+struct FloodSummary {
+    std::array<uint32_t, size_t(VertexClass::Count)> classes{};  // bottoms, sags, tops, ceilings
+    uint32_t gorges = 0;     // gorges started at a bottom (Start, and each later bottom reached)
+    std::array<uint32_t, size_t(Action::Count)> actions{};
+    uint32_t triangles = 0;
+};
+FloodSummary summarizeFlood(const Trace& trace, const std::vector<VertexClass>& classes);
+// One line per quantity, in a fixed order: its name, before and after ("gorges", 3, 5).
+struct SummaryChange {
+    std::string what;
+    int64_t before = 0, after = 0;
+    bool changed() const { return before != after; }
+};
+std::vector<SummaryChange> compareSummaries(const FloodSummary& before, const FloodSummary& after);
+
+// ----------------------------------------------------------------------------------------
 class Model {
 public:
     Model();
@@ -404,8 +423,20 @@ public:
     // since stopping a scan still setting up would stall the UI thread at the next edit.
     void adoptEdit(EditedRun run, bool deferScan = false);
     void startDeferredInvariants();  // no-op unless a scan waits
+    // The flood direction (the direction dial): the loaded polygon floods again along `up`
+    // (a trace opened as it was recorded: its polygon), at the same step as far as the new
+    // run goes; later opens flood along it too. False, nothing changed, when `up` is not a
+    // direction or is the current one. previousSummary() is then the run before the turn.
+    bool setUp(Up up);
+    Up up() const { return trace_->up; }
+    FloodSummary summary() const { return summarizeFlood(*trace_, classes_); }
+    const FloodSummary& previousSummary() const { return previousSummary_; }
+    bool hasPreviousSummary() const { return hasPrevious_; }
 
 private:
+    Up up_ = Up::PlusY;  // the direction opens flood along
+    FloodSummary previousSummary_;
+    bool hasPrevious_ = false;
     struct InvariantScan {
         std::thread thread;
         std::atomic<bool> cancel{false}, done{false};

@@ -126,6 +126,8 @@ void drawStateMachine(Ui& ui) {
     }
     ImGui::Dummy(ImVec2(avail.x, side));
     if (ImGui::SmallButton("State table...")) ui.showStateTable = true;  // Fig. 10
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Direction...")) ui.showDirection = true;  // the flood direction dial
 
     ImGui::PushTextWrapPos(0);
     if (!cur) {

@@ -120,6 +120,7 @@ struct Ui {
     TodoList todo;                     // the to-do list of the step below (panel_todo.cpp)
     std::array<uint64_t, 2> todoFor{~0ull, ~0ull};  // Model::generation() and step it was read at
     EditUi edit{model};                // live editing (panel_edit.cpp)
+    bool showDirection = false;        // the flood direction dial (panel_direction.cpp)
 };
 
 void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, labels, input
@@ -155,6 +156,7 @@ bool editCanvasInput(Ui& ui, Vec2 mouse);
 void editOverlay(Ui& ui, ImDrawList* dl);
 void editBar(Ui& ui);
 void editShortcuts(Ui& ui);
+void drawDirection(Ui& ui);      // panel_direction.cpp: the flood direction dial and its changes
 
 // Helpers shared by panels (panel_common.cpp).
 void placeWindow(const Rect& r);  // tiles a panel at a layout rectangle

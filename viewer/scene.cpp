@@ -16,10 +16,40 @@ double area(Point a, Point b, Point c) {
 }
 
 
+// The water level along a direction off +y: the same segment in the frame of the direction
+// (heights along it, positions across it), for drawing only.
+bool tiltedWaterLevel(const Polygon& poly, const ReplayState& s, Up up, Point& a, Point& b) {
+    const auto& v = poly.vertices;
+    const Point w = v[s.water];
+    const double n = std::hypot(up.x, up.y);
+    const Point d{up.x / n, up.y / n}, t{d.y, -d.x};
+    auto height = [&](Point p) { return d.x * (p.x - w.x) + d.y * (p.y - w.y); };
+    auto across = [&](Point p) { return t.x * (p.x - w.x) + t.y * (p.y - w.y); };
+    double t0 = 0, t1 = 0;
+    auto cross = [&](Index i, Index j) {
+        if (!valid(poly, i) || !valid(poly, j)) return;
+        const double hp = height(v[i]), hq = height(v[j]), tp = across(v[i]), tq = across(v[j]);
+        if (hp * hq > 0) return;
+        if (hp == hq) {
+            t0 = std::min({t0, tp, tq}), t1 = std::max({t1, tp, tq});
+            return;
+        }
+        const double x = tp + (0 - hp) / (hq - hp) * (tq - tp);
+        t0 = std::min(t0, x), t1 = std::max(t1, x);
+    };
+    for (size_t i = 0; i + 1 < s.chain.size(); ++i) cross(s.chain[i], s.chain[i + 1]);
+    cross(s.fingers.left, s.fingers.nextLeft);
+    cross(s.fingers.right, s.fingers.nextRight);
+    a = {w.x + t0 * t.x, w.y + t0 * t.y}, b = {w.x + t1 * t.x, w.y + t1 * t.y};
+    return true;
+}
+
 // The horizontal segment at the water vertex's height, from bank to bank of the active gorge:
-// the extreme crossings of that height with the chain and the two finger edges.
-bool waterLevel(const Polygon& poly, const ReplayState& s, Point& a, Point& b) {
+// the extreme crossings of that height with the chain and the two finger edges. Along another
+// direction the level line runs across it (tiltedWaterLevel).
+bool waterLevel(const Polygon& poly, const ReplayState& s, Point& a, Point& b, Up up = Up::PlusY) {
     if (!valid(poly, s.water)) return false;
+    if (up != Up::PlusY) return tiltedWaterLevel(poly, s, up, a, b);
     const auto& v = poly.vertices;
     double h = v[s.water].y, x0 = v[s.water].x, x1 = x0;
     auto cross = [&](Index i, Index j) {
@@ -122,7 +152,7 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
         if (valid(poly, s.chain[i]) && valid(poly, s.chain[i + 1]))
             sc.lines.push_back({v[s.chain[i]], v[s.chain[i + 1]], palette::kChain, 3});
 
-    sc.hasWater = waterLevel(poly, s, sc.waterA, sc.waterB);
+    sc.hasWater = waterLevel(poly, s, sc.waterA, sc.waterB, model.up());
     if (sc.hasWater) sc.lines.push_back({sc.waterA, sc.waterB, palette::kWaterLevel, 2});
 
     if (o.vertexClasses && all)

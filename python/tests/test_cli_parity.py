@@ -37,3 +37,17 @@ def test_invalid_inputs_fail_as_the_cli_does(path, flood_cli, tmp_path):
         d = caught.value.diagnostic
     assert d.code == run.returncode
     assert d.message in run.stderr
+
+
+@pytest.mark.parametrize("up", ["17", "-x", "1,2", "333"])
+def test_any_direction_equals_the_cli(up, flood_cli, tmp_path):
+    path = next(p for p in SAMPLES if p.name == "holes.json")
+    out = tmp_path / "out.json"
+    subprocess.run([flood_cli, "triangulate", str(path), "--up=" + up, "-o", str(out)], check=True)
+    result = flood.triangulate(path.read_text(), up=up)
+    assert result.triangles.tolist() == json.loads(out.read_text())["triangles"]
+
+
+def test_a_bad_direction_names_itself():
+    with pytest.raises(ValueError, match="'banana'"):
+        flood.triangulate([[[0, 0], [1, 0], [0, 1]]], up="banana")

@@ -5,7 +5,7 @@
 //   1. every coordinate is finite;
 //   2. every ring has at least 3 distinct points and no zero-length edge — except a hole of
 //      exactly one point, a Steiner point the triangulation must use;
-//   3. every ring has a non-zero signed area (exact, ExactSum) — reported after check 4 has
+//   3. every ring has a non-zero signed area (exact: ring_area.h) — reported after check 4 has
 //      looked for a crossing, so a symmetric bow-tie is called a self-crossing;
 //   4. no two edges of the polygon (all parts) cross or overlap collinearly; a spike (an edge
 //      folding back on the previous one) counts as an overlap. A vertex lying in the interior
@@ -26,18 +26,19 @@
 //
 // All decisions use the exact flood::orient() and coordinate comparisons; no floating-point
 // arithmetic decides anything. Cost: O(n log n) — a sort of the vertices for the sweep, a
-// sort for coincident vertices, a balanced-tree sweep with O(1) tests per event, and at a point
+// sort for coincident vertices, a treap sweep (sweep_tree.h) with O(1) tests per event, and at a point
 // shared by k rings a sort of their 2k rays and O(log k) per ring to find a crossing
 // (validatorSteps in core/work.h counts the work, tests/validate_growth_test.cpp bounds it).
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <set>
 #include <string>
 
 #include "io.h"
 #include "io_util.h"
 #include "predicates.h"
+#include "ring_area.h"
+#include "sweep_tree.h"
 #include "work.h"
 
 namespace flood {
@@ -182,15 +183,23 @@ Diagnostic Validator::checkRings() {
         }
         bool outer = P.parts[partOfRing[r]].firstRing == r;
         if (ring.count == 1 && !outer) continue;  // a Steiner point
-        tmp.assign(P.vertices.begin() + ring.first, P.vertices.begin() + ring.first + ring.count);
-        std::sort(tmp.begin(), tmp.end(),
-                  [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-        size_t distinct = std::unique(tmp.begin(), tmp.end()) - tmp.begin();
-        if (distinct < 3)
-            return fail(ring.first, "ring has " + std::to_string(distinct) +
-                                        " distinct point" + (distinct == 1 ? "" : "s") +
-                                        ", at least 3 are needed" +
-                                        (outer ? "" : " (or exactly one, a point hole)"));
+        // Three distinct points are usually among the first few: then nothing is sorted.
+        const Point* q = P.vertices.data() + ring.first;
+        Index second = 1;
+        while (second < ring.count && q[second] == q[0]) ++second;
+        Index third = second + 1;
+        while (third < ring.count && (q[third] == q[0] || q[third] == q[second])) ++third;
+        if (third >= ring.count) {
+            tmp.assign(q, q + ring.count);
+            std::sort(tmp.begin(), tmp.end(),
+                      [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+            size_t distinct = std::unique(tmp.begin(), tmp.end()) - tmp.begin();
+            if (distinct < 3)
+                return fail(ring.first, "ring has " + std::to_string(distinct) +
+                                            " distinct point" + (distinct == 1 ? "" : "s") +
+                                            ", at least 3 are needed" +
+                                            (outer ? "" : " (or exactly one, a point hole)"));
+        }
         for (Index v = ring.first; v < ring.first + ring.count; ++v)
             if (pt(v) == pt(next(v)))
                 return fail(v, "repeated consecutive point (zero-length edge)", atPoint(v, {v}));
@@ -199,9 +208,7 @@ Diagnostic Validator::checkRings() {
     for (Index r = 0; r < P.rings.size(); ++r) {
         const Ring& ring = P.rings[r];
         if (ring.count == 1) continue;  // a point hole (an outer ring of one point failed above)
-        ExactSum area;
-        for (Index v = ring.first; v < ring.first + ring.count; ++v) area.addCross(pt(v), pt(next(v)));
-        ringSign[r] = area.sign();
+        ringSign[r] = ringAreaSign(P, ring.first, ring.count);
         if (ringSign[r] == 0 && !zeroArea) zeroArea = ring.first;
     }
     return {};
@@ -217,26 +224,27 @@ Diagnostic Validator::checkRings() {
 // order. The same sweep records, for each ring, the ring whose interior immediately encloses
 // it (the edge just left of the ring's lowest vertex tells), used by check 6.
 
+// An edge as the sweep sees it: its lower and upper vertex (both the vertex of a point hole).
+// Vertex indices, not points: 8 bytes an edge.
 struct Segment {
-    Point lo, hi;  // lo below hi
-    Index e;       // the edge: vertex e -> next(e)
-    bool up;       // the ring runs from lo to hi along this edge
+    Index lo, hi;
 };
 
 struct SweepOrder {
     const std::vector<Segment>* segs;
+    const Point* at;  // the polygon's vertices
     // a before b along the sweep line (a left of b), both active at the current event.
     bool operator()(Index ia, Index ib) const {
         if (ia == ib) return false;
-        const Segment& a = (*segs)[ia];
-        const Segment& b = (*segs)[ib];
-        if (!below(a.lo, b.lo)) {  // a starts at or after b: place a.lo against b
-            int o = orient(b.lo, b.hi, a.lo);
-            if (o == 0) o = orient(b.lo, b.hi, a.hi);
+        const Point alo = at[(*segs)[ia].lo], ahi = at[(*segs)[ia].hi];
+        const Point blo = at[(*segs)[ib].lo], bhi = at[(*segs)[ib].hi];
+        if (!below(alo, blo)) {  // a starts at or after b: place a.lo against b
+            int o = orient(blo, bhi, alo);
+            if (o == 0) o = orient(blo, bhi, ahi);
             if (o != 0) return o > 0;
         } else {
-            int o = orient(a.lo, a.hi, b.lo);
-            if (o == 0) o = orient(a.lo, a.hi, b.hi);
+            int o = orient(alo, ahi, blo);
+            if (o == 0) o = orient(alo, ahi, bhi);
             if (o != 0) return o < 0;
         }
         return ia < ib;  // collinear: an overlap, reported when they are tested
@@ -246,10 +254,11 @@ struct SweepOrder {
 Diagnostic Validator::checkEdges() {
     std::vector<Segment> segs(n);
     for (Index v = 0; v < n; ++v) {
-        Point a = pt(v), b = pt(next(v));
-        bool up = below(a, b);
-        segs[v] = {up ? a : b, up ? b : a, v, up};
+        Index w = next(v);
+        segs[v] = below(pt(v), pt(w)) ? Segment{v, w} : Segment{w, v};
     }
+    // The ring runs from lo to hi along edge e (false for a point hole).
+    auto up = [&](Index e) { return segs[e].lo == e && segs[e].hi != e; };
     std::vector<Index> events(n);
     for (Index v = 0; v < n; ++v) events[v] = v;
     std::sort(events.begin(), events.end(), [&](Index a, Index b) {
@@ -321,19 +330,17 @@ Diagnostic Validator::checkEdges() {
         else if (o4 == 0 && insideSegment(c, d, b)) onEdge(next(e), f);
     };
 
-    using Tree = std::set<Index, SweepOrder>;
-    Tree active(SweepOrder{&segs});
-    std::vector<Tree::iterator> where(n, active.end());
+    SweepTree<SweepOrder> active(n, SweepOrder{&segs, P.vertices.data()});
     enclosing.assign(P.rings.size(), kNone);
     std::vector<char> ringSeen(P.rings.size(), 0);
     std::vector<Index> ending, starting, points, newRings;
     std::vector<Index> leftmostOf(P.rings.size(), kNone);  // of each ring starting at the event
-    // The ring whose interior holds what is just right of the active edge before `it`.
-    auto enclosingAt = [&](Tree::iterator it) {
-        if (it == active.begin()) return kNone;  // nothing to the left: outside everything
-        const Segment& t = segs[*std::prev(it)];
-        Index tr = ringOfV[t.e];
-        bool rightIsInside = t.up ? ringSign[tr] < 0 : ringSign[tr] > 0;
+    // The ring whose interior holds what is just right of the active edge before `e`.
+    auto enclosingAt = [&](Index e) {
+        Index left = active.prev(e);
+        if (left == kNone) return kNone;  // nothing to the left: outside everything
+        Index tr = ringOfV[left];
+        bool rightIsInside = up(left) ? ringSign[tr] < 0 : ringSign[tr] > 0;
         return rightIsInside ? tr : enclosing[tr];
     };
     for (size_t i = 0; i < n && !problem;) {
@@ -347,33 +354,30 @@ Diagnostic Validator::checkEdges() {
                 points.push_back(v);
                 continue;
             }
-            for (Index e : {prev(v), v}) (segs[e].hi == p ? ending : starting).push_back(e);
+            for (Index e : {prev(v), v}) (pt(segs[e].hi) == p ? ending : starting).push_back(e);
             if (!ringSeen[r]) ringSeen[r] = 1, newRings.push_back(r);  // 2 once placed
         }
         i = j;
         for (Index e : ending) {
-            auto it = where[e];
-            Index before = kNone, after = kNone;
-            if (it != active.begin()) testPair(e, before = *std::prev(it));
-            if (std::next(it) != active.end()) testPair(e, after = *std::next(it));
-            active.erase(it);
-            where[e] = active.end();
+            Index before = active.prev(e), after = active.next(e);
+            if (before != kNone) testPair(e, before);
+            if (after != kNone) testPair(e, after);
+            active.erase(e);
             if (before != kNone && after != kNone) testPair(before, after);
         }
         for (Index e : starting) {
-            auto it = active.insert(e).first;
-            where[e] = it;
-            if (it != active.begin()) testPair(e, *std::prev(it));
-            if (std::next(it) != active.end()) testPair(e, *std::next(it));
+            active.insert(e);
+            if (Index before = active.prev(e); before != kNone) testPair(e, before);
+            if (Index after = active.next(e); after != kNone) testPair(e, after);
         }
         // A point hole is an edge of no length: placed in the active edges for an instant,
         // its neighbours tell whether it lies on an edge and which ring encloses it.
         for (Index v : points) {
-            auto it = active.insert(v).first;
-            if (it != active.begin()) testPair(v, *std::prev(it));
-            if (std::next(it) != active.end()) testPair(v, *std::next(it));
-            enclosing[ringOfV[v]] = enclosingAt(it);
-            active.erase(it);
+            active.insert(v);
+            if (Index before = active.prev(v); before != kNone) testPair(v, before);
+            if (Index after = active.next(v); after != kNone) testPair(v, after);
+            enclosing[ringOfV[v]] = enclosingAt(v);
+            active.erase(v);
         }
         if (problem) break;
         // Rings whose lowest vertex is p, left to right: the edge just left of a ring's
@@ -382,14 +386,14 @@ Diagnostic Validator::checkEdges() {
         for (Index e : starting) {
             ++work().validatorSteps;
             Index r = ringOfV[e], &best = leftmostOf[r];
-            if (ringSeen[r] == 1 && (best == kNone || active.key_comp()(e, best))) best = e;
+            if (ringSeen[r] == 1 && (best == kNone || active.less()(e, best))) best = e;
         }
         std::vector<std::pair<Index, Index>> leftmost;  // (leftmost edge, ring)
         for (Index r : newRings) leftmost.push_back({leftmostOf[r], r}), ringSeen[r] = 2;
         std::sort(leftmost.begin(), leftmost.end(), [&](auto a, auto b) {
-            return active.key_comp()(a.first, b.first);
+            return active.less()(a.first, b.first);
         });
-        for (auto [e, r] : leftmost) enclosing[r] = enclosingAt(where[e]);
+        for (auto [e, r] : leftmost) enclosing[r] = enclosingAt(e);
     }
     if (problem) return fail(problem->first, problem->second, problemCulprits);
     // One junction per edge and point, ordered by edge, then along the edge from its start

@@ -14,7 +14,8 @@
 //      as a directed triangle edge, and its reverse never; an edge with T-junctions
 //      (Polygon::splits, each checked to lie strictly inside its edge) counts as its pieces;
 //   6. every other directed triangle edge (a, b) has its twin (b, a) in another triangle;
-//   7. the exact sum of the doubled triangle areas equals the exact doubled polygon area;
+//   7. the sum of the doubled triangle areas equals the doubled polygon area (implied by 3-6;
+//      checked in doubles with proven error bounds, so it refuses only a certain mismatch);
 //   8. with more than one part, triangles of different parts have disjoint interiors (rules
 //      1-7 see one part at a time: overlapping parts would pass them; checker_parts.cpp).
 // Vertex identity is by index: coincident copies of a point are different vertices, and a
@@ -22,69 +23,64 @@
 // (the lowest index of the part with the same coordinates): where a hole touches the outer ring at a point, each wedge
 // of interior around that point is bounded by one edge of each ring, so its fan of triangles
 // must meet both copies' edges. Without repeated coordinates this is plain index identity.
-// Rules 1-7 take linear time: open-addressing hash tables of directed edges keyed by
-// (a << 32 | b); rule 8 is a sweep, O(n log n), skipped for a single part.
+// Rules 1-7 take linear time but for sorting each vertex's few outgoing edges (EdgeLists, 4
+// bytes an edge); rule 8 is a sweep, O(n log n), skipped for a single part.
 #include "checker.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <optional>
 #include <sstream>
+#include <unordered_map>
 
 #include "checker_parts.h"
 #include "predicates.h"
+#include "ring_area.h"
 
 namespace flood {
 
 namespace {
 
-// Open-addressing hash map from directed edge to the triangle that uses it.
-class EdgeTable {
+// The directed triangle edges, grouped by their start: the ends of the edges leaving vertex a
+// are to[at[a], at[a + 1]), sorted. 4 bytes an edge and 4 a vertex — a hash table of edges
+// took 36 bytes an edge and was the peak memory of `flood triangulate`. Lookups are binary
+// searches in one vertex's short list.
+class EdgeLists {
 public:
-    explicit EdgeTable(size_t expected) {
-        size_t cap = 16;
-        while (cap < expected * 2) cap <<= 1;
-        keys_.assign(cap, kEmpty);
-        values_.assign(cap, 0);
-        mask_ = cap - 1;
+    EdgeLists(size_t n, const std::vector<Triangle>& triangles, const std::vector<Index>& C)
+        : at_(n + 1, 0), to_(triangles.size() * 3) {
+        for (const Triangle& tri : triangles)
+            for (Index v : tri) ++at_[C[v] + 1];
+        for (size_t a = 0; a < n; ++a) at_[a + 1] += at_[a];
+        std::vector<uint32_t> fill(at_.begin(), at_.end() - 1);
+        for (const Triangle& tri : triangles)
+            for (int k = 0; k < 3; ++k) to_[fill[C[tri[k]]]++] = C[tri[(k + 1) % 3]];
+        fill = {};
+        for (size_t a = 0; a < n; ++a) std::sort(to_.begin() + at_[a], to_.begin() + at_[a + 1]);
+        used_.assign(to_.size(), false);
     }
-    // Inserts key -> value; returns the existing value's slot when the key is already there.
-    bool insert(uint64_t key, uint32_t value, uint32_t& existing) {
-        for (size_t i = hash(key) & mask_;; i = (i + 1) & mask_) {
-            if (keys_[i] == kEmpty) {
-                keys_[i] = key;
-                values_[i] = value;
-                return true;
-            }
-            if (keys_[i] == key) {
-                existing = values_[i];
-                return false;
-            }
-        }
+    // A directed edge in two triangles: two equal ends in one list.
+    bool anyTwice() const {
+        for (size_t a = 0; a + 1 < at_.size(); ++a)
+            for (uint32_t i = at_[a]; i + 1 < at_[a + 1]; ++i)
+                if (to_[i] == to_[i + 1]) return true;
+        return false;
     }
-    bool find(uint64_t key, uint32_t& value) const {
-        for (size_t i = hash(key) & mask_;; i = (i + 1) & mask_) {
-            if (keys_[i] == kEmpty) return false;
-            if (keys_[i] == key) {
-                value = values_[i];
-                return true;
-            }
-        }
+    // The edge's slot, or kNone.
+    uint32_t find(Index a, Index b) const {
+        auto first = to_.begin() + at_[a], last = to_.begin() + at_[a + 1];
+        auto it = std::lower_bound(first, last, b);
+        return it != last && *it == b ? uint32_t(it - to_.begin()) : kNone;
     }
-    bool contains(uint64_t key) const {
-        uint32_t v;
-        return find(key, v);
-    }
+    bool contains(Index a, Index b) const { return find(a, b) != kNone; }
+    // Boundary edges are marked on their slot (rule 5), so rule 6 knows them.
+    bool marked(uint32_t slot) const { return used_[slot]; }
+    void mark(uint32_t slot) { used_[slot] = true; }
 
 private:
-    static constexpr uint64_t kEmpty = ~uint64_t(0);  // never a key: indices are < 2^32 - 1
-    static size_t hash(uint64_t k) {
-        k ^= k >> 33;
-        k *= 0xff51afd7ed558ccdULL;
-        k ^= k >> 33;
-        return size_t(k);
-    }
-    std::vector<uint64_t> keys_;
-    std::vector<uint32_t> values_;
-    size_t mask_ = 0;
+    std::vector<uint32_t> at_, to_;
+    std::vector<bool> used_;
 };
 
 inline uint64_t edgeKey(Index a, Index b) { return (uint64_t(a) << 32) | b; }
@@ -230,13 +226,18 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
     }
 
     // Rule 4: directed triangle edges are distinct.
-    EdgeTable edges(triangles.size() * 3);
-    for (size_t t = 0; t < triangles.size(); ++t) {
-        const Triangle& tri = triangles[t];
-        for (int k = 0; k < 3; ++k) {
-            Index a = tri[k], b = tri[(k + 1) % 3];
-            uint32_t other;
-            if (!edges.insert(edgeKey(C[a], C[b]), uint32_t(t), other)) {
+    if (triangles.size() * 3 >= kNone) return fail("too many triangles for 32-bit edge indices");
+    EdgeLists edges(n, triangles, C);
+    if (edges.anyTwice()) {
+        // Which repeat comes first, in triangle order (the message names both triangles).
+        std::unordered_map<uint64_t, uint32_t> seen;
+        for (size_t t = 0; t < triangles.size(); ++t) {
+            const Triangle& tri = triangles[t];
+            for (int k = 0; k < 3; ++k) {
+                Index a = tri[k], b = tri[(k + 1) % 3];
+                auto [it, fresh] = seen.emplace(edgeKey(C[a], C[b]), uint32_t(t));
+                if (fresh) continue;
+                uint32_t other = it->second;
                 std::ostringstream o;
                 o << "edge-used-twice: directed edge (" << a << ", " << b << ") is in "
                   << triName(other, triangles[other]) << " and " << triName(t, tri);
@@ -245,19 +246,13 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
         }
     }
 
-    // Ring orientations, the polygon's doubled area, and the directed boundary edges: each
-    // ring edge, cut at its T-junctions, with the interior on its left.
-    std::vector<BoundaryEdge> boundaryEdges;
-    boundaryEdges.reserve(n + polygon.splits.size());
-    ExactSum polygonArea;
-    auto split = polygon.splits.begin();
+    // Ring orientations and the polygon's doubled area.
+    std::vector<char> forwardRing(polygon.rings.size(), 0);
+    AreaEstimate polygonArea;
     for (Index r = 0; r < polygon.rings.size(); ++r) {
         const Ring& ring = polygon.rings[r];
         if (isPointHole(r)) continue;  // no edges, no area; rule 2 counted its triangles
-        ExactSum ringArea;
-        for (Index i = 0; i < ring.count; ++i)
-            ringArea.addCross(V[ring.first + i], V[ring.first + (i + 1) % ring.count]);
-        int s = ringArea.sign();
+        int s = ringAreaSign(polygon, ring.first, ring.count);
         if (s == 0) {
             std::ostringstream o;
             o << "ring-zero-area: ring " << r << " has zero signed area";
@@ -265,51 +260,84 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
         }
         bool outer = partOfRing[r] != kNone && polygon.parts[partOfRing[r]].firstRing == r;
         // Forward when the ring's own direction already has the interior on its left.
-        bool forward = outer ? s > 0 : s < 0;
-        polygonArea.add(ringArea, forward ? 1 : -1);
+        forwardRing[r] = outer ? s > 0 : s < 0;
         for (Index i = 0; i < ring.count; ++i) {
-            const Index edge = ring.first + i, to = ring.first + (i + 1) % ring.count;
-            Index from = edge;
-            while (split != polygon.splits.end() && split->edge < edge) ++split;
-            for (; split != polygon.splits.end() && split->edge == edge; ++split) {
-                boundaryEdges.push_back(forward ? BoundaryEdge{from, split->vertex, r}
-                                                : BoundaryEdge{split->vertex, from, r});
-                from = split->vertex;
-            }
-            boundaryEdges.push_back(forward ? BoundaryEdge{from, to, r} : BoundaryEdge{to, from, r});
+            Point a = V[ring.first + i], b = V[ring.first + (i + 1) % ring.count];
+            polygonArea.addCross(forwardRing[r] ? a : b, forwardRing[r] ? b : a);
         }
     }
-    EdgeTable boundary(boundaryEdges.size());
-    for (auto [a, b, r] : boundaryEdges) {
-        uint32_t dummy;
-        if (!boundary.insert(edgeKey(C[a], C[b]), r, dummy)) {
+    // The directed boundary edges, in ring order: each ring edge, cut at its T-junctions, with
+    // the interior on its left. `visit` returns false to stop.
+    auto eachBoundaryEdge = [&](auto&& visit) {
+        auto split = polygon.splits.begin();
+        for (Index r = 0; r < polygon.rings.size(); ++r) {
+            const Ring& ring = polygon.rings[r];
+            if (isPointHole(r)) continue;
+            const bool forward = forwardRing[r];
+            for (Index i = 0; i < ring.count; ++i) {
+                const Index edge = ring.first + i, to = ring.first + (i + 1) % ring.count;
+                Index from = edge;
+                while (split != polygon.splits.end() && split->edge < edge) ++split;
+                for (; split != polygon.splits.end() && split->edge == edge; ++split) {
+                    if (!visit(forward ? BoundaryEdge{from, split->vertex, r}
+                                       : BoundaryEdge{split->vertex, from, r}))
+                        return;
+                    from = split->vertex;
+                }
+                if (!visit(forward ? BoundaryEdge{from, to, r} : BoundaryEdge{to, from, r})) return;
+            }
+        }
+    };
+    std::optional<CheckResult> failed;
+    eachBoundaryEdge([&](BoundaryEdge e) {
+        auto [a, b, r] = e;
+        uint32_t slot = edges.find(C[a], C[b]);
+        if (slot != kNone && edges.marked(slot)) {
+            Index earlier = kNone;  // the ring of the first boundary edge with this segment
+            eachBoundaryEdge([&](BoundaryEdge f) {
+                if (C[f.a] != C[a] || C[f.b] != C[b]) return true;
+                earlier = f.ring;
+                return false;
+            });
             std::ostringstream o;
-            o << "boundary-edge-shared: rings " << dummy << " and " << r
+            o << "boundary-edge-shared: rings " << earlier << " and " << r
               << " share the boundary segment (" << a << ", " << b << ")";
-            return fail(o.str(), {}, {a, b}, {dummy, r});
+            failed = fail(o.str(), {}, {a, b}, {earlier, r});
+            return false;
         }
         // Rule 5.
-        if (edges.find(edgeKey(C[b], C[a]), dummy)) {
+        if (edges.contains(C[b], C[a])) {
+            auto uses = [&](const Triangle& tri) {  // the reversed edge
+                for (int k = 0; k < 3; ++k)
+                    if (C[tri[k]] == C[b] && C[tri[(k + 1) % 3]] == C[a]) return true;
+                return false;
+            };
+            uint32_t user = uint32_t(std::find_if(triangles.begin(), triangles.end(), uses) - triangles.begin());
             std::ostringstream o;
-            o << "boundary-edge-reversed: " << triName(dummy, triangles[dummy])
+            o << "boundary-edge-reversed: " << triName(user, triangles[user])
               << " uses boundary edge (" << b << ", " << a << ") of ring " << r << " from outside";
-            return fail(o.str(), {dummy}, {b, a}, {r});
+            failed = fail(o.str(), {user}, {b, a}, {r});
+            return false;
         }
-        if (!edges.contains(edgeKey(C[a], C[b]))) {
+        if (slot == kNone) {
             std::ostringstream o;
             o << "boundary-edge-missing: no triangle has boundary edge (" << a << ", " << b
               << ") of ring " << r;
-            return fail(o.str(), {}, {a, b}, {r});
+            failed = fail(o.str(), {}, {a, b}, {r});
+            return false;
         }
-    }
+        edges.mark(slot);
+        return true;
+    });
+    if (failed) return *failed;
 
     // Rule 6: interior edges come in twins.
     for (size_t t = 0; t < triangles.size(); ++t) {
         const Triangle& tri = triangles[t];
         for (int k = 0; k < 3; ++k) {
             Index a = tri[k], b = tri[(k + 1) % 3];
-            if (boundary.contains(edgeKey(C[a], C[b]))) continue;
-            if (!edges.contains(edgeKey(C[b], C[a]))) {
+            if (edges.marked(edges.find(C[a], C[b]))) continue;
+            if (!edges.contains(C[b], C[a])) {
                 std::ostringstream o;
                 o << "unmatched-edge: " << triName(t, tri) << " has interior edge (" << a << ", "
                   << b << ") but no triangle has (" << b << ", " << a << ")";
@@ -318,19 +346,30 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
         }
     }
 
-    // Rule 7: areas.
-    ExactSum triangleArea;
+    // Rule 7: areas. Rules 3-6 imply it: the triangles' boundary is then exactly the
+    // polygon's, so by Green's theorem their areas sum to its area. Checked all the same, as a
+    // guard on the code of rules 4-6, in doubles: a sum differing by more than the two error
+    // bounds differs exactly (no exact sum of 10^6 triangles is needed to prove what holds).
+    AreaEstimate triangleArea;
     for (const Triangle& tri : triangles) triangleArea.addTriangle(V[tri[0]], V[tri[1]], V[tri[2]]);
-    if (!(triangleArea == polygonArea)) {
+    const double gap = std::fabs(triangleArea.value() - polygonArea.value());
+    if (triangleArea.finite() && polygonArea.finite() &&
+        gap * (1 - 0x1p-52) > triangleArea.bound() + polygonArea.bound()) {
         std::ostringstream o;
         o.precision(17);
-        o << "area-mismatch: triangles cover doubled area " << triangleArea.approx()
-          << ", the polygon has " << polygonArea.approx();
+        o << "area-mismatch: triangles cover doubled area " << triangleArea.value()
+          << ", the polygon has " << polygonArea.value();
         return fail(o.str());
     }
 
     // Rule 8: parts do not overlap. A single part has nothing to overlap.
     if (polygon.parts.size() > 1) {
+        std::vector<BoundaryEdge> boundaryEdges;
+        boundaryEdges.reserve(n + polygon.splits.size());
+        eachBoundaryEdge([&](BoundaryEdge e) {
+            boundaryEdges.push_back(e);
+            return true;
+        });
         PartsOverlap overlap = partsOverlap(V, partOfVertex, boundaryEdges);
         if (!overlap.reason.empty()) {
             std::vector<uint32_t> rings;  // the overlapping parts' outer rings

@@ -184,6 +184,22 @@ std::vector<Index> sortedVertices(const std::vector<Point>& V, Less less) {
     return order;
 }
 
+// True when some point is a vertex twice (-0.0 is 0.0): open addressing on pointHash().
+bool anyRepeatedPoint(const std::vector<Point>& V) {
+    size_t cap = 16;
+    while (cap < V.size() * 2) cap <<= 1;
+    std::vector<Index> slots(cap, kNone);
+    for (Index v = 0; v < V.size(); ++v)
+        for (size_t i = pointHash(V[v]) & (cap - 1);; i = (i + 1) & (cap - 1)) {
+            if (slots[i] == kNone) {
+                slots[i] = v;
+                break;
+            }
+            if (V[slots[i]] == V[v]) return true;
+        }
+    return false;
+}
+
 // --- checks 1 to 3: coordinates and rings ------------------------------------------------
 
 Diagnostic Validator::checkRings() {
@@ -434,13 +450,15 @@ Diagnostic Validator::checkEdges() {
 // of every T-junction, which passes straight through its vertex's point. Then picks the
 // machine's splits: a junction whose edge's part has a vertex at the point (the lowest one).
 void Validator::collectTouchPoints() {
-    byCoord = sortedVertices(P.vertices,
-                             [](Point p, Point q) { return p.x < q.x || (p.x == q.x && p.y < q.y); });
+    // Most inputs repeat no point: a linear hash pass says so, and nothing is sorted.
+    if (anyRepeatedPoint(P.vertices))
+        byCoord = sortedVertices(P.vertices,
+                                 [](Point p, Point q) { return p.x < q.x || (p.x == q.x && p.y < q.y); });
     groupOf.assign(n, kNone);
     auto vertexOccurrence = [&](Index v) { return Occurrence{v, ringOfV[v], pt(prev(v)), pt(next(v))}; };
-    for (Index i = 0; i < n;) {
+    for (Index i = 0; i < byCoord.size();) {
         Index j = i + 1;
-        while (j < n && pt(byCoord[j]) == pt(byCoord[i])) ++j;
+        while (j < byCoord.size() && pt(byCoord[j]) == pt(byCoord[i])) ++j;
         if (j - i > 1) {
             std::vector<Occurrence> occ;
             for (Index k = i; k < j; ++k) {

@@ -1,5 +1,12 @@
-// The exact triangulation checker. Rules, checked in this order (the first broken one is
-// reported, naming the rule, the triangle number and the vertex indices):
+// The exact triangulation checker. It is the oracle of every test and of `flood triangulate`'s
+// own check, so it deliberately shares no code with what it checks: not the ring orientation
+// (ring_area.h's ringAreaSign) nor the search for coincident points that the machine,
+// validation and the triangle count use, only the exact predicates and sums (predicates.h,
+// AreaEstimate). A bug in a shared facility must not hide in both.
+// Rules, checked in this order (the first broken one is reported, naming the rule, the
+// triangle number and the vertex indices, and the rule as data: CheckResult::rule):
+//   0. every ring has 3 vertices or more (a hole may be a single point), the vertex count fits
+//      32-bit indices, and (checked where rule 5 orients the rings) no ring has zero area;
 //   1. every triangle index is in range;
 //   2. the three vertices of a triangle belong to one part; per part, the triangle count is
 //      n + 2h - 2 - 2d - j - p (n vertices, h holes, d = vertices whose point repeats an
@@ -31,12 +38,13 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
+#include <utility>
 #include <sstream>
 #include <unordered_map>
 
 #include "checker_parts.h"
 #include "predicates.h"
-#include "ring_area.h"
+#include "ring_area.h"  // AreaEstimate only
 
 namespace flood {
 
@@ -108,14 +116,15 @@ std::vector<Index> canonicalVertices(const std::vector<Point>& V, const std::vec
     return canonical;
 }
 
-CheckResult fail(const std::string& s, std::vector<uint32_t> triangles = {},
+CheckResult fail(CheckRule rule, const std::string& s, std::vector<uint32_t> triangles = {},
                  std::vector<uint32_t> vertices = {}, std::vector<uint32_t> rings = {}) {
-    CheckResult r{false, s, {}};
+    CheckResult r{false, s, {}, rule};
     r.culprits.triangles = std::move(triangles);
     r.culprits.vertices = std::move(vertices);
     r.culprits.rings = std::move(rings);
     return r;
 }
+const CheckResult kPass{true, "", {}, CheckRule::None};
 
 std::string triName(size_t t, const Triangle& tri) {
     std::ostringstream o;
@@ -123,152 +132,28 @@ std::string triName(size_t t, const Triangle& tri) {
     return o.str();
 }
 
-}  // namespace
-
-CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangle>& triangles) {
+// One function per rule, run in order; each leaves behind what later rules use.
+struct Checker {
+    const Polygon& polygon;
+    const std::vector<Triangle>& triangles;
+    const std::vector<Point>& V = polygon.vertices;
     const size_t n = polygon.vertices.size();
-    const auto& V = polygon.vertices;
-    if (n >= kNone) return fail("polygon: too many vertices for 32-bit indices");
+    std::vector<Index> partOfRing, partOfVertex;
+    std::vector<Index> C;             // canonical copy of each vertex (see the top)
+    std::optional<EdgeLists> edges;   // rule 4 on
+    std::vector<char> forwardRing;    // the ring's own direction has the interior on its left
+    AreaEstimate polygonArea;         // doubled, rule 7
 
-    // Ring -> part, and vertex -> part (vertices are stored ring by ring).
-    std::vector<Index> partOfRing(polygon.rings.size(), kNone);
-    for (Index p = 0; p < polygon.parts.size(); ++p) {
-        const Part& part = polygon.parts[p];
-        for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) partOfRing[r] = p;
-    }
-    std::vector<Index> partOfVertex(n, kNone);
-    auto isPointHole = [&](Index r) {
+    Checker(const Polygon& p, const std::vector<Triangle>& t) : polygon(p), triangles(t) {}
+
+    bool isPointHole(Index r) const {
         return polygon.rings[r].count == 1 && partOfRing[r] != kNone && polygon.parts[partOfRing[r]].firstRing != r;
-    };
-    for (Index r = 0; r < polygon.rings.size(); ++r) {
-        const Ring& ring = polygon.rings[r];
-        if (ring.count < 3 && !isPointHole(r)) {
-            std::ostringstream o;
-            o << "ring-too-short: ring " << r << " has " << ring.count << " vertices";
-            return fail(o.str(), {}, {}, {r});
-        }
-        for (Index i = 0; i < ring.count; ++i) partOfVertex[ring.first + i] = partOfRing[r];
     }
 
-    // Rule 1: indices in range.
-    for (size_t t = 0; t < triangles.size(); ++t)
-        for (Index v : triangles[t])
-            if (v >= n) {
-                std::ostringstream o;
-                o << "index-out-of-range: " << triName(t, triangles[t]) << " uses vertex " << v
-                  << " but the polygon has " << n << " vertices";
-                return fail(o.str(), {uint32_t(t)});
-            }
-
-    const std::vector<Index> C = canonicalVertices(V, partOfVertex);
-
-    // Rule 2: one part per triangle, and the count per part.
-    std::vector<size_t> countOfPart(polygon.parts.size(), 0);
-    for (size_t t = 0; t < triangles.size(); ++t) {
-        const Triangle& tri = triangles[t];
-        Index p = partOfVertex[tri[0]];
-        if (p == kNone || partOfVertex[tri[1]] != p || partOfVertex[tri[2]] != p)
-            return fail("mixed-parts: " + triName(t, tri) + " has vertices from different parts",
-                        {uint32_t(t)}, {tri[0], tri[1], tri[2]});
-        countOfPart[p]++;
-    }
-    std::vector<size_t> copiesOfPart(polygon.parts.size(), 0);  // d: repeated points per part
-    for (Index v = 0; v < n; ++v)
-        if (C[v] != v) copiesOfPart[partOfVertex[v]]++;
-    // j + p: T-junctions and point holes per part. A split must lie strictly inside its edge.
-    std::vector<size_t> lessOfPart(polygon.parts.size(), 0);
-    for (const EdgeSplit& sp : polygon.splits) {
-        Index b = kNone;  // where the split edge ends
-        if (sp.edge < n && sp.vertex < n) {
-            const Ring& ring = polygon.rings[polygon.ringOf(sp.edge)];
-            b = sp.edge + 1 == ring.first + ring.count ? ring.first : sp.edge + 1;
-        }
-        if (b == kNone || partOfVertex[sp.vertex] != partOfVertex[sp.edge] ||
-            !insideSegment(V[sp.edge], V[b], V[sp.vertex])) {
-            std::ostringstream o;
-            o << "bad-split: vertex " << sp.vertex << " does not lie strictly inside edge (" << sp.edge
-              << ", " << b << ")";
-            return fail(o.str(), {}, {sp.vertex});
-        }
-        lessOfPart[partOfVertex[sp.edge]]++;
-    }
-    for (Index r = 0; r < polygon.rings.size(); ++r)
-        if (isPointHole(r)) lessOfPart[partOfRing[r]]++;
-    for (Index p = 0; p < polygon.parts.size(); ++p) {
-        const Part& part = polygon.parts[p];
-        size_t verts = 0;
-        for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r)
-            verts += polygon.rings[r].count;
-        size_t d = copiesOfPart[p];
-        size_t expected = verts + 2 * (part.ringCount - 1) - 2 - 2 * d - lessOfPart[p];
-        if (countOfPart[p] != expected) {
-            std::ostringstream o;
-            o << "triangle-count: part " << p << " has " << countOfPart[p]
-              << " triangles, expected n + 2h - 2 - 2d - j - p = " << expected << " (n = " << verts
-              << ", h = " << part.ringCount - 1 << ", d = " << d << " repeated points, j + p = "
-              << lessOfPart[p] << " T-junctions and point holes)";
-            std::vector<uint32_t> rings;  // the part's
-            for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) rings.push_back(r);
-            return fail(o.str(), {}, {}, std::move(rings));
-        }
-    }
-
-    // Rule 3: counter-clockwise and non-degenerate.
-    for (size_t t = 0; t < triangles.size(); ++t) {
-        const Triangle& tri = triangles[t];
-        int o = orient(V[tri[0]], V[tri[1]], V[tri[2]]);
-        if (o == 0)
-            return fail("degenerate-triangle: " + triName(t, tri) + " has zero area", {uint32_t(t)},
-                        {tri[0], tri[1], tri[2]});
-        if (o < 0)
-            return fail("clockwise-triangle: " + triName(t, tri) + " is clockwise", {uint32_t(t)},
-                        {tri[0], tri[1], tri[2]});
-    }
-
-    // Rule 4: directed triangle edges are distinct.
-    if (triangles.size() * 3 >= kNone) return fail("too many triangles for 32-bit edge indices");
-    EdgeLists edges(n, triangles, C);
-    if (edges.anyTwice()) {
-        // Which repeat comes first, in triangle order (the message names both triangles).
-        std::unordered_map<uint64_t, uint32_t> seen;
-        for (size_t t = 0; t < triangles.size(); ++t) {
-            const Triangle& tri = triangles[t];
-            for (int k = 0; k < 3; ++k) {
-                Index a = tri[k], b = tri[(k + 1) % 3];
-                auto [it, fresh] = seen.emplace(edgeKey(C[a], C[b]), uint32_t(t));
-                if (fresh) continue;
-                uint32_t other = it->second;
-                std::ostringstream o;
-                o << "edge-used-twice: directed edge (" << a << ", " << b << ") is in "
-                  << triName(other, triangles[other]) << " and " << triName(t, tri);
-                return fail(o.str(), {other, uint32_t(t)}, {a, b});
-            }
-        }
-    }
-
-    // Ring orientations and the polygon's doubled area.
-    std::vector<char> forwardRing(polygon.rings.size(), 0);
-    AreaEstimate polygonArea;
-    for (Index r = 0; r < polygon.rings.size(); ++r) {
-        const Ring& ring = polygon.rings[r];
-        if (isPointHole(r)) continue;  // no edges, no area; rule 2 counted its triangles
-        int s = ringAreaSign(polygon, ring.first, ring.count);
-        if (s == 0) {
-            std::ostringstream o;
-            o << "ring-zero-area: ring " << r << " has zero signed area";
-            return fail(o.str(), {}, {}, {r});
-        }
-        bool outer = partOfRing[r] != kNone && polygon.parts[partOfRing[r]].firstRing == r;
-        // Forward when the ring's own direction already has the interior on its left.
-        forwardRing[r] = outer ? s > 0 : s < 0;
-        for (Index i = 0; i < ring.count; ++i) {
-            Point a = V[ring.first + i], b = V[ring.first + (i + 1) % ring.count];
-            polygonArea.addCross(forwardRing[r] ? a : b, forwardRing[r] ? b : a);
-        }
-    }
     // The directed boundary edges, in ring order: each ring edge, cut at its T-junctions, with
     // the interior on its left. `visit` returns false to stop.
-    auto eachBoundaryEdge = [&](auto&& visit) {
+    template <typename Visit>
+    void eachBoundaryEdge(Visit&& visit) const {
         auto split = polygon.splits.begin();
         for (Index r = 0; r < polygon.rings.size(); ++r) {
             const Ring& ring = polygon.rings[r];
@@ -287,83 +172,255 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
                 if (!visit(forward ? BoundaryEdge{from, to, r} : BoundaryEdge{to, from, r})) return;
             }
         }
-    };
-    std::optional<CheckResult> failed;
-    eachBoundaryEdge([&](BoundaryEdge e) {
-        auto [a, b, r] = e;
-        uint32_t slot = edges.find(C[a], C[b]);
-        if (slot != kNone && edges.marked(slot)) {
-            Index earlier = kNone;  // the ring of the first boundary edge with this segment
-            eachBoundaryEdge([&](BoundaryEdge f) {
-                if (C[f.a] != C[a] || C[f.b] != C[b]) return true;
-                earlier = f.ring;
-                return false;
-            });
-            std::ostringstream o;
-            o << "boundary-edge-shared: rings " << earlier << " and " << r
-              << " share the boundary segment (" << a << ", " << b << ")";
-            failed = fail(o.str(), {}, {a, b}, {earlier, r});
-            return false;
-        }
-        // Rule 5.
-        if (edges.contains(C[b], C[a])) {
-            auto uses = [&](const Triangle& tri) {  // the reversed edge
-                for (int k = 0; k < 3; ++k)
-                    if (C[tri[k]] == C[b] && C[tri[(k + 1) % 3]] == C[a]) return true;
-                return false;
-            };
-            uint32_t user = uint32_t(std::find_if(triangles.begin(), triangles.end(), uses) - triangles.begin());
-            std::ostringstream o;
-            o << "boundary-edge-reversed: " << triName(user, triangles[user])
-              << " uses boundary edge (" << b << ", " << a << ") of ring " << r << " from outside";
-            failed = fail(o.str(), {user}, {b, a}, {r});
-            return false;
-        }
-        if (slot == kNone) {
-            std::ostringstream o;
-            o << "boundary-edge-missing: no triangle has boundary edge (" << a << ", " << b
-              << ") of ring " << r;
-            failed = fail(o.str(), {}, {a, b}, {r});
-            return false;
-        }
-        edges.mark(slot);
-        return true;
-    });
-    if (failed) return *failed;
+    }
 
-    // Rule 6: interior edges come in twins.
-    for (size_t t = 0; t < triangles.size(); ++t) {
-        const Triangle& tri = triangles[t];
-        for (int k = 0; k < 3; ++k) {
-            Index a = tri[k], b = tri[(k + 1) % 3];
-            if (edges.marked(edges.find(C[a], C[b]))) continue;
-            if (!edges.contains(C[b], C[a])) {
+    // Rule 0: rings long enough to judge, indices that fit; ring -> part and vertex -> part
+    // (vertices are stored ring by ring).
+    CheckResult rings() {
+        if (n >= kNone) return fail(CheckRule::Rings, "polygon: too many vertices for 32-bit indices");
+        partOfRing.assign(polygon.rings.size(), kNone);
+        for (Index p = 0; p < polygon.parts.size(); ++p) {
+            const Part& part = polygon.parts[p];
+            for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) partOfRing[r] = p;
+        }
+        partOfVertex.assign(n, kNone);
+        for (Index r = 0; r < polygon.rings.size(); ++r) {
+            const Ring& ring = polygon.rings[r];
+            if (ring.count < 3 && !isPointHole(r)) {
                 std::ostringstream o;
-                o << "unmatched-edge: " << triName(t, tri) << " has interior edge (" << a << ", "
-                  << b << ") but no triangle has (" << b << ", " << a << ")";
-                return fail(o.str(), {uint32_t(t)}, {a, b});
+                o << "ring-too-short: ring " << r << " has " << ring.count << " vertices";
+                return fail(CheckRule::Rings, o.str(), {}, {}, {r});
+            }
+            for (Index i = 0; i < ring.count; ++i) partOfVertex[ring.first + i] = partOfRing[r];
+        }
+        return kPass;
+    }
+
+    // Rule 1: indices in range.
+    CheckResult indices() {
+        for (size_t t = 0; t < triangles.size(); ++t)
+            for (Index v : triangles[t])
+                if (v >= n) {
+                    std::ostringstream o;
+                    o << "index-out-of-range: " << triName(t, triangles[t]) << " uses vertex " << v
+                      << " but the polygon has " << n << " vertices";
+                    return fail(CheckRule::Indices, o.str(), {uint32_t(t)});
+                }
+        return kPass;
+    }
+
+    // Rule 2: one part per triangle, and the count per part.
+    CheckResult partsAndCount() {
+        C = canonicalVertices(V, partOfVertex);
+        std::vector<size_t> countOfPart(polygon.parts.size(), 0);
+        for (size_t t = 0; t < triangles.size(); ++t) {
+            const Triangle& tri = triangles[t];
+            Index p = partOfVertex[tri[0]];
+            if (p == kNone || partOfVertex[tri[1]] != p || partOfVertex[tri[2]] != p)
+                return fail(CheckRule::PartsAndCount,
+                            "mixed-parts: " + triName(t, tri) + " has vertices from different parts",
+                            {uint32_t(t)}, {tri[0], tri[1], tri[2]});
+            countOfPart[p]++;
+        }
+        std::vector<size_t> copiesOfPart(polygon.parts.size(), 0);  // d: repeated points per part
+        for (Index v = 0; v < n; ++v)
+            if (C[v] != v) copiesOfPart[partOfVertex[v]]++;
+        // j + p: T-junctions and point holes per part. A split must lie strictly inside its edge.
+        std::vector<size_t> lessOfPart(polygon.parts.size(), 0);
+        for (const EdgeSplit& sp : polygon.splits) {
+            Index b = kNone;  // where the split edge ends
+            if (sp.edge < n && sp.vertex < n) {
+                const Ring& ring = polygon.rings[polygon.ringOf(sp.edge)];
+                b = sp.edge + 1 == ring.first + ring.count ? ring.first : sp.edge + 1;
+            }
+            if (b == kNone || partOfVertex[sp.vertex] != partOfVertex[sp.edge] ||
+                !insideSegment(V[sp.edge], V[b], V[sp.vertex])) {
+                std::ostringstream o;
+                o << "bad-split: vertex " << sp.vertex << " does not lie strictly inside edge (" << sp.edge
+                  << ", " << b << ")";
+                return fail(CheckRule::PartsAndCount, o.str(), {}, {sp.vertex});
+            }
+            lessOfPart[partOfVertex[sp.edge]]++;
+        }
+        for (Index r = 0; r < polygon.rings.size(); ++r)
+            if (isPointHole(r)) lessOfPart[partOfRing[r]]++;
+        for (Index p = 0; p < polygon.parts.size(); ++p) {
+            const Part& part = polygon.parts[p];
+            size_t verts = 0;
+            for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r)
+                verts += polygon.rings[r].count;
+            size_t d = copiesOfPart[p];
+            size_t expected = verts + 2 * (part.ringCount - 1) - 2 - 2 * d - lessOfPart[p];
+            if (countOfPart[p] != expected) {
+                std::ostringstream o;
+                o << "triangle-count: part " << p << " has " << countOfPart[p]
+                  << " triangles, expected n + 2h - 2 - 2d - j - p = " << expected << " (n = " << verts
+                  << ", h = " << part.ringCount - 1 << ", d = " << d << " repeated points, j + p = "
+                  << lessOfPart[p] << " T-junctions and point holes)";
+                std::vector<uint32_t> rings;  // the part's
+                for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) rings.push_back(r);
+                return fail(CheckRule::PartsAndCount, o.str(), {}, {}, std::move(rings));
             }
         }
+        return kPass;
+    }
+
+    // Rule 3: counter-clockwise and non-degenerate.
+    CheckResult counterClockwise() {
+        for (size_t t = 0; t < triangles.size(); ++t) {
+            const Triangle& tri = triangles[t];
+            int o = orient(V[tri[0]], V[tri[1]], V[tri[2]]);
+            if (o == 0)
+                return fail(CheckRule::CounterClockwise, "degenerate-triangle: " + triName(t, tri) + " has zero area",
+                            {uint32_t(t)}, {tri[0], tri[1], tri[2]});
+            if (o < 0)
+                return fail(CheckRule::CounterClockwise, "clockwise-triangle: " + triName(t, tri) + " is clockwise",
+                            {uint32_t(t)}, {tri[0], tri[1], tri[2]});
+        }
+        return kPass;
+    }
+
+    // Rule 4: directed triangle edges are distinct.
+    CheckResult distinctEdges() {
+        if (triangles.size() * 3 >= kNone)
+            return fail(CheckRule::DistinctEdges, "too many triangles for 32-bit edge indices");
+        edges.emplace(n, triangles, C);
+        if (!edges->anyTwice()) return kPass;
+        // Which repeat comes first, in triangle order (the message names both triangles).
+        std::unordered_map<uint64_t, uint32_t> seen;
+        for (size_t t = 0; t < triangles.size(); ++t) {
+            const Triangle& tri = triangles[t];
+            for (int k = 0; k < 3; ++k) {
+                Index a = tri[k], b = tri[(k + 1) % 3];
+                auto [it, fresh] = seen.emplace(edgeKey(C[a], C[b]), uint32_t(t));
+                if (fresh) continue;
+                uint32_t other = it->second;
+                std::ostringstream o;
+                o << "edge-used-twice: directed edge (" << a << ", " << b << ") is in "
+                  << triName(other, triangles[other]) << " and " << triName(t, tri);
+                return fail(CheckRule::DistinctEdges, o.str(), {other, uint32_t(t)}, {a, b});
+            }
+        }
+        return kPass;  // unreachable: anyTwice() saw a repeat
+    }
+
+    // Ring orientations (rule 0's last condition: none of zero area) and the polygon's doubled
+    // area. Computed here, not by ring_area.h's ringAreaSign, so the oracle shares no
+    // orientation code with what it checks.
+    CheckResult orientRings() {
+        forwardRing.assign(polygon.rings.size(), 0);
+        for (Index r = 0; r < polygon.rings.size(); ++r) {
+            const Ring& ring = polygon.rings[r];
+            if (isPointHole(r)) continue;  // no edges, no area; rule 2 counted its triangles
+            auto edge = [&](Index i) { return std::pair{V[ring.first + i], V[ring.first + (i + 1) % ring.count]}; };
+            AreaEstimate ringArea;
+            for (Index i = 0; i < ring.count; ++i) ringArea.addCross(edge(i).first, edge(i).second);
+            int s = ringArea.sign();
+            if (s == 0) {  // zero or too close to tell: exact arithmetic says
+                ExactSum exact;
+                for (Index i = 0; i < ring.count; ++i) exact.addCross(edge(i).first, edge(i).second);
+                s = exact.sign();
+            }
+            if (s == 0) {
+                std::ostringstream o;
+                o << "ring-zero-area: ring " << r << " has zero signed area";
+                return fail(CheckRule::Rings, o.str(), {}, {}, {r});
+            }
+            bool outer = partOfRing[r] != kNone && polygon.parts[partOfRing[r]].firstRing == r;
+            forwardRing[r] = outer ? s > 0 : s < 0;
+            for (Index i = 0; i < ring.count; ++i) {
+                auto [a, b] = edge(i);
+                polygonArea.addCross(forwardRing[r] ? a : b, forwardRing[r] ? b : a);
+            }
+        }
+        return kPass;
+    }
+
+    // Rule 5: every boundary edge once, from the inside (and no two rings share one).
+    CheckResult boundaryEdges() {
+        std::optional<CheckResult> failed;
+        eachBoundaryEdge([&](BoundaryEdge e) {
+            auto [a, b, r] = e;
+            uint32_t slot = edges->find(C[a], C[b]);
+            if (slot != kNone && edges->marked(slot)) {
+                Index earlier = kNone;  // the ring of the first boundary edge with this segment
+                eachBoundaryEdge([&](BoundaryEdge f) {
+                    if (C[f.a] != C[a] || C[f.b] != C[b]) return true;
+                    earlier = f.ring;
+                    return false;
+                });
+                std::ostringstream o;
+                o << "boundary-edge-shared: rings " << earlier << " and " << r
+                  << " share the boundary segment (" << a << ", " << b << ")";
+                failed = fail(CheckRule::BoundaryEdges, o.str(), {}, {a, b}, {earlier, r});
+                return false;
+            }
+            if (edges->contains(C[b], C[a])) {
+                auto uses = [&](const Triangle& tri) {  // the reversed edge
+                    for (int k = 0; k < 3; ++k)
+                        if (C[tri[k]] == C[b] && C[tri[(k + 1) % 3]] == C[a]) return true;
+                    return false;
+                };
+                uint32_t user = uint32_t(std::find_if(triangles.begin(), triangles.end(), uses) - triangles.begin());
+                std::ostringstream o;
+                o << "boundary-edge-reversed: " << triName(user, triangles[user])
+                  << " uses boundary edge (" << b << ", " << a << ") of ring " << r << " from outside";
+                failed = fail(CheckRule::BoundaryEdges, o.str(), {user}, {b, a}, {r});
+                return false;
+            }
+            if (slot == kNone) {
+                std::ostringstream o;
+                o << "boundary-edge-missing: no triangle has boundary edge (" << a << ", " << b
+                  << ") of ring " << r;
+                failed = fail(CheckRule::BoundaryEdges, o.str(), {}, {a, b}, {r});
+                return false;
+            }
+            edges->mark(slot);
+            return true;
+        });
+        return failed ? *failed : kPass;
+    }
+
+    // Rule 6: interior edges come in twins.
+    CheckResult interiorTwins() {
+        for (size_t t = 0; t < triangles.size(); ++t) {
+            const Triangle& tri = triangles[t];
+            for (int k = 0; k < 3; ++k) {
+                Index a = tri[k], b = tri[(k + 1) % 3];
+                if (edges->marked(edges->find(C[a], C[b]))) continue;
+                if (!edges->contains(C[b], C[a])) {
+                    std::ostringstream o;
+                    o << "unmatched-edge: " << triName(t, tri) << " has interior edge (" << a << ", "
+                      << b << ") but no triangle has (" << b << ", " << a << ")";
+                    return fail(CheckRule::InteriorTwins, o.str(), {uint32_t(t)}, {a, b});
+                }
+            }
+        }
+        return kPass;
     }
 
     // Rule 7: areas. Rules 3-6 imply it: the triangles' boundary is then exactly the
     // polygon's, so by Green's theorem their areas sum to its area. Checked all the same, as a
     // guard on the code of rules 4-6, in doubles: a sum differing by more than the two error
     // bounds differs exactly (no exact sum of 10^6 triangles is needed to prove what holds).
-    AreaEstimate triangleArea;
-    for (const Triangle& tri : triangles) triangleArea.addTriangle(V[tri[0]], V[tri[1]], V[tri[2]]);
-    const double gap = std::fabs(triangleArea.value() - polygonArea.value());
-    if (triangleArea.finite() && polygonArea.finite() &&
-        gap * (1 - 0x1p-52) > triangleArea.bound() + polygonArea.bound()) {
-        std::ostringstream o;
-        o.precision(17);
-        o << "area-mismatch: triangles cover doubled area " << triangleArea.value()
-          << ", the polygon has " << polygonArea.value();
-        return fail(o.str());
+    CheckResult area() {
+        AreaEstimate triangleArea;
+        for (const Triangle& tri : triangles) triangleArea.addTriangle(V[tri[0]], V[tri[1]], V[tri[2]]);
+        const double gap = std::fabs(triangleArea.value() - polygonArea.value());
+        if (triangleArea.finite() && polygonArea.finite() &&
+            gap * (1 - 0x1p-52) > triangleArea.bound() + polygonArea.bound()) {
+            std::ostringstream o;
+            o.precision(17);
+            o << "area-mismatch: triangles cover doubled area " << triangleArea.value()
+              << ", the polygon has " << polygonArea.value();
+            return fail(CheckRule::Area, o.str());
+        }
+        return kPass;
     }
 
     // Rule 8: parts do not overlap. A single part has nothing to overlap.
-    if (polygon.parts.size() > 1) {
+    CheckResult partsDisjoint() {
+        if (polygon.parts.size() <= 1) return kPass;
         std::vector<BoundaryEdge> boundaryEdges;
         boundaryEdges.reserve(n + polygon.splits.size());
         eachBoundaryEdge([&](BoundaryEdge e) {
@@ -371,14 +428,26 @@ CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangl
             return true;
         });
         PartsOverlap overlap = partsOverlap(V, partOfVertex, boundaryEdges);
-        if (!overlap.reason.empty()) {
-            std::vector<uint32_t> rings;  // the overlapping parts' outer rings
-            for (Index p : overlap.parts)
-                if (p < polygon.parts.size()) rings.push_back(polygon.parts[p].firstRing);
-            return fail(overlap.reason, {}, std::move(overlap.vertices), std::move(rings));
-        }
+        if (overlap.reason.empty()) return kPass;
+        std::vector<uint32_t> rings;  // the overlapping parts' outer rings
+        for (Index p : overlap.parts)
+            if (p < polygon.parts.size()) rings.push_back(polygon.parts[p].firstRing);
+        return fail(CheckRule::PartsDisjoint, overlap.reason, {}, std::move(overlap.vertices), std::move(rings));
     }
-    return {true, "", {}};
+};
+
+}  // namespace
+
+CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangle>& triangles) {
+    Checker checker(polygon, triangles);
+    for (CheckResult (Checker::*rule)() : {&Checker::rings, &Checker::indices, &Checker::partsAndCount,
+                                           &Checker::counterClockwise, &Checker::distinctEdges,
+                                           &Checker::orientRings, &Checker::boundaryEdges,
+                                           &Checker::interiorTwins, &Checker::area, &Checker::partsDisjoint}) {
+        CheckResult r = (checker.*rule)();
+        if (!r.ok) return r;
+    }
+    return kPass;
 }
 
 }  // namespace flood

@@ -119,7 +119,13 @@ struct Validator {
 
     Diagnostic run();
     Diagnostic checkRings();
-    Diagnostic checkEdges();
+    Diagnostic checkEdges();  // sweepEdges(), then orderJunctions()
+    void sweepEdges();
+    void classifyMeeting(Index e, Index f);
+    void touchOnEdge(Index vertex, Index edge);
+    void orderJunctions();
+    std::optional<std::pair<Index, std::string>> problem;  // check 4's: vertex to report, reason
+    Culprits problemCulprits;                               // and what else it names
     Diagnostic checkSharedVertices();
     Diagnostic checkTouchTopology();
     Diagnostic checkHoles();
@@ -286,7 +292,76 @@ struct SweepOrder {
     }
 };
 
-Diagnostic Validator::checkEdges() {
+// How edges e and f meet, when the sweep finds them side by side: apart, crossing,
+// overlapping, folding back (a spike), or touching (a vertex strictly inside the other's edge,
+// a junction). The first problem found is kept in `problem`; later calls do nothing.
+void Validator::classifyMeeting(Index e, Index f) {
+    ++work().validatorSteps;
+    if (problem || e == f) return;
+    if (isPoint(f)) std::swap(e, f);
+    Point a = pt(e), b = pt(next(e)), c = pt(f), d = pt(next(f));
+    if (isPoint(e)) {  // a point against an edge (or another point: met in check 5)
+        if (!isPoint(f) && insideSegment(c, d, a)) touchOnEdge(e, f);
+        return;
+    }
+    // Adjacent edges of one ring meet at their shared vertex; only a spike is wrong.
+    bool adjacent = false;
+    for (int k = 0; k < 2; ++k) {
+        Index e1 = k ? f : e, e2 = k ? e : f;
+        if (next(e1) != e2) continue;
+        adjacent = true;
+        Point p = pt(e1), q = pt(e2), s = pt(next(e2));
+        if (orient(p, q, s) == 0 && sameDirection(q, p, s)) {
+            problemCulprits = atPoint(e2, {e1, e2});
+            problem.emplace(e2, "the ring folds back on itself here (spike): edge " +
+                                    edgeText(e1) + " overlaps the next edge");
+            return;
+        }
+    }
+    if (adjacent) return;
+    int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+    Index lo = std::min(e, f), hi = std::max(e, f);
+    if (o1 * o2 < 0 && o3 * o4 < 0) {
+        edgesCrossed = true;
+        problemCulprits = {};
+        problemCulprits.edges = {lo, hi};  // no exact double point: the viewer computes one
+        problem.emplace(lo, "edge " + edgeText(lo) + " crosses edge " + edgeText(hi));
+        return;
+    }
+    if (o1 == 0 && o2 == 0 && o3 == 0 && o4 == 0) {
+        bool useX = a.x != b.x;
+        auto key = [&](Point p) { return useX ? p.x : p.y; };
+        double l = std::max(std::min(key(a), key(b)), std::min(key(c), key(d)));
+        double h = std::min(std::max(key(a), key(b)), std::max(key(c), key(d)));
+        if (l < h) problemCulprits = {}, problemCulprits.edges = {lo, hi};
+        if (l < h)
+            problem.emplace(lo, "edge " + edgeText(lo) + " overlaps collinear edge " +
+                                    edgeText(hi));
+        return;
+    }
+    if (o1 == 0 && insideSegment(a, b, c)) touchOnEdge(f, e);
+    else if (o2 == 0 && insideSegment(a, b, d)) touchOnEdge(next(f), e);
+    else if (o3 == 0 && insideSegment(c, d, a)) touchOnEdge(e, f);
+    else if (o4 == 0 && insideSegment(c, d, b)) touchOnEdge(next(e), f);
+}
+
+// `vertex` lies strictly inside `edge`: a touch between rings (a junction, checked in check 5),
+// refused on its own ring or for a point.
+void Validator::touchOnEdge(Index vertex, Index edge) {
+    if (isPoint(vertex) || ringOfV[vertex] == ringOfV[edge]) problemCulprits = atPoint(vertex, {edge});
+    if (isPoint(vertex))
+        problem.emplace(vertex, "point hole lies on edge " + edgeText(edge) +
+                                    " (a Steiner point must be strictly inside the polygon)");
+    else if (ringOfV[vertex] == ringOfV[edge])
+        problem.emplace(vertex, "the ring touches itself here: the vertex lies on its own edge " +
+                                    edgeText(edge) + " (a ring must be simple)");
+    else
+        junctions.push_back({edge, vertex});
+}
+
+// The sweep: every pair of edges that become neighbours along the sweep line goes to
+// classifyMeeting(); it stops at the first problem. Also fills enclosing[].
+void Validator::sweepEdges() {
     std::vector<Segment> segs(n);
     for (Index v = 0; v < n; ++v) {
         Index w = next(v);
@@ -296,72 +371,6 @@ Diagnostic Validator::checkEdges() {
     auto up = [&](Index e) { return segs[e].lo == e && segs[e].hi != e; };
     const std::vector<Index> events =
         sortedVertices(P.vertices, [](Point a, Point b) { return below(a, b); });
-
-    std::optional<std::pair<Index, std::string>> problem;  // vertex to report, reason
-    Culprits problemCulprits;                               // and what else it names
-    // `vertex` lies strictly inside `edge`: a touch between rings (checked in check 5),
-    // refused on its own ring or for a point.
-    auto onEdge = [&](Index vertex, Index edge) {
-        if (isPoint(vertex) || ringOfV[vertex] == ringOfV[edge]) problemCulprits = atPoint(vertex, {edge});
-        if (isPoint(vertex))
-            problem.emplace(vertex, "point hole lies on edge " + edgeText(edge) +
-                                        " (a Steiner point must be strictly inside the polygon)");
-        else if (ringOfV[vertex] == ringOfV[edge])
-            problem.emplace(vertex, "the ring touches itself here: the vertex lies on its own edge " +
-                                        edgeText(edge) + " (a ring must be simple)");
-        else
-            junctions.push_back({edge, vertex});
-    };
-    auto testPair = [&](Index e, Index f) {
-        ++work().validatorSteps;
-        if (problem || e == f) return;
-        if (isPoint(f)) std::swap(e, f);
-        Point a = pt(e), b = pt(next(e)), c = pt(f), d = pt(next(f));
-        if (isPoint(e)) {  // a point against an edge (or another point: met in check 5)
-            if (!isPoint(f) && insideSegment(c, d, a)) onEdge(e, f);
-            return;
-        }
-        // Adjacent edges of one ring meet at their shared vertex; only a spike is wrong.
-        bool adjacent = false;
-        for (int k = 0; k < 2; ++k) {
-            Index e1 = k ? f : e, e2 = k ? e : f;
-            if (next(e1) != e2) continue;
-            adjacent = true;
-            Point p = pt(e1), q = pt(e2), s = pt(next(e2));
-            if (orient(p, q, s) == 0 && sameDirection(q, p, s)) {
-                problemCulprits = atPoint(e2, {e1, e2});
-                problem.emplace(e2, "the ring folds back on itself here (spike): edge " +
-                                        edgeText(e1) + " overlaps the next edge");
-                return;
-            }
-        }
-        if (adjacent) return;
-        int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
-        Index lo = std::min(e, f), hi = std::max(e, f);
-        if (o1 * o2 < 0 && o3 * o4 < 0) {
-            edgesCrossed = true;
-            problemCulprits = {};
-            problemCulprits.edges = {lo, hi};  // no exact double point: the viewer computes one
-            problem.emplace(lo, "edge " + edgeText(lo) + " crosses edge " + edgeText(hi));
-            return;
-        }
-        if (o1 == 0 && o2 == 0 && o3 == 0 && o4 == 0) {
-            bool useX = a.x != b.x;
-            auto key = [&](Point p) { return useX ? p.x : p.y; };
-            double l = std::max(std::min(key(a), key(b)), std::min(key(c), key(d)));
-            double h = std::min(std::max(key(a), key(b)), std::max(key(c), key(d)));
-            if (l < h) problemCulprits = {}, problemCulprits.edges = {lo, hi};
-            if (l < h)
-                problem.emplace(lo, "edge " + edgeText(lo) + " overlaps collinear edge " +
-                                        edgeText(hi));
-            return;
-        }
-        if (o1 == 0 && insideSegment(a, b, c)) onEdge(f, e);
-        else if (o2 == 0 && insideSegment(a, b, d)) onEdge(next(f), e);
-        else if (o3 == 0 && insideSegment(c, d, a)) onEdge(e, f);
-        else if (o4 == 0 && insideSegment(c, d, b)) onEdge(next(e), f);
-    };
-
     SweepTree<SweepOrder> active(n, SweepOrder{&segs, P.vertices.data()});
     enclosing.assign(P.rings.size(), kNone);
     std::vector<char> ringSeen(P.rings.size(), 0);
@@ -392,22 +401,22 @@ Diagnostic Validator::checkEdges() {
         i = j;
         for (Index e : ending) {
             Index before = active.prev(e), after = active.next(e);
-            if (before != kNone) testPair(e, before);
-            if (after != kNone) testPair(e, after);
+            if (before != kNone) classifyMeeting(e, before);
+            if (after != kNone) classifyMeeting(e, after);
             active.erase(e);
-            if (before != kNone && after != kNone) testPair(before, after);
+            if (before != kNone && after != kNone) classifyMeeting(before, after);
         }
         for (Index e : starting) {
             active.insert(e);
-            if (Index before = active.prev(e); before != kNone) testPair(e, before);
-            if (Index after = active.next(e); after != kNone) testPair(e, after);
+            if (Index before = active.prev(e); before != kNone) classifyMeeting(e, before);
+            if (Index after = active.next(e); after != kNone) classifyMeeting(e, after);
         }
         // A point hole is an edge of no length: placed in the active edges for an instant,
         // its neighbours tell whether it lies on an edge and which ring encloses it.
         for (Index v : points) {
             active.insert(v);
-            if (Index before = active.prev(v); before != kNone) testPair(v, before);
-            if (Index after = active.next(v); after != kNone) testPair(v, after);
+            if (Index before = active.prev(v); before != kNone) classifyMeeting(v, before);
+            if (Index after = active.next(v); after != kNone) classifyMeeting(v, after);
             enclosing[ringOfV[v]] = enclosingAt(v);
             active.erase(v);
         }
@@ -427,9 +436,11 @@ Diagnostic Validator::checkEdges() {
         });
         for (auto [e, r] : leftmost) enclosing[r] = enclosingAt(e);
     }
-    if (problem) return fail(problem->first, problem->second, problemCulprits);
-    // One junction per edge and point, ordered by edge, then along the edge from its start
-    // (the order the flood machine and the checker walk it in).
+}
+
+// One junction per edge and point, ordered by edge, then along the edge from its start
+// (the order the flood machine and the checker walk it in).
+void Validator::orderJunctions() {
     std::sort(junctions.begin(), junctions.end(), [&](const EdgeSplit& s, const EdgeSplit& t) {
         if (s.edge != t.edge) return s.edge < t.edge;
         Point a = pt(s.edge), b = pt(next(s.edge)), p = pt(s.vertex), q = pt(t.vertex);
@@ -441,6 +452,12 @@ Diagnostic Validator::checkEdges() {
                                     return s.edge == t.edge && pt(s.vertex) == pt(t.vertex);
                                 }),
                     junctions.end());
+}
+
+Diagnostic Validator::checkEdges() {
+    sweepEdges();
+    if (problem) return fail(problem->first, problem->second, problemCulprits);
+    orderJunctions();
     return {};
 }
 

@@ -26,15 +26,17 @@
 //
 // All decisions use the exact flood::orient() and coordinate comparisons; no floating-point
 // arithmetic decides anything. Cost: O(n log n) — a sort of the vertices for the sweep, a
-// sort for coincident vertices, a treap sweep (sweep_tree.h) with O(1) tests per event, and at a point
-// shared by k rings a sort of their 2k rays and O(log k) per ring to find a crossing
-// (validatorSteps in core/work.h counts the work, tests/validate_growth_test.cpp bounds it).
+// hash search for coincident vertices (coincident.h) and a sort of those, a treap sweep
+// (sweep_tree.h) with O(1) tests per event, and at a point shared by k rings a sort of their
+// 2k rays and O(log k) per ring to find a crossing (validatorSteps in core/work.h counts the
+// work, tests/validate_growth_test.cpp bounds it).
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
 
 #include "io.h"
+#include "coincident.h"
 #include "io_util.h"
 #include "predicates.h"
 #include "ring_area.h"
@@ -130,8 +132,6 @@ struct Validator {
     Diagnostic checkTouchTopology();
     Diagnostic checkHoles();
 
-    // Vertices sorted by coordinates; groups of equal coordinates with more than one member.
-    std::vector<Index> byCoord;
     std::vector<Index> groupOf;  // touch point (index into touchPoints) of each vertex, or kNone
     std::vector<Index> enclosing;  // innermost ring whose interior contains each ring
 
@@ -188,22 +188,6 @@ std::vector<Index> sortedVertices(const std::vector<Point>& V, Less less) {
     std::vector<Index> order(V.size());
     for (size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].v;
     return order;
-}
-
-// True when some point is a vertex twice (-0.0 is 0.0): open addressing on pointHash().
-bool anyRepeatedPoint(const std::vector<Point>& V) {
-    size_t cap = 16;
-    while (cap < V.size() * 2) cap <<= 1;
-    std::vector<Index> slots(cap, kNone);
-    for (Index v = 0; v < V.size(); ++v)
-        for (size_t i = pointHash(V[v]) & (cap - 1);; i = (i + 1) & (cap - 1)) {
-            if (slots[i] == kNone) {
-                slots[i] = v;
-                break;
-            }
-            if (V[slots[i]] == V[v]) return true;
-        }
-    return false;
 }
 
 // --- checks 1 to 3: coordinates and rings ------------------------------------------------
@@ -467,24 +451,26 @@ Diagnostic Validator::checkEdges() {
 // of every T-junction, which passes straight through its vertex's point. Then picks the
 // machine's splits: a junction whose edge's part has a vertex at the point (the lowest one).
 void Validator::collectTouchPoints() {
-    // Most inputs repeat no point: a linear hash pass says so, and nothing is sorted.
-    if (anyRepeatedPoint(P.vertices))
-        byCoord = sortedVertices(P.vertices,
-                                 [](Point p, Point q) { return p.x < q.x || (p.x == q.x && p.y < q.y); });
+    // The repeated points (most inputs have none), in coordinate order (x, then y), each
+    // point's vertices by index: (first vertex there, a later one) sorted so.
+    std::vector<std::pair<Index, Index>> copies = repeatedPoints(n, [&](size_t v) { return pt(Index(v)); });
+    std::sort(copies.begin(), copies.end(), [&](std::pair<Index, Index> a, std::pair<Index, Index> b) {
+        Point p = pt(a.first), q = pt(b.first);
+        if (p.x != q.x) return p.x < q.x;
+        if (p.y != q.y) return p.y < q.y;
+        return a.second < b.second;
+    });
     groupOf.assign(n, kNone);
     auto vertexOccurrence = [&](Index v) { return Occurrence{v, ringOfV[v], pt(prev(v)), pt(next(v))}; };
-    for (Index i = 0; i < byCoord.size();) {
-        Index j = i + 1;
-        while (j < byCoord.size() && pt(byCoord[j]) == pt(byCoord[i])) ++j;
-        if (j - i > 1) {
-            std::vector<Occurrence> occ;
-            for (Index k = i; k < j; ++k) {
-                groupOf[byCoord[k]] = Index(touchPoints.size());
-                occ.push_back(vertexOccurrence(byCoord[k]));
-            }
-            touchPoints.push_back(std::move(occ));
+    for (size_t i = 0; i < copies.size();) {
+        const Index first = copies[i].first, group = Index(touchPoints.size());
+        groupOf[first] = group;
+        std::vector<Occurrence> occ{vertexOccurrence(first)};
+        for (; i < copies.size() && copies[i].first == first; ++i) {
+            groupOf[copies[i].second] = group;
+            occ.push_back(vertexOccurrence(copies[i].second));
         }
-        i = j;
+        touchPoints.push_back(std::move(occ));
     }
     for (Index k = 0; k < junctions.size(); ++k) {
         Index v = junctions[k].vertex, e = junctions[k].edge;

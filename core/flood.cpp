@@ -30,6 +30,7 @@
 
 #include "coincident.h"
 #include "predicates.h"
+#include "ring_area.h"
 #include "sag_banks.h"
 #include "sag_index.h"
 #include "work.h"
@@ -230,7 +231,7 @@ private:
             // Orient loops so the interior is on the left: outer counter-clockwise, holes
             // clockwise, whatever the file said.
             bool wantCcw = (r == pa.firstRing);
-            bool reverse = ring.count >= 3 && (ringTurn(ring) > 0) != wantCcw;
+            bool reverse = ring.count >= 3 && (ringOrientation(pts_ + ring.first, ring.count) > 0) != wantCcw;
             const uint32_t base = uint32_t(nodes_.size()), count = uint32_t(loop.size());
             for (uint32_t i = 0; i < count; ++i) {
                 Node nd;
@@ -302,22 +303,6 @@ private:
                 return forbid(f, Forbidden::LeftBehind, alive, kNil);
             }
         }
-    }
-
-    // Orientation of a ring: the turn at its lowest vertex, which is strictly convex on a
-    // simple ring (+1 counter-clockwise). Exact, and cheaper than summing the area.
-    int ringTurn(const Ring& ring) const {
-        Index low = 0;
-        for (Index i = 1; i < ring.count; ++i)
-            if (below(pts_[ring.first + i], pts_[ring.first + low])) low = i;
-        Point a = pts_[ring.first + (low + ring.count - 1) % ring.count];
-        Point c = pts_[ring.first + (low + 1) % ring.count];
-        int t = orient(a, pts_[ring.first + low], c);
-        if (t != 0) return t;
-        ExactSum area;  // degenerate corner: only on invalid rings; fall back to the area
-        for (Index i = 0; i < ring.count; ++i)
-            area.addCross(pts_[ring.first + i], pts_[ring.first + (i + 1) % ring.count]);
-        return area.sign();
     }
 
     uint32_t firstAliveNode(uint32_t from) const {

@@ -2,7 +2,11 @@
 // on their error: what decides a ring's orientation, or proves two sums differ, without exact
 // arithmetic whenever the bound allows — and ExactSum (predicates.h) when it does not. At 10^6
 // vertices the exact expansions were an eighth of `flood triangulate`'s time.
-// Internal to core/ (validate.cpp, checker.cpp), not a public API.
+// With ringOrientation below, the core's one place for a ring's orientation: the flood
+// machine orients its loops with ringOrientation; validation (whose check 3 asks for the area
+// anyway) and classifyVertices (the viewer's colours) take ringAreaSign. The exact checker
+// uses AreaEstimate alone, deliberately (checker.cpp says why).
+// Internal to core/, not a public API.
 #pragma once
 #include <cmath>
 #include <cstddef>
@@ -45,6 +49,17 @@ private:
 };
 
 // The exact sign of the doubled signed area of the ring of `count` vertices at `first`.
-int ringAreaSign(const Polygon& polygon, Index first, Index count);
+// +1 counter-clockwise, -1 clockwise, 0 zero area (as for any ring that is not simple).
+int ringAreaSign(const Point* ring, Index count);
+inline int ringAreaSign(const Polygon& polygon, Index first, Index count) {
+    return ringAreaSign(polygon.vertices.data() + first, count);
+}
+
+// The orientation of a ring as the flood machine takes it: the turn at its lowest vertex
+// (below()), strictly convex on a simple ring, so the same as ringAreaSign there and cheaper;
+// where that corner is flat (only on a ring that is not simple), ringAreaSign. On rings that
+// are not simple the two can differ, and the machine's choice decides which forbidden state
+// unvalidated input reaches (docs/ERRORS.md's forbidden-bad-triangle.json): kept as it is.
+int ringOrientation(const Point* ring, Index count);
 
 }  // namespace flood

@@ -82,3 +82,17 @@ TEST(RingArea, BoundCoversTheError) {
 }
 
 }  // namespace
+
+// The machine's orientation is the turn at the lowest vertex: the area's sign on a simple
+// ring, not on a figure eight whose small lower loop turns the other way from the whole.
+TEST(RingArea, OrientationIsTheTurnAtTheLowestVertex) {
+    const std::vector<Point> square = {{0, 0}, {2, 0}, {2, 2}, {0, 2}};
+    EXPECT_EQ(ringOrientation(square.data(), 4), 1);
+    const std::vector<Point> reversed(square.rbegin(), square.rend());
+    EXPECT_EQ(ringOrientation(reversed.data(), 4), -1);
+    const std::vector<Point> eight = {{0, 0}, {2, 0}, {-2, 4}, {2, 4}};
+    EXPECT_EQ(ringOrientation(eight.data(), 4), 1);
+    EXPECT_EQ(ringAreaSign(eight.data(), 4), -1);
+    const std::vector<Point> flatBottom = {{1, 0}, {0, 0}, {2, 0}, {1, 1}};  // a spike at (0, 0)
+    EXPECT_EQ(ringOrientation(flatBottom.data(), 4), ringAreaSign(flatBottom.data(), 4));
+}

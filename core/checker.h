@@ -8,10 +8,27 @@
 
 namespace flood {
 
+// The rules checker.cpp numbers, in the order they are checked. Rings (0) is what must hold
+// of the polygon before a triangle can be judged: rings long enough, indices that fit, and
+// (checked where rule 5 orients the rings) no ring of zero area.
+enum class CheckRule : int {
+    Rings = 0,
+    Indices = 1,          // every index in range
+    PartsAndCount = 2,    // one part per triangle, the count per part, splits inside their edge
+    CounterClockwise = 3, // every triangle counter-clockwise and non-degenerate
+    DistinctEdges = 4,    // no directed edge twice
+    BoundaryEdges = 5,    // every boundary edge once, from the inside
+    InteriorTwins = 6,    // every other edge has its reverse
+    Area = 7,             // the areas add up
+    PartsDisjoint = 8,    // parts do not overlap
+    None = -1             // every rule holds
+};
+
 struct CheckResult {
     bool ok = false;
     std::string reason;  // first rule broken, naming the triangle / edge / vertices
     Culprits culprits;   // the same triangle / vertices / ring as data
+    CheckRule rule = CheckRule::None;  // the rule `reason` says is broken (None when ok)
 };
 
 // Checks, exactly (no epsilon): triangle count n + 2h - 2 - 2d per part (d = vertices repeating

@@ -29,7 +29,9 @@
 #include <numeric>
 #include <sstream>
 
+#include "coincident.h"
 #include "predicates.h"
+#include "ring_area.h"
 #include "sag_banks.h"
 #include "sag_index.h"
 #include "work.h"
@@ -258,7 +260,7 @@ private:
             // Orient loops so the interior is on the left: outer counter-clockwise, holes
             // clockwise, whatever the file said.
             bool wantCcw = (r == pa.firstRing);
-            bool reverse = ring.count >= 3 && (ringTurn(ring) > 0) != wantCcw;
+            bool reverse = ring.count >= 3 && (ringOrientation(pts_ + ring.first, ring.count) > 0) != wantCcw;
             const uint32_t base = uint32_t(nodes_.size()), count = uint32_t(loop.size());
             for (uint32_t i = 0; i < count; ++i) {
                 Node nd;
@@ -332,69 +334,10 @@ private:
         }
     }
 
-    // Orientation of a ring: the turn at its lowest vertex, which is strictly convex on a
-    // simple ring (+1 counter-clockwise). Exact, and cheaper than summing the area.
-    int ringTurn(const Ring& ring) const {
-        Index low = 0;
-        for (Index i = 1; i < ring.count; ++i)
-            if (below(pts_[ring.first + i], pts_[ring.first + low])) low = i;
-        Point a = pts_[ring.first + (low + ring.count - 1) % ring.count];
-        Point c = pts_[ring.first + (low + 1) % ring.count];
-        int t = orient(a, pts_[ring.first + low], c);
-        if (t != 0) return t;
-        ExactSum area;  // degenerate corner: only on invalid rings; fall back to the area
-        for (Index i = 0; i < ring.count; ++i)
-            area.addCross(pts_[ring.first + i], pts_[ring.first + (i + 1) % ring.count]);
-        return area.sign();
-    }
-
     uint32_t firstAliveNode(uint32_t from) const {
         for (uint32_t n = from; n < nodes_.size(); ++n)
             if (nodes_[n].alive) return n;
         return kNil;
-    }
-
-    // Pairs (first node at a point, a later node at the same point), in the order of `nodes`;
-    // most polygons have none. Cache-friendly at any size: each node's point is hashed, the
-    // (hash, position) pairs are bucketed by the hash's top bits (a stable counting sort), and
-    // each bucket, small enough for the cache, is searched with its own open-addressing table.
-    std::vector<std::pair<uint32_t, uint32_t>> coincidentNodes(const std::vector<uint32_t>& nodes) const {
-        std::vector<std::pair<uint32_t, uint32_t>> copies;
-        const size_t n = nodes.size();
-        int bits = 0;
-        while (bits < 20 && (size_t(2048) << bits) < n) ++bits;  // about 2048 nodes a bucket
-        std::vector<uint64_t> hash(n);
-        std::vector<uint32_t> start((size_t(1) << bits) + 1, 0);
-        auto bucketOf = [&](uint64_t h) { return bits ? size_t(h >> (64 - bits)) : 0; };
-        for (size_t i = 0; i < n; ++i) {
-            hash[i] = pointHash(P(nodes[i]));
-            ++start[bucketOf(hash[i]) + 1];
-        }
-        for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
-        std::vector<std::pair<uint64_t, uint32_t>> byBucket(n);  // (hash, position in nodes)
-        std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-        for (size_t i = 0; i < n; ++i) byBucket[fill[bucketOf(hash[i])]++] = {hash[i], uint32_t(i)};
-        std::vector<uint32_t> table;  // positions into byBucket, kNil when empty
-        for (size_t k = 0; k + 1 < start.size(); ++k) {
-            size_t cap = 16;
-            while (cap < size_t(start[k + 1] - start[k]) * 2) cap <<= 1;
-            table.assign(cap, kNil);
-            for (uint32_t j = start[k]; j < start[k + 1]; ++j) {
-                auto [h, i] = byBucket[j];
-                for (size_t t = h & (cap - 1);; t = (t + 1) & (cap - 1)) {
-                    if (table[t] == kNil) {
-                        table[t] = j;
-                        break;
-                    }
-                    auto [h2, i2] = byBucket[table[t]];
-                    if (h2 == h && P(nodes[i2]) == P(nodes[i])) {
-                        copies.emplace_back(nodes[i2], nodes[i]);
-                        break;
-                    }
-                }
-            }
-        }
-        return copies;
     }
 
     // Rings touching at a point become one loop there: arriving at the point, the next edge
@@ -403,8 +346,10 @@ private:
     // angle, and each arrival takes the outgoing edge just before its own direction.
     // True when some point was shared (the loops may have changed).
     bool mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
-        std::vector<std::pair<uint32_t, uint32_t>> copies = coincidentNodes(partVertices);
+        std::vector<std::pair<uint32_t, uint32_t>> copies =
+            repeatedPoints(partVertices.size(), [&](size_t i) { return P(partVertices[i]); });
         if (copies.empty()) return false;
+        for (auto& [first, later] : copies) first = partVertices[first], later = partVertices[later];
         std::sort(copies.begin(), copies.end());
         std::vector<uint32_t> corner, newNext;
         std::vector<std::pair<Point, uint32_t>> outs;  // (where the edge goes, its passage)

@@ -2,9 +2,12 @@
 // WKT lives in io_wkt.cpp. Every problem becomes a Malformed diagnostic, never an exception
 // escaping to the caller and never a crash.
 //
-// JSON goes through nlohmann::json: it is a Debian package (nlohmann-json3-dev), header-only,
-// and its parse errors carry the byte position, which we turn into NAME:LINE:COL.
-// Its parser is recursive, so nesting depth is bounded by a cheap bracket scan first.
+// JSON is read first by the fast reader (io_json_fast.cpp, simdjson, no document tree); what
+// it cannot read as this file would goes through nlohmann::json here: a Debian package
+// (nlohmann-json3-dev), header-only, whose parse errors carry the byte position, which we turn
+// into NAME:LINE:COL. So nlohmann stays as the reader that explains failures, and for datasets
+// (`flood check`), whose per-feature properties want a tree. Its parser is recursive, so
+// nesting depth is bounded by a cheap bracket scan first.
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -13,9 +16,11 @@
 #include <cerrno>
 #include <cstring>
 #include <new>
+#include <optional>
 #include <nlohmann/json.hpp>
 
 #include "io.h"
+#include "io_json.h"
 #include "io_util.h"
 
 namespace flood {
@@ -25,28 +30,39 @@ ReadResult parseWkt(std::string_view text, const std::string& name);
 
 namespace io_detail {
 
-// Appends one ring as read to `rr.polygon`: repeated consecutive points are dropped with a
-// warning, then a closing point equal to the first is dropped silently.
-void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Point>& raw,
-                  bool outer) {
+// The ring's points as read are at `first`: repeated consecutive points are dropped with a warning, then a
+// closing point equal to the first is dropped silently.
+void cleanLastRing(ReadResult& rr, const std::string& name, Index first, bool outer) {
     const size_t ring = rr.polygon.rings.size();
-    std::vector<Point> pts;
-    pts.reserve(raw.size());
-    for (size_t i = 0; i < raw.size(); ++i) {
-        if (!pts.empty() && raw[i] == pts.back()) {
+    std::vector<Point>& v = rr.polygon.vertices;
+    const size_t count = v.size() - first;
+    size_t kept = 0;  // the cleaned points are v[first, first + kept): never ahead of the raw ones
+    for (size_t i = 0; i < count; ++i) {
+        const Point p = v[first + i];
+        if (kept && p == v[first + kept - 1]) {
             // The last point repeating the first is a closing point, not a duplicate (also
             // of a point hole, written [p, p]).
-            if (i + 1 == raw.size() && (pts.size() > 1 || i == 1) && raw[i] == pts.front()) continue;
+            if (i + 1 == count && (kept > 1 || i == 1) && p == v[first]) continue;
             rr.warn([&] {
                 return name + ": ring " + std::to_string(ring) + " vertex " + std::to_string(i) +
-                       " " + formatPoint(raw[i]) + ": repeated point dropped";
+                       " " + formatPoint(p) + ": repeated point dropped";
             });
             continue;
         }
-        pts.push_back(raw[i]);
+        v[first + kept++] = p;
     }
-    if (pts.size() >= 2 && pts.back() == pts.front()) pts.pop_back();
-    rr.polygon.addRing(pts, outer);
+    if (kept >= 2 && v[first + kept - 1] == v[first]) --kept;
+    v.resize(first + kept);
+    if (outer) rr.polygon.parts.push_back({Index(rr.polygon.rings.size()), 0});
+    rr.polygon.rings.push_back({first, Index(kept)});
+    rr.polygon.parts.back().ringCount++;
+}
+
+void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Point>& raw,
+                  bool outer) {
+    const Index first = Index(rr.polygon.vertices.size());
+    rr.polygon.vertices.insert(rr.polygon.vertices.end(), raw.begin(), raw.end());
+    cleanLastRing(rr, name, first, outer);
 }
 
 }  // namespace io_detail
@@ -167,7 +183,9 @@ void readGeometry(ReadResult& rr, const std::string& name, const json& g, const 
     }
 }
 
-ReadResult parseJson(std::string_view text, const std::string& name) {
+}  // namespace
+
+ReadResult io_detail::parseJsonTree(std::string_view text, const std::string& name) {
     ReadResult rr;
     size_t deep = tooDeep(text);
     if (deep != std::string_view::npos) {
@@ -224,9 +242,10 @@ ReadResult parseJson(std::string_view text, const std::string& name) {
     return rr;
 }
 
-}  // namespace
+namespace {
 
-ReadResult parsePolygon(std::string_view text, const std::string& name) {
+// `capacity` is how many bytes from text.data() may be read (the fast reader reads ahead).
+ReadResult parseText(std::string_view text, size_t capacity, const std::string& name) {
     size_t nul = text.find('\0');
     if (nul != std::string_view::npos) {
         ReadResult rr;
@@ -241,8 +260,20 @@ ReadResult parsePolygon(std::string_view text, const std::string& name) {
         rr.diagnostic = {Status::Malformed, name + ":1:1: empty input, no polygon"};
         return rr;
     }
-    if (text[i] == '[' || text[i] == '{') return parseJson(text, name);
+    if (text[i] == '[' || text[i] == '{') {
+        if (std::optional<ReadResult> fast = io_detail::parseJsonFast(text, capacity, i, name))
+            return std::move(*fast);
+        return io_detail::parseJsonTree(text, name);
+    }
     return parseWkt(text, name);
+}
+
+}  // namespace
+
+ReadResult parsePolygon(std::string_view text, const std::string& name) {
+    ReadResult rr = parseText(text, text.size(), name);
+    rr.polygon.vertices.shrink_to_fit();
+    return rr;
 }
 
 // POSIX reads, not iostreams: they give the system's reason (errno) for each failure.
@@ -267,7 +298,8 @@ Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t ma
                                            " bytes (--max-input-bytes)"};
     }
     try {
-        if (S_ISREG(st.st_mode)) text.reserve(size_t(st.st_size));
+        // The padding lets the fast JSON reader read ahead without a copy of the text.
+        if (S_ISREG(st.st_mode)) text.reserve(size_t(st.st_size) + io_detail::kReadAhead);
         char buf[1 << 16];
         for (;;) {
             ssize_t k = ::read(fd, buf, sizeof buf);
@@ -305,7 +337,14 @@ ReadResult readPolygonFile(const std::string& path, uint64_t maxBytes) {
         rr.diagnostic = d;
         return rr;
     }
-    return parsePolygon(text, path == "-" ? "<stdin>" : path);
+    if (text.capacity() < text.size() + io_detail::kReadAhead)
+        text.reserve(text.size() + io_detail::kReadAhead);
+    ReadResult rr = parseText(text, text.capacity(), path == "-" ? "<stdin>" : path);
+    // The vertices' spare room is given back after the text, so the two copies of them that
+    // shrinking makes never coexist with it.
+    std::string().swap(text);
+    rr.polygon.vertices.shrink_to_fit();
+    return rr;
 }
 
 // Splitting a dataset for `flood check`. Only a document that mentions "FeatureCollection"

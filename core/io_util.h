@@ -1,5 +1,6 @@
 // Small helpers shared by the file-format code (internal to core/, not a public API).
 #pragma once
+#include <algorithm>
 #include <charconv>
 #include <cstddef>
 #include <string>
@@ -11,13 +12,18 @@ namespace flood::io_detail {
 
 // Shortest decimal text that reads back as the same double ("nan", "inf", "-inf" for the
 // non-finite values, which JSON cannot hold but messages and WKT can).
+// Writes it at `to` (room for kDoubleChars) and returns the end.
+constexpr size_t kDoubleChars = 32;
+inline char* writeDouble(char* to, double v) {
+    auto copy = [to](const char* s, size_t k) { return std::copy(s, s + k, to); };
+    if (v != v) return copy("nan", 3);
+    if (v == 1.0 / 0.0) return copy("inf", 3);
+    if (v == -1.0 / 0.0) return copy("-inf", 4);
+    return std::to_chars(to, to + kDoubleChars, v).ptr;
+}
 inline std::string formatDouble(double v) {
-    if (v != v) return "nan";
-    if (v == 1.0 / 0.0) return "inf";
-    if (v == -1.0 / 0.0) return "-inf";
-    char buf[32];
-    auto r = std::to_chars(buf, buf + sizeof buf, v);
-    return std::string(buf, r.ptr);
+    char buf[kDoubleChars];
+    return std::string(buf, writeDouble(buf, v));
 }
 
 inline std::string formatPoint(Point p) {
@@ -83,6 +89,10 @@ inline std::string where(const std::string& name, std::string_view text, size_t 
     LineCol lc = lineColAt(text, offset);
     return name + ":" + std::to_string(lc.line) + ":" + std::to_string(lc.col);
 }
+
+// Bytes the fast JSON reader may read past the end of its text (simdjson's SIMDJSON_PADDING,
+// checked in io_json_fast.cpp): readInputFile leaves that much spare capacity.
+constexpr size_t kReadAhead = 64;
 
 // nlohmann's parser recurses once per nesting level: deeper documents are refused up front.
 constexpr int kMaxJsonDepth = 64;

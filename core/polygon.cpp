@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "coincident.h"
+
 namespace flood {
 
 Index Polygon::ringOf(Index v) const {
@@ -18,12 +20,7 @@ size_t Polygon::expectedTriangles() const {
         size_t n = last.first + last.count - first;
         // Each extra copy of a point (rings touching there) takes 2pi from the angle sum,
         // so two triangles fewer.
-        std::vector<Point> pts(vertices.begin() + first, vertices.begin() + first + long(n));
-        for (Point& q : pts) q = {q.x + 0.0, q.y + 0.0};
-        std::sort(pts.begin(), pts.end(),
-                  [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-        size_t copies = 0;
-        for (size_t i = 1; i < pts.size(); ++i) copies += pts[i] == pts[i - 1];
+        const size_t copies = repeatedPoints(n, [&](size_t i) { return vertices[first + i]; }).size();
         // A T-junction adds a boundary node at a point that is already a vertex: one node
         // more, one copy more. A single-point hole has one vertex but turns by 0, not 2pi.
         size_t junctions = 0, points = 0;

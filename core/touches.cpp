@@ -7,15 +7,17 @@
 // insideSegment(). A point on the edge lies in every box above it, so none is missed.
 //
 // Nothing here compares two edges, so crossing or overlapping edges cannot make an order
-// inconsistent. Cost: O(m log m) to sort and build; per edge, the nodes its segment meets —
-// O(log m) for an edge as short as its neighbourhood, O(sqrt m) at most for a long one — plus
-// the points of those leaves. Clustered adversaries (many long edges through dense points) can
+// inconsistent. Cost: O(m log m) to build the tree (its distinct points found by
+// coincident.h's hash); per edge, the nodes its segment meets — O(log m) for an edge as
+// short as its neighbourhood, O(sqrt m) at most for a long one — plus the points of those
+// leaves. Clustered adversaries (many long edges through dense points) can
 // still make it super-linear, hence the cap.
 #include "touches.h"
 
 #include <algorithm>
 #include <cmath>
 
+#include "coincident.h"
 #include "predicates.h"
 #include "work.h"
 
@@ -116,20 +118,20 @@ struct PartSearch {
     }
 
     bool run(uint64_t cap) {
-        std::vector<Index> byPoint;
+        std::vector<Index> vertices;
         for (Index v = firstVertex; v < endVertex; ++v)
-            if (P.rings[ring(v)].count > 1) byPoint.push_back(v);  // a point hole touches nothing
-        std::sort(byPoint.begin(), byPoint.end(), [&](Index u, Index v) {
-            Point p = pt(u), q = pt(v);
-            return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && u < v)));
-        });
-        for (size_t i = 0; i < byPoint.size();) {
-            size_t j = i;
-            Spot s{pt(byPoint[i]), byPoint[i], kNone};
-            for (; j < byPoint.size() && pt(byPoint[j]) == s.p; ++j)
-                if (s.other == kNone && ring(byPoint[j]) != ring(s.lowest)) s.other = byPoint[j];
-            spots.push_back(s);
-            i = j;
+            if (P.rings[ring(v)].count > 1) vertices.push_back(v);  // a point hole touches nothing
+        // A spot per distinct point, at its lowest vertex; each later copy (in vertex order
+        // within a point, as repeatedPoints gives them) may be the lowest of another ring.
+        std::vector<std::pair<uint32_t, uint32_t>> copies =
+            repeatedPoints(vertices.size(), [&](size_t i) { return pt(vertices[i]); });
+        std::vector<Index> spotOf(vertices.size(), kNone);
+        for (auto [first, later] : copies) spotOf[later] = 0;  // not a spot of its own
+        for (size_t i = 0; i < vertices.size(); ++i)
+            if (spotOf[i] == kNone) spotOf[i] = Index(spots.size()), spots.push_back({pt(vertices[i]), vertices[i], kNone});
+        for (auto [first, later] : copies) {
+            Spot& s = spots[spotOf[first]];
+            if (s.other == kNone && ring(vertices[later]) != ring(s.lowest)) s.other = vertices[later];
         }
         steps += spots.size();
         if (spots.empty()) return true;

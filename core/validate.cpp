@@ -5,7 +5,7 @@
 //   1. every coordinate is finite;
 //   2. every ring has at least 3 distinct points and no zero-length edge — except a hole of
 //      exactly one point, a Steiner point the triangulation must use;
-//   3. every ring has a non-zero signed area (exact, ExactSum) — reported after check 4 has
+//   3. every ring has a non-zero signed area (exact: ring_area.h) — reported after check 4 has
 //      looked for a crossing, so a symmetric bow-tie is called a self-crossing;
 //   4. no two edges of the polygon (all parts) cross or overlap collinearly; a spike (an edge
 //      folding back on the previous one) counts as an overlap. A vertex lying in the interior
@@ -26,18 +26,21 @@
 //
 // All decisions use the exact flood::orient() and coordinate comparisons; no floating-point
 // arithmetic decides anything. Cost: O(n log n) — a sort of the vertices for the sweep, a
-// sort for coincident vertices, a balanced-tree sweep with O(1) tests per event, and at a point
-// shared by k rings a sort of their 2k rays and O(log k) per ring to find a crossing
-// (validatorSteps in core/work.h counts the work, tests/validate_growth_test.cpp bounds it).
+// hash search for coincident vertices (coincident.h) and a sort of those, a treap sweep
+// (sweep_tree.h) with O(1) tests per event, and at a point shared by k rings a sort of their
+// 2k rays and O(log k) per ring to find a crossing (validatorSteps in core/work.h counts the
+// work, tests/validate_growth_test.cpp bounds it).
 #include <algorithm>
 #include <cmath>
 #include <optional>
-#include <set>
 #include <string>
 
 #include "io.h"
+#include "coincident.h"
 #include "io_util.h"
 #include "predicates.h"
+#include "ring_area.h"
+#include "sweep_tree.h"
 #include "work.h"
 
 namespace flood {
@@ -118,13 +121,17 @@ struct Validator {
 
     Diagnostic run();
     Diagnostic checkRings();
-    Diagnostic checkEdges();
+    Diagnostic checkEdges();  // sweepEdges(), then orderJunctions()
+    void sweepEdges();
+    void classifyMeeting(Index e, Index f);
+    void touchOnEdge(Index vertex, Index edge);
+    void orderJunctions();
+    std::optional<std::pair<Index, std::string>> problem;  // check 4's: vertex to report, reason
+    Culprits problemCulprits;                               // and what else it names
     Diagnostic checkSharedVertices();
     Diagnostic checkTouchTopology();
     Diagnostic checkHoles();
 
-    // Vertices sorted by coordinates; groups of equal coordinates with more than one member.
-    std::vector<Index> byCoord;
     std::vector<Index> groupOf;  // touch point (index into touchPoints) of each vertex, or kNone
     std::vector<Index> enclosing;  // innermost ring whose interior contains each ring
 
@@ -164,6 +171,25 @@ bool sameDirection(Point p, Point a, Point b) {
     return half(p, a) == half(p, b) && orient(p, a, b) == 0;
 }
 
+// The vertices in the order of `less` on their points, ties by index. Sorted as (point,
+// index) records, so no comparison reaches into the vertex array: at 10^6 vertices a sort of
+// bare indices spent most of its time waiting for memory.
+template <typename Less>
+std::vector<Index> sortedVertices(const std::vector<Point>& V, Less less) {
+    struct Key {
+        Point p;
+        Index v;
+    };
+    std::vector<Key> keys(V.size());
+    for (Index v = 0; v < V.size(); ++v) keys[v] = {V[v], v};
+    std::sort(keys.begin(), keys.end(), [&](const Key& a, const Key& b) {
+        return less(a.p, b.p) || (a.p == b.p && a.v < b.v);
+    });
+    std::vector<Index> order(V.size());
+    for (size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].v;
+    return order;
+}
+
 // --- checks 1 to 3: coordinates and rings ------------------------------------------------
 
 Diagnostic Validator::checkRings() {
@@ -182,15 +208,23 @@ Diagnostic Validator::checkRings() {
         }
         bool outer = P.parts[partOfRing[r]].firstRing == r;
         if (ring.count == 1 && !outer) continue;  // a Steiner point
-        tmp.assign(P.vertices.begin() + ring.first, P.vertices.begin() + ring.first + ring.count);
-        std::sort(tmp.begin(), tmp.end(),
-                  [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
-        size_t distinct = std::unique(tmp.begin(), tmp.end()) - tmp.begin();
-        if (distinct < 3)
-            return fail(ring.first, "ring has " + std::to_string(distinct) +
-                                        " distinct point" + (distinct == 1 ? "" : "s") +
-                                        ", at least 3 are needed" +
-                                        (outer ? "" : " (or exactly one, a point hole)"));
+        // Three distinct points are usually among the first few: then nothing is sorted.
+        const Point* q = P.vertices.data() + ring.first;
+        Index second = 1;
+        while (second < ring.count && q[second] == q[0]) ++second;
+        Index third = second + 1;
+        while (third < ring.count && (q[third] == q[0] || q[third] == q[second])) ++third;
+        if (third >= ring.count) {
+            tmp.assign(q, q + ring.count);
+            std::sort(tmp.begin(), tmp.end(),
+                      [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+            size_t distinct = std::unique(tmp.begin(), tmp.end()) - tmp.begin();
+            if (distinct < 3)
+                return fail(ring.first, "ring has " + std::to_string(distinct) +
+                                            " distinct point" + (distinct == 1 ? "" : "s") +
+                                            ", at least 3 are needed" +
+                                            (outer ? "" : " (or exactly one, a point hole)"));
+        }
         for (Index v = ring.first; v < ring.first + ring.count; ++v)
             if (pt(v) == pt(next(v)))
                 return fail(v, "repeated consecutive point (zero-length edge)", atPoint(v, {v}));
@@ -199,9 +233,7 @@ Diagnostic Validator::checkRings() {
     for (Index r = 0; r < P.rings.size(); ++r) {
         const Ring& ring = P.rings[r];
         if (ring.count == 1) continue;  // a point hole (an outer ring of one point failed above)
-        ExactSum area;
-        for (Index v = ring.first; v < ring.first + ring.count; ++v) area.addCross(pt(v), pt(next(v)));
-        ringSign[r] = area.sign();
+        ringSign[r] = ringAreaSign(P, ring.first, ring.count);
         if (ringSign[r] == 0 && !zeroArea) zeroArea = ring.first;
     }
     return {};
@@ -217,123 +249,123 @@ Diagnostic Validator::checkRings() {
 // order. The same sweep records, for each ring, the ring whose interior immediately encloses
 // it (the edge just left of the ring's lowest vertex tells), used by check 6.
 
+// An edge as the sweep sees it: its lower and upper vertex (both the vertex of a point hole).
+// Vertex indices, not points: 8 bytes an edge.
 struct Segment {
-    Point lo, hi;  // lo below hi
-    Index e;       // the edge: vertex e -> next(e)
-    bool up;       // the ring runs from lo to hi along this edge
+    Index lo, hi;
 };
 
 struct SweepOrder {
     const std::vector<Segment>* segs;
+    const Point* at;  // the polygon's vertices
     // a before b along the sweep line (a left of b), both active at the current event.
     bool operator()(Index ia, Index ib) const {
         if (ia == ib) return false;
-        const Segment& a = (*segs)[ia];
-        const Segment& b = (*segs)[ib];
-        if (!below(a.lo, b.lo)) {  // a starts at or after b: place a.lo against b
-            int o = orient(b.lo, b.hi, a.lo);
-            if (o == 0) o = orient(b.lo, b.hi, a.hi);
+        const Point alo = at[(*segs)[ia].lo], ahi = at[(*segs)[ia].hi];
+        const Point blo = at[(*segs)[ib].lo], bhi = at[(*segs)[ib].hi];
+        if (!below(alo, blo)) {  // a starts at or after b: place a.lo against b
+            int o = orient(blo, bhi, alo);
+            if (o == 0) o = orient(blo, bhi, ahi);
             if (o != 0) return o > 0;
         } else {
-            int o = orient(a.lo, a.hi, b.lo);
-            if (o == 0) o = orient(a.lo, a.hi, b.hi);
+            int o = orient(alo, ahi, blo);
+            if (o == 0) o = orient(alo, ahi, bhi);
             if (o != 0) return o < 0;
         }
         return ia < ib;  // collinear: an overlap, reported when they are tested
     }
 };
 
-Diagnostic Validator::checkEdges() {
+// How edges e and f meet, when the sweep finds them side by side: apart, crossing,
+// overlapping, folding back (a spike), or touching (a vertex strictly inside the other's edge,
+// a junction). The first problem found is kept in `problem`; later calls do nothing.
+void Validator::classifyMeeting(Index e, Index f) {
+    ++work().validatorSteps;
+    if (problem || e == f) return;
+    if (isPoint(f)) std::swap(e, f);
+    Point a = pt(e), b = pt(next(e)), c = pt(f), d = pt(next(f));
+    if (isPoint(e)) {  // a point against an edge (or another point: met in check 5)
+        if (!isPoint(f) && insideSegment(c, d, a)) touchOnEdge(e, f);
+        return;
+    }
+    // Adjacent edges of one ring meet at their shared vertex; only a spike is wrong.
+    bool adjacent = false;
+    for (int k = 0; k < 2; ++k) {
+        Index e1 = k ? f : e, e2 = k ? e : f;
+        if (next(e1) != e2) continue;
+        adjacent = true;
+        Point p = pt(e1), q = pt(e2), s = pt(next(e2));
+        if (orient(p, q, s) == 0 && sameDirection(q, p, s)) {
+            problemCulprits = atPoint(e2, {e1, e2});
+            problem.emplace(e2, "the ring folds back on itself here (spike): edge " +
+                                    edgeText(e1) + " overlaps the next edge");
+            return;
+        }
+    }
+    if (adjacent) return;
+    int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+    Index lo = std::min(e, f), hi = std::max(e, f);
+    if (o1 * o2 < 0 && o3 * o4 < 0) {
+        edgesCrossed = true;
+        problemCulprits = {};
+        problemCulprits.edges = {lo, hi};  // no exact double point: the viewer computes one
+        problem.emplace(lo, "edge " + edgeText(lo) + " crosses edge " + edgeText(hi));
+        return;
+    }
+    if (o1 == 0 && o2 == 0 && o3 == 0 && o4 == 0) {
+        bool useX = a.x != b.x;
+        auto key = [&](Point p) { return useX ? p.x : p.y; };
+        double l = std::max(std::min(key(a), key(b)), std::min(key(c), key(d)));
+        double h = std::min(std::max(key(a), key(b)), std::max(key(c), key(d)));
+        if (l < h) problemCulprits = {}, problemCulprits.edges = {lo, hi};
+        if (l < h)
+            problem.emplace(lo, "edge " + edgeText(lo) + " overlaps collinear edge " +
+                                    edgeText(hi));
+        return;
+    }
+    if (o1 == 0 && insideSegment(a, b, c)) touchOnEdge(f, e);
+    else if (o2 == 0 && insideSegment(a, b, d)) touchOnEdge(next(f), e);
+    else if (o3 == 0 && insideSegment(c, d, a)) touchOnEdge(e, f);
+    else if (o4 == 0 && insideSegment(c, d, b)) touchOnEdge(next(e), f);
+}
+
+// `vertex` lies strictly inside `edge`: a touch between rings (a junction, checked in check 5),
+// refused on its own ring or for a point.
+void Validator::touchOnEdge(Index vertex, Index edge) {
+    if (isPoint(vertex) || ringOfV[vertex] == ringOfV[edge]) problemCulprits = atPoint(vertex, {edge});
+    if (isPoint(vertex))
+        problem.emplace(vertex, "point hole lies on edge " + edgeText(edge) +
+                                    " (a Steiner point must be strictly inside the polygon)");
+    else if (ringOfV[vertex] == ringOfV[edge])
+        problem.emplace(vertex, "the ring touches itself here: the vertex lies on its own edge " +
+                                    edgeText(edge) + " (a ring must be simple)");
+    else
+        junctions.push_back({edge, vertex});
+}
+
+// The sweep: every pair of edges that become neighbours along the sweep line goes to
+// classifyMeeting(); it stops at the first problem. Also fills enclosing[].
+void Validator::sweepEdges() {
     std::vector<Segment> segs(n);
     for (Index v = 0; v < n; ++v) {
-        Point a = pt(v), b = pt(next(v));
-        bool up = below(a, b);
-        segs[v] = {up ? a : b, up ? b : a, v, up};
+        Index w = next(v);
+        segs[v] = below(pt(v), pt(w)) ? Segment{v, w} : Segment{w, v};
     }
-    std::vector<Index> events(n);
-    for (Index v = 0; v < n; ++v) events[v] = v;
-    std::sort(events.begin(), events.end(), [&](Index a, Index b) {
-        return below(pt(a), pt(b)) || (pt(a) == pt(b) && a < b);
-    });
-
-    std::optional<std::pair<Index, std::string>> problem;  // vertex to report, reason
-    Culprits problemCulprits;                               // and what else it names
-    // `vertex` lies strictly inside `edge`: a touch between rings (checked in check 5),
-    // refused on its own ring or for a point.
-    auto onEdge = [&](Index vertex, Index edge) {
-        if (isPoint(vertex) || ringOfV[vertex] == ringOfV[edge]) problemCulprits = atPoint(vertex, {edge});
-        if (isPoint(vertex))
-            problem.emplace(vertex, "point hole lies on edge " + edgeText(edge) +
-                                        " (a Steiner point must be strictly inside the polygon)");
-        else if (ringOfV[vertex] == ringOfV[edge])
-            problem.emplace(vertex, "the ring touches itself here: the vertex lies on its own edge " +
-                                        edgeText(edge) + " (a ring must be simple)");
-        else
-            junctions.push_back({edge, vertex});
-    };
-    auto testPair = [&](Index e, Index f) {
-        ++work().validatorSteps;
-        if (problem || e == f) return;
-        if (isPoint(f)) std::swap(e, f);
-        Point a = pt(e), b = pt(next(e)), c = pt(f), d = pt(next(f));
-        if (isPoint(e)) {  // a point against an edge (or another point: met in check 5)
-            if (!isPoint(f) && insideSegment(c, d, a)) onEdge(e, f);
-            return;
-        }
-        // Adjacent edges of one ring meet at their shared vertex; only a spike is wrong.
-        bool adjacent = false;
-        for (int k = 0; k < 2; ++k) {
-            Index e1 = k ? f : e, e2 = k ? e : f;
-            if (next(e1) != e2) continue;
-            adjacent = true;
-            Point p = pt(e1), q = pt(e2), s = pt(next(e2));
-            if (orient(p, q, s) == 0 && sameDirection(q, p, s)) {
-                problemCulprits = atPoint(e2, {e1, e2});
-                problem.emplace(e2, "the ring folds back on itself here (spike): edge " +
-                                        edgeText(e1) + " overlaps the next edge");
-                return;
-            }
-        }
-        if (adjacent) return;
-        int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
-        Index lo = std::min(e, f), hi = std::max(e, f);
-        if (o1 * o2 < 0 && o3 * o4 < 0) {
-            edgesCrossed = true;
-            problemCulprits = {};
-            problemCulprits.edges = {lo, hi};  // no exact double point: the viewer computes one
-            problem.emplace(lo, "edge " + edgeText(lo) + " crosses edge " + edgeText(hi));
-            return;
-        }
-        if (o1 == 0 && o2 == 0 && o3 == 0 && o4 == 0) {
-            bool useX = a.x != b.x;
-            auto key = [&](Point p) { return useX ? p.x : p.y; };
-            double l = std::max(std::min(key(a), key(b)), std::min(key(c), key(d)));
-            double h = std::min(std::max(key(a), key(b)), std::max(key(c), key(d)));
-            if (l < h) problemCulprits = {}, problemCulprits.edges = {lo, hi};
-            if (l < h)
-                problem.emplace(lo, "edge " + edgeText(lo) + " overlaps collinear edge " +
-                                        edgeText(hi));
-            return;
-        }
-        if (o1 == 0 && insideSegment(a, b, c)) onEdge(f, e);
-        else if (o2 == 0 && insideSegment(a, b, d)) onEdge(next(f), e);
-        else if (o3 == 0 && insideSegment(c, d, a)) onEdge(e, f);
-        else if (o4 == 0 && insideSegment(c, d, b)) onEdge(next(e), f);
-    };
-
-    using Tree = std::set<Index, SweepOrder>;
-    Tree active(SweepOrder{&segs});
-    std::vector<Tree::iterator> where(n, active.end());
+    // The ring runs from lo to hi along edge e (false for a point hole).
+    auto up = [&](Index e) { return segs[e].lo == e && segs[e].hi != e; };
+    const std::vector<Index> events =
+        sortedVertices(P.vertices, [](Point a, Point b) { return below(a, b); });
+    SweepTree<SweepOrder> active(n, SweepOrder{&segs, P.vertices.data()});
     enclosing.assign(P.rings.size(), kNone);
     std::vector<char> ringSeen(P.rings.size(), 0);
     std::vector<Index> ending, starting, points, newRings;
     std::vector<Index> leftmostOf(P.rings.size(), kNone);  // of each ring starting at the event
-    // The ring whose interior holds what is just right of the active edge before `it`.
-    auto enclosingAt = [&](Tree::iterator it) {
-        if (it == active.begin()) return kNone;  // nothing to the left: outside everything
-        const Segment& t = segs[*std::prev(it)];
-        Index tr = ringOfV[t.e];
-        bool rightIsInside = t.up ? ringSign[tr] < 0 : ringSign[tr] > 0;
+    // The ring whose interior holds what is just right of the active edge before `e`.
+    auto enclosingAt = [&](Index e) {
+        Index left = active.prev(e);
+        if (left == kNone) return kNone;  // nothing to the left: outside everything
+        Index tr = ringOfV[left];
+        bool rightIsInside = up(left) ? ringSign[tr] < 0 : ringSign[tr] > 0;
         return rightIsInside ? tr : enclosing[tr];
     };
     for (size_t i = 0; i < n && !problem;) {
@@ -347,33 +379,30 @@ Diagnostic Validator::checkEdges() {
                 points.push_back(v);
                 continue;
             }
-            for (Index e : {prev(v), v}) (segs[e].hi == p ? ending : starting).push_back(e);
+            for (Index e : {prev(v), v}) (pt(segs[e].hi) == p ? ending : starting).push_back(e);
             if (!ringSeen[r]) ringSeen[r] = 1, newRings.push_back(r);  // 2 once placed
         }
         i = j;
         for (Index e : ending) {
-            auto it = where[e];
-            Index before = kNone, after = kNone;
-            if (it != active.begin()) testPair(e, before = *std::prev(it));
-            if (std::next(it) != active.end()) testPair(e, after = *std::next(it));
-            active.erase(it);
-            where[e] = active.end();
-            if (before != kNone && after != kNone) testPair(before, after);
+            Index before = active.prev(e), after = active.next(e);
+            if (before != kNone) classifyMeeting(e, before);
+            if (after != kNone) classifyMeeting(e, after);
+            active.erase(e);
+            if (before != kNone && after != kNone) classifyMeeting(before, after);
         }
         for (Index e : starting) {
-            auto it = active.insert(e).first;
-            where[e] = it;
-            if (it != active.begin()) testPair(e, *std::prev(it));
-            if (std::next(it) != active.end()) testPair(e, *std::next(it));
+            active.insert(e);
+            if (Index before = active.prev(e); before != kNone) classifyMeeting(e, before);
+            if (Index after = active.next(e); after != kNone) classifyMeeting(e, after);
         }
         // A point hole is an edge of no length: placed in the active edges for an instant,
         // its neighbours tell whether it lies on an edge and which ring encloses it.
         for (Index v : points) {
-            auto it = active.insert(v).first;
-            if (it != active.begin()) testPair(v, *std::prev(it));
-            if (std::next(it) != active.end()) testPair(v, *std::next(it));
-            enclosing[ringOfV[v]] = enclosingAt(it);
-            active.erase(it);
+            active.insert(v);
+            if (Index before = active.prev(v); before != kNone) classifyMeeting(v, before);
+            if (Index after = active.next(v); after != kNone) classifyMeeting(v, after);
+            enclosing[ringOfV[v]] = enclosingAt(v);
+            active.erase(v);
         }
         if (problem) break;
         // Rings whose lowest vertex is p, left to right: the edge just left of a ring's
@@ -382,18 +411,20 @@ Diagnostic Validator::checkEdges() {
         for (Index e : starting) {
             ++work().validatorSteps;
             Index r = ringOfV[e], &best = leftmostOf[r];
-            if (ringSeen[r] == 1 && (best == kNone || active.key_comp()(e, best))) best = e;
+            if (ringSeen[r] == 1 && (best == kNone || active.less()(e, best))) best = e;
         }
         std::vector<std::pair<Index, Index>> leftmost;  // (leftmost edge, ring)
         for (Index r : newRings) leftmost.push_back({leftmostOf[r], r}), ringSeen[r] = 2;
         std::sort(leftmost.begin(), leftmost.end(), [&](auto a, auto b) {
-            return active.key_comp()(a.first, b.first);
+            return active.less()(a.first, b.first);
         });
-        for (auto [e, r] : leftmost) enclosing[r] = enclosingAt(where[e]);
+        for (auto [e, r] : leftmost) enclosing[r] = enclosingAt(e);
     }
-    if (problem) return fail(problem->first, problem->second, problemCulprits);
-    // One junction per edge and point, ordered by edge, then along the edge from its start
-    // (the order the flood machine and the checker walk it in).
+}
+
+// One junction per edge and point, ordered by edge, then along the edge from its start
+// (the order the flood machine and the checker walk it in).
+void Validator::orderJunctions() {
     std::sort(junctions.begin(), junctions.end(), [&](const EdgeSplit& s, const EdgeSplit& t) {
         if (s.edge != t.edge) return s.edge < t.edge;
         Point a = pt(s.edge), b = pt(next(s.edge)), p = pt(s.vertex), q = pt(t.vertex);
@@ -405,6 +436,12 @@ Diagnostic Validator::checkEdges() {
                                     return s.edge == t.edge && pt(s.vertex) == pt(t.vertex);
                                 }),
                     junctions.end());
+}
+
+Diagnostic Validator::checkEdges() {
+    sweepEdges();
+    if (problem) return fail(problem->first, problem->second, problemCulprits);
+    orderJunctions();
     return {};
 }
 
@@ -414,26 +451,26 @@ Diagnostic Validator::checkEdges() {
 // of every T-junction, which passes straight through its vertex's point. Then picks the
 // machine's splits: a junction whose edge's part has a vertex at the point (the lowest one).
 void Validator::collectTouchPoints() {
-    byCoord.resize(n);
-    for (Index v = 0; v < n; ++v) byCoord[v] = v;
-    std::sort(byCoord.begin(), byCoord.end(), [&](Index a, Index b) {
-        Point p = pt(a), q = pt(b);
-        return p.x < q.x || (p.x == q.x && (p.y < q.y || (p.y == q.y && a < b)));
+    // The repeated points (most inputs have none), in coordinate order (x, then y), each
+    // point's vertices by index: (first vertex there, a later one) sorted so.
+    std::vector<std::pair<Index, Index>> copies = repeatedPoints(n, [&](size_t v) { return pt(Index(v)); });
+    std::sort(copies.begin(), copies.end(), [&](std::pair<Index, Index> a, std::pair<Index, Index> b) {
+        Point p = pt(a.first), q = pt(b.first);
+        if (p.x != q.x) return p.x < q.x;
+        if (p.y != q.y) return p.y < q.y;
+        return a.second < b.second;
     });
     groupOf.assign(n, kNone);
     auto vertexOccurrence = [&](Index v) { return Occurrence{v, ringOfV[v], pt(prev(v)), pt(next(v))}; };
-    for (Index i = 0; i < n;) {
-        Index j = i + 1;
-        while (j < n && pt(byCoord[j]) == pt(byCoord[i])) ++j;
-        if (j - i > 1) {
-            std::vector<Occurrence> occ;
-            for (Index k = i; k < j; ++k) {
-                groupOf[byCoord[k]] = Index(touchPoints.size());
-                occ.push_back(vertexOccurrence(byCoord[k]));
-            }
-            touchPoints.push_back(std::move(occ));
+    for (size_t i = 0; i < copies.size();) {
+        const Index first = copies[i].first, group = Index(touchPoints.size());
+        groupOf[first] = group;
+        std::vector<Occurrence> occ{vertexOccurrence(first)};
+        for (; i < copies.size() && copies[i].first == first; ++i) {
+            groupOf[copies[i].second] = group;
+            occ.push_back(vertexOccurrence(copies[i].second));
         }
-        i = j;
+        touchPoints.push_back(std::move(occ));
     }
     for (Index k = 0; k < junctions.size(); ++k) {
         Index v = junctions[k].vertex, e = junctions[k].edge;

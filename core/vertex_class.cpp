@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "predicates.h"
+#include "ring_area.h"
 
 namespace flood {
 
@@ -28,9 +29,8 @@ std::vector<VertexClass> classifyVertices(const Polygon& polygon, Up up) {
         // Outer rings of a part come first: holes must turn the other way.
         bool isOuter = false;
         for (const Part& p : polygon.parts) isOuter |= (p.firstRing == r);
-        ExactSum area2;
-        for (Index i = 0; i < ring.count; ++i) area2.addCross(v[ring.first + i], v[ring.first + (i + 1) % ring.count]);
-        bool reversed = isOuter ? area2.sign() < 0 : area2.sign() > 0;
+        const int sign = ringAreaSign(polygon, ring.first, ring.count);
+        bool reversed = isOuter ? sign < 0 : sign > 0;
         for (Index i = 0; i < ring.count; ++i) {
             Point prev = v[ring.first + (i + ring.count - 1) % ring.count];
             Point cur = v[ring.first + i];

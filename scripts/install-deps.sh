@@ -6,6 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake pkg-config ninja-build
   nlohmann-json3-dev libcli11-dev libgmp-dev          # core + CLI
+  libsimdjson-dev                                     #   the fast JSON reader
   libgtest-dev libbenchmark-dev                       # tests, benchmarks
   libgeos-dev                                         # GEOS, the validity oracle of tests/geos_diff_test.cpp
   libgdal-dev gdal-bin                                # GIS formats through GDAL (core_gdal/, optional)

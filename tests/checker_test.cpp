@@ -264,3 +264,34 @@ TEST(Checker, PointHolesMustBeUsed) {
     outerPoint.addRing({{1, 1}}, true);
     EXPECT_TRUE(rejected(outerPoint, {}, "ring-too-short"));
 }
+
+// The failed rule comes as data (CheckResult::rule), the number checker.cpp gives it: each
+// rejection above, by rule. Rule 7 (area) is implied by rules 3-6, so no input reaches it.
+TEST(Checker, ReportsTheFailedRule) {
+    using flood::CheckRule;
+    auto ruleOf = [](const Polygon& p, const std::vector<Triangle>& t) { return checkTriangulation(p, t).rule; };
+    Polygon outerPoint;
+    outerPoint.addRing({{1, 1}}, true);
+    EXPECT_EQ(ruleOf(outerPoint, {}), CheckRule::Rings);
+    Polygon bowTie;  // a ring of zero area whose two triangles pass rules 1-4
+    bowTie.addRing({{0, 0}, {2, 0}, {0, 2}, {2, 2}}, true);
+    EXPECT_EQ(ruleOf(bowTie, {{0, 1, 2}, {1, 3, 2}}), CheckRule::Rings);
+    EXPECT_EQ(ruleOf(square(), {{0, 1, 2}, {0, 2, 7}}), CheckRule::Indices);
+    EXPECT_EQ(ruleOf(square(), {{0, 1, 2}}), CheckRule::PartsAndCount);
+    Polygon two;
+    two.addRing({{0, 0}, {2, 0}, {2, 2}, {0, 2}}, true);
+    two.addRing({{2, 2}, {4, 2}, {4, 4}, {2, 4}}, true);
+    EXPECT_EQ(ruleOf(two, {{0, 1, 6}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}}), CheckRule::PartsAndCount);
+    EXPECT_EQ(ruleOf(square(), {{0, 2, 1}, {0, 2, 3}}), CheckRule::CounterClockwise);
+    EXPECT_EQ(ruleOf(square(), {{0, 1, 2}, {0, 1, 2}}), CheckRule::DistinctEdges);
+    EXPECT_EQ(ruleOf(hexagon(), {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {2, 4, 5}}), CheckRule::BoundaryEdges);
+    std::vector<Triangle> fromOutside = kSquareWithHole;
+    fromOutside[7] = {4, 5, 6};
+    EXPECT_EQ(ruleOf(squareWithHole(), fromOutside), CheckRule::BoundaryEdges);
+    EXPECT_EQ(ruleOf(hexagon(), {{0, 1, 2}, {2, 3, 4}, {4, 5, 0}, {1, 3, 5}}), CheckRule::InteriorTwins);
+    Polygon twice;  // two identical parts, each triangulated alone: only rule 8 can tell
+    twice.addRing({{0, 0}, {2, 0}, {2, 2}, {0, 2}}, true);
+    twice.addRing({{0, 0}, {2, 0}, {2, 2}, {0, 2}}, true);
+    EXPECT_EQ(ruleOf(twice, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}}), CheckRule::PartsDisjoint);
+    EXPECT_EQ(ruleOf(square(), {{0, 1, 2}, {0, 2, 3}}), CheckRule::None);
+}

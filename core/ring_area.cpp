@@ -1,0 +1,24 @@
+#include "ring_area.h"
+
+#include "predicates.h"
+
+namespace flood {
+
+int ringAreaSign(const Point* p, Index count) {
+    AreaEstimate estimate;
+    for (Index i = 0; i < count; ++i) estimate.addCross(p[i], p[i + 1 == count ? 0 : i + 1]);
+    if (int s = estimate.sign()) return s;
+    ExactSum exact;  // zero or too close to tell: only exact arithmetic can say
+    for (Index i = 0; i < count; ++i) exact.addCross(p[i], p[i + 1 == count ? 0 : i + 1]);
+    return exact.sign();
+}
+
+int ringOrientation(const Point* p, Index count) {
+    Index low = 0;
+    for (Index i = 1; i < count; ++i)
+        if (below(p[i], p[low])) low = i;
+    int t = orient(p[low == 0 ? count - 1 : low - 1], p[low], p[low + 1 == count ? 0 : low + 1]);
+    return t != 0 ? t : ringAreaSign(p, count);
+}
+
+}  // namespace flood

@@ -1,0 +1,104 @@
+// The ordered set of active edges of a sweep (core/validate.cpp): a treap whose nodes are the
+// edge indices themselves, its links arrays indexed by edge. Nothing is allocated per
+// insertion (a std::set allocates a 40-byte node each time), and an edge is erased or stepped
+// from by its index, without comparisons. Priorities are a hash of the index, so the shape is
+// that of a random treap whatever the input order: O(log n) expected per operation.
+// Internal to core/, not a public API.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "polygon.h"
+
+namespace flood {
+
+// Less(a, b): a before b; a strict total order on the edges present whenever one is inserted.
+template <typename Less>
+class SweepTree {
+public:
+    SweepTree(size_t edges, Less less)
+        : less_(less), left_(edges, kNone), right_(edges, kNone), up_(edges, kNone) {}
+
+    const Less& less() const { return less_; }
+    Index first() const {
+        Index x = root_;
+        while (x != kNone && left_[x] != kNone) x = left_[x];
+        return x;
+    }
+
+    // Inserts e (not present) where the order puts it.
+    void insert(Index e) {
+        Index parent = kNone, x = root_;
+        bool toLeft = false;
+        while (x != kNone) {
+            parent = x;
+            toLeft = less_(e, x);
+            x = toLeft ? left_[x] : right_[x];
+        }
+        up_[e] = parent;
+        if (parent == kNone) root_ = e;
+        else (toLeft ? left_ : right_)[parent] = e;
+        while (up_[e] != kNone && priority(e) > priority(up_[e])) rotateUp(e);
+    }
+
+    // Removes e (present): rotated down to a leaf, then cut off.
+    void erase(Index e) {
+        while (left_[e] != kNone || right_[e] != kNone) {
+            Index l = left_[e], r = right_[e];
+            rotateUp(r == kNone || (l != kNone && priority(l) > priority(r)) ? l : r);
+        }
+        Index p = up_[e];
+        if (p == kNone) root_ = kNone;
+        else (left_[p] == e ? left_ : right_)[p] = kNone;
+        up_[e] = kNone;
+    }
+
+    // The neighbours of e (present) in the order, or kNone.
+    Index prev(Index e) const { return step(e, left_, right_); }
+    Index next(Index e) const { return step(e, right_, left_); }
+
+private:
+    // A random-looking priority per index; ties go to the lower index.
+    static uint64_t priority(Index e) {
+        uint64_t h = (uint64_t(e) + 1) * 0x9E3779B97F4A7C15ull;
+        h ^= h >> 29;
+        return (h & ~uint64_t(0xffffffff)) | e;
+    }
+
+    // The nearest node on the `down` side: the extreme of that subtree, else the first
+    // ancestor reached from its `other` side.
+    Index step(Index e, const std::vector<Index>& down, const std::vector<Index>& other) const {
+        if (down[e] != kNone) {
+            Index x = down[e];
+            while (other[x] != kNone) x = other[x];
+            return x;
+        }
+        Index x = e, p = up_[e];
+        while (p != kNone && down[p] == x) x = p, p = up_[p];
+        return p;
+    }
+
+    // x takes its parent's place; the parent becomes x's child.
+    void rotateUp(Index x) {
+        Index p = up_[x], g = up_[p];
+        if (left_[p] == x) {
+            left_[p] = right_[x];
+            if (right_[x] != kNone) up_[right_[x]] = p;
+            right_[x] = p;
+        } else {
+            right_[p] = left_[x];
+            if (left_[x] != kNone) up_[left_[x]] = p;
+            left_[x] = p;
+        }
+        up_[p] = x;
+        up_[x] = g;
+        if (g == kNone) root_ = x;
+        else (left_[g] == p ? left_ : right_)[g] = x;
+    }
+
+    Less less_;
+    std::vector<Index> left_, right_, up_;
+    Index root_ = kNone;
+};
+
+}  // namespace flood

@@ -68,18 +68,29 @@ Point toUp(Point p, Up up) {
 
 class Machine {
 public:
-    Machine(const Polygon& poly, Listener* listener, const Options& opt)
-        : poly_(poly), listener_(listener) {
+    struct Buffers;
+    // `keep`, if given, lends the machine its buffers for the run (taken back on
+    // destruction), so that a run on an input no larger than the last one allocates nothing.
+    Machine(const Polygon& poly, Listener* listener, const Options& opt, Buffers* keep = nullptr)
+        : poly_(poly), listener_(listener), own_(keep ? nullptr : new Buffers), b_(keep ? *keep : *own_) {
+        std::swap(result_.triangles, b_.triangles);  // the one buffer that leaves with the result
         if (opt.up == Up::PlusY) {  // heights are the input's: no copy of the vertices
             pts_ = poly.vertices.data();
             return;
         }
+        rotated_.clear();
         rotated_.reserve(poly.vertices.size());
         for (Point p : poly.vertices) rotated_.push_back(toUp(p, opt.up));
         pts_ = rotated_.data();
     }
 
+    ~Machine() { std::swap(result_.triangles, b_.triangles); }
+    Machine(const Machine&) = delete;
+    Machine& operator=(const Machine&) = delete;
+
     FloodResult run() {
+        nodes_.clear();
+        result_.triangles.clear();
         nodes_.reserve(poly_.vertices.size() * 3 / 2 + 16);  // bridges add two nodes per sag
         result_.triangles.reserve(poly_.vertices.size() + 2 * poly_.rings.size());
         for (uint32_t part = 0; part < poly_.parts.size() && ok(); ++part) floodPart(part);
@@ -164,13 +175,15 @@ private:
     // The sags' points for the plane index, their heights, and the height buckets.
     void indexSags() {
         const size_t count = sagKeys_.size();
-        std::vector<Point> pointOfRank(count);
+        std::vector<Point>& pointOfRank = b_.pointOfRank;
+        pointOfRank.resize(count);
         sagY_.resize(count);
         for (size_t k = 0; k < count; ++k) {
             pointOfRank[k] = {sagKeys_[k].x, sagKeys_[k].y};
             sagY_[k] = sagKeys_[k].y;
         }
         sagIndex_.build(pointOfRank);
+        unusedSags_ = uint32_t(count);
         const size_t buckets = count / 2 + 1;
         bucketY0_ = count ? sagY_.front() : 0;
         double span = count ? sagY_.back() - bucketY0_ : 0;
@@ -197,8 +210,10 @@ private:
         part_ = part;
         partNodes_ = 0;
         partFirstNode_ = uint32_t(nodes_.size());
-        std::vector<uint32_t> partVertices;  // nodes of the part's loops
-        std::vector<uint32_t> points;        // one-node loops: Steiner points
+        std::vector<uint32_t>& partVertices = b_.partVertices;  // nodes of the part's loops
+        std::vector<uint32_t>& points = b_.points;              // one-node loops: Steiner points
+        partVertices.clear();
+        points.clear();
         for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
             if (!std::isfinite(pts_[v].x) || !std::isfinite(pts_[v].y)) {
                 Event f = begin(Action::Forbidden);
@@ -218,11 +233,13 @@ private:
         auto split = std::lower_bound(poly_.splits.begin(), poly_.splits.end(), poly_.rings[pa.firstRing].first,
                                       [](const EdgeSplit& s, Index v) { return s.edge < v; });
         uint32_t outerNodes = 0;
-        std::vector<Index> loop;
+        std::vector<Index>& loop = b_.loop;
         for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
             const Ring& ring = poly_.rings[r];
+            // A ring without T-junctions is its own loop; only the others are copied out.
+            const bool plain = split == poly_.splits.end() || split->edge >= ring.first + ring.count;
             loop.clear();
-            for (Index v = ring.first; v < ring.first + ring.count; ++v) {
+            for (Index v = ring.first; !plain && v < ring.first + ring.count; ++v) {
                 loop.push_back(v);
                 for (; split != poly_.splits.end() && split->edge == v; ++split) loop.push_back(split->vertex);
             }
@@ -230,12 +247,12 @@ private:
             // clockwise, whatever the file said.
             bool wantCcw = (r == pa.firstRing);
             bool reverse = ring.count >= 3 && (ringTurn(ring) > 0) != wantCcw;
-            const uint32_t base = uint32_t(nodes_.size()), count = uint32_t(loop.size());
+            const uint32_t base = uint32_t(nodes_.size()), count = plain ? ring.count : uint32_t(loop.size());
             for (uint32_t i = 0; i < count; ++i) {
                 Node nd;
-                nd.v = loop[i];
-                uint32_t p = base + (i + count - 1) % count;
-                uint32_t q = base + (i + 1) % count;
+                nd.v = plain ? ring.first + i : loop[i];
+                uint32_t p = base + (i == 0 ? count - 1 : i - 1);  // no division: set-up is most of a small run
+                uint32_t q = base + (i + 1 == count ? 0 : i + 1);
                 nd.prev = reverse ? q : p;
                 nd.next = reverse ? p : q;
                 nodes_.push_back(nd);
@@ -246,7 +263,8 @@ private:
             work().nodeVisits += count;
             if (r == pa.firstRing) outerNodes = count;
         }
-        const bool touching = mergeTouchingLoops(partVertices);
+        // Validation found no point shared by two vertices, nor a T-junction: nothing to merge.
+        const bool touching = !poly_.pointsDistinct && mergeTouchingLoops(partVertices);
 
         // The sags of the part, sorted by height (§4).
         sags_.clear();
@@ -329,23 +347,29 @@ private:
     // most polygons have none. Cache-friendly at any size: each node's point is hashed, the
     // (hash, position) pairs are bucketed by the hash's top bits (a stable counting sort), and
     // each bucket, small enough for the cache, is searched with its own open-addressing table.
-    std::vector<std::pair<uint32_t, uint32_t>> coincidentNodes(const std::vector<uint32_t>& nodes) const {
-        std::vector<std::pair<uint32_t, uint32_t>> copies;
+    std::vector<std::pair<uint32_t, uint32_t>>& coincidentNodes(const std::vector<uint32_t>& nodes) {
+        std::vector<std::pair<uint32_t, uint32_t>>& copies = b_.copies;
+        copies.clear();
         const size_t n = nodes.size();
+        work().touchSearchNodes += n;
         int bits = 0;
         while (bits < 20 && (size_t(2048) << bits) < n) ++bits;  // about 2048 nodes a bucket
-        std::vector<uint64_t> hash(n);
-        std::vector<uint32_t> start((size_t(1) << bits) + 1, 0);
+        std::vector<uint64_t>& hash = b_.hash;
+        std::vector<uint32_t>& start = b_.bucketStart;
+        hash.resize(n);
+        start.assign((size_t(1) << bits) + 1, 0);
         auto bucketOf = [&](uint64_t h) { return bits ? size_t(h >> (64 - bits)) : 0; };
         for (size_t i = 0; i < n; ++i) {
             hash[i] = pointHash(P(nodes[i]));
             ++start[bucketOf(hash[i]) + 1];
         }
         for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
-        std::vector<std::pair<uint64_t, uint32_t>> byBucket(n);  // (hash, position in nodes)
-        std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+        std::vector<std::pair<uint64_t, uint32_t>>& byBucket = b_.byBucket;  // (hash, position in nodes)
+        std::vector<uint32_t>& fill = b_.bucketFill;
+        byBucket.resize(n);
+        fill.assign(start.begin(), start.end() - 1);
         for (size_t i = 0; i < n; ++i) byBucket[fill[bucketOf(hash[i])]++] = {hash[i], uint32_t(i)};
-        std::vector<uint32_t> table;  // positions into byBucket, kNil when empty
+        std::vector<uint32_t>& table = b_.table;  // positions into byBucket, kNil when empty
         for (size_t k = 0; k + 1 < start.size(); ++k) {
             size_t cap = 16;
             while (cap < size_t(start[k + 1] - start[k]) * 2) cap <<= 1;
@@ -374,11 +398,11 @@ private:
     // angle, and each arrival takes the outgoing edge just before its own direction.
     // True when some point was shared (the loops may have changed).
     bool mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
-        std::vector<std::pair<uint32_t, uint32_t>> copies = coincidentNodes(partVertices);
+        std::vector<std::pair<uint32_t, uint32_t>>& copies = coincidentNodes(partVertices);
         if (copies.empty()) return false;
         std::sort(copies.begin(), copies.end());
-        std::vector<uint32_t> corner, newNext;
-        std::vector<std::pair<Point, uint32_t>> outs;  // (where the edge goes, its passage)
+        std::vector<uint32_t>& corner = b_.corner, &newNext = b_.newNext;
+        std::vector<std::pair<Point, uint32_t>>& outs = b_.outs;  // (where the edge goes, its passage)
         for (size_t g = 0; g < copies.size();) {
             corner.assign(1, copies[g].first);
             size_t e = g;
@@ -537,6 +561,7 @@ private:
         return s;
     }
     uint32_t searchSag(uint32_t nx, Event& e) {
+        if (unusedSags_ == 0) return kNil;  // every sag bridged already (or none): no bracket to search
         // Ranks bracketing the water and Next: the number of sags below each.
         int64_t lo = int64_t(sagsBelow(water_)) - 1;
         if (lo + 1 < int64_t(sagKeys_.size()) && sags_[size_t(lo + 1)] == water_) ++lo;  // the water is itself a sag
@@ -566,8 +591,7 @@ private:
             int64_t k = bankCandidate(lo, hi);
             if (k == -1) return kNil;
             if (k >= 0 && test(uint32_t(k))) {
-                sagIndex_.markUsed(uint32_t(k));
-                return sags_[size_t(k)];
+                return useSag(k);
             }
         }
         // The next few ranks first, in order: in a wide gorge (a strip under a row of holes)
@@ -586,8 +610,12 @@ private:
             treeWork_ += work().nodeVisits - before;
         }
         if (k < 0) return kNil;
-        sagIndex_.markUsed(uint32_t(k));
-        return sags_[size_t(k)];
+        return useSag(k);
+    }
+    uint32_t useSag(int64_t rank) {
+        sagIndex_.markUsed(uint32_t(rank));
+        --unusedSags_;
+        return sags_[size_t(rank)];
     }
 
     static constexpr int64_t kProbes = 4;  // ranks findSag tests before the sag tree
@@ -930,6 +958,7 @@ private:
     // and their ancestors in the stretch's tree get INT32_MIN, below any count.
     void makeWet(uint32_t n) {
         nodes_[n].wet = true;
+        if (stretchRecs_.empty()) return;  // no spill walk recorded a stretch yet: no tree to update
         for (int dir = 0; dir < 2; ++dir) {
             uint32_t at = recordedAt(dir, n);
             if (at == kNil) continue;
@@ -1003,47 +1032,105 @@ private:
         water_ = rec.water;
     }
 
+public:
+    // What the machine allocates, lent by a Triangulator (or the thread, for small inputs)
+    // from run to run; the members below of the same names refer to them.
+    struct Buffers {
+        std::vector<Point> rotated, pointOfRank;
+        std::vector<Node> nodes;
+        std::vector<uint32_t> sags, partVertices, points, initialNext, sagBucket, sagsBelow, bottoms, todo;
+        std::vector<Index> loop;
+        SagIndex sagIndex;
+        SagBanks banks;
+        std::vector<HeightKey> sagKeys, bottomKeys;
+        std::vector<double> sagY;
+        std::vector<GorgeRec> gorges;
+        std::vector<Stretch> stretches;
+        std::vector<StretchRec> stretchRecs;
+        std::vector<int32_t> stretchTree;
+        std::vector<uint32_t> stretchAt[2];
+        std::vector<Triangle> triangles;
+        std::vector<std::pair<uint32_t, uint32_t>> copies;
+        std::vector<uint64_t> hash;
+        std::vector<uint32_t> bucketStart, bucketFill, table, corner, newNext;
+        std::vector<std::pair<uint64_t, uint32_t>> byBucket;
+        std::vector<std::pair<Point, uint32_t>> outs;
+    };
+
+private:
     const Polygon& poly_;
     Listener* listener_;
-    std::vector<Point> rotated_;  // the vertices turned so that the chosen vertical is +y
+    std::unique_ptr<Buffers> own_;  // when none are lent
+    Buffers& b_;                    // the buffers of this run: lent, or own_
+    std::vector<Point>& rotated_ = b_.rotated;  // the vertices turned so that the chosen vertical is +y
     const Point* pts_ = nullptr;  // the vertices as the machine sees them (rotated_ or input)
-    std::vector<Node> nodes_;
-    std::vector<uint32_t> sags_;
-    SagIndex sagIndex_;  // the sags by height rank, searchable by x
-    SagBanks banks_;     // the sags each input edge sees, once the plane index is costly
+    std::vector<Node>& nodes_ = b_.nodes;
+    std::vector<uint32_t>& sags_ = b_.sags;
+    SagIndex& sagIndex_ = b_.sagIndex;  // the sags by height rank, searchable by x
+    SagBanks& banks_ = b_.banks;        // the sags each input edge sees, once the plane index is costly
     bool banksTried_ = false;
     uint64_t treeWork_ = 0;  // box visits of the plane index in this part
     uint32_t partFirstVertex_ = 0, initialNodes_ = 0;
-    std::vector<uint32_t> initialNext_;  // per initial node of the part (local ids): next
-    std::vector<HeightKey> sagKeys_;  // height keys of sags_, for binary search
-    std::vector<double> sagY_;         // their y alone: a denser array for the first search
-    std::vector<uint32_t> sagBucket_;  // first rank of each height bucket (heightBucket())
+    std::vector<uint32_t>& initialNext_ = b_.initialNext;  // per initial node of the part (local ids): next
+    std::vector<HeightKey>& sagKeys_ = b_.sagKeys;  // height keys of sags_, for binary search
+    std::vector<double>& sagY_ = b_.sagY;         // their y alone: a denser array for the first search
+    std::vector<uint32_t>& sagBucket_ = b_.sagBucket;  // first rank of each height bucket (heightBucket())
     double bucketY0_ = 0, bucketScale_ = 0;
-    std::vector<HeightKey> bottomKeys_;  // scratch for sorting the bottoms
-    std::vector<uint32_t> sagsBelow_;  // per node of the part (from partFirstNode_): sags below it, kNil until asked
-    std::vector<uint32_t> bottoms_;  // bottoms; lowest first once sorted (lowestDryBottom())
+    std::vector<HeightKey>& bottomKeys_ = b_.bottomKeys;  // scratch for sorting the bottoms
+    std::vector<uint32_t>& sagsBelow_ = b_.sagsBelow;  // per node of the part (from partFirstNode_): sags below it, kNil until asked
+    std::vector<uint32_t>& bottoms_ = b_.bottoms;  // bottoms; lowest first once sorted (lowestDryBottom())
     size_t bottomCursor_ = 0;
     uint32_t bottomScans_ = 0;
-    std::vector<GorgeRec> gorges_;
+    std::vector<GorgeRec>& gorges_ = b_.gorges;
     // Spill walks remembered: the dry nodes a walk passed, in its direction (prev-wards or
     // next-wards), with the drop count's change along them. Links between dry nodes do not
     // change (every edit of the loops touches a wet node), so a later walk reaching such a
     // stretch crosses it in one step up to its first node that got wet since.
-    std::vector<Stretch> stretches_;
-    std::vector<StretchRec> stretchRecs_;
-    std::vector<int32_t> stretchTree_;
-    std::vector<uint32_t> stretchAt_[2];  // per node of the part, per direction: its position
-    std::vector<uint32_t> todo_;  // pending gorges (ids), last pushed first
+    std::vector<Stretch>& stretches_ = b_.stretches;
+    std::vector<StretchRec>& stretchRecs_ = b_.stretchRecs;
+    std::vector<int32_t>& stretchTree_ = b_.stretchTree;
+    std::vector<uint32_t> (&stretchAt_)[2] = b_.stretchAt;  // per node of the part, per direction: its position
+    std::vector<uint32_t>& todo_ = b_.todo;  // pending gorges (ids), last pushed first
     uint32_t left_ = kNil, right_ = kNil, water_ = kNil;
     uint32_t part_ = 0, partNodes_ = 0, partFirstNode_ = 0, cut_ = 0, step_ = 0;
     uint64_t budget_ = 0;
+    uint32_t unusedSags_ = 0;  // sags of the part not bridged yet
     FloodResult result_;
 };
 
 }  // namespace
 
+// Inputs up to this size reuse their thread's buffers: a program flooding many small polygons
+// allocates little more than each result, and a thread keeps at most ~1 MB after a big one.
+constexpr size_t kThreadBufferVertices = 4096;
+
 FloodResult triangulate(const Polygon& polygon, Listener* listener, const Options& options) {
-    return Machine(polygon, listener, options).run();
+    thread_local Machine::Buffers buffers;
+    thread_local bool lent = false;  // a listener that triangulates too gets buffers of its own
+    struct Lending {
+        bool active;
+        ~Lending() {
+            if (active) lent = false;
+        }
+    } lending{!lent && polygon.vertices.size() <= kThreadBufferVertices};
+    if (lending.active) lent = true;
+    return Machine(polygon, listener, options, lending.active ? &buffers : nullptr).run();
+}
+
+struct Triangulator::Workspace {
+    Machine::Buffers buffers;
+    FloodResult result;
+};
+Triangulator::Triangulator() : workspace_(new Workspace) {}
+Triangulator::~Triangulator() = default;
+Triangulator::Triangulator(Triangulator&&) noexcept = default;
+Triangulator& Triangulator::operator=(Triangulator&&) noexcept = default;
+const FloodResult& Triangulator::run(const Polygon& polygon, Listener* listener, const Options& options) {
+    Workspace& w = *workspace_;
+    // The last result's triangles are the buffer this run fills: its capacity is kept.
+    std::swap(w.buffers.triangles, w.result.triangles);
+    w.result = Machine(polygon, listener, options, &w.buffers).run();
+    return w.result;
 }
 
 Culprits forbiddenCulprits(const Polygon& polygon, const Event& e) {

@@ -17,6 +17,7 @@ struct WorkCounters {
     uint64_t sagSearch = 0;       // the sag search's share of the three machine counts above
                                   // (its sweep, lists, tree and tests), to weigh it against the rest
     uint64_t invariantSteps = 0;  // grid cells and vertices the invariant checker visits
+    uint64_t touchSearchNodes = 0;  // nodes the flood machine hashed looking for rings that touch
 };
 
 inline thread_local WorkCounters tWork;

@@ -69,11 +69,12 @@ Point toUp(Point p, Up up) {
 class Machine {
 public:
     struct Buffers;
-    // `keep`, if given, lends the machine its buffers for the run (taken back on
-    // destruction), so that a run on an input no larger than the last one allocates nothing.
-    Machine(const Polygon& poly, Listener* listener, const Options& opt, Buffers* keep = nullptr)
-        : poly_(poly), listener_(listener), own_(keep ? nullptr : new Buffers), b_(keep ? *keep : *own_) {
-        std::swap(result_.triangles, b_.triangles);  // the one buffer that leaves with the result
+    // The run's result goes to `out` (its triangles' capacity reused). `keep`, if given, lends
+    // the machine its buffers, so that a run on an input no larger than the last one
+    // allocates nothing.
+    Machine(const Polygon& poly, Listener* listener, const Options& opt, FloodResult& out, Buffers* keep)
+        : poly_(poly), listener_(listener), own_(keep ? nullptr : new Buffers), b_(keep ? *keep : *own_),
+          result_(out) {
         if (opt.up == Up::PlusY) {  // heights are the input's: no copy of the vertices
             pts_ = poly.vertices.data();
             return;
@@ -84,18 +85,17 @@ public:
         pts_ = rotated_.data();
     }
 
-    ~Machine() { std::swap(result_.triangles, b_.triangles); }
     Machine(const Machine&) = delete;
     Machine& operator=(const Machine&) = delete;
 
-    FloodResult run() {
+    void run() {
         nodes_.clear();
         result_.triangles.clear();
+        if (!result_.diagnostic.ok()) result_.diagnostic = {}, result_.failure = {};  // set together
         nodes_.reserve(poly_.vertices.size() * 3 / 2 + 16);  // bridges add two nodes per sag
         result_.triangles.reserve(poly_.vertices.size() + 2 * poly_.rings.size());
         for (uint32_t part = 0; part < poly_.parts.size() && ok(); ++part) floodPart(part);
         result_.steps = step_;
-        return std::move(result_);
     }
 
 private:
@@ -1049,7 +1049,6 @@ public:
         std::vector<StretchRec> stretchRecs;
         std::vector<int32_t> stretchTree;
         std::vector<uint32_t> stretchAt[2];
-        std::vector<Triangle> triangles;
         std::vector<std::pair<uint32_t, uint32_t>> copies;
         std::vector<uint64_t> hash;
         std::vector<uint32_t> bucketStart, bucketFill, table, corner, newNext;
@@ -1095,7 +1094,7 @@ private:
     uint32_t part_ = 0, partNodes_ = 0, partFirstNode_ = 0, cut_ = 0, step_ = 0;
     uint64_t budget_ = 0;
     uint32_t unusedSags_ = 0;  // sags of the part not bridged yet
-    FloodResult result_;
+    FloodResult& result_;
 };
 
 }  // namespace
@@ -1114,7 +1113,9 @@ FloodResult triangulate(const Polygon& polygon, Listener* listener, const Option
         }
     } lending{!lent && polygon.vertices.size() <= kThreadBufferVertices};
     if (lending.active) lent = true;
-    return Machine(polygon, listener, options, lending.active ? &buffers : nullptr).run();
+    FloodResult result;
+    Machine(polygon, listener, options, result, lending.active ? &buffers : nullptr).run();
+    return result;
 }
 
 struct Triangulator::Workspace {
@@ -1127,9 +1128,7 @@ Triangulator::Triangulator(Triangulator&&) noexcept = default;
 Triangulator& Triangulator::operator=(Triangulator&&) noexcept = default;
 const FloodResult& Triangulator::run(const Polygon& polygon, Listener* listener, const Options& options) {
     Workspace& w = *workspace_;
-    // The last result's triangles are the buffer this run fills: its capacity is kept.
-    std::swap(w.buffers.triangles, w.result.triangles);
-    w.result = Machine(polygon, listener, options, &w.buffers).run();
+    Machine(polygon, listener, options, w.result, &w.buffers).run();  // refills the last result
     return w.result;
 }
 

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Flood against earcut on small polygons (issue 13): earcut's 32 valid fixtures, one call timed
+# in-process on each side (earcut under Node.js, Flood natively), and callgrind's instructions
+# per call on `building`. Writes the small-polygon section of docs/BENCHMARKS.md.
+#   scripts/small-bench.sh [BUILD_DIR]    default build/ (configured as the README says)
+# Needs node and npm (Debian's nodejs, npm) and valgrind; earcut is installed from
+# bench/node/package-lock.json into BUILD_DIR/earcut-node, never into the source tree.
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="${1:-$root/build}"
+fixtures="$root/../shared/peers/earcut"
+out="$build/small-bench"
+[ -d "$fixtures/fixtures" ] || { echo "small-bench: $fixtures not found" >&2; exit 1; }
+cmake --build "$build" -j2 --target flood-small-bench
+mkdir -p "$out" "$build/earcut-node"
+cp "$root/bench/node/package.json" "$root/bench/node/package-lock.json" "$build/earcut-node/"
+(cd "$build/earcut-node" && npm ci --no-audit --no-fund --silent)
+# The valid fixtures: GEOS's verdict in the fixtures' README.
+mapfile -t files < <(grep '^|.*| Valid Geometry |' "$fixtures/README.md" | cut -d'|' -f2 | tr -d ' ' |
+                     sed "s|.*|$fixtures/fixtures/&.json|")
+echo "== earcut (node)"
+EARCUT_DIR="$build/earcut-node" node "$root/bench/node/earcut_time.mjs" "${files[@]}" > "$out/earcut.tsv"
+echo "== flood"
+"$build/flood-small-bench" time "${files[@]}" > "$out/flood.tsv"
+echo "== callgrind"
+: > "$out/callgrind.txt"
+for mode in triangulate validate_triangulate; do
+  flag=""; [ $mode = validate_triangulate ] && flag=--validate
+  count() {
+    valgrind --tool=callgrind --callgrind-out-file=/dev/null "$build/flood-small-bench" calls \
+      "$fixtures/fixtures/building.json" "$1" $flag 2>&1 | sed -n 's/.*refs: *//p' | tr -d ,
+  }
+  a=$(count 100); b=$(count 1100)
+  echo "flood_$mode $(( (b - a) / 1000 ))" >> "$out/callgrind.txt"
+done
+{ echo "cpu $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')";
+  echo "node $(node --version)";
+  echo "earcut $(node -p "require('$build/earcut-node/node_modules/earcut/package.json').version")";
+  echo "load $(cut -d' ' -f1-3 /proc/loadavg)"; } > "$out/machine.txt"
+/usr/bin/python3 "$root/bench/small_report.py" "$out/earcut.tsv" "$out/flood.tsv" "$out/callgrind.txt" \
+  "$out/machine.txt" "$root/docs/BENCHMARKS.md"
+cat "$out/callgrind.txt"

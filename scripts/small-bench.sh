@@ -3,14 +3,18 @@
 # in-process on each side (earcut under Node.js, Flood natively), and callgrind's instructions
 # per call on `building`. Writes the small-polygon section of docs/BENCHMARKS.md.
 #   scripts/small-bench.sh [BUILD_DIR]    default build/ (configured as the README says)
-# Needs node and npm (Debian's nodejs, npm) and valgrind; earcut is installed from
-# bench/node/package-lock.json into BUILD_DIR/earcut-node, never into the source tree.
+# Needs node with npm (the machine's nodejs package carries both) and valgrind
+# (scripts/install-bench-deps.sh); earcut is installed from bench/node/package-lock.json into
+# BUILD_DIR/earcut-node, never into the source tree.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="${1:-$root/build}"
 fixtures="$root/../shared/peers/earcut"
 out="$build/small-bench"
 [ -d "$fixtures/fixtures" ] || { echo "small-bench: $fixtures not found" >&2; exit 1; }
+for tool in node npm valgrind; do
+  command -v $tool >/dev/null || { echo "small-bench: $tool not found (see the comment above)" >&2; exit 1; }
+done
 cmake --build "$build" -j2 --target flood-small-bench
 mkdir -p "$out" "$build/earcut-node"
 cp "$root/bench/node/package.json" "$root/bench/node/package-lock.json" "$build/earcut-node/"

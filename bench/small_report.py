@@ -2,9 +2,11 @@
 """Flood against earcut on earcut's valid fixtures, per call (issue 13): the small-polygon
 section of docs/BENCHMARKS.md, written by scripts/small-bench.sh.
 
-Usage: small_report.py EARCUT.tsv FLOOD.tsv CALLGRIND.txt MACHINE.txt BENCHMARKS.md
+Usage: small_report.py EARCUT.tsv[,...] FLOOD.tsv[,...] CALLGRIND.txt MACHINE.txt BENCHMARKS.md
 
-EARCUT.tsv comes from bench/node/earcut_time.mjs, FLOOD.tsv from `flood-small-bench time`,
+EARCUT.tsv comes from bench/node/earcut_time.mjs, FLOOD.tsv from `flood-small-bench time`; given
+several of each (rounds run alternately), each figure is the least over the rounds, so a burst
+of load from other jobs during one round does not decide a ratio.
 CALLGRIND.txt holds "flood_triangulate N" and "flood_validate_triangulate N" lines
 (instructions per call on `building`). The section is a kept block of BENCHMARKS.md (report.py
 carries it over), recognised by its tag and replaced, or appended when absent.
@@ -17,9 +19,16 @@ import sys
 TAG = "<!-- small-polygons -->"
 
 
-def rows(path):
-    with open(path, newline="") as f:
-        return {os.path.basename(r["file"]).removesuffix(".json"): r for r in csv.DictReader(f, delimiter="\t")}
+def rows(paths):
+    best = {}
+    for path in paths.split(","):
+        with open(path, newline="") as f:
+            for r in csv.DictReader(f, delimiter="\t"):
+                name = os.path.basename(r["file"]).removesuffix(".json")
+                if name in best:
+                    r = {k: (str(min(float(v), float(best[name][k]))) if k.endswith("_ns") else v) for k, v in r.items()}
+                best[name] = r
+    return best
 
 
 def section(earcut, flood, callgrind, machine):
@@ -31,7 +40,7 @@ def section(earcut, flood, callgrind, machine):
         "natively (`flood-small-bench time`), earcut " + machine.get("earcut", "?") +
         " under Node.js " + machine.get("node", "?") + " (`bench/node/earcut_time.mjs`), both "
         "on the same vertices (repeated and closing points dropped as Flood's reader drops "
-        "them). A figure is the least of 15 batch means, batches of ~20 ms. Ratio = Flood / earcut "
+        "them). A figure is the least of 15 batch means, batches of ~20 ms, and the least over " + machine.get("rounds", "?") + " rounds run alternately. Ratio = Flood / earcut "
         "(below 1: Flood is faster). Flood + validation adds `validate()`, which the command line "
         "always runs; earcut validates nothing. Regenerate with `scripts/small-bench.sh` "
         "(machine: " + machine.get("cpu", "?") + ", load " + machine.get("load", "?") + ").")

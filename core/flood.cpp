@@ -201,7 +201,6 @@ private:
     uint32_t prev(uint32_t n) const { return nodes_[n].prev; }
     uint32_t next(uint32_t n) const { return nodes_[n].next; }
     bool isMinimum(uint32_t n) const { return lower(n, prev(n)) && lower(n, next(n)); }
-    bool isSag(uint32_t n) const { return isMinimum(n) && turn(prev(n), n, next(n)) <= 0; }
     bool ok() const { return result_.diagnostic.ok(); }
 
     // ---- [SECTION] set-up: loops, non-manifold points, sags -------------------------------
@@ -266,10 +265,14 @@ private:
         // Validation found no point shared by two vertices, nor a T-junction: nothing to merge.
         const bool touching = !poly_.pointsDistinct && mergeTouchingLoops(partVertices);
 
-        // The sags of the part, sorted by height (§4).
+        // The sags of the part, sorted by height (§4), taken from its minima (kept in bottoms_
+        // until the bottoms are sorted out of them below: no node is classified twice).
         sags_.clear();
+        bottoms_.clear();
         for (uint32_t n : partVertices)
-            if (isSag(n)) sags_.push_back(n);
+            if (isMinimum(n)) bottoms_.push_back(n);
+        for (uint32_t n : bottoms_)
+            if (turn(prev(n), n, next(n)) <= 0) sags_.push_back(n);
         // A point hole is a hole whose lowest vertex is its only one: a sag.
         sags_.insert(sags_.end(), points.begin(), points.end());
         sortByHeight(sags_, sagKeys_);
@@ -277,9 +280,10 @@ private:
         prepareBanks(touching);
         // The bottoms, lowest first: every one of them starts a gorge unless the water
         // reaches it first. They are the to-do list of last resort (see lowestDryBottom()).
-        bottoms_.clear();
-        for (uint32_t n : partVertices)
-            if (isMinimum(n) && turn(prev(n), n, next(n)) > 0) bottoms_.push_back(n);
+        size_t bottoms = 0;
+        for (uint32_t n : bottoms_)
+            if (turn(prev(n), n, next(n)) > 0) bottoms_[bottoms++] = n;
+        bottoms_.resize(bottoms);
         bottomCursor_ = 0;
         bottomScans_ = 0;  // sorted only if the fallback is asked often (takeNextGorge())
         stretches_.clear();
@@ -553,11 +557,10 @@ private:
     // Left, Right, NextRight, NextLeft (§4, §5). Sags are sorted, so the scan starts at the
     // water level and stops at Next.
     uint32_t findSag(uint32_t nx, Event& e) {
-        const WorkCounters before = work();
+        WorkCounters& w = work();
+        const uint64_t before = w.nodeVisits + w.sagTests + w.orientCalls;  // not all ten counters
         uint32_t s = searchSag(nx, e);
-        const WorkCounters& after = work();
-        work().sagSearch += (after.nodeVisits - before.nodeVisits) + (after.sagTests - before.sagTests) +
-                            (after.orientCalls - before.orientCalls);
+        w.sagSearch += w.nodeVisits + w.sagTests + w.orientCalls - before;
         return s;
     }
     uint32_t searchSag(uint32_t nx, Event& e) {

@@ -20,9 +20,7 @@ struct WorkCounters {
     uint64_t touchSearchNodes = 0;  // nodes the flood machine hashed looking for rings that touch
 };
 
-// Initial-exec: the core is built position-independent for the Python module, where the
-// default TLS model would make every count a call to __tls_get_addr (~6% of a small run).
-inline thread_local WorkCounters tWork __attribute__((tls_model("initial-exec")));
+inline thread_local WorkCounters tWork;
 
 // This thread's counters; reset with `work() = {}` before the run to be measured.
 inline WorkCounters& work() { return tWork; }

@@ -21,24 +21,37 @@ namespace flood {
 // Cache-friendly at any size: each point is hashed, the (hash, position) pairs are bucketed by
 // the hash's top bits (a stable counting sort), and each bucket, small enough for the cache,
 // is searched with its own open-addressing table. Linear expected time.
+// Its working arrays, kept by a caller that searches often (the flood machine reuses them, so
+// a warm run allocates nothing).
+struct RepeatedPointsScratch {
+    std::vector<std::pair<uint32_t, uint32_t>> copies;  // the answer
+    std::vector<uint64_t> hash;
+    std::vector<uint32_t> start, fill, table;
+    std::vector<std::pair<uint64_t, uint32_t>> byBucket;  // (hash, position)
+};
+
 template <typename PointAt>
-std::vector<std::pair<uint32_t, uint32_t>> repeatedPoints(size_t n, PointAt pointAt) {
+std::vector<std::pair<uint32_t, uint32_t>>& repeatedPoints(size_t n, PointAt pointAt, RepeatedPointsScratch& s) {
     constexpr uint32_t kEmpty = 0xffffffffu;
-    std::vector<std::pair<uint32_t, uint32_t>> copies;
+    std::vector<std::pair<uint32_t, uint32_t>>& copies = s.copies;
+    copies.clear();
     int bits = 0;
     while (bits < 20 && (size_t(2048) << bits) < n) ++bits;  // about 2048 points a bucket
-    std::vector<uint64_t> hash(n);
-    std::vector<uint32_t> start((size_t(1) << bits) + 1, 0);
+    std::vector<uint64_t>& hash = s.hash;
+    std::vector<uint32_t>& start = s.start;
+    hash.resize(n);
+    start.assign((size_t(1) << bits) + 1, 0);
     auto bucketOf = [&](uint64_t h) { return bits ? size_t(h >> (64 - bits)) : 0; };
     for (size_t i = 0; i < n; ++i) {
         hash[i] = pointHash(pointAt(i));
         ++start[bucketOf(hash[i]) + 1];
     }
     for (size_t k = 1; k < start.size(); ++k) start[k] += start[k - 1];
-    std::vector<std::pair<uint64_t, uint32_t>> byBucket(n);  // (hash, position)
-    std::vector<uint32_t> fill(start.begin(), start.end() - 1);
-    for (size_t i = 0; i < n; ++i) byBucket[fill[bucketOf(hash[i])]++] = {hash[i], uint32_t(i)};
-    std::vector<uint32_t> table;  // indices into byBucket, kEmpty when empty
+    std::vector<std::pair<uint64_t, uint32_t>>& byBucket = s.byBucket;
+    byBucket.resize(n);
+    s.fill.assign(start.begin(), start.end() - 1);
+    for (size_t i = 0; i < n; ++i) byBucket[s.fill[bucketOf(hash[i])]++] = {hash[i], uint32_t(i)};
+    std::vector<uint32_t>& table = s.table;  // indices into byBucket, kEmpty when empty
     for (size_t k = 0; k + 1 < start.size(); ++k) {
         size_t cap = 16;
         while (cap < size_t(start[k + 1] - start[k]) * 2) cap <<= 1;
@@ -59,6 +72,13 @@ std::vector<std::pair<uint32_t, uint32_t>> repeatedPoints(size_t n, PointAt poin
         }
     }
     return copies;
+}
+
+template <typename PointAt>
+std::vector<std::pair<uint32_t, uint32_t>> repeatedPoints(size_t n, PointAt pointAt) {
+    RepeatedPointsScratch s;
+    repeatedPoints(n, pointAt, s);
+    return std::move(s.copies);
 }
 
 }  // namespace flood

@@ -67,29 +67,40 @@ Point toUp(Point p, Up up) {
 
 class Machine {
 public:
-    Machine(const Polygon& poly, Listener* listener, const Options& opt)
-        : poly_(poly), listener_(listener), up_(opt.up), general_(!opt.up.axis()) {
+    struct Buffers;
+    // The run's result goes to `out` (its triangles' capacity reused). `keep`, if given, lends
+    // the machine its buffers, so that a run on an input no larger than the last one
+    // allocates nothing.
+    Machine(const Polygon& poly, Listener* listener, const Options& opt, FloodResult& out, Buffers* keep)
+        : poly_(poly), listener_(listener), own_(keep ? nullptr : new Buffers), b_(keep ? *keep : *own_),
+          up_(opt.up), general_(!opt.up.axis()), result_(out) {
         if (general_ || (opt.up.x == 0 && opt.up.y > 0)) {  // heights are the input's or ranks: no copy
             pts_ = poly.vertices.data();
             return;
         }
+        rotated_.clear();
         rotated_.reserve(poly.vertices.size());
         for (Point p : poly.vertices) rotated_.push_back(toUp(p, opt.up));
         pts_ = rotated_.data();
     }
 
-    FloodResult run() {
+    Machine(const Machine&) = delete;
+    Machine& operator=(const Machine&) = delete;
+
+    void run() {
+        nodes_.clear();
+        result_.triangles.clear();
+        if (!result_.diagnostic.ok()) result_.diagnostic = {}, result_.failure = {};  // set together
         if (!up_.valid()) {
             result_.diagnostic = {Status::Usage, "the flood direction (" + upName(up_) +
                                                      ") is not a direction: it must be a nonzero finite vector"};
-            return std::move(result_);
+            return;
         }
         if (general_) rankHeights();
         nodes_.reserve(poly_.vertices.size() * 3 / 2 + 16);  // bridges add two nodes per sag
         result_.triangles.reserve(poly_.vertices.size() + 2 * poly_.rings.size());
         for (uint32_t part = 0; part < poly_.parts.size() && ok(); ++part) floodPart(part);
         result_.steps = step_;
-        return std::move(result_);
     }
 
 private:
@@ -195,13 +206,15 @@ private:
     // The sags' points for the plane index, their heights, and the height buckets.
     void indexSags() {
         const size_t count = sagKeys_.size();
-        std::vector<Point> pointOfRank(count);
+        std::vector<Point>& pointOfRank = b_.pointOfRank;
+        pointOfRank.resize(count);
         sagY_.resize(count);
         for (size_t k = 0; k < count; ++k) {
             pointOfRank[k] = P(sags_[k]);
             sagY_[k] = sagKeys_[k].y;
         }
         sagIndex_.build(pointOfRank);
+        unusedSags_ = uint32_t(count);
         const size_t buckets = count / 2 + 1;
         bucketY0_ = count ? sagY_.front() : 0;
         double span = count ? sagY_.back() - bucketY0_ : 0;
@@ -219,7 +232,6 @@ private:
     uint32_t prev(uint32_t n) const { return nodes_[n].prev; }
     uint32_t next(uint32_t n) const { return nodes_[n].next; }
     bool isMinimum(uint32_t n) const { return lower(n, prev(n)) && lower(n, next(n)); }
-    bool isSag(uint32_t n) const { return isMinimum(n) && turn(prev(n), n, next(n)) <= 0; }
     bool ok() const { return result_.diagnostic.ok(); }
 
     // ---- [SECTION] set-up: loops, non-manifold points, sags -------------------------------
@@ -228,8 +240,10 @@ private:
         part_ = part;
         partNodes_ = 0;
         partFirstNode_ = uint32_t(nodes_.size());
-        std::vector<uint32_t> partVertices;  // nodes of the part's loops
-        std::vector<uint32_t> points;        // one-node loops: Steiner points
+        std::vector<uint32_t>& partVertices = b_.partVertices;  // nodes of the part's loops
+        std::vector<uint32_t>& points = b_.points;              // one-node loops: Steiner points
+        partVertices.clear();
+        points.clear();
         for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
             if (!std::isfinite(pts_[v].x) || !std::isfinite(pts_[v].y)) {
                 Event f = begin(Action::Forbidden);
@@ -249,11 +263,13 @@ private:
         auto split = std::lower_bound(poly_.splits.begin(), poly_.splits.end(), poly_.rings[pa.firstRing].first,
                                       [](const EdgeSplit& s, Index v) { return s.edge < v; });
         uint32_t outerNodes = 0;
-        std::vector<Index> loop;
+        std::vector<Index>& loop = b_.loop;
         for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
             const Ring& ring = poly_.rings[r];
+            // A ring without T-junctions is its own loop; only the others are copied out.
+            const bool plain = split == poly_.splits.end() || split->edge >= ring.first + ring.count;
             loop.clear();
-            for (Index v = ring.first; v < ring.first + ring.count; ++v) {
+            for (Index v = ring.first; !plain && v < ring.first + ring.count; ++v) {
                 loop.push_back(v);
                 for (; split != poly_.splits.end() && split->edge == v; ++split) loop.push_back(split->vertex);
             }
@@ -261,12 +277,12 @@ private:
             // clockwise, whatever the file said.
             bool wantCcw = (r == pa.firstRing);
             bool reverse = ring.count >= 3 && (ringOrientation(pts_ + ring.first, ring.count) > 0) != wantCcw;
-            const uint32_t base = uint32_t(nodes_.size()), count = uint32_t(loop.size());
+            const uint32_t base = uint32_t(nodes_.size()), count = plain ? ring.count : uint32_t(loop.size());
             for (uint32_t i = 0; i < count; ++i) {
                 Node nd;
-                nd.v = loop[i];
-                uint32_t p = base + (i + count - 1) % count;
-                uint32_t q = base + (i + 1) % count;
+                nd.v = plain ? ring.first + i : loop[i];
+                uint32_t p = base + (i == 0 ? count - 1 : i - 1);  // no division: set-up is most of a small run
+                uint32_t q = base + (i + 1 == count ? 0 : i + 1);
                 nd.prev = reverse ? q : p;
                 nd.next = reverse ? p : q;
                 nodes_.push_back(nd);
@@ -277,12 +293,17 @@ private:
             work().nodeVisits += count;
             if (r == pa.firstRing) outerNodes = count;
         }
-        const bool touching = mergeTouchingLoops(partVertices);
+        // Validation found no point shared by two vertices, nor a T-junction: nothing to merge.
+        const bool touching = !poly_.pointsDistinct && mergeTouchingLoops(partVertices);
 
-        // The sags of the part, sorted by height (§4).
+        // The sags of the part, sorted by height (§4), taken from its minima (kept in bottoms_
+        // until the bottoms are sorted out of them below: no node is classified twice).
         sags_.clear();
+        bottoms_.clear();
         for (uint32_t n : partVertices)
-            if (isSag(n)) sags_.push_back(n);
+            if (isMinimum(n)) bottoms_.push_back(n);
+        for (uint32_t n : bottoms_)
+            if (turn(prev(n), n, next(n)) <= 0) sags_.push_back(n);
         // A point hole is a hole whose lowest vertex is its only one: a sag.
         sags_.insert(sags_.end(), points.begin(), points.end());
         sortByHeight(sags_, sagKeys_);
@@ -290,9 +311,10 @@ private:
         prepareBanks(touching);
         // The bottoms, lowest first: every one of them starts a gorge unless the water
         // reaches it first. They are the to-do list of last resort (see lowestDryBottom()).
-        bottoms_.clear();
-        for (uint32_t n : partVertices)
-            if (isMinimum(n) && turn(prev(n), n, next(n)) > 0) bottoms_.push_back(n);
+        size_t bottoms = 0;
+        for (uint32_t n : bottoms_)
+            if (turn(prev(n), n, next(n)) > 0) bottoms_[bottoms++] = n;
+        bottoms_.resize(bottoms);
         bottomCursor_ = 0;
         bottomScans_ = 0;  // sorted only if the fallback is asked often (takeNextGorge())
         stretches_.clear();
@@ -346,13 +368,14 @@ private:
     // angle, and each arrival takes the outgoing edge just before its own direction.
     // True when some point was shared (the loops may have changed).
     bool mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
-        std::vector<std::pair<uint32_t, uint32_t>> copies =
-            repeatedPoints(partVertices.size(), [&](size_t i) { return P(partVertices[i]); });
+        work().touchSearchNodes += partVertices.size();
+        std::vector<std::pair<uint32_t, uint32_t>>& copies =
+            repeatedPoints(partVertices.size(), [&](size_t i) { return P(partVertices[i]); }, b_.repeats);
         if (copies.empty()) return false;
         for (auto& [first, later] : copies) first = partVertices[first], later = partVertices[later];
         std::sort(copies.begin(), copies.end());
-        std::vector<uint32_t> corner, newNext;
-        std::vector<std::pair<Point, uint32_t>> outs;  // (where the edge goes, its passage)
+        std::vector<uint32_t>& corner = b_.corner, &newNext = b_.newNext;
+        std::vector<std::pair<Point, uint32_t>>& outs = b_.outs;  // (where the edge goes, its passage)
         for (size_t g = 0; g < copies.size();) {
             corner.assign(1, copies[g].first);
             size_t e = g;
@@ -503,14 +526,14 @@ private:
     // Left, Right, NextRight, NextLeft (§4, §5). Sags are sorted, so the scan starts at the
     // water level and stops at Next.
     uint32_t findSag(uint32_t nx, Event& e) {
-        const WorkCounters before = work();
+        WorkCounters& w = work();
+        const uint64_t before = w.nodeVisits + w.sagTests + w.orientCalls;  // not all ten counters
         uint32_t s = searchSag(nx, e);
-        const WorkCounters& after = work();
-        work().sagSearch += (after.nodeVisits - before.nodeVisits) + (after.sagTests - before.sagTests) +
-                            (after.orientCalls - before.orientCalls);
+        w.sagSearch += w.nodeVisits + w.sagTests + w.orientCalls - before;
         return s;
     }
     uint32_t searchSag(uint32_t nx, Event& e) {
+        if (unusedSags_ == 0) return kNil;  // every sag bridged already (or none): no bracket to search
         // Ranks bracketing the water and Next: the number of sags below each.
         int64_t lo = int64_t(sagsBelow(water_)) - 1;
         if (lo + 1 < int64_t(sagKeys_.size()) && sags_[size_t(lo + 1)] == water_) ++lo;  // the water is itself a sag
@@ -545,8 +568,7 @@ private:
             int64_t k = bankCandidate(lo, hi);
             if (k == -1) return kNil;
             if (k >= 0 && test(uint32_t(k))) {
-                sagIndex_.markUsed(uint32_t(k));
-                return sags_[size_t(k)];
+                return useSag(k);
             }
         }
         // The next few ranks first, in order: in a wide gorge (a strip under a row of holes)
@@ -565,8 +587,12 @@ private:
             treeWork_ += work().nodeVisits - before;
         }
         if (k < 0) return kNil;
-        sagIndex_.markUsed(uint32_t(k));
-        return sags_[size_t(k)];
+        return useSag(k);
+    }
+    uint32_t useSag(int64_t rank) {
+        sagIndex_.markUsed(uint32_t(rank));
+        --unusedSags_;
+        return sags_[size_t(rank)];
     }
 
     static constexpr int64_t kProbes = 4;  // ranks findSag tests before the sag tree
@@ -910,6 +936,7 @@ private:
     // and their ancestors in the stretch's tree get INT32_MIN, below any count.
     void makeWet(uint32_t n) {
         nodes_[n].wet = true;
+        if (stretchRecs_.empty()) return;  // no spill walk recorded a stretch yet: no tree to update
         for (int dir = 0; dir < 2; ++dir) {
             uint32_t at = recordedAt(dir, n);
             if (at == kNil) continue;
@@ -983,50 +1010,105 @@ private:
         water_ = rec.water;
     }
 
+public:
+    // What the machine allocates, lent by a Triangulator (or the thread, for small inputs)
+    // from run to run; the members below of the same names refer to them.
+    struct Buffers {
+        std::vector<Point> rotated, pointOfRank;
+        std::vector<Node> nodes;
+        std::vector<uint32_t> sags, partVertices, points, initialNext, sagBucket, sagsBelow, bottoms, todo;
+        std::vector<Index> loop;
+        SagIndex sagIndex;
+        SagBanks banks;
+        std::vector<HeightKey> sagKeys, bottomKeys;
+        std::vector<double> sagY;
+        std::vector<GorgeRec> gorges;
+        std::vector<Stretch> stretches;
+        std::vector<StretchRec> stretchRecs;
+        std::vector<int32_t> stretchTree;
+        std::vector<uint32_t> stretchAt[2];
+        RepeatedPointsScratch repeats;  // mergeTouchingLoops' search (coincident.h)
+        std::vector<uint32_t> corner, newNext;
+        std::vector<std::pair<Point, uint32_t>> outs;
+    };
+
+private:
     const Polygon& poly_;
     Listener* listener_;
-    std::vector<Point> rotated_;  // the vertices turned so that the chosen vertical is +y
+    std::unique_ptr<Buffers> own_;  // when none are lent
+    Buffers& b_;                    // the buffers of this run: lent, or own_
+    std::vector<Point>& rotated_ = b_.rotated;  // the vertices turned so that the chosen vertical is +y
     const Point* pts_ = nullptr;  // the vertices as the machine sees them (rotated_ or input)
     const Up up_;                 // the chosen vertical
     const bool general_;          // off the axes: heights are heightRank_, never coordinates
     std::vector<uint32_t> heightRank_;  // per vertex, off the axes: its rank by height along up_
-    std::vector<Node> nodes_;
-    std::vector<uint32_t> sags_;
-    SagIndex sagIndex_;  // the sags by height rank, searchable by x
-    SagBanks banks_;     // the sags each input edge sees, once the plane index is costly
+    std::vector<Node>& nodes_ = b_.nodes;
+    std::vector<uint32_t>& sags_ = b_.sags;
+    SagIndex& sagIndex_ = b_.sagIndex;  // the sags by height rank, searchable by x
+    SagBanks& banks_ = b_.banks;        // the sags each input edge sees, once the plane index is costly
     bool banksTried_ = false;
     uint64_t treeWork_ = 0;  // box visits of the plane index in this part
     uint32_t partFirstVertex_ = 0, initialNodes_ = 0;
-    std::vector<uint32_t> initialNext_;  // per initial node of the part (local ids): next
-    std::vector<HeightKey> sagKeys_;  // height keys of sags_, for binary search
-    std::vector<double> sagY_;         // their y alone: a denser array for the first search
-    std::vector<uint32_t> sagBucket_;  // first rank of each height bucket (heightBucket())
+    std::vector<uint32_t>& initialNext_ = b_.initialNext;  // per initial node of the part (local ids): next
+    std::vector<HeightKey>& sagKeys_ = b_.sagKeys;  // height keys of sags_, for binary search
+    std::vector<double>& sagY_ = b_.sagY;         // their y alone: a denser array for the first search
+    std::vector<uint32_t>& sagBucket_ = b_.sagBucket;  // first rank of each height bucket (heightBucket())
     double bucketY0_ = 0, bucketScale_ = 0;
-    std::vector<HeightKey> bottomKeys_;  // scratch for sorting the bottoms
-    std::vector<uint32_t> sagsBelow_;  // per node of the part (from partFirstNode_): sags below it, kNil until asked
-    std::vector<uint32_t> bottoms_;  // bottoms; lowest first once sorted (lowestDryBottom())
+    std::vector<HeightKey>& bottomKeys_ = b_.bottomKeys;  // scratch for sorting the bottoms
+    std::vector<uint32_t>& sagsBelow_ = b_.sagsBelow;  // per node of the part (from partFirstNode_): sags below it, kNil until asked
+    std::vector<uint32_t>& bottoms_ = b_.bottoms;  // bottoms; lowest first once sorted (lowestDryBottom())
     size_t bottomCursor_ = 0;
     uint32_t bottomScans_ = 0;
-    std::vector<GorgeRec> gorges_;
+    std::vector<GorgeRec>& gorges_ = b_.gorges;
     // Spill walks remembered: the dry nodes a walk passed, in its direction (prev-wards or
     // next-wards), with the drop count's change along them. Links between dry nodes do not
     // change (every edit of the loops touches a wet node), so a later walk reaching such a
     // stretch crosses it in one step up to its first node that got wet since.
-    std::vector<Stretch> stretches_;
-    std::vector<StretchRec> stretchRecs_;
-    std::vector<int32_t> stretchTree_;
-    std::vector<uint32_t> stretchAt_[2];  // per node of the part, per direction: its position
-    std::vector<uint32_t> todo_;  // pending gorges (ids), last pushed first
+    std::vector<Stretch>& stretches_ = b_.stretches;
+    std::vector<StretchRec>& stretchRecs_ = b_.stretchRecs;
+    std::vector<int32_t>& stretchTree_ = b_.stretchTree;
+    std::vector<uint32_t> (&stretchAt_)[2] = b_.stretchAt;  // per node of the part, per direction: its position
+    std::vector<uint32_t>& todo_ = b_.todo;  // pending gorges (ids), last pushed first
     uint32_t left_ = kNil, right_ = kNil, water_ = kNil;
     uint32_t part_ = 0, partNodes_ = 0, partFirstNode_ = 0, cut_ = 0, step_ = 0;
     uint64_t budget_ = 0;
-    FloodResult result_;
+    uint32_t unusedSags_ = 0;  // sags of the part not bridged yet
+    FloodResult& result_;
 };
 
 }  // namespace
 
+// Inputs up to this size reuse their thread's buffers: a program flooding many small polygons
+// allocates little more than each result, and a thread keeps at most ~1 MB after a big one.
+constexpr size_t kThreadBufferVertices = 4096;
+
 FloodResult triangulate(const Polygon& polygon, Listener* listener, const Options& options) {
-    return Machine(polygon, listener, options).run();
+    thread_local Machine::Buffers buffers;
+    thread_local bool lent = false;  // a listener that triangulates too gets buffers of its own
+    struct Lending {
+        bool active;
+        ~Lending() {
+            if (active) lent = false;
+        }
+    } lending{!lent && polygon.vertices.size() <= kThreadBufferVertices};
+    if (lending.active) lent = true;
+    FloodResult result;
+    Machine(polygon, listener, options, result, lending.active ? &buffers : nullptr).run();
+    return result;
+}
+
+struct Triangulator::Workspace {
+    Machine::Buffers buffers;
+    FloodResult result;
+};
+Triangulator::Triangulator() : workspace_(new Workspace) {}
+Triangulator::~Triangulator() = default;
+Triangulator::Triangulator(Triangulator&&) noexcept = default;
+Triangulator& Triangulator::operator=(Triangulator&&) noexcept = default;
+const FloodResult& Triangulator::run(const Polygon& polygon, Listener* listener, const Options& options) {
+    Workspace& w = *workspace_;
+    Machine(polygon, listener, options, w.result, &w.buffers).run();  // refills the last result
+    return w.result;
 }
 
 Culprits forbiddenCulprits(const Polygon& polygon, const Event& e) {

@@ -1,5 +1,6 @@
 // Public entry point of the core: triangulate a polygon by flooding (Ronfard & Rossignac 1994).
 #pragma once
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,25 @@ struct FloodResult {
 // ends in a Forbidden diagnostic, never a crash or a hang. `listener` may be null.
 FloodResult triangulate(const Polygon& polygon, Listener* listener = nullptr,
                         const Options& options = {});
+
+// Triangulates polygon after polygon keeping its working memory (the machine's loops, sag
+// lists, gorges, and the result) from call to call, as earcut keeps its node pool: once its
+// buffers have grown to the largest input seen, a call allocates nothing. Results equal
+// triangulate()'s. One per thread, and not re-entrant: a listener must not call run() on the
+// Triangulator that calls it. The result is valid until the next run().
+class Triangulator {
+public:
+    Triangulator();
+    ~Triangulator();
+    Triangulator(Triangulator&&) noexcept;
+    Triangulator& operator=(Triangulator&&) noexcept;
+    const FloodResult& run(const Polygon& polygon, Listener* listener = nullptr, const Options& options = {});
+
+    struct Workspace;  // core/flood.cpp
+
+private:
+    std::unique_ptr<Workspace> workspace_;
+};
 
 // Human-readable description of a forbidden event, naming the vertices (index, ring, x, y).
 std::string describeForbidden(const Polygon& polygon, const Event& e);

@@ -32,6 +32,7 @@ size_t Polygon::expectedTriangles() const {
 }
 
 void Polygon::addRing(const std::vector<Point>& pts, bool outer) {
+    pointsDistinct = false;  // the new ring may touch the others
     if (outer) parts.push_back({Index(rings.size()), 0});
     rings.push_back({Index(vertices.size()), Index(pts.size())});
     parts.back().ringCount++;

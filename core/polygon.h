@@ -58,6 +58,11 @@ struct Polygon {
     std::vector<Ring> rings;
     std::vector<Part> parts;
     std::vector<EdgeSplit> splits;  // T-junction touches, sorted by edge (see validate())
+    // Set by validate() on a valid polygon where no two vertices are at one point (bit-equal
+    // coordinates) and no T-junction: no rings touch, so the flood machine skips its search
+    // for touching points. False means not known. Edit the vertices, validate again (as for
+    // splits).
+    bool pointsDistinct = false;
 
     Index ringOf(Index v) const;  // ring containing vertex v (binary search)
     size_t holeCount() const { return rings.size() - parts.size(); }

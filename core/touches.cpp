@@ -183,6 +183,7 @@ TouchSearch findTouches(Polygon& polygon, uint64_t maxSteps) {
         return a.y < b.y ? p.y < q.y : p.y > q.y;
     });
     polygon.splits = std::move(splits);
+    polygon.pointsDistinct = false;  // not validated: the machine looks for shared points itself
     return result;
 }
 

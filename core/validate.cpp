@@ -707,6 +707,7 @@ Diagnostic validate(Polygon& polygon, const std::string& name) {
     Validator v(polygon, name);
     Diagnostic d = v.run();
     polygon.splits = d.ok() ? std::move(v.splits) : std::vector<EdgeSplit>{};
+    polygon.pointsDistinct = d.ok() && v.touchPoints.empty();  // check 5 grouped every shared point
     return d;
 }
 

@@ -18,6 +18,7 @@ struct WorkCounters {
                                   // (its sweep, lists, tree and tests), to weigh it against the rest
     uint64_t invariantSteps = 0;  // grid cells and vertices the invariant checker visits
     uint64_t heightCalls = 0;     // exact height tests along a direction off the axes (heightSign)
+    uint64_t touchSearchNodes = 0;  // nodes the flood machine hashed looking for rings that touch
 };
 
 inline thread_local WorkCounters tWork;

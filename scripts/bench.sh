@@ -26,6 +26,7 @@ if [ "${1:-}" != "--report-only" ]; then
   echo "== inputs";  "$build/flood-bench" dump "$data" "$fixtures" --seed "$seed" --max-size "$maxsize"
   echo "== earcut";  "$py" "$root/bench/earcut_bench.py" "$data" --timeout "$timeout"
   echo "== peers";   "$build/flood-bench" run "$data" --timeout "$timeout" --out "$data/results.tsv"
+  echo "== small polygons"; "$root/scripts/small-bench.sh" "$build"  # its own kept section of BENCHMARKS.md
   echo "== memory"
   printf 'name\tmode\tstatus\tvertices\tmaxrss_loaded_kb\tmaxrss_peak_kb\ttriangles\tevents\n' > "$data/memory.tsv"
   tail -n +2 "$data/manifest.tsv" | while IFS=$'\t' read -r name family size vertices holes valid path verdict; do

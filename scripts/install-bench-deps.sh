@@ -9,5 +9,6 @@ packages=(
   libgeos-dev                                         # GEOS 3.11 C API
   libglu1-mesa-dev                                    # GLU tessellator (gluTess*)
   python3 python3-numpy python3-mapbox-earcut         # earcut.hpp via its numpy binding
+  valgrind                                            # callgrind for scripts/small-bench.sh
 )
 FLOOD_INSTALL_LABEL=install-bench-deps exec "$(dirname "$0")/install-deps.sh" "${packages[@]}"

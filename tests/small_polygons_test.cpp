@@ -1,0 +1,132 @@
+// Small polygons (issue 13): a Triangulator keeps its working memory from call to call, so a
+// call allocates nothing once its buffers have grown; a polygon validated without shared
+// points is flooded without the search for touching rings. Results are those of a fresh
+// triangulate(): the same triangles, whatever was flooded before.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <new>
+#include <string>
+#include <vector>
+
+#include "generate.h"
+#include "test_support.h"
+#include "work.h"
+
+// Allocations made by this thread, counted by the replaced global operator new (it forwards
+// to malloc; the rest of the suite sees no difference).
+namespace {
+thread_local uint64_t tAllocations = 0;
+}
+void* operator new(std::size_t size) {
+    ++tAllocations;
+    if (void* p = std::malloc(size ? size : 1)) return p;
+    throw std::bad_alloc();
+}
+void operator delete(void* p) noexcept { std::free(p); }
+void operator delete(void* p, std::size_t) noexcept { std::free(p); }
+
+namespace flood {
+namespace {
+
+using testing::sharedPath;
+using testing::sourcePath;
+
+Polygon validated(const std::string& path) {
+    ReadResult rr = readPolygonFile(path);
+    EXPECT_TRUE(rr.diagnostic.ok()) << rr.diagnostic.message;
+    EXPECT_TRUE(validate(rr.polygon, path).ok()) << path;
+    return std::move(rr.polygon);
+}
+
+// Every input the tests below flood: the samples, and earcut's fixtures when shared/ is there.
+std::vector<Polygon> inputs() {
+    std::vector<Polygon> out;
+    for (const std::string& f : testing::filesIn(sourcePath("polygons"), ".json")) out.push_back(validated(f));
+    for (const std::string& f : testing::filesIn(sharedPath("peers/earcut/fixtures"), ".json")) {
+        ReadResult rr = readPolygonFile(f);
+        if (rr.diagnostic.ok() && validate(rr.polygon, f).ok()) out.push_back(std::move(rr.polygon));
+    }
+    for (const std::string& family : familyNames()) out.push_back(generate(family, 7, 300));
+    for (Polygon& p : out) EXPECT_TRUE(validate(p, "input").ok());
+    return out;
+}
+
+TEST(SmallPolygons, ValidationTellsWhetherPointsRepeat) {
+    Polygon holes = validated(sourcePath("polygons/holes.json"));
+    EXPECT_TRUE(holes.pointsDistinct);
+    EXPECT_FALSE(validated(sourcePath("polygons/touching-hole.json")).pointsDistinct);  // a shared vertex
+    EXPECT_FALSE(validated(sourcePath("polygons/t-junction.json")).pointsDistinct);     // a vertex on an edge
+    holes.addRing({{1, 1}, {1, 1.5}, {1.5, 1}}, false);  // not validated since
+    EXPECT_FALSE(holes.pointsDistinct);
+}
+
+TEST(SmallPolygons, NoTouchingPointSearchWithoutRepeatedPoints) {
+    Polygon holes = validated(sourcePath("polygons/holes.json"));
+    work() = {};
+    FloodResult r = triangulate(holes);
+    ASSERT_TRUE(r.diagnostic.ok()) << r.diagnostic.message;
+    EXPECT_EQ(work().touchSearchNodes, 0u);
+    EXPECT_TRUE(checkTriangulation(holes, r.triangles).ok);
+
+    // Not known (not validated): the machine looks, and finds the same triangles.
+    Polygon unknown = holes;
+    unknown.pointsDistinct = false;
+    work() = {};
+    EXPECT_EQ(triangulate(unknown).triangles, r.triangles);
+    EXPECT_EQ(work().touchSearchNodes, holes.vertices.size());
+
+    // Rings that touch are still merged where they touch.
+    Polygon touching = validated(sourcePath("polygons/touching-hole.json"));
+    work() = {};
+    FloodResult t = triangulate(touching);
+    ASSERT_TRUE(t.diagnostic.ok()) << t.diagnostic.message;
+    EXPECT_GT(work().touchSearchNodes, 0u);
+    EXPECT_TRUE(checkTriangulation(touching, t.triangles).ok);
+}
+
+TEST(SmallPolygons, TriangulatorAllocatesNothingOnceWarm) {
+    for (const char* name : {"polygons/holes.json", "polygons/touching-hole.json", "polygons/t-junction.json",
+                             "polygons/steiner.json", "polygons/comb.json"}) {
+        Polygon p = validated(sourcePath(name));
+        Triangulator t;
+        const size_t triangles = t.run(p).triangles.size();
+        ASSERT_TRUE(t.run(p).diagnostic.ok()) << name;
+        const uint64_t before = tAllocations;
+        for (int i = 0; i < 3; ++i) EXPECT_EQ(t.run(p).triangles.size(), triangles);
+        EXPECT_EQ(tAllocations - before, 0u) << name;
+    }
+}
+
+TEST(SmallPolygons, TriangulateAllocatesOnlyItsResult) {
+    Polygon p = validated(sourcePath("polygons/holes.json"));
+    triangulate(p);  // this thread's buffers grow once
+    const uint64_t before = tAllocations;
+    FloodResult r = triangulate(p);
+    EXPECT_TRUE(r.diagnostic.ok());
+    EXPECT_EQ(tAllocations - before, 1u);  // the triangles returned
+}
+
+TEST(SmallPolygons, ReusedBuffersGiveTheSameTriangles) {
+    std::vector<Polygon> all = inputs();
+    Triangulator t;
+    // Forwards, then backwards: each polygon sees buffers left by a larger and a smaller one.
+    for (int pass = 0; pass < 2; ++pass)
+        for (size_t k = 0; k < all.size(); ++k) {
+            const Polygon& p = all[pass ? all.size() - 1 - k : k];
+            FloodResult fresh = triangulate(p);
+            const FloodResult& reused = t.run(p);
+            EXPECT_EQ(reused.triangles, fresh.triangles) << k;
+            EXPECT_EQ(reused.steps, fresh.steps) << k;
+            EXPECT_EQ(reused.diagnostic.message, fresh.diagnostic.message) << k;
+            EXPECT_TRUE(fresh.diagnostic.ok()) << k << ": " << fresh.diagnostic.message;
+            for (Up up : {Up::MinusY, Up::PlusX}) {
+                Options o;
+                o.up = up;
+                EXPECT_EQ(t.run(p, nullptr, o).triangles, triangulate(p, nullptr, o).triangles) << k;
+            }
+        }
+}
+
+}  // namespace
+}  // namespace flood

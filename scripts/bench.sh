@@ -62,6 +62,7 @@ if [ "${1:-}" != "--report-only" ]; then
     echo "earcut: python3-mapbox-earcut $(dpkg-query -W -f='${Version}' python3-mapbox-earcut)";
     echo "node: $(node --version); npm: $(cd "$build/node" && npm ls --depth=0 2>/dev/null | tail -n +2 | sed 's/^[^a-z]*//' | tr '\n' ' ')";
     echo "date: $(date -u +%Y-%m-%d)";
+    echo "timeout: $timeout s per input and triangulator";
     echo "load: $(cut -d' ' -f1-3 /proc/loadavg)"; } > "$data/machine.txt"
 fi
 echo "== report"

@@ -5,7 +5,7 @@
 # its Python binding; earcut, libtess and poly2tri under Node.js).
 #   scripts/bench.sh                  everything: deps, build, inputs, earcut, peers, memory, report
 #   scripts/bench.sh --report-only    rewrite the report from the last results in build-bench/bench
-# Environment: BENCH_TIMEOUT (seconds per input and triangulator, default 60),
+# Environment: BENCH_TIMEOUT (seconds per input and triangulator, default 30),
 #              BENCH_MAX_SIZE (largest generated size, default 10000000), BENCH_SEED (default 1),
 #              BENCH_LARGE (families also run at 10^7, comma-separated; default three cheap ones).
 # About 25 minutes on 2 cores. Builds into build-bench with -DFLOOD_BENCH=ON; the npm peers are
@@ -15,7 +15,7 @@ root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$root/build-bench"
 data="$build/bench"
 fixtures="$root/../shared/peers/earcut/fixtures"
-timeout="${BENCH_TIMEOUT:-60}"
+timeout="${BENCH_TIMEOUT:-30}"
 maxsize="${BENCH_MAX_SIZE:-10000000}"
 large="${BENCH_LARGE:-spiral,circle-holes,comb-rect}"
 seed="${BENCH_SEED:-1}"

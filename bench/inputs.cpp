@@ -1,6 +1,7 @@
 // Benchmark inputs (see inputs.h).
 #include "inputs.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
@@ -13,13 +14,13 @@ namespace bench {
 using flood::Point;
 using flood::Polygon;
 
-std::vector<std::string> benchFamilies() {
-    return {"circle-smooth", "circle-jagged", "circle-sqrt-holes", "circle-holes",
-            "comb",          "ortho-histogram", "spiral"};
+std::vector<std::string> benchFamilies() { return flood::familyNames(); }
+
+std::vector<size_t> benchSizes(const std::string& family, const std::vector<std::string>& large) {
+    std::vector<size_t> sizes{1000, 10000, 100000, 1000000};
+    if (std::find(large.begin(), large.end(), family) != large.end()) sizes.push_back(10000000);
+    return sizes;
 }
-
-std::vector<size_t> benchSizes() { return {1000, 10000, 100000, 1000000}; }
-
 
 Polygon benchGenerate(const std::string& family, uint64_t seed, size_t size) {
     return flood::generate(family, seed, size);

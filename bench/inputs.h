@@ -21,12 +21,13 @@ struct InputInfo {
     std::string path;      // the .poly file
 };
 
-// The generated families of the benchmark and the sizes they are run at.
+// The generated families of the benchmark: every family of the core generator (familyNames()).
 std::vector<std::string> benchFamilies();
-std::vector<size_t> benchSizes();
+// The sizes a family is run at: 10^3..10^6, and 10^7 when it is one of `large` (a few cheap
+// families, so the growth is seen one decade further).
+std::vector<size_t> benchSizes(const std::string& family, const std::vector<std::string>& large);
 
-// Generates a family: the core generator's families, plus "circle-sqrt-holes" (a circle with
-// K = sqrt(N)/2 circular holes, the definition), built here.
+// Generates a family with the core generator.
 flood::Polygon benchGenerate(const std::string& family, uint64_t seed, size_t size);
 
 // Binary .poly: "FLPOLY2\n", u64 ring count, per ring (u64 vertex count, u64 outer flag),

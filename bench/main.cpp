@@ -1,12 +1,15 @@
 // flood-bench: Flood against the peer triangulators on the same inputs (issue 4).
 //
-//   flood-bench dump DIR FIXTURES [--seed S] [--max-size N]   write inputs + DIR/manifest.tsv
+//   flood-bench dump DIR FIXTURES [--seed S] [--max-size N] [--large F,G]
+//                                                             write inputs + DIR/manifest.tsv
 //   flood-bench run DIR [--timeout S] [--out FILE]            time every triangulator, check it
 //   flood-bench memory FILE.poly [--record]                   peak memory of one Flood run
+//   flood-bench floor FILE.poly                               the floor's parts, ns (floor.h)
 //
 // `run` measures each (input, triangulator) in a child process, so a peer that crashes or
-// hangs costs one row ("crash", "timeout"), never the run. The Python earcut driver
-// (earcut_bench.py) runs between dump and run; `run` checks its triangles and merges its rows.
+// hangs costs one row ("crash", "timeout"), never the run. The out-of-process peers (earcut
+// through Python, earcut, libtess and poly2tri under Node.js) run between dump and run; `run`
+// checks their triangles and merges their rows.
 // scripts/bench.sh chains everything and bench/report.py writes docs/BENCHMARKS.md.
 #include <poll.h>
 #include <signal.h>
@@ -30,10 +33,12 @@
 
 #include "checker.h"
 #include "flood.h"
+#include "floor.h"
 #include "inputs.h"
 #include "io.h"
 #include "peers.h"
 #include "replay.h"
+#include "work.h"
 
 namespace fs = std::filesystem;
 using namespace flood;
@@ -145,7 +150,12 @@ Row measure(const std::string& who, const Polygon& p, const CoordIndex& index) {
         else v = judge(p, result.triangles, 0, "");
         Polygon copy = p;  // validate() records the T-junctions it finds into its polygon
         Timing tv = timeRuns([&] { (void)validate(copy, "input"); });
-        row.extra = "validate_ns=" + std::to_string(tv.medianNs);
+        // One more run counted (core/work.h): the sag search's share of the machine's work.
+        work() = {};
+        (void)triangulate(p);
+        const WorkCounters w = work();
+        row.extra = "validate_ns=" + std::to_string(tv.medianNs) + ";machine_work=" +
+                    std::to_string(w.nodeVisits + w.sagTests + w.orientCalls) + ";sag_work=" + std::to_string(w.sagSearch);
     } else if (who == "flood-rec") {
         // Full trace recording as `flood trace` and the viewer get it: record(), a fresh Trace
         // (polygon copy and event log) each run, timed in turn with a plain run.
@@ -166,6 +176,13 @@ Row measure(const std::string& who, const Polygon& p, const CoordIndex& index) {
         });
         row.extra = "events=" + std::to_string(trace.events.size()) + ";reused_ns=" + std::to_string(tk.medianNs) +
                     ";paired_plain_ns=" + std::to_string(tp.medianNs);
+    } else if (who == "floor") {
+        FloorNs f = measureFloor(p);
+        row.ns = f.total();
+        row.runs = 1;
+        v = {"ok", ""};
+        row.extra = "io_ns=" + std::to_string(f.io) + ";orient_ns=" + std::to_string(f.orient) +
+                    ";sags_ns=" + std::to_string(f.sags);
     } else if (who == "glu") {
         PeerOutput out;
         Timing t = timeRuns([&] { out = runGlu(p); });
@@ -260,7 +277,8 @@ std::string safeName(const std::string& name) {
     return s;
 }
 
-int cmdDump(const std::string& dir, const std::string& fixtures, uint64_t seed, size_t maxSize) {
+int cmdDump(const std::string& dir, const std::string& fixtures, uint64_t seed, size_t maxSize,
+            const std::vector<std::string>& large) {
     fs::create_directories(dir);
     std::vector<InputInfo> rows;
     auto add = [&](const std::string& name, const std::string& family, size_t size, const Polygon& p) {
@@ -294,14 +312,15 @@ int cmdDump(const std::string& dir, const std::string& fixtures, uint64_t seed, 
         add("fixture/" + f.stem().string(), "fixture", rr.polygon.vertices.size(), rr.polygon);
     }
     for (const auto& family : benchFamilies())
-        for (size_t size : benchSizes())
+        for (size_t size : benchSizes(family, large))
             if (size <= maxSize) add(family + "/" + std::to_string(size), family, size, benchGenerate(family, seed, size));
     writeManifest((fs::path(dir) / "manifest.tsv").string(), rows);
     return 0;
 }
 
-// Rows written by earcut_bench.py: name -> (status, ns, runs, triangles, detail).
-std::map<std::string, std::vector<std::string>> readEarcut(const std::string& path) {
+// Rows written by an out-of-process peer (earcut_bench.py, node/peers_time.mjs):
+// name -> (name, status, ns, runs, triangles, detail[, added]).
+std::map<std::string, std::vector<std::string>> readExternal(const std::string& path) {
     std::map<std::string, std::vector<std::string>> m;
     std::ifstream in(path);
     std::string line;
@@ -315,10 +334,15 @@ std::map<std::string, std::vector<std::string>> readEarcut(const std::string& pa
     return m;
 }
 
-Row earcutRow(const std::string& dir, const InputInfo& info, const Polygon& p,
-              const std::map<std::string, std::vector<std::string>>& earcut) {
-    auto it = earcut.find(info.name);
-    if (it == earcut.end()) return {"missing", "no earcut result", "", 0, 0, 0};
+// The peers run outside this driver: their name in the results, the file stem of their rows
+// (DIR/STEM.tsv) and triangles (DIR/<input>.STEM.tri).
+const std::vector<std::pair<std::string, std::string>> kExternal{
+    {"earcut", "earcut"}, {"earcut-js", "earcut-node"}, {"libtess", "libtess-node"}, {"poly2tri", "poly2tri-node"}};
+
+Row externalRow(const std::string& dir, const std::string& stem, const InputInfo& info, const Polygon& p,
+                const std::map<std::string, std::vector<std::string>>& rows) {
+    auto it = rows.find(info.name);
+    if (it == rows.end()) return {"missing", "no " + stem + " result", "", 0, 0, 0};
     const auto& f = it->second;
     Row row;
     row.status = f[1];
@@ -327,25 +351,35 @@ Row earcutRow(const std::string& dir, const InputInfo& info, const Polygon& p,
     row.triangles = std::stoull(f[4]);
     row.detail = f.size() > 5 ? f[5] : "";
     if (row.status != "ok") return row;
-    std::ifstream in((fs::path(dir) / (safeName(info.name) + ".earcut.tri")).string(), std::ios::binary);
+    std::ifstream in((fs::path(dir) / (safeName(info.name) + "." + stem + ".tri")).string(), std::ios::binary);
     std::vector<uint32_t> idx(row.triangles * 3);
     in.read(reinterpret_cast<char*>(idx.data()), std::streamsize(idx.size() * 4));
-    if (!in) return {"error", "earcut triangle file unreadable", "", row.ns, row.runs, row.triangles};
+    if (!in) return {"error", stem + " triangle file unreadable", "", row.ns, row.runs, row.triangles};
     std::vector<Triangle> t(row.triangles);
-    for (size_t i = 0; i < t.size(); ++i) t[i] = {idx[3 * i], idx[3 * i + 1], idx[3 * i + 2]};
-    Verdict v = judge(p, t, 0, "");
+    for (size_t i = 0; i < t.size(); ++i) {
+        t[i] = {idx[3 * i], idx[3 * i + 1], idx[3 * i + 2]};
+        for (uint32_t v : t[i])
+            if (v >= p.vertices.size()) return {"error", stem + ": vertex index out of range", "", row.ns, row.runs, row.triangles};
+    }
+    size_t added = f.size() > 6 && !f[6].empty() ? std::stoull(f[6]) : 0;
+    Verdict v = judge(p, t, added, "");
     row.status = v.status;
     row.detail = v.detail;
     return row;
 }
 
+// Above this size (10^7, for a few cheap families) only Flood and the floor are timed: the peers
+// take minutes there, and their growth is already clear from 10^3..10^6.
+constexpr size_t kLargestPeerSize = 1000000;
+
 int cmdRun(const std::string& dir, double timeoutS, const std::string& outPath) {
     std::vector<InputInfo> inputs = readManifest((fs::path(dir) / "manifest.tsv").string());
-    auto earcut = readEarcut((fs::path(dir) / "earcut.tsv").string());
+    std::vector<std::map<std::string, std::vector<std::string>>> external;
+    for (const auto& e : kExternal) external.push_back(readExternal((fs::path(dir) / (e.second + ".tsv")).string()));
     std::ofstream(fs::path(dir) / "event_bytes.txt") << sizeof(Event) << "\n";  // for the report
     std::ofstream out(outPath);
     out << "name\tfamily\tsize\tvertices\tholes\tinput_valid\texpected\ttriangulator\tstatus\tns\truns\ttriangles\tdetail\textra\n";
-    const std::vector<std::string> who{"flood", "flood-rec", "glu", "cgal", "geos"};
+    const std::vector<std::string> who{"flood", "floor", "flood-rec", "glu", "cgal", "geos"};
     std::map<std::string, std::vector<double>> history;  // triangulator|family -> single-run ns
     std::map<std::string, bool> givenUp;
     for (const auto& info : inputs) {
@@ -362,15 +396,22 @@ int cmdRun(const std::string& dir, double timeoutS, const std::string& outPath) 
         };
         for (const auto& w : who) {
             std::string key = w + "|" + info.family;
+            if (info.size > kLargestPeerSize && w != "flood" && w != "floor") {
+                emit(w, {"skipped", "above 10^6 only Flood and the floor run", "", 0, 0, 0});
+                continue;
+            }
             if (info.family != "fixture" && givenUp[key]) {
                 emit(w, {"skipped", "timed out or predicted over the limit at a smaller size", "", 0, 0, 0});
                 continue;
             }
+            // Flood and the floor get 4x the limit: their figures are the point of the goals, and
+            // Flood's child also times validate() and makes one counted run.
+            const double limit = w == "flood" || w == "floor" ? 4 * timeoutS : timeoutS;
             auto& h = history[key];
             if (info.family != "fixture" && h.size() >= 2) {
                 double growth = std::max(10.0, h[h.size() - 1] / h[h.size() - 2]);  // per decade
                 double predicted = h.back() * growth * 1e-9;
-                if (predicted > 0.75 * timeoutS) {
+                if (predicted > 0.75 * limit) {
                     givenUp[key] = true;
                     std::ostringstream d;
                     d << "predicted " << int(predicted) << " s per run from the smaller sizes";
@@ -378,12 +419,13 @@ int cmdRun(const std::string& dir, double timeoutS, const std::string& outPath) 
                     continue;
                 }
             }
-            Row r = guarded(w, p, index, timeoutS);
+            Row r = guarded(w, p, index, limit);
             if (r.status == "timeout" || r.status == "crash") givenUp[key] = true;
             else h.push_back(r.ns);
             emit(w, r);
         }
-        emit("earcut", earcutRow(dir, info, p, earcut));
+        for (size_t e = 0; e < kExternal.size(); ++e)
+            emit(kExternal[e].first, externalRow(dir, kExternal[e].second, info, p, external[e]));
     }
     return 0;
 }
@@ -405,11 +447,20 @@ int cmdMemory(const std::string& path, bool rec) {
     return result.diagnostic.ok() ? 0 : 1;
 }
 
+int cmdFloor(const std::string& path) {
+    Polygon p = readPoly(path);
+    FloorNs f = measureFloor(p);
+    std::printf("vertices %zu\tio %.0f ns\torient %.0f ns\tsags %.0f ns\ttotal %.1f ns/vertex\n", p.vertices.size(),
+                f.io, f.orient, f.sags, f.total() / double(std::max<size_t>(1, p.vertices.size())));
+    return 0;
+}
+
 int usage() {
     std::fprintf(stderr,
-                 "usage: flood-bench dump DIR FIXTURES [--seed S] [--max-size N]\n"
+                 "usage: flood-bench dump DIR FIXTURES [--seed S] [--max-size N] [--large F,G]\n"
                  "       flood-bench run DIR [--timeout S] [--out FILE]\n"
-                 "       flood-bench memory FILE.poly [--record]\n");
+                 "       flood-bench memory FILE.poly [--record]\n"
+                 "       flood-bench floor FILE.poly\n");
     return 2;
 }
 
@@ -425,11 +476,17 @@ int main(int argc, char** argv) {
     };
     bool flag = std::find(a.begin(), a.end(), "--record") != a.end();
     try {
-        if (a[0] == "dump" && a.size() >= 3)
-            return cmdDump(a[1], a[2], std::stoull(option("--seed", "1")), std::stoull(option("--max-size", "1000000")));
+        if (a[0] == "dump" && a.size() >= 3) {
+            std::vector<std::string> large;  // families also run at 10^7
+            std::istringstream list(option("--large", ""));
+            for (std::string f; std::getline(list, f, ',');)
+                if (!f.empty()) large.push_back(f);
+            return cmdDump(a[1], a[2], std::stoull(option("--seed", "1")), std::stoull(option("--max-size", "1000000")), large);
+        }
         if (a[0] == "run" && a.size() >= 2)
             return cmdRun(a[1], std::stod(option("--timeout", "60")), option("--out", a[1] + "/results.tsv"));
         if (a[0] == "memory" && a.size() >= 2) return cmdMemory(a[1], flag);
+        if (a[0] == "floor" && a.size() >= 2) return cmdFloor(a[1]);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "flood-bench: %s\n", e.what());
         return 6;

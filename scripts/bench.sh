@@ -1,17 +1,23 @@
 #!/usr/bin/env bash
-# Runs the peer benchmarks (issue 4) and writes docs/BENCHMARKS.md and docs/bench.svg.
+# Runs the peer benchmarks (issues 4, 13) and writes docs/BENCHMARKS.md, docs/bench.svg and the
+# README's bench block: every family of the generator at 10^3..10^6 (10^7 for BENCH_LARGE), the
+# floor, and the peers side by side in one run (CGAL, GLU, GEOS in the C++ driver; earcut through
+# its Python binding; earcut, libtess and poly2tri under Node.js).
 #   scripts/bench.sh                  everything: deps, build, inputs, earcut, peers, memory, report
 #   scripts/bench.sh --report-only    rewrite the report from the last results in build-bench/bench
-# Environment: BENCH_TIMEOUT (seconds per input and triangulator, default 60),
-#              BENCH_MAX_SIZE (largest generated size, default 1000000), BENCH_SEED (default 1).
-# About 15 minutes on 2 cores. Builds into build-bench with -DFLOOD_BENCH=ON.
+# Environment: BENCH_TIMEOUT (seconds per input and triangulator, default 30),
+#              BENCH_MAX_SIZE (largest generated size, default 10000000), BENCH_SEED (default 1),
+#              BENCH_LARGE (families also run at 10^7, comma-separated; default three cheap ones).
+# About 25 minutes on 2 cores. Builds into build-bench with -DFLOOD_BENCH=ON; the npm peers are
+# installed from bench/node/package-lock.json into build-bench/node by `npm ci`.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$root/build-bench"
 data="$build/bench"
 fixtures="$root/../shared/peers/earcut/fixtures"
-timeout="${BENCH_TIMEOUT:-60}"
-maxsize="${BENCH_MAX_SIZE:-1000000}"
+timeout="${BENCH_TIMEOUT:-30}"
+maxsize="${BENCH_MAX_SIZE:-10000000}"
+large="${BENCH_LARGE:-spiral,circle-holes,comb-rect}"
 seed="${BENCH_SEED:-1}"
 py=/usr/bin/python3   # Debian's python: python3-numpy and python3-mapbox-earcut live there
 
@@ -21,10 +27,16 @@ if [ "${1:-}" != "--report-only" ]; then
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DFLOOD_BENCH=ON \
         -DFLOOD_VIEWER=OFF -DFLOOD_TESTS=OFF >/dev/null
   cmake --build "$build" -j2 --target flood-bench flood
-  rm -rf "$data" && mkdir -p "$data"
+  rm -rf "$data" && mkdir -p "$data" "$build/node"
+  cp "$root/bench/node/package.json" "$root/bench/node/package-lock.json" "$build/node/"
+  (cd "$build/node" && npm ci --no-audit --no-fund --silent)
   [ -d "$fixtures" ] || echo "bench: $fixtures not found: running without earcut's fixtures"
-  echo "== inputs";  "$build/flood-bench" dump "$data" "$fixtures" --seed "$seed" --max-size "$maxsize"
-  echo "== earcut";  "$py" "$root/bench/earcut_bench.py" "$data" --timeout "$timeout"
+  echo "== inputs";  "$build/flood-bench" dump "$data" "$fixtures" --seed "$seed" --max-size "$maxsize" --large "$large"
+  echo "== earcut (Python)";  "$py" "$root/bench/earcut_bench.py" "$data" --timeout "$timeout"
+  for peer in earcut libtess poly2tri; do
+    echo "== $peer (Node.js)"
+    EARCUT_DIR="$build/node" node "$root/bench/node/peers_time.mjs" "$data" "$peer" --timeout "$timeout"
+  done
   echo "== peers";   "$build/flood-bench" run "$data" --timeout "$timeout" --out "$data/results.tsv"
   echo "== small polygons"; "$root/scripts/small-bench.sh" "$build"  # its own kept section of BENCHMARKS.md
   echo "== memory"
@@ -49,7 +61,9 @@ if [ "${1:-}" != "--report-only" ]; then
     echo "geos: $(dpkg-query -W -f='${Version}' libgeos-dev)";
     echo "glu: $(dpkg-query -W -f='${Version}' libglu1-mesa-dev)";
     echo "earcut: python3-mapbox-earcut $(dpkg-query -W -f='${Version}' python3-mapbox-earcut)";
+    echo "node: $(node --version); npm: $(cd "$build/node" && npm ls --depth=0 2>/dev/null | tail -n +2 | sed 's/^[^a-z]*//' | tr '\n' ' ')";
     echo "date: $(date -u +%Y-%m-%d)";
+    echo "timeout: $timeout s per input and triangulator";
     echo "load: $(cut -d' ' -f1-3 /proc/loadavg)"; } > "$data/machine.txt"
 fi
 echo "== report"

@@ -188,7 +188,7 @@ void parseHeader(const json& h, Polygon& p) {
                 !x[1].is_number_unsigned() || x[0].get<uint64_t>() > 0xffffffffull ||
                 x[1].get<uint64_t>() > 0xffffffffull)
                 throw Bad{std::string("\"") + key + "\" entries must be [first, count] pairs"};
-            out.push_back({x[0].get<uint32_t>(), x[1].get<uint32_t>()});
+            out.emplace_back(x[0].get<uint32_t>(), x[1].get<uint32_t>());
         }
         return out;
     };

@@ -520,7 +520,7 @@ int run(int argc, char** argv) {
         }
         if (!known) {
             std::string name = argv[1];
-            if (name.size() > 60) name = name.substr(0, 60) + "\u2026";
+            if (name.size() > 60) name.replace(60, std::string::npos, "\u2026");
             std::cerr << "error: unknown subcommand '" << name << "'; expected one of " << names
                       << "\n";
             return code(Status::Usage);

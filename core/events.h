@@ -88,34 +88,65 @@ inline bool operator==(const Fingers& a, const Fingers& b) {
            a.nextRight == b.nextRight;
 }
 
+// Every field of an event, declared once: X(kind, type, name, initial value). The list
+// generates the members, operator== and the trace writer and reader (core/trace_io.cpp), where
+// the kind says how the field is written: a name, a list of test names, a vertex index or a
+// gorge id (null for kNone), a number, or the four fingers.
+#define FLOOD_EVENT_FIELDS(X)                                                                  \
+    X(ActionName, Action, action, Action::Start)                                               \
+    X(SideName, Side, side, Side::Left) /* C: the acting end (Raise, Spill, Jump) */           \
+    X(TestNames, uint8_t, tested, 0)    /* bit i: Test(i) was evaluated */                     \
+    X(TestNames, uint8_t, passed, 0)    /* bit i: Test(i) was true */                          \
+    X(ReasonName, Forbidden, reason, Forbidden::None)                                          \
+    X(Number, uint32_t, step, 0) /* position in the log */                                     \
+    X(Number, uint32_t, part, 0) /* part of a multipolygon being flooded */                    \
+    X(FingerVertices, Fingers, before, {})                                                     \
+    X(FingerVertices, Fingers, after, {})                                                      \
+    X(Vertex, Index, water, kNone)        /* vertex at the water level after the action */     \
+    X(Number, uint32_t, firstTriangle, 0) /* triangles cut by this action */                   \
+    X(Number, uint32_t, triangleCount, 0)                                                      \
+    X(Number, uint32_t, sagTests, 0) /* inside() evaluations made searching the sag list */    \
+    /* Bridge: sag joined to chain vertex `bridgeTo` at position `chainIndex` of the chain; */ \
+    /* the wedge cut on the chain's left of it has `cutLeft` triangles, `cutRight` on the */   \
+    /* right. */                                                                               \
+    X(Vertex, Index, sag, kNone)                                                               \
+    X(Vertex, Index, bridgeTo, kNone)                                                          \
+    X(Number, uint32_t, chainIndex, 0)                                                         \
+    X(Number, uint32_t, cutLeft, 0)                                                            \
+    X(Number, uint32_t, cutRight, 0)                                                           \
+    /* Spill / Jump: the top, and the jump pointer set (Spill) or followed (Jump). */          \
+    X(Vertex, Index, top, kNone)                                                               \
+    X(Vertex, Index, jumpTarget, kNone)                                                        \
+    /* Gorges put on the to-do list (Bridge: the other half; Spill: the chain held at the */   \
+    /* top) and taken from it (Fill, Spill landing on a pending gorge): ids, kNone if none. */ \
+    X(GorgeId, uint32_t, gorgePushed, kNone)                                                   \
+    X(GorgeId, uint32_t, gorgePopped, kNone)                                                   \
+    X(Vertex, Index, bottom, kNone) /* Start / Spill: the bottom where the new gorge begins */ \
+    /* Forbidden: the vertices involved (up to two besides the fingers). */                    \
+    X(Vertex, Index, culprit, kNone)                                                           \
+    X(Vertex, Index, culprit2, kNone)
+
 struct Event {
-    Action action = Action::Start;
-    Side side = Side::Left;  // C: the end of the chain that acts (Raise, Spill, Jump)
-    uint8_t tested = 0;      // bit i: Test(i) was evaluated
-    uint8_t passed = 0;      // bit i: Test(i) was true
-    Forbidden reason = Forbidden::None;
-    uint32_t step = 0;       // position in the log
-    uint32_t part = 0;       // part of a multipolygon being flooded
-    Fingers before, after;
-    Index water = kNone;     // vertex at the water level after the action
-    uint32_t firstTriangle = 0, triangleCount = 0;  // triangles cut by this action
-    uint32_t sagTests = 0;   // inside() evaluations made while searching the sag list
-    // Bridge: sag joined to chain vertex `bridgeTo` at position `chainIndex` of the chain;
-    // the wedge cut on the chain's left of it has `cutLeft` triangles, `cutRight` on its right.
-    Index sag = kNone, bridgeTo = kNone;
-    uint32_t chainIndex = 0, cutLeft = 0, cutRight = 0;
-    // Spill / Jump: the top, and the jump pointer set (Spill) or followed (Jump).
-    Index top = kNone, jumpTarget = kNone;
-    // Gorges put on the to-do list (Bridge: the other half; Spill: the chain held at the
-    // top) and taken from it (Fill, Spill landing on a pending gorge): ids, kNone if none.
-    uint32_t gorgePushed = kNone, gorgePopped = kNone;
-    Index bottom = kNone;    // Start / Spill: the bottom where the new gorge begins
-    // Forbidden: the vertices involved (up to two besides the fingers).
-    Index culprit = kNone, culprit2 = kNone;
+#define FLOOD_X(kind, type, name, initial) type name = initial;
+    FLOOD_EVENT_FIELDS(FLOOD_X)
+#undef FLOOD_X
 
     bool didTest(Test t) const { return tested >> int(t) & 1; }
     bool testResult(Test t) const { return passed >> int(t) & 1; }
 };
+
+inline bool operator==(const Event& a, const Event& b) {
+#define FLOOD_X(kind, type, name, initial) \
+    if (!(a.name == b.name)) return false;
+    FLOOD_EVENT_FIELDS(FLOOD_X)
+#undef FLOOD_X
+    return true;
+}
+// A field added to Event outside FLOOD_EVENT_FIELDS would be neither compared nor traced, and
+// one added to the list changes what traces hold: either way, bump kTraceFormatVersion and
+// this size.
+static_assert(sizeof(Event) == 112,
+              "Event changed: list its fields in FLOOD_EVENT_FIELDS, bump kTraceFormatVersion");
 
 const char* actionName(Action a);     // "Raise"
 const char* actionMeaning(Action a);

@@ -332,7 +332,8 @@ Polygon orthoSpiral(Rng&, size_t size) {
 // Smooth Archimedean spiral band, double coordinates.
 Polygon spiral(Rng& rng, size_t size) {
     int turns = std::max(1, std::min(40, int(size / 300) + 1));
-    size_t perTurn = std::max<size_t>(size / (2 * turns), size_t(8 * std::sqrt(turns + 2.0) + 16));
+    size_t perTurn =
+        std::max<size_t>(size / (2 * size_t(turns)), size_t(8 * std::sqrt(turns + 2.0) + 16));
     size_t n = perTurn * turns;
     double phase = rng.unit() * 2 * kPi;
     Pts outer, inner;
@@ -569,7 +570,7 @@ const Family kFamilies[] = {
 template <size_t N>
 std::vector<std::string> namesOf(const Family (&table)[N]) {
     std::vector<std::string> names;
-    for (const Family& f : table) names.push_back(f.name);
+    for (const Family& f : table) names.emplace_back(f.name);
     return names;
 }
 template <size_t N>

@@ -56,7 +56,9 @@ inline std::string jsonReason(const char* what) {
         q += lastRead.size();
         size_t end = s.rfind('\'');
         std::string_view token = std::string_view(s).substr(q, end > q ? end - q : std::string::npos);
-        s = s.substr(0, q) + echo(token) + "'";
+        std::string echoed = echo(token) + "'";  // before the resize: token views s
+        s.resize(q);
+        s += echoed;
     }
     return s;
 }

@@ -372,6 +372,7 @@ void ExactSum::addTriangle(Point a, Point b, Point c) {
 void ExactSum::add(const ExactSum& other, int sign) {
     assert((sign == 1 || sign == -1) && "ExactSum::add takes sign +1 or -1");
     if (&other == this) {
+        // NOLINTNEXTLINE(performance-unnecessary-copy-initialization): other is *this, changing
         ExactSum copy = other;
         add(copy, sign);
         return;

@@ -23,10 +23,11 @@ void backWithHugePages(void* data, size_t bytes) {
     const uintptr_t huge = uintptr_t(2) << 20;
     uintptr_t a = (uintptr_t(data) + huge - 1) & ~(huge - 1), e = (uintptr_t(data) + bytes) & ~(huge - 1);
     if (e <= a) return;
+    // NOLINTNEXTLINE(performance-no-int-to-ptr): the buffer rounded in to huge-page bounds
     madvise(reinterpret_cast<void*>(a), e - a, MADV_HUGEPAGE);
 #if defined(MADV_POPULATE_WRITE)
     // Map it all in one call (Linux 5.14+) rather than one fault per page while recording.
-    madvise(reinterpret_cast<void*>(a), e - a, MADV_POPULATE_WRITE);
+    madvise(reinterpret_cast<void*>(a), e - a, MADV_POPULATE_WRITE);  // NOLINT: as above
 #endif
 #else
     (void)data, (void)bytes;

@@ -41,7 +41,7 @@ StateTable buildStateTable(const Polygon& polygon, const std::vector<Event>& eve
     for (const Event& e : events) {
         StateCell cell{combinationOf(e, classes).row(), columnOf(e.action)};
         t.cellOf.push_back(cell);
-        ++t.counts[size_t(cell.row * StateTable::kColumns + cell.column)];
+        ++t.counts[size_t(cell.row) * StateTable::kColumns + size_t(cell.column)];
     }
     return t;
 }

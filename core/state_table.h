@@ -41,10 +41,12 @@ struct StateCell {
 struct StateTable {
     static constexpr int kRows = kClassSlots * kClassSlots * 2;
     static constexpr int kColumns = int(kStateColumns.size());
-    std::array<uint64_t, kRows * kColumns> counts{};
+    std::array<uint64_t, size_t(kRows) * kColumns> counts{};
     std::vector<StateCell> cellOf;  // per event, in log order
 
-    uint64_t count(int row, int column) const { return counts[size_t(row * kColumns + column)]; }
+    uint64_t count(int row, int column) const {
+        return counts[size_t(row) * kColumns + size_t(column)];
+    }
     uint64_t rowTotal(int row) const;
 };
 

@@ -60,32 +60,22 @@ json testsJson(uint8_t bits) {
     return a;
 }
 
+// How each kind of event field (FLOOD_EVENT_FIELDS) is written.
+json writeActionName(Action a) { return actionName(a); }
+json writeSideName(Side s) { return s == Side::Left ? "Left" : "Right"; }
+json writeTestNames(uint8_t bits) { return testsJson(bits); }
+json writeReasonName(Forbidden f) { return forbiddenName(f); }
+json writeNumber(uint32_t v) { return v; }
+json writeFingerVertices(const Fingers& f) { return fingersJson(f); }
+json writeVertex(Index v) { return indexJson(v); }
+json writeGorgeId(uint32_t g) { return indexJson(g); }
+
 json eventJson(const Event& e) {
-    return {{"step", e.step},
-            {"action", actionName(e.action)},
-            {"side", e.side == Side::Left ? "Left" : "Right"},
-            {"tested", testsJson(e.tested)},
-            {"passed", testsJson(e.passed)},
-            {"reason", forbiddenName(e.reason)},
-            {"part", e.part},
-            {"before", fingersJson(e.before)},
-            {"after", fingersJson(e.after)},
-            {"water", indexJson(e.water)},
-            {"firstTriangle", e.firstTriangle},
-            {"triangleCount", e.triangleCount},
-            {"sagTests", e.sagTests},
-            {"sag", indexJson(e.sag)},
-            {"bridgeTo", indexJson(e.bridgeTo)},
-            {"chainIndex", e.chainIndex},
-            {"cutLeft", e.cutLeft},
-            {"cutRight", e.cutRight},
-            {"top", indexJson(e.top)},
-            {"jumpTarget", indexJson(e.jumpTarget)},
-            {"gorgePushed", indexJson(e.gorgePushed)},
-            {"gorgePopped", indexJson(e.gorgePopped)},
-            {"bottom", indexJson(e.bottom)},
-            {"culprit", indexJson(e.culprit)},
-            {"culprit2", indexJson(e.culprit2)}};
+    json o = json::object();
+#define FLOOD_X(kind, type, name, initial) o[#name] = write##kind(e.name);
+    FLOOD_EVENT_FIELDS(FLOOD_X)
+#undef FLOOD_X
+    return o;
 }
 
 struct Bad {
@@ -148,34 +138,27 @@ Enum byName(const json& o, const char* key, int count, NameFn name) {
     throw Bad{std::string("field \"") + key + "\" has unknown value " + io_detail::echo(v.dump())};
 }
 
+// How each kind of event field is read back (n: the vertex count, to check indices against).
+Action readActionName(const json& o, const char* key, size_t) {
+    return byName<Action>(o, key, int(Action::Count), actionName);
+}
+Side readSideName(const json& o, const char* key, size_t) {
+    return byName<Side>(o, key, 2, [](Side s) { return s == Side::Left ? "Left" : "Right"; });
+}
+uint8_t readTestNames(const json& o, const char* key, size_t) { return tests(o, key); }
+Forbidden readReasonName(const json& o, const char* key, size_t) {
+    return byName<Forbidden>(o, key, int(Forbidden::Count), forbiddenName);
+}
+uint32_t readNumber(const json& o, const char* key, size_t) { return number(o, key); }
+Fingers readFingerVertices(const json& o, const char* key, size_t n) { return fingers(o, key, n); }
+Index readVertex(const json& o, const char* key, size_t n) { return vertex(o, key, n); }
+uint32_t readGorgeId(const json& o, const char* key, size_t) { return idOrNone(o, key); }
+
 Event parseEvent(const json& o, size_t n) {
     Event e;
-    e.step = number(o, "step");
-    e.action = byName<Action>(o, "action", int(Action::Count), actionName);
-    e.side = byName<Side>(o, "side", 2,
-                          [](Side s) { return s == Side::Left ? "Left" : "Right"; });
-    e.tested = tests(o, "tested");
-    e.passed = tests(o, "passed");
-    e.reason = byName<Forbidden>(o, "reason", int(Forbidden::Count), forbiddenName);
-    e.part = number(o, "part");
-    e.before = fingers(o, "before", n);
-    e.after = fingers(o, "after", n);
-    e.water = vertex(o, "water", n);
-    e.firstTriangle = number(o, "firstTriangle");
-    e.triangleCount = number(o, "triangleCount");
-    e.sagTests = number(o, "sagTests");
-    e.sag = vertex(o, "sag", n);
-    e.bridgeTo = vertex(o, "bridgeTo", n);
-    e.chainIndex = number(o, "chainIndex");
-    e.cutLeft = number(o, "cutLeft");
-    e.cutRight = number(o, "cutRight");
-    e.top = vertex(o, "top", n);
-    e.jumpTarget = vertex(o, "jumpTarget", n);
-    e.gorgePushed = idOrNone(o, "gorgePushed");
-    e.gorgePopped = idOrNone(o, "gorgePopped");
-    e.bottom = vertex(o, "bottom", n);
-    e.culprit = vertex(o, "culprit", n);
-    e.culprit2 = vertex(o, "culprit2", n);
+#define FLOOD_X(kind, type, name, initial) e.name = read##kind(o, #name, n);
+    FLOOD_EVENT_FIELDS(FLOOD_X)
+#undef FLOOD_X
     return e;
 }
 
@@ -205,7 +188,7 @@ void parseHeader(const json& h, Polygon& p) {
                 !x[1].is_number_unsigned() || x[0].get<uint64_t>() > 0xffffffffull ||
                 x[1].get<uint64_t>() > 0xffffffffull)
                 throw Bad{std::string("\"") + key + "\" entries must be [first, count] pairs"};
-            out.push_back({x[0].get<uint32_t>(), x[1].get<uint32_t>()});
+            out.emplace_back(x[0].get<uint32_t>(), x[1].get<uint32_t>());
         }
         return out;
     };

@@ -414,7 +414,7 @@ void Validator::sweepEdges() {
             if (ringSeen[r] == 1 && (best == kNone || active.less()(e, best))) best = e;
         }
         std::vector<std::pair<Index, Index>> leftmost;  // (leftmost edge, ring)
-        for (Index r : newRings) leftmost.push_back({leftmostOf[r], r}), ringSeen[r] = 2;
+        for (Index r : newRings) leftmost.emplace_back(leftmostOf[r], r), ringSeen[r] = 2;
         std::sort(leftmost.begin(), leftmost.end(), [&](auto a, auto b) {
             return active.less()(a.first, b.first);
         });

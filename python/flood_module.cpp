@@ -14,6 +14,7 @@
 #include <cstring>
 #include <memory>
 #include <thread>
+#include <type_traits>
 
 #include "checker.h"
 #include "diagnostic_where.h"
@@ -159,34 +160,18 @@ py::dtype eventDtype() {
         formats.append(format);
         offsets.append(offset);
     };
+    // Every field of FLOOD_EVENT_FIELDS, typed by its size: a one-byte enum or bit set, a
+    // 32-bit number, index or id, or the four fingers.
     py::str u1("u1"), u4("<u4");
-#define FLOOD_FIELD(f, type) field(#f, type, offsetof(Event, f))
-    FLOOD_FIELD(action, u1);
-    FLOOD_FIELD(side, u1);
-    FLOOD_FIELD(tested, u1);
-    FLOOD_FIELD(passed, u1);
-    FLOOD_FIELD(reason, u1);
-    FLOOD_FIELD(step, u4);
-    FLOOD_FIELD(part, u4);
-    FLOOD_FIELD(before, fingersType);
-    FLOOD_FIELD(after, fingersType);
-    FLOOD_FIELD(water, u4);
-    FLOOD_FIELD(firstTriangle, u4);
-    FLOOD_FIELD(triangleCount, u4);
-    FLOOD_FIELD(sagTests, u4);
-    FLOOD_FIELD(sag, u4);
-    FLOOD_FIELD(bridgeTo, u4);
-    FLOOD_FIELD(chainIndex, u4);
-    FLOOD_FIELD(cutLeft, u4);
-    FLOOD_FIELD(cutRight, u4);
-    FLOOD_FIELD(top, u4);
-    FLOOD_FIELD(jumpTarget, u4);
-    FLOOD_FIELD(gorgePushed, u4);
-    FLOOD_FIELD(gorgePopped, u4);
-    FLOOD_FIELD(bottom, u4);
-    FLOOD_FIELD(culprit, u4);
-    FLOOD_FIELD(culprit2, u4);
-#undef FLOOD_FIELD
+    auto format = [&](size_t size) -> py::object {
+        return size == 1 ? py::object(u1) : size == 4 ? py::object(u4) : fingersType;
+    };
+#define FLOOD_X(kind, type, name, initial)                                                 \
+    static_assert(sizeof(type) == 1 || sizeof(type) == 4 || std::is_same_v<type, Fingers>, \
+                  "a new kind of event field needs its numpy type here");                  \
+    field(#name, format(sizeof(type)), offsetof(Event, name));
+    FLOOD_EVENT_FIELDS(FLOOD_X)
+#undef FLOOD_X
     py::dict d;
     d["names"] = names;
     d["formats"] = formats;

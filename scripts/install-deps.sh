@@ -15,6 +15,7 @@ packages=(
   python3-glad python3-jinja2                         # GL loader generated at build time
   xvfb xauth                                          # headless GUI tests
   clang libclang-rt-14-dev python3                    # fuzzing pass and sanitizers in CI
+  clang-tidy-14 clang-format-14 cppcheck              # scripts/lint.sh
   pybind11-dev python3-dev python3-numpy              # Python module (python/)
   python3-shapely python3-pytest                      #   its inputs and tests
   python3-dask python3-distributed python3-pandas     #   flood.dask (bags, dataframes)

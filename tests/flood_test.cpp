@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include "generate.h"
+#include "golden_transcripts.h"
 #include "replay.h"
 #include "test_support.h"
 #include "transcript.h"
@@ -88,20 +89,11 @@ std::string transcriptOf(const std::string& file) {
     return transcript(record(readOrFail(sourcePath("polygons/" + file))).events);
 }
 
-// Golden transcripts: each small polygon shows one situation of the paper.
+// Golden transcripts (tests/golden_transcripts.h): each small polygon shows one situation of
+// the paper.
 TEST(Flood, GoldenTranscripts) {
-    EXPECT_EQ(transcriptOf("monotone.json"), "Raise 0-2, Fill 3");
-    EXPECT_EQ(transcriptOf("two-gorges.json"), "Raise 0, Spill; Raise 1, Jump; Raise 2, Fill 3-4");
-    EXPECT_EQ(transcriptOf("hole.json"), "Raise, Bridge 0, Raise 1, Spill; Raise 2-3, Jump; Raise 4-5, Fill 6-7");
-    EXPECT_EQ(transcriptOf("sag.json"), "Raise, Bridge 0, Raise 1, Fill 2; Raise 3, Fill 4");
-    EXPECT_EQ(transcriptOf("overhang.json"), "Raise 0-1, Spill; Raise, Bridge 2, Fill 3; Raise, Jump; Raise 4, Fill 5-7");
-    // Steiner points: each bridge is an antenna into the gorge; nothing waits on the to-do list.
-    EXPECT_EQ(transcriptOf("steiner.json"), "Raise, Bridge 0, Raise 1, Bridge 2-3, Raise 4, Fill 5-6");
-    // T-junctions flood like shared vertices: the holes touching the outer ring inside an edge
-    // become part of its loop.
-    EXPECT_EQ(transcriptOf("t-junction.json"),
-              "Raise, Bridge 0, Raise 1, Spill; Raise 2, Jump; Bridge 3-5, Bridge 6-7, Bridge 8, Raise 9, "
-              "Spill; Raise, Jump; Raise 10-12, Fill 13-14; Fill 15");
+    for (const auto& [file, golden] : kGoldenTranscripts)
+        EXPECT_EQ(transcriptOf(file), golden) << file;
 }
 
 // Each of the five actions appears where the polygon calls for it.

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
-#include <iostream>
 #include <map>
 #include <numeric>
 #include <sstream>
@@ -297,14 +296,6 @@ TEST(Generate, TransformsAreExact) {
     EXPECT_EQ(a, b);
     for (Point v : flood::transform(p, 2, true, false, 0).vertices)
         EXPECT_FALSE(std::signbit(v.x) && v.x == 0) << "negative zero";
-}
-
-TEST(Generate, ShapeSummary) {
-    for (const std::string& name : flood::familyNames()) {
-        Polygon p = flood::generate(name, 1, 1000);
-        std::cout << name << ": " << p.vertices.size() << " vertices, " << p.rings.size()
-                  << " rings, " << p.parts.size() << " parts\n";
-    }
 }
 
 TEST(Generate, DeterministicAndSized) {

@@ -1,6 +1,6 @@
 // The viewer's model without a window: replay consistency in both directions, seek versus
 // stepping, breakpoints, vertex classes and the camera. Compiles to nothing when the viewer
-// is not built (FLOOD_VIEWER=OFF), since the model lives in viewer/.
+// is not in the tree, since the model lives in viewer/ (it is built even with FLOOD_VIEWER=OFF).
 #if __has_include("model.h")
 #include <gtest/gtest.h>
 

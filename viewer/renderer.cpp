@@ -228,17 +228,6 @@ void Renderer::addLine(Layer layer, Vec2 a, Vec2 b, float width, Rgba color) {
     addTriangle(layer, p0, p2, p3, color);
 }
 
-void Renderer::addArrow(Layer layer, Vec2 a, Vec2 b, float width, float head, Rgba color) {
-    double dx = b.x - a.x, dy = b.y - a.y, len = std::hypot(dx, dy);
-    if (len < 1e-9) return;
-    double ux = dx / len, uy = dy / len;
-    head = float(std::min<double>(head, len / 2));
-    Vec2 base{b.x - ux * head, b.y - uy * head};
-    addLine(layer, a, base, width, color);
-    addTriangle(layer, b, {base.x - uy * head / 2, base.y + ux * head / 2},
-                {base.x + uy * head / 2, base.y - ux * head / 2}, color);
-}
-
 void Renderer::addDisc(Layer layer, Vec2 c, float radius, Rgba color) {
     const int n = 20;
     for (int i = 0; i < n; ++i) {

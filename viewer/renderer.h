@@ -52,7 +52,6 @@ public:
     void clear();  // empties every screen-space layer; call once per frame before adding
     void addTriangle(Layer layer, Vec2 a, Vec2 b, Vec2 c, Rgba color);
     void addLine(Layer layer, Vec2 a, Vec2 b, float width, Rgba color);
-    void addArrow(Layer layer, Vec2 a, Vec2 b, float width, float head, Rgba color);
     void addDisc(Layer layer, Vec2 c, float radius, Rgba color);
     void addCircle(Layer layer, Vec2 c, float radius, float width, Rgba color);
 

@@ -1,6 +1,6 @@
 """The extension flood._flood for `pip install`: the binding and the core's sources compiled
 as CMake compiles them (C++17, no fused multiply-add contraction: results equal the CLI's).
-Needs pybind11-dev, nlohmann-json3-dev and libgmp-dev (scripts/install-deps.sh)."""
+Needs pybind11-dev, nlohmann-json3-dev, libsimdjson-dev and libgmp-dev (scripts/install-deps.sh)."""
 import glob
 import os
 
@@ -13,7 +13,7 @@ setup(ext_modules=[Extension(
     "flood._flood",
     sources=["flood_module.cpp"] + sorted(glob.glob(os.path.join(core, "*.cpp"), root_dir=here)),
     include_dirs=[core],
-    libraries=["gmp"],
+    libraries=["gmp", "simdjson"],
     language="c++",
     extra_compile_args=["-std=c++17", "-O2", "-ffp-contract=off", "-fvisibility=hidden"],
 )],

@@ -71,10 +71,11 @@ inline int growExpansion(double* h, int len, double b) {
     return j;
 }
 
-int orientExpansion(Point a, Point b, Point c) {
-    const double f[6][2] = {{a.x, b.y}, {-a.y, b.x}, {b.x, c.y},
-                            {-b.y, c.x}, {c.x, a.y}, {-c.y, a.x}};
-    double h[13];
+// The exact sign of the sum of N products f[i][0] * f[i][1]: each product is split into two
+// doubles (twoProduct) and summed as an expansion, whose largest component has the sign.
+template <size_t N>
+int productSumSign(const double (&f)[N][2]) {
+    double h[2 * N + 1];
     int len = 0;
     for (const auto& pr : f) {
         double p, e;
@@ -84,6 +85,12 @@ int orientExpansion(Point a, Point b, Point c) {
     }
     if (len == 0) return 0;
     return h[len - 1] > 0 ? 1 : -1;
+}
+
+int orientExpansion(Point a, Point b, Point c) {
+    const double f[6][2] = {{a.x, b.y}, {-a.y, b.x}, {b.x, c.y},
+                            {-b.y, c.x}, {c.x, a.y}, {-c.y, a.x}};
+    return productSumSign(f);
 }
 
 struct Mpq {
@@ -166,16 +173,7 @@ inline int heightFilter(Up d, Point a, Point b) {
 
 int heightExpansion(Up d, Point a, Point b) {
     const double f[4][2] = {{d.x, b.x}, {-d.x, a.x}, {d.y, b.y}, {-d.y, a.y}};
-    double h[9];
-    int len = 0;
-    for (const auto& pr : f) {
-        double p, e;
-        twoProduct(pr[0], pr[1], p, e);
-        len = growExpansion(h, len, p);
-        len = growExpansion(h, len, e);
-    }
-    if (len == 0) return 0;
-    return h[len - 1] > 0 ? 1 : -1;
+    return productSumSign(f);
 }
 
 int heightGmp(Up d, Point a, Point b) {

@@ -20,6 +20,7 @@
 #include <gif_lib.h>
 #endif
 
+#include "gui_test_display.h"
 #include "export.h"
 #include "model.h"
 #include "palette.h"
@@ -30,17 +31,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool displayNamed() {
-    const char* x = std::getenv("DISPLAY");
-    const char* w = std::getenv("WAYLAND_DISPLAY");
-    return (x && *x) || (w && *w);
-}
 
 #define NEED_DISPLAY()                                                                     \
     do {                                                                                   \
-        if (!displayNamed()) {                                                             \
-            const char* ci = std::getenv("CI");                                            \
-            if (ci && std::string(ci) == "true") FAIL() << "no display in CI: run under xvfb-run -a"; \
+        if (!hasDisplay()) {                                                                \
+            if (inCi()) FAIL() << "no display in CI: run under xvfb-run -a";               \
             GTEST_SKIP() << "no display (run under xvfb-run -a)";                          \
         }                                                                                  \
     } while (0)
@@ -319,7 +314,7 @@ TEST(ExportGui, BadExportOptionsAreUsageErrors) {
         ViewerRun r = viewer("'" + input + "' " + bad);
         EXPECT_EQ(r.code, 2) << bad << "\n" << r.out;
     }
-    if (displayNamed()) {  // past the flood's end: known once the file is open
+    if (hasDisplay()) {  // past the flood's end: known once the file is open
         ViewerRun r = viewer("'" + input + "' --export-png-dir '" + (dir / "f").string() + "' --steps 0:9999");
         EXPECT_EQ(r.code, 2) << r.out;
         EXPECT_NE(r.out.find("steps (0.."), std::string::npos) << r.out;

@@ -523,7 +523,7 @@ void Model::adopt(std::unique_ptr<Trace> trace) {
     landedStep_ = step_;
     landingPending_ = true;
     scanWaiting_ = std::exchange(deferScan_, false);  // live editing: started once the drag ends
-    if (scanWaiting_) scan_.done = false;
+    if (scanWaiting_) scan_.done = false, scan_.progress = 0;  // no scan yet: nothing done
     else startInvariants();
 }
 

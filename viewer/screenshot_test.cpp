@@ -18,6 +18,7 @@
 
 #include <sys/wait.h>
 
+#include "gui_test_display.h"
 #include "model.h"
 #include "palette.h"
 #include "presenter.h"
@@ -521,17 +522,7 @@ int checkInvariantLane(const std::string& dir, int W, int H, const Layout& layou
 
 int main() {
     if (checkPresenterUsage()) return 1;
-    const char* display = std::getenv("DISPLAY");
-    const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    if (!(display && *display) && !(wayland && *wayland)) {
-        const char* ci = std::getenv("CI");
-        if (ci && std::string(ci) == "true") {
-            std::fprintf(stderr, "FAIL: no display in CI: run the tests under xvfb-run -a\n");
-            return 1;
-        }
-        std::printf("SKIP: no display (run under xvfb-run -a)\n");
-        return 77;
-    }
+    if (int skip = displayOrSkip()) return skip;
 
     // A square with a square hole: bottoms, a sag, a top and ceilings, small enough to reason about.
     std::string dir = FLOOD_WORK_DIR;

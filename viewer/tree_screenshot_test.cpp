@@ -9,6 +9,7 @@
 
 #include <sys/wait.h>
 
+#include "gui_test_display.h"
 #include "model.h"
 #include "palette.h"
 
@@ -50,17 +51,7 @@ long countColour(const std::string& input, const std::string& args, const std::s
 }  // namespace
 
 int main() {
-    const char* display = std::getenv("DISPLAY");
-    const char* wayland = std::getenv("WAYLAND_DISPLAY");
-    if (!(display && *display) && !(wayland && *wayland)) {
-        const char* ci = std::getenv("CI");
-        if (ci && std::string(ci) == "true") {
-            std::fprintf(stderr, "FAIL: no display in CI: run the tests under xvfb-run -a\n");
-            return 1;
-        }
-        std::printf("SKIP: no display (run under xvfb-run -a)\n");
-        return 77;
-    }
+    if (int skip = displayOrSkip()) return skip;
     const std::string input = std::string(FLOOD_SOURCE_DIR) + "/polygons/paper-figure-7.json";
     const std::string dir = FLOOD_WORK_DIR;
     const int W = 1000, H = 700;

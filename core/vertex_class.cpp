@@ -1,5 +1,7 @@
 #include "vertex_class.h"
 
+#include <cmath>
+
 #include <utility>
 
 #include "predicates.h"
@@ -25,6 +27,12 @@ std::vector<VertexClass> classifyVertices(const Polygon& polygon, Up up) {
         const Ring& ring = polygon.rings[r];
         if (ring.count == 1) out[ring.first] = VertexClass::Sag;  // a Steiner point: a hole's bottom
         if (ring.count < 3) continue;
+        // A ring with a non-finite coordinate has no classes (the machine refuses it: NotFinite),
+        // and the exact predicates are for finite doubles only.
+        bool finite = true;
+        for (Index i = 0; i < ring.count; ++i)
+            finite &= std::isfinite(v[ring.first + i].x) && std::isfinite(v[ring.first + i].y);
+        if (!finite) continue;
         // The file may list a ring either way; the predicates want the interior on the left.
         // Outer rings of a part come first: holes must turn the other way.
         bool isOuter = false;

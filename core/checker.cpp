@@ -340,7 +340,7 @@ struct Checker {
     CheckResult boundaryEdges() {
         std::optional<CheckResult> failed;
         eachBoundaryEdge([&](BoundaryEdge e) {
-            auto [a, b, r] = e;
+            const Index a = e.a, b = e.b, r = e.ring;  // named, not bound: lambdas below capture them
             uint32_t slot = edges->find(C[a], C[b]);
             if (slot != kNone && edges->marked(slot)) {
                 Index earlier = kNone;  // the ring of the first boundary edge with this segment

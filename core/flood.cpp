@@ -369,8 +369,8 @@ private:
     // True when some point was shared (the loops may have changed).
     bool mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
         work().touchSearchNodes += partVertices.size();
-        std::vector<std::pair<uint32_t, uint32_t>>& copies =
-            repeatedPoints(partVertices.size(), [&](size_t i) { return P(partVertices[i]); }, b_.repeats);
+        repeatedPoints(partVertices.size(), [&](size_t i) { return P(partVertices[i]); }, b_.repeats);
+        std::vector<std::pair<uint32_t, uint32_t>>& copies = b_.repeats.copies;
         if (copies.empty()) return false;
         for (auto& [first, later] : copies) first = partVertices[first], later = partVertices[later];
         std::sort(copies.begin(), copies.end());

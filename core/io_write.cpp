@@ -53,7 +53,7 @@ private:
         end_ = buf_;
     }
     std::ostream& out_;
-    char buf_[1 << 16];
+    char buf_[1 << 16]{};  // zeroed once per writer: 64 KiB, nothing per number
     char* end_ = buf_;
 };
 

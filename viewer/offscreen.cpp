@@ -2,6 +2,8 @@
 
 #include <glad/gl.h>
 
+#include "renderer.h"  // readFramebuffer
+
 #include <algorithm>
 
 namespace flood::view {
@@ -54,19 +56,7 @@ bool Offscreen::bind(int width, int height, std::string* error) {
 }
 
 bool Offscreen::read(std::vector<uint8_t>& rgba) const {
-    if (!fbo_) return false;
-    std::vector<uint8_t> raw(size_t(width_) * height_ * 4);
-    glReadBuffer(GL_COLOR_ATTACHMENT0);
-    glPixelStorei(GL_PACK_ALIGNMENT, 1);
-    glReadPixels(0, 0, width_, height_, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
-    if (glGetError() != GL_NO_ERROR) return false;
-    // GL's rows start at the bottom, PNG's and GIF's at the top.
-    rgba.resize(raw.size());
-    size_t row = size_t(width_) * 4;
-    for (int y = 0; y < height_; ++y)
-        std::copy_n(raw.data() + (height_ - 1 - y) * row, row, rgba.data() + y * row);
-    for (size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;
-    return true;
+    return fbo_ && readFramebuffer(GL_COLOR_ATTACHMENT0, width_, height_, rgba);
 }
 
 void Offscreen::unbind() const { glBindFramebuffer(GL_FRAMEBUFFER, 0); }

@@ -360,20 +360,24 @@ void Renderer::render(Vec2 windowSize, int fbW, int fbH, const Rect& clip, Rgba 
 
 void Renderer::finish() { glFinish(); }
 
-bool Renderer::readPixels(int width, int height, std::vector<uint8_t>& rgba) const {
+bool readFramebuffer(unsigned buffer, int width, int height, std::vector<uint8_t>& rgba) {
     if (width <= 0 || height <= 0) return false;
     std::vector<uint8_t> raw(size_t(width) * height * 4);
-    glReadBuffer(GL_BACK);
+    glReadBuffer(buffer);
     glPixelStorei(GL_PACK_ALIGNMENT, 1);
     glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, raw.data());
     if (glGetError() != GL_NO_ERROR) return false;
-    // GL's rows start at the bottom; PNG's at the top. The back buffer's alpha is not ours.
+    // GL's rows start at the bottom; PNG's and GIF's at the top. The buffer's alpha is not ours.
     rgba.resize(raw.size());
     size_t row = size_t(width) * 4;
     for (int y = 0; y < height; ++y)
         std::copy_n(raw.data() + (height - 1 - y) * row, row, rgba.data() + y * row);
     for (size_t i = 3; i < rgba.size(); i += 4) rgba[i] = 255;
     return true;
+}
+
+bool Renderer::readPixels(int width, int height, std::vector<uint8_t>& rgba) const {
+    return readFramebuffer(GL_BACK, width, height, rgba);
 }
 
 bool imguiGlInit() { return ImGui_ImplOpenGL3_Init("#version 330 core"); }

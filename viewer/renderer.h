@@ -101,4 +101,8 @@ void imguiGlShutdown();
 bool writePng(const std::string& path, int width, int height, const std::vector<uint8_t>& rgba,
               std::string* error);
 
+// Reads `buffer` (a GL read-buffer name: GL_BACK, GL_COLOR_ATTACHMENT0) as RGBA rows, top row
+// first, alpha opaque. False when GL reports an error.
+bool readFramebuffer(unsigned buffer, int width, int height, std::vector<uint8_t>& rgba);
+
 }  // namespace flood::view

@@ -27,7 +27,8 @@ double medianNs(const std::function<uint64_t()>& f) {
     while (t.size() < 7 || (total < 0.3e9 && t.size() < 101)) {
         auto t0 = std::chrono::steady_clock::now();
         sink = sink + f();
-        double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
+        double ns =
+            std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
         t.push_back(ns);
         total += ns;
     }
@@ -73,7 +74,8 @@ FloorNs measureFloor(const Polygon& p) {
             const auto& v = p.vertices;
             if (flood::below(v[b], v[a]) && flood::below(v[b], v[c])) sags.push_back(b);
         });
-        std::sort(sags.begin(), sags.end(), [&](Index a, Index b) { return flood::below(p.vertices[a], p.vertices[b]); });
+        std::sort(sags.begin(), sags.end(),
+                  [&](Index a, Index b) { return flood::below(p.vertices[a], p.vertices[b]); });
         return uint64_t(sags.size());
     });
     return f;

@@ -88,8 +88,8 @@ void writeManifest(const std::string& path, const std::vector<InputInfo>& rows) 
     std::ofstream out(path);
     out << "name\tfamily\tsize\tvertices\tholes\tvalid\tpath\tverdict\n";
     for (const auto& r : rows)
-        out << r.name << '\t' << r.family << '\t' << r.size << '\t' << r.vertices << '\t'
-            << r.holes << '\t' << (r.valid ? 1 : 0) << '\t' << r.path << '\t' << r.verdict << '\n';
+        out << r.name << '\t' << r.family << '\t' << r.size << '\t' << r.vertices << '\t' << r.holes
+            << '\t' << (r.valid ? 1 : 0) << '\t' << r.path << '\t' << r.verdict << '\n';
 }
 
 std::vector<InputInfo> readManifest(const std::string& path) {

@@ -11,14 +11,14 @@ namespace bench {
 
 // One row of the manifest written by `flood-bench dump`.
 struct InputInfo {
-    std::string name;      // "fixture/water-huge", "circle-smooth/1000000"
-    std::string family;    // "fixture" or the generated family
-    size_t size = 0;       // requested size (fixtures: vertex count)
+    std::string name;    // "fixture/water-huge", "circle-smooth/1000000"
+    std::string family;  // "fixture" or the generated family
+    size_t size = 0;     // requested size (fixtures: vertex count)
     size_t vertices = 0;
     size_t holes = 0;
-    bool valid = true;     // Flood's validate() verdict
-    std::string verdict;   // validate()'s message when invalid
-    std::string path;      // the .poly file
+    bool valid = true;    // Flood's validate() verdict
+    std::string verdict;  // validate()'s message when invalid
+    std::string path;     // the .poly file
 };
 
 // The generated families of the benchmark: every family of the core generator (familyNames()).

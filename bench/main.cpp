@@ -67,7 +67,8 @@ Timing timeRuns(const std::function<void()>& f) {
     while (true) {
         auto t0 = std::chrono::steady_clock::now();
         f();
-        double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
+        double ns =
+            std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
         t.push_back(ns);
         total += ns;
         if (t[0] > 10e9) break;
@@ -80,13 +81,15 @@ Timing timeRuns(const std::function<void()>& f) {
 // Times `a` and `b` alternately (at least 5 pairs, until ~2 s are spent, at most 21; one pair
 // when `b` takes over 10 s), so load from other jobs falls on both alike: their ratio is fairer
 // than one of two medians taken minutes apart.
-std::pair<Timing, Timing> timePaired(const std::function<void()>& a, const std::function<void()>& b) {
+std::pair<Timing, Timing> timePaired(const std::function<void()>& a,
+                                     const std::function<void()>& b) {
     std::vector<double> ta, tb;
     double total = 0;
     auto once = [](const std::function<void()>& f) {
         auto t0 = std::chrono::steady_clock::now();
         f();
-        return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0).count();
+        return std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - t0)
+            .count();
     };
     while (true) {
         ta.push_back(once(a));
@@ -107,10 +110,13 @@ struct Verdict {
 
 Verdict judge(const Polygon& p, std::vector<Triangle> t, size_t added, const std::string& error) {
     if (!error.empty()) return {"error", oneLine(error)};
-    if (added) return {"adds-vertices", std::to_string(added) + " output vertices/triangles not on input points"};
+    if (added)
+        return {"adds-vertices",
+                std::to_string(added) + " output vertices/triangles not on input points"};
     size_t expected = p.expectedTriangles();
     if (t.size() != expected)
-        return {"count-differs", std::to_string(t.size()) + " triangles, n+2h-2-2d = " + std::to_string(expected)};
+        return {"count-differs",
+                std::to_string(t.size()) + " triangles, n+2h-2-2d = " + std::to_string(expected)};
     orientCounterClockwise(p, t);
     CheckResult c = checkTriangulation(p, t);
     return c.ok ? Verdict{"valid", ""} : Verdict{"invalid", oneLine(c.reason)};
@@ -154,8 +160,9 @@ Row measure(const std::string& who, const Polygon& p, const CoordIndex& index) {
         work() = {};
         (void)triangulate(p);
         const WorkCounters w = work();
-        row.extra = "validate_ns=" + std::to_string(tv.medianNs) + ";machine_work=" +
-                    std::to_string(w.nodeVisits + w.sagTests + w.orientCalls) + ";sag_work=" + std::to_string(w.sagSearch);
+        row.extra = "validate_ns=" + std::to_string(tv.medianNs) +
+                    ";machine_work=" + std::to_string(w.nodeVisits + w.sagTests + w.orientCalls) +
+                    ";sag_work=" + std::to_string(w.sagSearch);
     } else if (who == "flood-rec") {
         // Full trace recording as `flood trace` and the viewer get it: record(), a fresh Trace
         // (polygon copy and event log) each run, timed in turn with a plain run.
@@ -174,7 +181,8 @@ Row measure(const std::string& who, const Polygon& p, const CoordIndex& index) {
             kept.events.clear();
             (void)triangulate(p, &kept);
         });
-        row.extra = "events=" + std::to_string(trace.events.size()) + ";reused_ns=" + std::to_string(tk.medianNs) +
+        row.extra = "events=" + std::to_string(trace.events.size()) +
+                    ";reused_ns=" + std::to_string(tk.medianNs) +
                     ";paired_plain_ns=" + std::to_string(tp.medianNs);
     } else if (who == "floor") {
         FloorNs f = measureFloor(p);
@@ -218,7 +226,8 @@ Row guarded(const std::string& who, const Polygon& p, const CoordIndex& index, d
         try {
             line = serialize(measure(who, p, index));
         } catch (const std::exception& e) {
-            line = serialize({"error", oneLine(std::string("exception: ") + e.what()), "", 0, 0, 0});
+            line =
+                serialize({"error", oneLine(std::string("exception: ") + e.what()), "", 0, 0, 0});
         } catch (...) {
             line = serialize({"error", "unknown exception", "", 0, 0, 0});
         }
@@ -232,7 +241,9 @@ Row guarded(const std::string& who, const Polygon& p, const CoordIndex& index, d
     auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeoutS);
     bool timedOut = false;
     while (true) {
-        auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - std::chrono::steady_clock::now()).count();
+        auto left = std::chrono::duration_cast<std::chrono::milliseconds>(
+                        deadline - std::chrono::steady_clock::now())
+                        .count();
         if (left <= 0) {
             timedOut = true;
             break;
@@ -281,7 +292,8 @@ int cmdDump(const std::string& dir, const std::string& fixtures, uint64_t seed, 
             const std::vector<std::string>& large) {
     fs::create_directories(dir);
     std::vector<InputInfo> rows;
-    auto add = [&](const std::string& name, const std::string& family, size_t size, const Polygon& p) {
+    auto add = [&](const std::string& name, const std::string& family, size_t size,
+                   const Polygon& p) {
         InputInfo r;
         r.name = name;
         r.family = family;
@@ -306,14 +318,17 @@ int cmdDump(const std::string& dir, const std::string& fixtures, uint64_t seed, 
     for (const auto& f : files) {
         ReadResult rr = readPolygonFile(f.string());
         if (!rr.diagnostic.ok()) {
-            std::fprintf(stderr, "dump: skipping unreadable %s: %s\n", f.c_str(), rr.diagnostic.message.c_str());
+            std::fprintf(stderr, "dump: skipping unreadable %s: %s\n", f.c_str(),
+                         rr.diagnostic.message.c_str());
             continue;
         }
         add("fixture/" + f.stem().string(), "fixture", rr.polygon.vertices.size(), rr.polygon);
     }
     for (const auto& family : benchFamilies())
         for (size_t size : benchSizes(family, large))
-            if (size <= maxSize) add(family + "/" + std::to_string(size), family, size, benchGenerate(family, seed, size));
+            if (size <= maxSize)
+                add(family + "/" + std::to_string(size), family, size,
+                    benchGenerate(family, seed, size));
     writeManifest((fs::path(dir) / "manifest.tsv").string(), rows);
     return 0;
 }
@@ -336,11 +351,13 @@ std::map<std::string, std::vector<std::string>> readExternal(const std::string& 
 
 // The peers run outside this driver: their name in the results, the file stem of their rows
 // (DIR/STEM.tsv) and triangles (DIR/<input>.STEM.tri).
-const std::vector<std::pair<std::string, std::string>> kExternal{
-    {"earcut", "earcut"}, {"earcut-js", "earcut-node"}, {"libtess", "libtess-node"}, {"poly2tri", "poly2tri-node"}};
+const std::vector<std::pair<std::string, std::string>> kExternal{{"earcut", "earcut"},
+                                                                 {"earcut-js", "earcut-node"},
+                                                                 {"libtess", "libtess-node"},
+                                                                 {"poly2tri", "poly2tri-node"}};
 
-Row externalRow(const std::string& dir, const std::string& stem, const InputInfo& info, const Polygon& p,
-                const std::map<std::string, std::vector<std::string>>& rows) {
+Row externalRow(const std::string& dir, const std::string& stem, const InputInfo& info,
+                const Polygon& p, const std::map<std::string, std::vector<std::string>>& rows) {
     auto it = rows.find(info.name);
     if (it == rows.end()) return {"missing", "no " + stem + " result", "", 0, 0, 0};
     const auto& f = it->second;
@@ -351,15 +368,19 @@ Row externalRow(const std::string& dir, const std::string& stem, const InputInfo
     row.triangles = std::stoull(f[4]);
     row.detail = f.size() > 5 ? f[5] : "";
     if (row.status != "ok") return row;
-    std::ifstream in((fs::path(dir) / (safeName(info.name) + "." + stem + ".tri")).string(), std::ios::binary);
+    std::ifstream in((fs::path(dir) / (safeName(info.name) + "." + stem + ".tri")).string(),
+                     std::ios::binary);
     std::vector<uint32_t> idx(row.triangles * 3);
     in.read(reinterpret_cast<char*>(idx.data()), std::streamsize(idx.size() * 4));
-    if (!in) return {"error", stem + " triangle file unreadable", "", row.ns, row.runs, row.triangles};
+    if (!in)
+        return {"error", stem + " triangle file unreadable", "", row.ns, row.runs, row.triangles};
     std::vector<Triangle> t(row.triangles);
     for (size_t i = 0; i < t.size(); ++i) {
         t[i] = {idx[3 * i], idx[3 * i + 1], idx[3 * i + 2]};
         for (uint32_t v : t[i])
-            if (v >= p.vertices.size()) return {"error", stem + ": vertex index out of range", "", row.ns, row.runs, row.triangles};
+            if (v >= p.vertices.size())
+                return {"error",      stem + ": vertex index out of range", "", row.ns, row.runs,
+                        row.triangles};
     }
     size_t added = f.size() > 6 && !f[6].empty() ? std::stoull(f[6]) : 0;
     Verdict v = judge(p, t, added, "");
@@ -375,10 +396,12 @@ constexpr size_t kLargestPeerSize = 1000000;
 int cmdRun(const std::string& dir, double timeoutS, const std::string& outPath) {
     std::vector<InputInfo> inputs = readManifest((fs::path(dir) / "manifest.tsv").string());
     std::vector<std::map<std::string, std::vector<std::string>>> external;
-    for (const auto& e : kExternal) external.push_back(readExternal((fs::path(dir) / (e.second + ".tsv")).string()));
+    for (const auto& e : kExternal)
+        external.push_back(readExternal((fs::path(dir) / (e.second + ".tsv")).string()));
     std::ofstream(fs::path(dir) / "event_bytes.txt") << sizeof(Event) << "\n";  // for the report
     std::ofstream out(outPath);
-    out << "name\tfamily\tsize\tvertices\tholes\tinput_valid\texpected\ttriangulator\tstatus\tns\truns\ttriangles\tdetail\textra\n";
+    out << "name\tfamily\tsize\tvertices\tholes\tinput_"
+           "valid\texpected\ttriangulator\tstatus\tns\truns\ttriangles\tdetail\textra\n";
     const std::vector<std::string> who{"flood", "floor", "flood-rec", "glu", "cgal", "geos"};
     std::map<std::string, std::vector<double>> history;  // triangulator|family -> single-run ns
     std::map<std::string, bool> givenUp;
@@ -386,13 +409,14 @@ int cmdRun(const std::string& dir, double timeoutS, const std::string& outPath) 
         Polygon p = readPoly(info.path);
         CoordIndex index(p);
         auto emit = [&](const std::string& name, const Row& r) {
-            out << info.name << '\t' << info.family << '\t' << info.size << '\t' << info.vertices << '\t'
-                << info.holes << '\t' << (info.valid ? 1 : 0) << '\t' << p.expectedTriangles() << '\t'
-                << name << '\t' << r.status << '\t' << r.ns << '\t' << r.runs << '\t' << r.triangles << '\t'
-                << r.detail << '\t' << r.extra << '\n';
+            out << info.name << '\t' << info.family << '\t' << info.size << '\t' << info.vertices
+                << '\t' << info.holes << '\t' << (info.valid ? 1 : 0) << '\t'
+                << p.expectedTriangles() << '\t' << name << '\t' << r.status << '\t' << r.ns << '\t'
+                << r.runs << '\t' << r.triangles << '\t' << r.detail << '\t' << r.extra << '\n';
             out.flush();
-            std::fprintf(stderr, "%-30s %-10s %-14s %12.1f ns/vertex  %s\n", info.name.c_str(), name.c_str(),
-                         r.status.c_str(), r.ns / double(std::max<size_t>(1, info.vertices)), r.detail.c_str());
+            std::fprintf(stderr, "%-30s %-10s %-14s %12.1f ns/vertex  %s\n", info.name.c_str(),
+                         name.c_str(), r.status.c_str(),
+                         r.ns / double(std::max<size_t>(1, info.vertices)), r.detail.c_str());
         };
         for (const auto& w : who) {
             std::string key = w + "|" + info.family;
@@ -401,7 +425,8 @@ int cmdRun(const std::string& dir, double timeoutS, const std::string& outPath) 
                 continue;
             }
             if (info.family != "fixture" && givenUp[key]) {
-                emit(w, {"skipped", "timed out or predicted over the limit at a smaller size", "", 0, 0, 0});
+                emit(w, {"skipped", "timed out or predicted over the limit at a smaller size", "",
+                         0, 0, 0});
                 continue;
             }
             // Flood and the floor get 4x the limit: their figures are the point of the goals, and
@@ -442,16 +467,17 @@ int cmdMemory(const std::string& path, bool rec) {
     Recorder r;
     FloodResult result = triangulate(p, rec ? &r : nullptr);
     long after = maxRssKb();
-    std::printf("%zu\t%ld\t%ld\t%zu\t%zu\n", p.vertices.size(), before, after, result.triangles.size(),
-                r.events.size());
+    std::printf("%zu\t%ld\t%ld\t%zu\t%zu\n", p.vertices.size(), before, after,
+                result.triangles.size(), r.events.size());
     return result.diagnostic.ok() ? 0 : 1;
 }
 
 int cmdFloor(const std::string& path) {
     Polygon p = readPoly(path);
     FloorNs f = measureFloor(p);
-    std::printf("vertices %zu\tio %.0f ns\torient %.0f ns\tsags %.0f ns\ttotal %.1f ns/vertex\n", p.vertices.size(),
-                f.io, f.orient, f.sags, f.total() / double(std::max<size_t>(1, p.vertices.size())));
+    std::printf("vertices %zu\tio %.0f ns\torient %.0f ns\tsags %.0f ns\ttotal %.1f ns/vertex\n",
+                p.vertices.size(), f.io, f.orient, f.sags,
+                f.total() / double(std::max<size_t>(1, p.vertices.size())));
     return 0;
 }
 
@@ -481,10 +507,12 @@ int main(int argc, char** argv) {
             std::istringstream list(option("--large", ""));
             for (std::string f; std::getline(list, f, ',');)
                 if (!f.empty()) large.push_back(f);
-            return cmdDump(a[1], a[2], std::stoull(option("--seed", "1")), std::stoull(option("--max-size", "1000000")), large);
+            return cmdDump(a[1], a[2], std::stoull(option("--seed", "1")),
+                           std::stoull(option("--max-size", "1000000")), large);
         }
         if (a[0] == "run" && a.size() >= 2)
-            return cmdRun(a[1], std::stod(option("--timeout", "60")), option("--out", a[1] + "/results.tsv"));
+            return cmdRun(a[1], std::stod(option("--timeout", "60")),
+                          option("--out", a[1] + "/results.tsv"));
         if (a[0] == "memory" && a.size() >= 2) return cmdMemory(a[1], flag);
         if (a[0] == "floor" && a.size() >= 2) return cmdFloor(a[1]);
     } catch (const std::exception& e) {

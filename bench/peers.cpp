@@ -80,8 +80,8 @@ namespace {
 
 struct GluRun {
     PeerOutput out;
-    std::vector<Index> corner;        // indices of the triangle being emitted
-    std::deque<Index> addedMarkers;   // vertex data for combined (new) vertices: kNone
+    std::vector<Index> corner;       // indices of the triangle being emitted
+    std::deque<Index> addedMarkers;  // vertex data for combined (new) vertices: kNone
     std::deque<std::array<GLdouble, 3>> addedCoords;
 };
 
@@ -97,7 +97,7 @@ void gluVertexData(void* vertex, void* run) {
         r->corner.clear();
     }
 }
-void gluCombine(GLdouble coords[3], void*[4], GLfloat[4], void** outData, void* run) {
+void gluCombine(GLdouble coords[3], void* [4], GLfloat[4], void** outData, void* run) {
     auto* r = static_cast<GluRun*>(run);
     r->addedCoords.push_back({coords[0], coords[1], coords[2]});
     r->addedMarkers.push_back(kNone);
@@ -263,11 +263,12 @@ PeerOutput runGeos(const Polygon& p, const CoordIndex* index) {
                 buf[2 * i] = q.x;
                 buf[2 * i + 1] = q.y;
             }
-            GEOSCoordSequence* seq = GEOSCoordSeq_copyFromBuffer_r(ctx, buf.data(), ring.count + 1, 0, 0);
+            GEOSCoordSequence* seq =
+                GEOSCoordSeq_copyFromBuffer_r(ctx, buf.data(), ring.count + 1, 0, 0);
             rings.push_back(GEOSGeom_createLinearRing_r(ctx, seq));
         }
-        polys.push_back(GEOSGeom_createPolygon_r(ctx, rings[0], rings.data() + 1,
-                                                 unsigned(rings.size() - 1)));
+        polys.push_back(
+            GEOSGeom_createPolygon_r(ctx, rings[0], rings.data() + 1, unsigned(rings.size() - 1)));
     }
     GEOSGeometry* input = polys.size() == 1
                               ? polys[0]

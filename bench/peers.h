@@ -10,8 +10,8 @@ namespace bench {
 
 struct PeerOutput {
     std::vector<flood::Triangle> triangles;
-    size_t added = 0;    // output vertices that are not input points (Steiner / intersections)
-    std::string error;   // the peer reported failure
+    size_t added = 0;   // output vertices that are not input points (Steiner / intersections)
+    std::string error;  // the peer reported failure
 };
 
 // Maps exact coordinates to the first input vertex with them (linear time, hash table).

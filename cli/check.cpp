@@ -106,7 +106,8 @@ struct File {
 std::string displayName(const std::string& path) { return path == "-" ? "<stdin>" : path; }
 
 std::string oneLine(std::string s) {
-    std::replace_if(s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r' || c == '\t'; }, ' ');
+    std::replace_if(
+        s.begin(), s.end(), [](char c) { return c == '\n' || c == '\r' || c == '\t'; }, ' ');
     return s;
 }
 
@@ -118,16 +119,19 @@ void splitInvalid(Row& row, const Diagnostic& d, const std::string& name, const 
     row.reason = reasonOf(d.message, name, where);
     if (p.parts.size() > 1 && where.ring != kNone)
         for (size_t k = 0; k < p.parts.size(); ++k)
-            if (where.ring >= p.parts[k].firstRing && where.ring < p.parts[k].firstRing + p.parts[k].ringCount)
+            if (where.ring >= p.parts[k].firstRing &&
+                where.ring < p.parts[k].firstRing + p.parts[k].ringCount)
                 row.at += " (part " + std::to_string(k) + ")";
 }
 
 // Numbered as describeForbidden() numbers them (steps from 1).
 std::string forbiddenAt(const Polygon& p, const Event& e) {
-    std::string at = std::string(forbiddenName(e.reason)) + " at step " + std::to_string(e.step + 1);
+    std::string at =
+        std::string(forbiddenName(e.reason)) + " at step " + std::to_string(e.step + 1);
     if (e.culprit != kNone && e.culprit < p.vertices.size()) {
         Index r = p.ringOf(e.culprit);
-        at += ", ring " + std::to_string(r) + " vertex " + std::to_string(e.culprit - p.rings[r].first);
+        at += ", ring " + std::to_string(r) + " vertex " +
+              std::to_string(e.culprit - p.rings[r].first);
     }
     return at;
 }
@@ -152,7 +156,7 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
         row.vertices = p.vertices.size();
         if (!readable) {
             row.verdict = f.read.diagnostic.status == Status::Internal ? Verdict::Internal
-                                                                        : Verdict::Malformed;
+                                                                       : Verdict::Malformed;
             row.reason = reasonOf(f.read.diagnostic.message, name, {});  // the name has a column
         } else if (Diagnostic d = o.validate ? validate(p, name) : Diagnostic{}; !d.ok()) {
             row.verdict = Verdict::Invalid;
@@ -171,8 +175,10 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
         // A whole file is copied at extraction (cannot be re-read from stdin: written anew).
         if (row.verdict != Verdict::Ok && !o.extractDir.empty())
             // A GIS feature has no GeoJSON source: its polygon is written as read.
-            row.repro = !f.wholeFile ? (f.source.empty() && readable ? polygonJson(p) : std::move(f.source))
-                        : row.file == "-" && readable ? polygonJson(p) : "";
+            row.repro = !f.wholeFile
+                            ? (f.source.empty() && readable ? polygonJson(p) : std::move(f.source))
+                        : row.file == "-" && readable ? polygonJson(p)
+                                                      : "";
     } catch (const std::bad_alloc&) {
         row.verdict = Verdict::Internal;
         row.reason = "out of memory";
@@ -189,7 +195,8 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
 
 bool polygonFile(const fs::path& p) {
     std::string ext = p.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
 #ifdef FLOOD_GDAL
     if (gdal::gisFile(p.string())) return true;
 #endif
@@ -209,12 +216,14 @@ std::vector<File> expand(const std::vector<std::string>& inputs) {
         fs::recursive_directory_iterator it(in, ec), end;
         for (; !ec && it != end; it.increment(ec)) {
             std::error_code fe;
-            if (it->is_regular_file(fe) && polygonFile(it->path())) found.push_back(it->path().string());
+            if (it->is_regular_file(fe) && polygonFile(it->path()))
+                found.push_back(it->path().string());
         }
         std::sort(found.begin(), found.end());
         for (std::string& f : found) files.emplace_back(std::move(f));
         if (ec) files.emplace_back(in, in + ": cannot list folder: " + ec.message());
-        else if (found.empty()) files.emplace_back(in, in + ": folder holds no .json, .geojson or .wkt file");
+        else if (found.empty())
+            files.emplace_back(in, in + ": folder holds no .json, .geojson or .wkt file");
     }
     return files;
 }
@@ -238,7 +247,8 @@ public:
             std::vector<Job> more;
             if (j.feature == kRead) read(j.file, more);
             else {
-                checkFeature(files_[j.file].features[j.feature], files_[j.file].rows[j.feature], o_);
+                checkFeature(files_[j.file].features[j.feature], files_[j.file].rows[j.feature],
+                             o_);
                 ++featuresDone;
             }
             lock.lock();
@@ -280,17 +290,20 @@ private:
                 f.warnings = std::move(d.skipped);
             } catch (const std::bad_alloc&) {
                 f.features.assign(1, FeatureRead{});
-                f.features[0].read.diagnostic = {Status::Malformed, displayName(f.path) + ": out of memory while reading"};
+                f.features[0].read.diagnostic = {
+                    Status::Malformed, displayName(f.path) + ": out of memory while reading"};
             } catch (const std::exception& e) {
                 f.features.assign(1, FeatureRead{});
-                f.features[0].read.diagnostic = {Status::Internal, displayName(f.path) +
-                                                                       ": exception while reading: " + e.what()};
+                f.features[0].read.diagnostic = {
+                    Status::Internal,
+                    displayName(f.path) + ": exception while reading: " + e.what()};
             }
             for (const FeatureRead& r : f.features) {
                 f.warnings.insert(f.warnings.end(), r.read.warnings.begin(), r.read.warnings.end());
                 if (r.read.warningsOmitted)
                     f.warnings.push_back(displayName(f.path) + ": \u2026 and " +
-                                         std::to_string(r.read.warningsOmitted) + " more warnings like these");
+                                         std::to_string(r.read.warningsOmitted) +
+                                         " more warnings like these");
             }
         }
         f.rows.resize(f.features.size());
@@ -317,7 +330,8 @@ bool extract(std::vector<Row*>& rows, const CheckOptions& o) {
     std::error_code ec;
     fs::create_directories(o.extractDir, ec);
     if (ec) {
-        std::cerr << "error: " << o.extractDir << ": cannot create the --extract folder: " << ec.message() << "\n";
+        std::cerr << "error: " << o.extractDir
+                  << ": cannot create the --extract folder: " << ec.message() << "\n";
         return false;
     }
     bool ok = true;
@@ -337,7 +351,9 @@ bool extract(std::vector<Row*>& rows, const CheckOptions& o) {
             stem = base;
             for (int k = 2; !stems.insert(stem).second; ++k) stem = base + "-" + std::to_string(k);
         }
-        std::string path = (fs::path(o.extractDir) / (stem + "_feature" + std::to_string(r->feature) + ext)).string();
+        std::string path =
+            (fs::path(o.extractDir) / (stem + "_feature" + std::to_string(r->feature) + ext))
+                .string();
         Output out(path);
         out.stream() << text;
         if (out.commit() == Status::Ok) r->extracted = path;
@@ -388,7 +404,8 @@ int runCheck(const CheckOptions& o) {
     std::vector<File> files = expand(o.inputs);
     Scheduler scheduler(files, o);
     std::vector<std::thread> workers;
-    for (unsigned k = 0; k < std::max(1u, o.jobs); ++k) workers.emplace_back([&] { scheduler.work(); });
+    for (unsigned k = 0; k < std::max(1u, o.jobs); ++k)
+        workers.emplace_back([&] { scheduler.work(); });
     double seconds = 0;
     auto joinWorkers = [&] {
         for (std::thread& t : workers) t.join();
@@ -436,7 +453,8 @@ int runCheck(const CheckOptions& o) {
 
     std::string summary = "check: " + std::to_string(rows.size()) +
                           (rows.size() == 1 ? " feature in " : " features in ") +
-                          std::to_string(files.size()) + (files.size() == 1 ? " file: " : " files: ");
+                          std::to_string(files.size()) +
+                          (files.size() == 1 ? " file: " : " files: ");
     for (size_t v = 0; v < count.size(); ++v)
         summary += (v ? ", " : "") + std::to_string(count[v]) + " " + verdictName(Verdict(v));
     char time[32];
@@ -467,8 +485,12 @@ int runCheck(const CheckOptions& o) {
     json counts = json::object();
     for (size_t v = 0; v < count.size(); ++v) counts[verdictName(Verdict(v))] = count[v];
     json doc = {{"features", records},
-                {"summary", {{"files", files.size()}, {"features", rows.size()}, {"verdicts", counts},
-                             {"code", code}, {"seconds", seconds}}}};
+                {"summary",
+                 {{"files", files.size()},
+                  {"features", rows.size()},
+                  {"verdicts", counts},
+                  {"code", code},
+                  {"seconds", seconds}}}};
     // Invalid UTF-8 in a property or path is replaced, never a throw.
     std::cout << doc.dump(1, ' ', false, json::error_handler_t::replace) << "\n";
     return code;

@@ -17,14 +17,14 @@
 #include <csignal>
 #include <cstdio>
 #include <ctime>
-#include <streambuf>
 #include <iostream>
+#include <streambuf>
 #include <thread>
 
 #include "check.h"
 #include "checker.h"
-#include "generate.h"
 #include "flood.h"
+#include "generate.h"
 #include "io.h"
 #include "narrate.h"
 #include "output.h"
@@ -97,8 +97,8 @@ Status prepare(const std::string& path, Polygon& polygon, bool check = true) {
 // check runs with --no-validate too (`validated` false): there it is what catches invalid
 // input the machine cannot see, such as overlapping parts (flooded apart). --no-exact-check
 // (`exactCheck` false) skips it: the output is then unproven.
-Status judge(const Polygon& polygon, const std::vector<Triangle>& triangles,
-             const Diagnostic& run, bool validated = true, bool exactCheck = true) {
+Status judge(const Polygon& polygon, const std::vector<Triangle>& triangles, const Diagnostic& run,
+             bool validated = true, bool exactCheck = true) {
     if (!run.ok()) {
         std::cerr << "error: flooding stopped in a forbidden state: " << run.message << "\n";
         return run.status;
@@ -107,7 +107,8 @@ Status judge(const Polygon& polygon, const std::vector<Triangle>& triangles,
     CheckResult c = checkTriangulation(polygon, triangles);
     if (!c.ok) {
         if (validated)
-            std::cerr << "internal error: the exact checker rejects our triangulation: " << c.reason << "\n";
+            std::cerr << "internal error: the exact checker rejects our triangulation: " << c.reason
+                      << "\n";
         else
             std::cerr << "error: the exact checker rejects our triangulation: " << c.reason
                       << " (validation was skipped; the check of the output caught it: the input "
@@ -151,8 +152,11 @@ int cmdTriangulate(const std::string& in, const std::string& out, std::string fo
             std::string e = ext;
             return out.size() >= e.size() && out.compare(out.size() - e.size(), e.size(), e) == 0;
         };
-        format = ends(".svg") ? "svg" : ends(".obj") ? "obj" : ends(".gpkg") ? "gpkg"
-                 : ends(".fgb") ? "fgb" : "json";
+        format = ends(".svg")    ? "svg"
+                 : ends(".obj")  ? "obj"
+                 : ends(".gpkg") ? "gpkg"
+                 : ends(".fgb")  ? "fgb"
+                                 : "json";
     }
     if (format == "gpkg" || format == "fgb") {
 #ifdef FLOOD_GDAL
@@ -185,7 +189,8 @@ int cmdTrace(const std::string& in, const std::string& out, const std::string& u
     s = judge(polygon, t.triangles, t.diagnostic, check, exactCheck);
     // A trace of a forbidden run is exactly what one wants to look at: write it anyway,
     // but still exit with the failure status.
-    if (s == Status::Internal) t.diagnostic = {Status::Internal, "the exact checker rejects the result"};
+    if (s == Status::Internal)
+        t.diagnostic = {Status::Internal, "the exact checker rejects the result"};
     Output o(out);
     writeTrace(o.stream(), t);
     Status w = o.commit();
@@ -223,8 +228,8 @@ int cmdVerify(const std::string& in, const std::string& up, bool check) {
         return code(Status::VerifyFailed);
     }
     if (!check) std::cout << "verify: validation skipped: caught by nothing\n";
-    std::cout << "verify: ok: " << polygon.vertices.size() << " vertices in " << polygon.rings.size()
-              << " rings\n";
+    std::cout << "verify: ok: " << polygon.vertices.size() << " vertices in "
+              << polygon.rings.size() << " rings\n";
     return code(Status::Ok);
 }
 
@@ -283,11 +288,12 @@ int cmdShrink(const std::string& in, const std::string& out, const std::string& 
         return code(Status::Usage);
     }
     std::string kind = failureKindName(r.failure.kind);
-    if (r.failure.kind == Failure::Kind::Forbidden) kind += std::string(" ") + forbiddenName(r.failure.reason);
-    std::cerr << "shrink: " << kind << (r.inputValid ? " (input valid, kept valid)" : "")
-              << ": " << polygon.vertices.size() << " vertices in " << polygon.rings.size()
-              << " rings -> " << r.polygon.vertices.size() << " vertices in "
-              << r.polygon.rings.size() << " rings (" << r.tries << " runs)\n";
+    if (r.failure.kind == Failure::Kind::Forbidden)
+        kind += std::string(" ") + forbiddenName(r.failure.reason);
+    std::cerr << "shrink: " << kind << (r.inputValid ? " (input valid, kept valid)" : "") << ": "
+              << polygon.vertices.size() << " vertices in " << polygon.rings.size() << " rings -> "
+              << r.polygon.vertices.size() << " vertices in " << r.polygon.rings.size()
+              << " rings (" << r.tries << " runs)\n";
     if (!r.failure.message.empty()) std::cerr << "shrink: " << r.failure.message << "\n";
     Output file(out);
     writePolygonJson(file.stream(), r.polygon);
@@ -342,7 +348,8 @@ void benchPipeline(const std::string& in, int repeat, const Options& o, double n
         text += part;
     }
     char tail[96];
-    std::snprintf(tail, sizeof tail, " ns/vertex; all %.1f ns/vertex = x%.2f flood\n", total / n, total / flood);
+    std::snprintf(tail, sizeof tail, " ns/vertex; all %.1f ns/vertex = x%.2f flood\n", total / n,
+                  total / flood);
     std::cout << text << tail;
 }
 
@@ -360,7 +367,8 @@ int cmdBench(const std::string& in, int repeat, const std::string& up) {
     s = judge(polygon, first.triangles, first.diagnostic);
     if (s != Status::Ok) return code(s);
     size_t sink = 0;
-    double plain = medianNs(repeat, [&] { sink += triangulate(polygon, nullptr, o).triangles.size(); });
+    double plain =
+        medianNs(repeat, [&] { sink += triangulate(polygon, nullptr, o).triangles.size(); });
     // Full trace recording as `flood trace` and the viewer do it (record(): a fresh log each
     // run), then into one log whose capacity is kept (clear()): the difference is fresh memory.
     size_t events = 0;
@@ -382,12 +390,12 @@ int cmdBench(const std::string& in, int repeat, const std::string& up) {
         std::cout << text;
     };
     line("vertices %zu, triangles %zu, events %zu, repeat %d (median time, reading excluded)\n",
-                polygon.vertices.size(), first.triangles.size(), events, repeat);
+         polygon.vertices.size(), first.triangles.size(), events, repeat);
     line("no listener:                    %12.0f ns  %8.1f ns/vertex\n", plain, plain / n);
     line("recording listener, fresh log:  %12.0f ns  %8.1f ns/vertex  (x%.2f)\n", recorded,
-                recorded / n, recorded / plain);
+         recorded / n, recorded / plain);
     line("recording listener, reused log: %12.0f ns  %8.1f ns/vertex  (x%.2f)\n", reused,
-                reused / n, reused / plain);
+         reused / n, reused / plain);
     if (in != "-") benchPipeline(in, repeat, o, n);  // stdin cannot be read again
     return sink == 0 && !first.triangles.empty() ? code(Status::Internal) : 0;
 }
@@ -426,10 +434,13 @@ int run(int argc, char** argv) {
     int repeat = 5;
 
     auto* tri = app.add_subcommand("triangulate", "Triangulate a polygon and write the result");
-    tri->add_option("IN", in, "Input polygon (GeoJSON, ring array or WKT; - for stdin)")->required();
+    tri->add_option("IN", in, "Input polygon (GeoJSON, ring array or WKT; - for stdin)")
+        ->required();
     tri->add_option("-o,--output", out, "Output file (- for stdout, the default)");
-    tri->add_option("--format", format, "json, svg, obj, or with GDAL gpkg (GeoPackage) or fgb (FlatGeobuf): a layer of "
-                   "triangle polygons (default: from the output extension, else json)")
+    tri->add_option(
+           "--format", format,
+           "json, svg, obj, or with GDAL gpkg (GeoPackage) or fgb (FlatGeobuf): a layer of "
+           "triangle polygons (default: from the output extension, else json)")
         ->check(CLI::IsMember({"json", "svg", "obj", "gpkg", "fgb"}));
     addUp(tri, up);
     addNoValidate(tri);
@@ -459,15 +470,22 @@ int run(int argc, char** argv) {
         ->check(CLI::Range(1, 1000000));
     addUp(bench, up);
 
-    auto* gen = app.add_subcommand("generate", "Write a generated polygon (core/generate.h): a valid family, or an invalid one");
-    gen->add_option("FAMILY", family, "Polygon family (see the error message for the list)")->required();
-    gen->add_option("SIZE", size, "Approximate vertex count")->required()->check(CLI::Range(size_t(3), size_t(1) << 31));
+    auto* gen = app.add_subcommand(
+        "generate",
+        "Write a generated polygon (core/generate.h): a valid family, or an invalid one");
+    gen->add_option("FAMILY", family, "Polygon family (see the error message for the list)")
+        ->required();
+    gen->add_option("SIZE", size, "Approximate vertex count")
+        ->required()
+        ->check(CLI::Range(size_t(3), size_t(1) << 31));
     gen->add_option("-o,--output", out, "Output file (- for stdout, the default)");
     gen->add_option("--seed", seed, "Random seed (default 1)");
 
-    auto* shr = app.add_subcommand("shrink", "Shrink a failing polygon to a small one that fails the same way");
+    auto* shr = app.add_subcommand(
+        "shrink", "Shrink a failing polygon to a small one that fails the same way");
     shr->add_option("IN", in, "Input polygon (- for stdin)")->required();
-    shr->add_option("-o,--output", out, "Output file for the minimal polygon (- for stdout, the default)");
+    shr->add_option("-o,--output", out,
+                    "Output file for the minimal polygon (- for stdout, the default)");
     shr->add_option("--timeout", timeout, "Seconds before a run counts as a hang (default 10)")
         ->check(CLI::Range(1u, 3600u));
     shr->add_flag("--slipping", slipping,
@@ -477,16 +495,19 @@ int run(int argc, char** argv) {
 
     cli::CheckOptions checkOptions;
     checkOptions.jobs = std::max(1u, std::thread::hardware_concurrency());
-    auto* chk = app.add_subcommand("check", "Check every polygon of a dataset: each feature of "
-                                            "each file, folders recursively; a table or --json");
+    auto* chk = app.add_subcommand("check",
+                                   "Check every polygon of a dataset: each feature of "
+                                   "each file, folders recursively; a table or --json");
     chk->add_option("FILE", checkOptions.inputs,
                     "Files and folders (.json, .geojson, .wkt found recursively; - for stdin)")
         ->required();
-    chk->add_flag("--json", checkOptions.json, "One JSON document: a record per feature and the summary");
+    chk->add_flag("--json", checkOptions.json,
+                  "One JSON document: a record per feature and the summary");
     chk->add_option("--extract", checkOptions.extractDir,
                     "Write each failing feature to DIR/STEM_featureN.json")
         ->type_name("DIR");
-    chk->add_option("-j,--jobs", checkOptions.jobs, "Features checked in parallel (default: all cores)")
+    chk->add_option("-j,--jobs", checkOptions.jobs,
+                    "Features checked in parallel (default: all cores)")
         ->type_name("N")
         ->check(CLI::Range(1u, 1024u));
     addNoValidate(chk);
@@ -498,14 +519,17 @@ int run(int argc, char** argv) {
             ->transform(CLI::AsSizeValue(false))
             ->check(CLI::Range(uint64_t(1), UINT64_MAX));
     for (CLI::App* cmd : {tri, trace, tr, ver, bench, shr, chk}) {
-        cmd->add_option("--layer", selection.layer, "GIS dataset (through GDAL): the layer to read "
-                                                    "(needed when there are several)")
+        cmd->add_option("--layer", selection.layer,
+                        "GIS dataset (through GDAL): the layer to read "
+                        "(needed when there are several)")
             ->type_name("NAME");
-        cmd->add_option("--feature", selection.feature, "GIS dataset: only the feature with this FID")
+        cmd->add_option("--feature", selection.feature,
+                        "GIS dataset: only the feature with this FID")
             ->type_name("FID")
             ->check(CLI::NonNegativeNumber);
-        cmd->add_option("--where", selection.where,
-                        "GIS dataset: only the features this OGR SQL filter keeps, e.g. \"name = 'x'\"")
+        cmd->add_option(
+               "--where", selection.where,
+               "GIS dataset: only the features this OGR SQL filter keeps, e.g. \"name = 'x'\"")
             ->type_name("FILTER");
     }
 

@@ -20,7 +20,9 @@ namespace {
 // after it, every write fails at once.
 class FdBuf : public std::streambuf {
 public:
-    explicit FdBuf(int fd) : fd_(fd), buf_(1 << 16) { setp(buf_.data(), buf_.data() + buf_.size()); }
+    explicit FdBuf(int fd) : fd_(fd), buf_(1 << 16) {
+        setp(buf_.data(), buf_.data() + buf_.size());
+    }
     int error() const { return error_; }
     void fail(int error) {
         if (!error_) error_ = error;
@@ -99,9 +101,9 @@ Output::Output(std::string path) {
     } else {
         // A hidden name beside the output: ".NAME.XXXXXX" in the same directory.
         size_t slash = path.rfind('/');
-        std::string pattern = slash == std::string::npos
-                                  ? "." + path + ".XXXXXX"
-                                  : path.substr(0, slash + 1) + "." + path.substr(slash + 1) + ".XXXXXX";
+        std::string pattern = slash == std::string::npos ? "." + path + ".XXXXXX"
+                                                         : path.substr(0, slash + 1) + "." +
+                                                               path.substr(slash + 1) + ".XXXXXX";
         std::vector<char> name(pattern.begin(), pattern.end());
         name.push_back('\0');
         fd = ::mkstemp(name.data());

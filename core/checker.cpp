@@ -38,9 +38,9 @@
 #include <cmath>
 #include <cstdint>
 #include <optional>
-#include <utility>
 #include <sstream>
 #include <unordered_map>
+#include <utility>
 
 #include "checker_parts.h"
 #include "predicates.h"
@@ -139,15 +139,16 @@ struct Checker {
     const std::vector<Point>& V = polygon.vertices;
     const size_t n = polygon.vertices.size();
     std::vector<Index> partOfRing, partOfVertex;
-    std::vector<Index> C;             // canonical copy of each vertex (see the top)
-    std::optional<EdgeLists> edges;   // rule 4 on
-    std::vector<char> forwardRing;    // the ring's own direction has the interior on its left
-    AreaEstimate polygonArea;         // doubled, rule 7
+    std::vector<Index> C;            // canonical copy of each vertex (see the top)
+    std::optional<EdgeLists> edges;  // rule 4 on
+    std::vector<char> forwardRing;   // the ring's own direction has the interior on its left
+    AreaEstimate polygonArea;        // doubled, rule 7
 
     Checker(const Polygon& p, const std::vector<Triangle>& t) : polygon(p), triangles(t) {}
 
     bool isPointHole(Index r) const {
-        return polygon.rings[r].count == 1 && partOfRing[r] != kNone && polygon.parts[partOfRing[r]].firstRing != r;
+        return polygon.rings[r].count == 1 && partOfRing[r] != kNone &&
+               polygon.parts[partOfRing[r]].firstRing != r;
     }
 
     // The directed boundary edges, in ring order: each ring edge, cut at its T-junctions, with
@@ -177,11 +178,13 @@ struct Checker {
     // Rule 0: rings long enough to judge, indices that fit; ring -> part and vertex -> part
     // (vertices are stored ring by ring).
     CheckResult rings() {
-        if (n >= kNone) return fail(CheckRule::Rings, "polygon: too many vertices for 32-bit indices");
+        if (n >= kNone)
+            return fail(CheckRule::Rings, "polygon: too many vertices for 32-bit indices");
         partOfRing.assign(polygon.rings.size(), kNone);
         for (Index p = 0; p < polygon.parts.size(); ++p) {
             const Part& part = polygon.parts[p];
-            for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) partOfRing[r] = p;
+            for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r)
+                partOfRing[r] = p;
         }
         partOfVertex.assign(n, kNone);
         for (Index r = 0; r < polygon.rings.size(); ++r) {
@@ -217,9 +220,10 @@ struct Checker {
             const Triangle& tri = triangles[t];
             Index p = partOfVertex[tri[0]];
             if (p == kNone || partOfVertex[tri[1]] != p || partOfVertex[tri[2]] != p)
-                return fail(CheckRule::PartsAndCount,
-                            "mixed-parts: " + triName(t, tri) + " has vertices from different parts",
-                            {uint32_t(t)}, {tri[0], tri[1], tri[2]});
+                return fail(
+                    CheckRule::PartsAndCount,
+                    "mixed-parts: " + triName(t, tri) + " has vertices from different parts",
+                    {uint32_t(t)}, {tri[0], tri[1], tri[2]});
             countOfPart[p]++;
         }
         std::vector<size_t> copiesOfPart(polygon.parts.size(), 0);  // d: repeated points per part
@@ -236,8 +240,8 @@ struct Checker {
             if (b == kNone || partOfVertex[sp.vertex] != partOfVertex[sp.edge] ||
                 !insideSegment(V[sp.edge], V[b], V[sp.vertex])) {
                 std::ostringstream o;
-                o << "bad-split: vertex " << sp.vertex << " does not lie strictly inside edge (" << sp.edge
-                  << ", " << b << ")";
+                o << "bad-split: vertex " << sp.vertex << " does not lie strictly inside edge ("
+                  << sp.edge << ", " << b << ")";
                 return fail(CheckRule::PartsAndCount, o.str(), {}, {sp.vertex});
             }
             lessOfPart[partOfVertex[sp.edge]]++;
@@ -254,11 +258,13 @@ struct Checker {
             if (countOfPart[p] != expected) {
                 std::ostringstream o;
                 o << "triangle-count: part " << p << " has " << countOfPart[p]
-                  << " triangles, expected n + 2h - 2 - 2d - j - p = " << expected << " (n = " << verts
-                  << ", h = " << part.ringCount - 1 << ", d = " << d << " repeated points, j + p = "
-                  << lessOfPart[p] << " T-junctions and point holes)";
+                  << " triangles, expected n + 2h - 2 - 2d - j - p = " << expected
+                  << " (n = " << verts << ", h = " << part.ringCount - 1 << ", d = " << d
+                  << " repeated points, j + p = " << lessOfPart[p]
+                  << " T-junctions and point holes)";
                 std::vector<uint32_t> rings;  // the part's
-                for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) rings.push_back(r);
+                for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r)
+                    rings.push_back(r);
                 return fail(CheckRule::PartsAndCount, o.str(), {}, {}, std::move(rings));
             }
         }
@@ -271,10 +277,12 @@ struct Checker {
             const Triangle& tri = triangles[t];
             int o = orient(V[tri[0]], V[tri[1]], V[tri[2]]);
             if (o == 0)
-                return fail(CheckRule::CounterClockwise, "degenerate-triangle: " + triName(t, tri) + " has zero area",
+                return fail(CheckRule::CounterClockwise,
+                            "degenerate-triangle: " + triName(t, tri) + " has zero area",
                             {uint32_t(t)}, {tri[0], tri[1], tri[2]});
             if (o < 0)
-                return fail(CheckRule::CounterClockwise, "clockwise-triangle: " + triName(t, tri) + " is clockwise",
+                return fail(CheckRule::CounterClockwise,
+                            "clockwise-triangle: " + triName(t, tri) + " is clockwise",
                             {uint32_t(t)}, {tri[0], tri[1], tri[2]});
         }
         return kPass;
@@ -312,13 +320,16 @@ struct Checker {
         for (Index r = 0; r < polygon.rings.size(); ++r) {
             const Ring& ring = polygon.rings[r];
             if (isPointHole(r)) continue;  // no edges, no area; rule 2 counted its triangles
-            auto edge = [&](Index i) { return std::pair{V[ring.first + i], V[ring.first + (i + 1) % ring.count]}; };
+            auto edge = [&](Index i) {
+                return std::pair{V[ring.first + i], V[ring.first + (i + 1) % ring.count]};
+            };
             AreaEstimate ringArea;
             for (Index i = 0; i < ring.count; ++i) ringArea.addCross(edge(i).first, edge(i).second);
             int s = ringArea.sign();
             if (s == 0) {  // zero or too close to tell: exact arithmetic says
                 ExactSum exact;
-                for (Index i = 0; i < ring.count; ++i) exact.addCross(edge(i).first, edge(i).second);
+                for (Index i = 0; i < ring.count; ++i)
+                    exact.addCross(edge(i).first, edge(i).second);
                 s = exact.sign();
             }
             if (s == 0) {
@@ -340,7 +351,8 @@ struct Checker {
     CheckResult boundaryEdges() {
         std::optional<CheckResult> failed;
         eachBoundaryEdge([&](BoundaryEdge e) {
-            const Index a = e.a, b = e.b, r = e.ring;  // named, not bound: lambdas below capture them
+            const Index a = e.a, b = e.b,
+                        r = e.ring;  // named, not bound: lambdas below capture them
             uint32_t slot = edges->find(C[a], C[b]);
             if (slot != kNone && edges->marked(slot)) {
                 Index earlier = kNone;  // the ring of the first boundary edge with this segment
@@ -361,10 +373,12 @@ struct Checker {
                         if (C[tri[k]] == C[b] && C[tri[(k + 1) % 3]] == C[a]) return true;
                     return false;
                 };
-                uint32_t user = uint32_t(std::find_if(triangles.begin(), triangles.end(), uses) - triangles.begin());
+                uint32_t user = uint32_t(std::find_if(triangles.begin(), triangles.end(), uses) -
+                                         triangles.begin());
                 std::ostringstream o;
                 o << "boundary-edge-reversed: " << triName(user, triangles[user])
-                  << " uses boundary edge (" << b << ", " << a << ") of ring " << r << " from outside";
+                  << " uses boundary edge (" << b << ", " << a << ") of ring " << r
+                  << " from outside";
                 failed = fail(CheckRule::BoundaryEdges, o.str(), {user}, {b, a}, {r});
                 return false;
             }
@@ -390,8 +404,8 @@ struct Checker {
                 if (edges->marked(edges->find(C[a], C[b]))) continue;
                 if (!edges->contains(C[b], C[a])) {
                     std::ostringstream o;
-                    o << "unmatched-edge: " << triName(t, tri) << " has interior edge (" << a << ", "
-                      << b << ") but no triangle has (" << b << ", " << a << ")";
+                    o << "unmatched-edge: " << triName(t, tri) << " has interior edge (" << a
+                      << ", " << b << ") but no triangle has (" << b << ", " << a << ")";
                     return fail(CheckRule::InteriorTwins, o.str(), {uint32_t(t)}, {a, b});
                 }
             }
@@ -405,7 +419,8 @@ struct Checker {
     // bounds differs exactly (no exact sum of 10^6 triangles is needed to prove what holds).
     CheckResult area() {
         AreaEstimate triangleArea;
-        for (const Triangle& tri : triangles) triangleArea.addTriangle(V[tri[0]], V[tri[1]], V[tri[2]]);
+        for (const Triangle& tri : triangles)
+            triangleArea.addTriangle(V[tri[0]], V[tri[1]], V[tri[2]]);
         const double gap = std::fabs(triangleArea.value() - polygonArea.value());
         if (triangleArea.finite() && polygonArea.finite() &&
             gap * (1 - 0x1p-52) > triangleArea.bound() + polygonArea.bound()) {
@@ -432,7 +447,8 @@ struct Checker {
         std::vector<uint32_t> rings;  // the overlapping parts' outer rings
         for (Index p : overlap.parts)
             if (p < polygon.parts.size()) rings.push_back(polygon.parts[p].firstRing);
-        return fail(CheckRule::PartsDisjoint, overlap.reason, {}, std::move(overlap.vertices), std::move(rings));
+        return fail(CheckRule::PartsDisjoint, overlap.reason, {}, std::move(overlap.vertices),
+                    std::move(rings));
     }
 };
 
@@ -440,10 +456,10 @@ struct Checker {
 
 CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangle>& triangles) {
     Checker checker(polygon, triangles);
-    for (CheckResult (Checker::*rule)() : {&Checker::rings, &Checker::indices, &Checker::partsAndCount,
-                                           &Checker::counterClockwise, &Checker::distinctEdges,
-                                           &Checker::orientRings, &Checker::boundaryEdges,
-                                           &Checker::interiorTwins, &Checker::area, &Checker::partsDisjoint}) {
+    for (CheckResult (Checker::*rule)() :
+         {&Checker::rings, &Checker::indices, &Checker::partsAndCount, &Checker::counterClockwise,
+          &Checker::distinctEdges, &Checker::orientRings, &Checker::boundaryEdges,
+          &Checker::interiorTwins, &Checker::area, &Checker::partsDisjoint}) {
         CheckResult r = (checker.*rule)();
         if (!r.ok) return r;
     }

@@ -13,21 +13,21 @@ namespace flood {
 // (checked where rule 5 orients the rings) no ring of zero area.
 enum class CheckRule : int {
     Rings = 0,
-    Indices = 1,          // every index in range
-    PartsAndCount = 2,    // one part per triangle, the count per part, splits inside their edge
-    CounterClockwise = 3, // every triangle counter-clockwise and non-degenerate
-    DistinctEdges = 4,    // no directed edge twice
-    BoundaryEdges = 5,    // every boundary edge once, from the inside
-    InteriorTwins = 6,    // every other edge has its reverse
-    Area = 7,             // the areas add up
-    PartsDisjoint = 8,    // parts do not overlap
-    None = -1             // every rule holds
+    Indices = 1,           // every index in range
+    PartsAndCount = 2,     // one part per triangle, the count per part, splits inside their edge
+    CounterClockwise = 3,  // every triangle counter-clockwise and non-degenerate
+    DistinctEdges = 4,     // no directed edge twice
+    BoundaryEdges = 5,     // every boundary edge once, from the inside
+    InteriorTwins = 6,     // every other edge has its reverse
+    Area = 7,              // the areas add up
+    PartsDisjoint = 8,     // parts do not overlap
+    None = -1              // every rule holds
 };
 
 struct CheckResult {
     bool ok = false;
-    std::string reason;  // first rule broken, naming the triangle / edge / vertices
-    Culprits culprits;   // the same triangle / vertices / ring as data
+    std::string reason;                // first rule broken, naming the triangle / edge / vertices
+    Culprits culprits;                 // the same triangle / vertices / ring as data
     CheckRule rule = CheckRule::None;  // the rule `reason` says is broken (None when ok)
 };
 

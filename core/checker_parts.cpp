@@ -99,7 +99,8 @@ std::string vertexName(const std::vector<Point>& V, Index v) {
 
 PartsOverlap crossing(const Segment& s, const Segment& t, const std::string& where) {
     return {"parts-overlap: " + edgeName(s) + " crosses " + edgeName(t) + where,
-            {s.a, s.b, t.a, t.b}, {s.part, t.part}};
+            {s.a, s.b, t.a, t.b},
+            {s.part, t.part}};
 }
 
 }  // namespace
@@ -130,7 +131,8 @@ PartsOverlap partsOverlap(const std::vector<Point>& V, const std::vector<Index>&
         ends.push_back({g.lo, g.sign > 0 ? g.a : g.b, s, true});
         ends.push_back({g.hi, g.sign > 0 ? g.b : g.a, s, false});
     }
-    std::sort(ends.begin(), ends.end(), [](const End& e, const End& f) { return lexLess(e.p, f.p); });
+    std::sort(ends.begin(), ends.end(),
+              [](const End& e, const End& f) { return lexLess(e.p, f.p); });
 
     using Status = std::set<Index, Below>;
     Status status(Below{&segs});
@@ -171,7 +173,8 @@ PartsOverlap partsOverlap(const std::vector<Point>& V, const std::vector<Index>&
         // Edges passing through one point cross there unless they are collinear.
         for (size_t k = starting + 1; k < fan.size(); ++k) {
             const Segment &s = segs[fan[k - 1]], &t = segs[fan[k]];
-            if (orient(s.lo, s.hi, t.hi) != 0) return crossing(s, t, " at " + vertexName(V, vertex));
+            if (orient(s.lo, s.hi, t.hi) != 0)
+                return crossing(s, t, " at " + vertexName(V, vertex));
         }
         int count = first == status.begin() ? 0 : above[*std::prev(first)];
         status.erase(first, last);

@@ -20,11 +20,12 @@ struct BoundaryEdge {
 // naming the two parts and a vertex or the two crossing edges, with those as data. Exact (orient and coordinate comparisons),
 // O(n log n): a sweep over the boundary edges.
 struct PartsOverlap {
-    std::string reason;            // "" when the parts do not overlap
-    std::vector<Index> vertices;   // the vertex beside the overlap, or the crossing edges' ends
-    std::vector<Index> parts;      // the parts that overlap
+    std::string reason;           // "" when the parts do not overlap
+    std::vector<Index> vertices;  // the vertex beside the overlap, or the crossing edges' ends
+    std::vector<Index> parts;     // the parts that overlap
 };
-PartsOverlap partsOverlap(const std::vector<Point>& vertices, const std::vector<Index>& partOfVertex,
+PartsOverlap partsOverlap(const std::vector<Point>& vertices,
+                          const std::vector<Index>& partOfVertex,
                           const std::vector<BoundaryEdge>& boundary);
 
 }  // namespace flood

@@ -31,7 +31,8 @@ struct RepeatedPointsScratch {
 };
 
 template <typename PointAt>
-std::vector<std::pair<uint32_t, uint32_t>>& repeatedPoints(size_t n, PointAt pointAt, RepeatedPointsScratch& s) {
+std::vector<std::pair<uint32_t, uint32_t>>& repeatedPoints(size_t n, PointAt pointAt,
+                                                           RepeatedPointsScratch& s) {
     constexpr uint32_t kEmpty = 0xffffffffu;
     std::vector<std::pair<uint32_t, uint32_t>>& copies = s.copies;
     copies.clear();

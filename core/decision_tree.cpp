@@ -16,7 +16,8 @@ public:
 
     int test(Test t, const char* label, int yes, int no) {
         DecisionNode n;
-        n.kind = Kind::Test, n.test = t, n.label = label, n.detail = testText(t), n.yes = yes, n.no = no;
+        n.kind = Kind::Test, n.test = t, n.label = label, n.detail = testText(t), n.yes = yes,
+        n.no = no;
         return add(n);
     }
     int check(const char* label, const char* detail, int yes, int stop) {
@@ -27,12 +28,14 @@ public:
     }
     int action(Action a, int fails = -1) {
         DecisionNode n;
-        n.kind = Kind::Action, n.action = a, n.label = actionName(a), n.detail = actionMeaning(a), n.no = fails;
+        n.kind = Kind::Action, n.action = a, n.label = actionName(a), n.detail = actionMeaning(a),
+        n.no = fails;
         return add(n);
     }
     int stop(std::vector<Forbidden> reasons, const char* label) {
         DecisionNode n;
-        n.kind = Kind::Stop, n.action = Action::Forbidden, n.reasons = std::move(reasons), n.label = label;
+        n.kind = Kind::Stop, n.action = Action::Forbidden, n.reasons = std::move(reasons),
+        n.label = label;
         return add(n);
     }
 
@@ -65,7 +68,8 @@ void layout(DecisionTree& t, int node, int depth, int& nextRow) {
         return;
     }
     for (int k : kids) layout(t, k, depth + 1, nextRow);
-    t.nodes[size_t(node)].row = (t.nodes[size_t(kids.front())].row + t.nodes[size_t(kids.back())].row) / 2;
+    t.nodes[size_t(node)].row =
+        (t.nodes[size_t(kids.front())].row + t.nodes[size_t(kids.back())].row) / 2;
 }
 
 DecisionTree build() {
@@ -73,13 +77,16 @@ DecisionTree build() {
     // Set-up of a part (Machine::floodPart): the checks before the water starts.
     int start = b.action(Action::Start);
     int startNotBottom = b.stop({Forbidden::StartNotBottom}, "StartNot\nBottom");
-    int bottom = b.check("bottom?", "the lowest vertex of the outer ring is a bottom (convex minimum)",
-                         start, startNotBottom);
+    int bottom =
+        b.check("bottom?", "the lowest vertex of the outer ring is a bottom (convex minimum)",
+                start, startNotBottom);
     int shortLoop = b.stop({Forbidden::ShortLoop}, "Short\nLoop");
-    int rings = b.check("rings >= 3?", "every ring has three vertices or more (a hole may be one point)",
-                        bottom, shortLoop);
+    int rings =
+        b.check("rings >= 3?", "every ring has three vertices or more (a hole may be one point)",
+                bottom, shortLoop);
     int notFinite = b.stop({Forbidden::NotFinite}, "Not\nFinite");
-    int setup = b.check("finite?", "every coordinate of the part is a finite number", rings, notFinite);
+    int setup =
+        b.check("finite?", "every coordinate of the part is a finite number", rings, notFinite);
 
     // A step (Machine::step), in the order of ALGORITHM.md §4.
     int spill = b.action(Action::Spill, b.stop({Forbidden::SpillNoBottom}, "Spill\nNoBottom"));
@@ -94,14 +101,19 @@ DecisionTree build() {
     int above = b.test(Test::NextAbove, "Next above?", sagUp, top);
     int leftLower = b.test(Test::LeftLower, "NL lower?", above, above);
     int crossed = b.stop({Forbidden::FillOpen}, "FillOpen");
-    int apart = b.check("apart?", "NextLeft is not Right and NextRight is not Left: the fingers have not passed each other",
-                        leftLower, crossed);
-    int fill = b.action(Action::Fill, b.stop({Forbidden::FillOpen, Forbidden::BadTriangle}, "FillOpen\nBadTriangle"));
+    int apart = b.check(
+        "apart?",
+        "NextLeft is not Right and NextRight is not Left: the fingers have not passed each other",
+        leftLower, crossed);
+    int fill = b.action(Action::Fill, b.stop({Forbidden::FillOpen, Forbidden::BadTriangle},
+                                             "FillOpen\nBadTriangle"));
     int bridgeMeet = b.action(Action::Bridge, b.stop({Forbidden::NoProgress}, "No\nProgress"));
     int sagMeet = b.test(Test::SagInside, "sag inside?", bridgeMeet, fill);
     int same = b.test(Test::SameNext, "NL == NR?", sagMeet, apart);
     int budget = b.stop({Forbidden::NoProgress}, "No\nProgress");
-    int step = b.check("budget?", "the machine is within its step budget (8 steps per node of the part)", same, budget);
+    int step =
+        b.check("budget?", "the machine is within its step budget (8 steps per node of the part)",
+                same, budget);
 
     // End of a part (after the loop): every node must have been flooded.
     int end = b.stop({Forbidden::LeftBehind}, "Left\nBehind");
@@ -191,7 +203,8 @@ namespace {
 // All that decisionPath() reads of an event: events with one key share one path, and a run
 // has a few dozen keys however long it is.
 uint32_t pathKey(const Event& e) {
-    return uint32_t(e.action) | uint32_t(e.reason) << 8 | uint32_t(e.tested) << 16 | uint32_t(e.passed) << 24;
+    return uint32_t(e.action) | uint32_t(e.reason) << 8 | uint32_t(e.tested) << 16 |
+           uint32_t(e.passed) << 24;
 }
 }  // namespace
 
@@ -208,7 +221,8 @@ std::vector<uint64_t> countPaths(const std::vector<Event>& events) {
     }
     std::vector<uint64_t> counts(decisionTree().nodes.size(), 0);
     for (const auto& [key, entry] : byKey)
-        for (const PathStep& s : decisionPath(*entry.second).steps) counts[size_t(s.node)] += entry.first;
+        for (const PathStep& s : decisionPath(*entry.second).steps)
+            counts[size_t(s.node)] += entry.first;
     return counts;
 }
 

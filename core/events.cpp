@@ -21,7 +21,11 @@ const char* const kForbiddenNames[] = {FLOOD_FORBIDDEN(FLOOD_X)};
 const char* actionName(Action a) { return a < Action::Count ? kActionWords[int(a)] : "?"; }
 const char* actionMeaning(Action a) { return a < Action::Count ? kActionMeanings[int(a)] : "?"; }
 const char* testText(Test t) { return t < Test::Count ? kTestTexts[int(t)] : "?"; }
-const char* forbiddenName(Forbidden f) { return f < Forbidden::Count ? kForbiddenNames[int(f)] : "?"; }
-const char* forbiddenText(Forbidden f) { return f < Forbidden::Count ? kForbiddenTexts[int(f)] : "?"; }
+const char* forbiddenName(Forbidden f) {
+    return f < Forbidden::Count ? kForbiddenNames[int(f)] : "?";
+}
+const char* forbiddenText(Forbidden f) {
+    return f < Forbidden::Count ? kForbiddenTexts[int(f)] : "?";
+}
 
 }  // namespace flood

@@ -12,13 +12,13 @@ namespace flood {
 constexpr int kTraceFormatVersion = 1;
 
 // X(name, word in transcripts, one-line meaning)
-#define FLOOD_ACTIONS(X)                                                                   \
-    X(Start, "Start", "the water starts at the lowest bottom of a part")                   \
-    X(Raise, "Raise", "Next joins the active chain; triangles cut from the chain to it")   \
-    X(Bridge, "Bridge", "a sag in the gorge is joined to the chain; the gorge splits")     \
-    X(Spill, "Spill", "a top overflows; flooding moves to the gorge beyond it")            \
-    X(Jump, "Jump", "the water reaches a top from its far side; back to the other bank")   \
-    X(Fill, "Fill", "NextLeft and NextRight meet; the gorge is filled to its ceiling")     \
+#define FLOOD_ACTIONS(X)                                                                 \
+    X(Start, "Start", "the water starts at the lowest bottom of a part")                 \
+    X(Raise, "Raise", "Next joins the active chain; triangles cut from the chain to it") \
+    X(Bridge, "Bridge", "a sag in the gorge is joined to the chain; the gorge splits")   \
+    X(Spill, "Spill", "a top overflows; flooding moves to the gorge beyond it")          \
+    X(Jump, "Jump", "the water reaches a top from its far side; back to the other bank") \
+    X(Fill, "Fill", "NextLeft and NextRight meet; the gorge is filled to its ceiling")   \
     X(Forbidden, "Forbidden", "a forbidden state or transition: the input is invalid")
 
 enum class Action : uint8_t {
@@ -30,13 +30,13 @@ enum class Action : uint8_t {
 
 // The tests of the decision tree (Fig. 9) in the order they run. An event records which
 // ran (Event::tested) and their outcomes (Event::passed), one bit each.
-#define FLOOD_TESTS(X)                                                       \
-    X(SameNext, "NextLeft == NextRight")                                    \
-    X(LeftLower, "NextLeft below NextRight (Next is NextLeft, C is Left)")  \
-    X(NextAbove, "Next above C (the bank goes up)")                         \
-    X(SagInside, "a sag lies inside Left, Right, NextRight, NextLeft")      \
-    X(CIsTop, "C is concave (a top, not a ceiling)")                        \
-    X(JumpSet, "C has a jump pointer")                                      \
+#define FLOOD_TESTS(X)                                                     \
+    X(SameNext, "NextLeft == NextRight")                                   \
+    X(LeftLower, "NextLeft below NextRight (Next is NextLeft, C is Left)") \
+    X(NextAbove, "Next above C (the bank goes up)")                        \
+    X(SagInside, "a sag lies inside Left, Right, NextRight, NextLeft")     \
+    X(CIsTop, "C is concave (a top, not a ceiling)")                       \
+    X(JumpSet, "C has a jump pointer")                                     \
     X(WalkLanded, "the walk down the far side of the top found the gorge")
 
 enum class Test : uint8_t {
@@ -47,27 +47,23 @@ enum class Test : uint8_t {
 };
 
 // Why the machine stopped in a forbidden state. X(name, explanation in flood vocabulary)
-#define FLOOD_FORBIDDEN(X)                                                                     \
-    X(None, "")                                                                                \
-    X(NotFinite, "a coordinate is not a finite number: heights cannot be compared")             \
-    X(ShortLoop, "a ring has fewer than three vertices: it bounds no area and makes no loop")     \
-    X(StartNotBottom,                                                                          \
-      "the lowest vertex of the outer loop is not a bottom: the loop is not a simple polygon " \
-      "boundary (Fig. 11-A)")                                                                  \
-    X(CeilingAsEnd,                                                                            \
-      "an end of the active chain is a ceiling while NextLeft and NextRight differ: a valid "  \
-      "gorge closes at a ceiling only when both fingers meet there (Fig. 11-B)")               \
-    X(JumpWrongSide,                                                                           \
-      "the water reached a top from the bank it spilled from: banks cross")                     \
-    X(SpillNoBottom,                                                                           \
-      "spilling over a top found no bottom to flood: the loop folds over itself")              \
-    X(BadTriangle,                                                                             \
-      "a triangle to be cut is inverted or flat: an edge crosses the gorge")                   \
-    X(FillOpen,                                                                                \
-      "the fingers met but the gorge is not closed: loops cross each other")                   \
-    X(LeftBehind,                                                                              \
-      "the to-do list is empty but vertices were never flooded: a hole lies outside or loops " \
-      "cross")                                                                                 \
+#define FLOOD_FORBIDDEN(X)                                                                       \
+    X(None, "")                                                                                  \
+    X(NotFinite, "a coordinate is not a finite number: heights cannot be compared")              \
+    X(ShortLoop, "a ring has fewer than three vertices: it bounds no area and makes no loop")    \
+    X(StartNotBottom,                                                                            \
+      "the lowest vertex of the outer loop is not a bottom: the loop is not a simple polygon "   \
+      "boundary (Fig. 11-A)")                                                                    \
+    X(CeilingAsEnd,                                                                              \
+      "an end of the active chain is a ceiling while NextLeft and NextRight differ: a valid "    \
+      "gorge closes at a ceiling only when both fingers meet there (Fig. 11-B)")                 \
+    X(JumpWrongSide, "the water reached a top from the bank it spilled from: banks cross")       \
+    X(SpillNoBottom, "spilling over a top found no bottom to flood: the loop folds over itself") \
+    X(BadTriangle, "a triangle to be cut is inverted or flat: an edge crosses the gorge")        \
+    X(FillOpen, "the fingers met but the gorge is not closed: loops cross each other")           \
+    X(LeftBehind,                                                                                \
+      "the to-do list is empty but vertices were never flooded: a hole lies outside or loops "   \
+      "cross")                                                                                   \
     X(NoProgress, "the machine made no progress: the loops are inconsistent")
 
 enum class Forbidden : uint8_t {
@@ -148,7 +144,7 @@ inline bool operator==(const Event& a, const Event& b) {
 static_assert(sizeof(Event) == 112,
               "Event changed: list its fields in FLOOD_EVENT_FIELDS, bump kTraceFormatVersion");
 
-const char* actionName(Action a);     // "Raise"
+const char* actionName(Action a);  // "Raise"
 const char* actionMeaning(Action a);
 const char* testText(Test t);
 const char* forbiddenName(Forbidden f);

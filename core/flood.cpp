@@ -24,8 +24,8 @@
 #include "flood.h"
 
 #include <algorithm>
-#include <cstdint>
 #include <cmath>
+#include <cstdint>
 #include <numeric>
 #include <sstream>
 
@@ -42,11 +42,11 @@ namespace {
 constexpr uint32_t kNil = kNone;
 
 struct Node {
-    Index v;          // vertex (index into the input)
+    Index v;  // vertex (index into the input)
     uint32_t prev, next;
-    uint32_t jump = kNil;           // top: the other bank of its held gorge
-    uint32_t gorgeLeft = kNil;      // dormant gorge whose Left end is this node
-    uint32_t gorgeRight = kNil;     // dormant gorge whose Right end is this node
+    uint32_t jump = kNil;        // top: the other bank of its held gorge
+    uint32_t gorgeLeft = kNil;   // dormant gorge whose Left end is this node
+    uint32_t gorgeRight = kNil;  // dormant gorge whose Right end is this node
     bool alive = true;
     bool wet = false;  // has been in an active chain: the water reached it
 };
@@ -71,10 +71,17 @@ public:
     // The run's result goes to `out` (its triangles' capacity reused). `keep`, if given, lends
     // the machine its buffers, so that a run on an input no larger than the last one
     // allocates nothing.
-    Machine(const Polygon& poly, Listener* listener, const Options& opt, FloodResult& out, Buffers* keep)
-        : poly_(poly), listener_(listener), own_(keep ? nullptr : new Buffers), b_(keep ? *keep : *own_),
-          up_(opt.up), general_(!opt.up.axis()), result_(out) {
-        if (general_ || (opt.up.x == 0 && opt.up.y > 0)) {  // heights are the input's or ranks: no copy
+    Machine(const Polygon& poly, Listener* listener, const Options& opt, FloodResult& out,
+            Buffers* keep)
+        : poly_(poly),
+          listener_(listener),
+          own_(keep ? nullptr : new Buffers),
+          b_(keep ? *keep : *own_),
+          up_(opt.up),
+          general_(!opt.up.axis()),
+          result_(out) {
+        if (general_ ||
+            (opt.up.x == 0 && opt.up.y > 0)) {  // heights are the input's or ranks: no copy
             pts_ = poly.vertices.data();
             return;
         }
@@ -90,10 +97,12 @@ public:
     void run() {
         nodes_.clear();
         result_.triangles.clear();
-        if (!result_.diagnostic.ok()) result_.diagnostic = {}, result_.failure = {};  // set together
+        if (!result_.diagnostic.ok())
+            result_.diagnostic = {}, result_.failure = {};  // set together
         if (!up_.valid()) {
-            result_.diagnostic = {Status::Usage, "the flood direction (" + upName(up_) +
-                                                     ") is not a direction: it must be a nonzero finite vector"};
+            result_.diagnostic = {Status::Usage,
+                                  "the flood direction (" + upName(up_) +
+                                      ") is not a direction: it must be a nonzero finite vector"};
             return;
         }
         if (general_) rankHeights();
@@ -104,7 +113,7 @@ public:
     }
 
 private:
-    struct Stretch {     // a position of a stretch
+    struct Stretch {  // a position of a stretch
         uint32_t node;
         uint32_t stretch;  // its StretchRec
         int32_t drops;     // the count's change from the stretch's start to just before here
@@ -112,7 +121,7 @@ private:
         bool sensitive;    // a convex bottom or ceiling: where a zero count matters
     };
     struct StretchRec {
-        uint32_t start, end;  // its positions in stretches_
+        uint32_t start, end;    // its positions in stretches_
         uint32_t tree, leaves;  // its tree in stretchTree_ (firstAtMost()), leaves a power of two
     };
 
@@ -176,16 +185,19 @@ private:
     // Number of sags strictly below node n, by binary search on the contiguous height keys,
     // remembered per node: the water is usually the previous step's Next.
     uint32_t sagsBelow(uint32_t n) {
-        if (n - partFirstNode_ >= sagsBelow_.size()) sagsBelow_.resize(nodes_.size() - partFirstNode_, kNil);
+        if (n - partFirstNode_ >= sagsBelow_.size())
+            sagsBelow_.resize(nodes_.size() - partFirstNode_, kNil);
         uint32_t& r = sagsBelow_[n - partFirstNode_];
         if (r == kNil) {
             // The height bucket bounds the search; break ties on the full keys only if needed.
             HeightKey k = key(n);
             size_t b = heightBucket(k.y);
-            auto first = sagY_.begin() + long(sagBucket_[b]), last = sagY_.begin() + long(sagBucket_[b + 1]);
+            auto first = sagY_.begin() + long(sagBucket_[b]),
+                 last = sagY_.begin() + long(sagBucket_[b + 1]);
             size_t a = size_t(std::lower_bound(first, last, k.y) - sagY_.begin());
             if (a < sagY_.size() && sagY_[a] == k.y)
-                a = size_t(std::lower_bound(sagKeys_.begin() + long(a), sagKeys_.begin() + long(sagBucket_[b + 1]), k) -
+                a = size_t(std::lower_bound(sagKeys_.begin() + long(a),
+                                            sagKeys_.begin() + long(sagBucket_[b + 1]), k) -
                            sagKeys_.begin());
             r = uint32_t(a);
         }
@@ -222,11 +234,13 @@ private:
         sagBucket_.assign(buckets + 1, uint32_t(count));
         size_t filled = 0;
         for (size_t k = 0; k < count; ++k)
-            for (size_t b = heightBucket(sagY_[k]); filled <= b;) sagBucket_[filled++] = uint32_t(k);
+            for (size_t b = heightBucket(sagY_[k]); filled <= b;)
+                sagBucket_[filled++] = uint32_t(k);
         // Indexed from the part's first node: per-part work stays proportional to the part.
         sagsBelow_.assign(nodes_.size() - partFirstNode_, kNil);
         work().nodeVisits += sagsBelow_.size();
-        for (size_t k = 0; k < count; ++k) sagsBelow_[sags_[k] - partFirstNode_] = uint32_t(k);  // a sag's rank
+        for (size_t k = 0; k < count; ++k)
+            sagsBelow_[sags_[k] - partFirstNode_] = uint32_t(k);  // a sag's rank
     }
     int turn(uint32_t a, uint32_t b, uint32_t c) const { return orient(P(a), P(b), P(c)); }
     uint32_t prev(uint32_t n) const { return nodes_[n].prev; }
@@ -260,28 +274,34 @@ private:
             }
         }
         // T-junctions of the part (validate() found them): each adds a node on its edge.
-        auto split = std::lower_bound(poly_.splits.begin(), poly_.splits.end(), poly_.rings[pa.firstRing].first,
+        auto split = std::lower_bound(poly_.splits.begin(), poly_.splits.end(),
+                                      poly_.rings[pa.firstRing].first,
                                       [](const EdgeSplit& s, Index v) { return s.edge < v; });
         uint32_t outerNodes = 0;
         std::vector<Index>& loop = b_.loop;
         for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
             const Ring& ring = poly_.rings[r];
             // A ring without T-junctions is its own loop; only the others are copied out.
-            const bool plain = split == poly_.splits.end() || split->edge >= ring.first + ring.count;
+            const bool plain =
+                split == poly_.splits.end() || split->edge >= ring.first + ring.count;
             loop.clear();
             for (Index v = ring.first; !plain && v < ring.first + ring.count; ++v) {
                 loop.push_back(v);
-                for (; split != poly_.splits.end() && split->edge == v; ++split) loop.push_back(split->vertex);
+                for (; split != poly_.splits.end() && split->edge == v; ++split)
+                    loop.push_back(split->vertex);
             }
             // Orient loops so the interior is on the left: outer counter-clockwise, holes
             // clockwise, whatever the file said.
             bool wantCcw = (r == pa.firstRing);
-            bool reverse = ring.count >= 3 && (ringOrientation(pts_ + ring.first, ring.count) > 0) != wantCcw;
-            const uint32_t base = uint32_t(nodes_.size()), count = plain ? ring.count : uint32_t(loop.size());
+            bool reverse =
+                ring.count >= 3 && (ringOrientation(pts_ + ring.first, ring.count) > 0) != wantCcw;
+            const uint32_t base = uint32_t(nodes_.size()),
+                           count = plain ? ring.count : uint32_t(loop.size());
             for (uint32_t i = 0; i < count; ++i) {
                 Node nd;
                 nd.v = plain ? ring.first + i : loop[i];
-                uint32_t p = base + (i == 0 ? count - 1 : i - 1);  // no division: set-up is most of a small run
+                uint32_t p = base + (i == 0 ? count - 1
+                                            : i - 1);  // no division: set-up is most of a small run
                 uint32_t q = base + (i + 1 == count ? 0 : i + 1);
                 nd.prev = reverse ? q : p;
                 nd.next = reverse ? p : q;
@@ -369,17 +389,21 @@ private:
     // True when some point was shared (the loops may have changed).
     bool mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
         work().touchSearchNodes += partVertices.size();
-        repeatedPoints(partVertices.size(), [&](size_t i) { return P(partVertices[i]); }, b_.repeats);
+        repeatedPoints(
+            partVertices.size(), [&](size_t i) { return P(partVertices[i]); }, b_.repeats);
         std::vector<std::pair<uint32_t, uint32_t>>& copies = b_.repeats.copies;
         if (copies.empty()) return false;
-        for (auto& [first, later] : copies) first = partVertices[first], later = partVertices[later];
+        for (auto& [first, later] : copies)
+            first = partVertices[first], later = partVertices[later];
         std::sort(copies.begin(), copies.end());
-        std::vector<uint32_t>& corner = b_.corner, &newNext = b_.newNext;
-        std::vector<std::pair<Point, uint32_t>>& outs = b_.outs;  // (where the edge goes, its passage)
+        std::vector<uint32_t>&corner = b_.corner, &newNext = b_.newNext;
+        std::vector<std::pair<Point, uint32_t>>& outs =
+            b_.outs;  // (where the edge goes, its passage)
         for (size_t g = 0; g < copies.size();) {
             corner.assign(1, copies[g].first);
             size_t e = g;
-            for (; e < copies.size() && copies[e].first == copies[g].first; ++e) corner.push_back(copies[e].second);
+            for (; e < copies.size() && copies[e].first == copies[g].first; ++e)
+                corner.push_back(copies[e].second);
             g = e;
             std::sort(corner.begin(), corner.end());
             const Point c = P(corner[0]);
@@ -387,7 +411,8 @@ private:
             // so that the element before any position is the lowest passage of its direction.
             outs.clear();
             for (uint32_t i = 0; i < corner.size(); ++i) outs.emplace_back(P(next(corner[i])), i);
-            auto before = [&](const std::pair<Point, uint32_t>& a, const std::pair<Point, uint32_t>& b) {
+            auto before = [&](const std::pair<Point, uint32_t>& a,
+                              const std::pair<Point, uint32_t>& b) {
                 if (angleLess(c, a.first, b.first)) return true;
                 if (angleLess(c, b.first, a.first)) return false;
                 return a.second > b.second;
@@ -399,9 +424,10 @@ private:
                 // Clockwise from the arrival's direction: the last edge strictly before it
                 // counter-clockwise, else (wrapping round) the last edge of all.
                 Point back = P(prev(corner[i]));
-                auto at = std::partition_point(outs.begin(), outs.end(), [&](const std::pair<Point, uint32_t>& o) {
-                    return angleLess(c, o.first, back);
-                });
+                auto at = std::partition_point(outs.begin(), outs.end(),
+                                               [&](const std::pair<Point, uint32_t>& o) {
+                                                   return angleLess(c, o.first, back);
+                                               });
                 const auto& pick = at == outs.begin() ? outs.back() : *(at - 1);
                 newNext[i] = next(corner[pick.second]);
             }
@@ -462,7 +488,8 @@ private:
         emit(e);
         e.after = fingers();
         result_.failure = e;
-        result_.diagnostic = {Status::Forbidden, describeForbidden(poly_, e), forbiddenCulprits(poly_, e)};
+        result_.diagnostic = {Status::Forbidden, describeForbidden(poly_, e),
+                              forbiddenCulprits(poly_, e)};
         left_ = right_ = kNil;
     }
 
@@ -472,9 +499,9 @@ private:
         e.reason = Forbidden::ShortLoop;
         emit(e);
         result_.failure = e;
-        result_.diagnostic = {Status::Forbidden, describeForbidden(poly_, e) + " (ring " +
-                                                     std::to_string(ring) + " has " +
-                                                     std::to_string(poly_.rings[ring].count) + " vertices)"};
+        result_.diagnostic = {Status::Forbidden,
+                              describeForbidden(poly_, e) + " (ring " + std::to_string(ring) +
+                                  " has " + std::to_string(poly_.rings[ring].count) + " vertices)"};
         result_.diagnostic.culprits.rings = {ring};
         left_ = right_ = kNil;
     }
@@ -533,10 +560,12 @@ private:
         return s;
     }
     uint32_t searchSag(uint32_t nx, Event& e) {
-        if (unusedSags_ == 0) return kNil;  // every sag bridged already (or none): no bracket to search
+        if (unusedSags_ == 0)
+            return kNil;  // every sag bridged already (or none): no bracket to search
         // Ranks bracketing the water and Next: the number of sags below each.
         int64_t lo = int64_t(sagsBelow(water_)) - 1;
-        if (lo + 1 < int64_t(sagKeys_.size()) && sags_[size_t(lo + 1)] == water_) ++lo;  // the water is itself a sag
+        if (lo + 1 < int64_t(sagKeys_.size()) && sags_[size_t(lo + 1)] == water_)
+            ++lo;  // the water is itself a sag
         int64_t hi = sagsBelow(nx);
         if (hi <= lo + 1) return kNil;
         Point l = P(left_), r = P(right_), nl = P(prev(left_)), nr = P(next(right_));
@@ -579,7 +608,8 @@ private:
             const uint32_t rank = uint32_t(++lo);
             ++work().nodeVisits;
             const Point s = sagIndex_.point(rank);
-            if (!sagIndex_.used(rank) && s.x >= region.xMin && s.x <= region.xMax && test(rank)) k = rank;
+            if (!sagIndex_.used(rank) && s.x >= region.xMin && s.x <= region.xMax && test(rank))
+                k = rank;
         }
         if (k < 0) {
             const uint64_t before = work().nodeVisits;
@@ -612,7 +642,8 @@ private:
         initialNext_.clear();
         if (banksTried_) return;
         initialNext_.resize(initialNodes_);
-        for (uint32_t i = 0; i < initialNodes_; ++i) initialNext_[i] = next(partFirstNode_ + i) - partFirstNode_;
+        for (uint32_t i = 0; i < initialNodes_; ++i)
+            initialNext_[i] = next(partFirstNode_ + i) - partFirstNode_;
     }
     void buildBanks() {
         banksTried_ = true;
@@ -620,7 +651,8 @@ private:
         for (uint32_t i = 0; i < initialNodes_; ++i) point[i] = P(partFirstNode_ + i);
         std::vector<uint32_t> sagOfRank(sags_.size());
         for (size_t k = 0; k < sags_.size(); ++k) sagOfRank[k] = sags_[k] - partFirstNode_;
-        if (!banks_.build(point, initialNext_, sagOfRank, general_ ? up_ : Up::PlusY)) banks_.clear();  // crossing edges
+        if (!banks_.build(point, initialNext_, sagOfRank, general_ ? up_ : Up::PlusY))
+            banks_.clear();  // crossing edges
     }
     // The input edge from node a to node b, as its tail's initial node; kNil when a -> b
     // is not an input edge (a diagonal). Without shared points a vertex has one initial node.
@@ -657,7 +689,8 @@ private:
         if (side == Side::Left) {
             uint32_t nl = prev(left_), c = left_;
             while (c != right_ && turn(nl, c, next(c)) > 0) {
-                if (guard-- == 0 || !nodes_[c].alive) return forbid(e, Forbidden::NoProgress, c, nl);
+                if (guard-- == 0 || !nodes_[c].alive)
+                    return forbid(e, Forbidden::NoProgress, c, nl);
                 ++work().nodeVisits;
                 uint32_t n = next(c);
                 cutTriangle(nl, c, n);
@@ -669,7 +702,8 @@ private:
         } else {
             uint32_t nr = next(right_), c = right_;
             while (c != left_ && turn(prev(c), c, nr) > 0) {
-                if (guard-- == 0 || !nodes_[c].alive) return forbid(e, Forbidden::NoProgress, c, nr);
+                if (guard-- == 0 || !nodes_[c].alive)
+                    return forbid(e, Forbidden::NoProgress, c, nr);
                 ++work().nodeVisits;
                 uint32_t p = prev(c);
                 cutTriangle(p, c, nr);
@@ -783,10 +817,12 @@ private:
             const bool fresh = at == kNil && !nd.wet;
             bool minimum = isMinimum(x);
             bool maximum = !minimum && lower(prev(x), x) && lower(next(x), x);
-            bool convexHere = (minimum || (maximum && (drops > 0 || fresh))) && turn(prev(x), x, next(x)) > 0;
+            bool convexHere =
+                (minimum || (maximum && (drops > 0 || fresh))) && turn(prev(x), x, next(x)) > 0;
             bool sag = minimum && !convexHere, sensitive = convexHere;  // ceilings and bottoms
             if (fresh) {
-                int32_t before = stretches_.size() > run ? stretches_.back().drops + stretches_.back().delta : 0;
+                int32_t before =
+                    stretches_.size() > run ? stretches_.back().drops + stretches_.back().delta : 0;
                 recordAt(dir, x, uint32_t(stretches_.size()));
                 int8_t delta = sag ? 1 : sensitive ? -1 : 0;
                 stretches_.push_back({x, uint32_t(stretchRecs_.size()), before, delta, sensitive});
@@ -813,7 +849,9 @@ private:
                 const StretchRec& rec = stretchRecs_[stretches_[at].stretch];
                 const uint32_t a = at + 1;
                 if (a < rec.end) {
-                    uint32_t f = firstAtMost(rec, a - rec.start, int64_t(stretches_[a].drops) - drops) + rec.start;
+                    uint32_t f =
+                        firstAtMost(rec, a - rec.start, int64_t(stretches_[a].drops) - drops) +
+                        rec.start;
                     // One past the last node crossed: a wet node (or the stretch's end) is not
                     // reached, nor the node before it; a zero-count node is reached live.
                     uint32_t b = f == rec.end || nodes_[stretches_[f].node].wet ? f - 1 : f;
@@ -936,7 +974,8 @@ private:
     // and their ancestors in the stretch's tree get INT32_MIN, below any count.
     void makeWet(uint32_t n) {
         nodes_[n].wet = true;
-        if (stretchRecs_.empty()) return;  // no spill walk recorded a stretch yet: no tree to update
+        if (stretchRecs_.empty())
+            return;  // no spill walk recorded a stretch yet: no tree to update
         for (int dir = 0; dir < 2; ++dir) {
             uint32_t at = recordedAt(dir, n);
             if (at == kNil) continue;
@@ -1016,7 +1055,8 @@ public:
     struct Buffers {
         std::vector<Point> rotated, pointOfRank;
         std::vector<Node> nodes;
-        std::vector<uint32_t> sags, partVertices, points, initialNext, sagBucket, sagsBelow, bottoms, todo;
+        std::vector<uint32_t> sags, partVertices, points, initialNext, sagBucket, sagsBelow,
+            bottoms, todo;
         std::vector<Index> loop;
         SagIndex sagIndex;
         SagBanks banks;
@@ -1037,26 +1077,31 @@ private:
     Listener* listener_;
     std::unique_ptr<Buffers> own_;  // when none are lent
     Buffers& b_;                    // the buffers of this run: lent, or own_
-    std::vector<Point>& rotated_ = b_.rotated;  // the vertices turned so that the chosen vertical is +y
-    const Point* pts_ = nullptr;  // the vertices as the machine sees them (rotated_ or input)
-    const Up up_;                 // the chosen vertical
-    const bool general_;          // off the axes: heights are heightRank_, never coordinates
+    std::vector<Point>& rotated_ =
+        b_.rotated;                     // the vertices turned so that the chosen vertical is +y
+    const Point* pts_ = nullptr;        // the vertices as the machine sees them (rotated_ or input)
+    const Up up_;                       // the chosen vertical
+    const bool general_;                // off the axes: heights are heightRank_, never coordinates
     std::vector<uint32_t> heightRank_;  // per vertex, off the axes: its rank by height along up_
     std::vector<Node>& nodes_ = b_.nodes;
     std::vector<uint32_t>& sags_ = b_.sags;
     SagIndex& sagIndex_ = b_.sagIndex;  // the sags by height rank, searchable by x
-    SagBanks& banks_ = b_.banks;        // the sags each input edge sees, once the plane index is costly
+    SagBanks& banks_ = b_.banks;  // the sags each input edge sees, once the plane index is costly
     bool banksTried_ = false;
     uint64_t treeWork_ = 0;  // box visits of the plane index in this part
     uint32_t partFirstVertex_ = 0, initialNodes_ = 0;
-    std::vector<uint32_t>& initialNext_ = b_.initialNext;  // per initial node of the part (local ids): next
+    std::vector<uint32_t>& initialNext_ =
+        b_.initialNext;  // per initial node of the part (local ids): next
     std::vector<HeightKey>& sagKeys_ = b_.sagKeys;  // height keys of sags_, for binary search
-    std::vector<double>& sagY_ = b_.sagY;         // their y alone: a denser array for the first search
-    std::vector<uint32_t>& sagBucket_ = b_.sagBucket;  // first rank of each height bucket (heightBucket())
+    std::vector<double>& sagY_ = b_.sagY;  // their y alone: a denser array for the first search
+    std::vector<uint32_t>& sagBucket_ =
+        b_.sagBucket;  // first rank of each height bucket (heightBucket())
     double bucketY0_ = 0, bucketScale_ = 0;
     std::vector<HeightKey>& bottomKeys_ = b_.bottomKeys;  // scratch for sorting the bottoms
-    std::vector<uint32_t>& sagsBelow_ = b_.sagsBelow;  // per node of the part (from partFirstNode_): sags below it, kNil until asked
-    std::vector<uint32_t>& bottoms_ = b_.bottoms;  // bottoms; lowest first once sorted (lowestDryBottom())
+    std::vector<uint32_t>& sagsBelow_ =
+        b_.sagsBelow;  // per node of the part (from partFirstNode_): sags below it, kNil until asked
+    std::vector<uint32_t>& bottoms_ =
+        b_.bottoms;  // bottoms; lowest first once sorted (lowestDryBottom())
     size_t bottomCursor_ = 0;
     uint32_t bottomScans_ = 0;
     std::vector<GorgeRec>& gorges_ = b_.gorges;
@@ -1067,7 +1112,8 @@ private:
     std::vector<Stretch>& stretches_ = b_.stretches;
     std::vector<StretchRec>& stretchRecs_ = b_.stretchRecs;
     std::vector<int32_t>& stretchTree_ = b_.stretchTree;
-    std::vector<uint32_t> (&stretchAt_)[2] = b_.stretchAt;  // per node of the part, per direction: its position
+    std::vector<uint32_t> (&stretchAt_)[2] =
+        b_.stretchAt;                        // per node of the part, per direction: its position
     std::vector<uint32_t>& todo_ = b_.todo;  // pending gorges (ids), last pushed first
     uint32_t left_ = kNil, right_ = kNil, water_ = kNil;
     uint32_t part_ = 0, partNodes_ = 0, partFirstNode_ = 0, cut_ = 0, step_ = 0;
@@ -1105,7 +1151,8 @@ Triangulator::Triangulator() : workspace_(new Workspace) {}
 Triangulator::~Triangulator() = default;
 Triangulator::Triangulator(Triangulator&&) noexcept = default;
 Triangulator& Triangulator::operator=(Triangulator&&) noexcept = default;
-const FloodResult& Triangulator::run(const Polygon& polygon, Listener* listener, const Options& options) {
+const FloodResult& Triangulator::run(const Polygon& polygon, Listener* listener,
+                                     const Options& options) {
     Workspace& w = *workspace_;
     Machine(polygon, listener, options, w.result, &w.buffers).run();  // refills the last result
     return w.result;

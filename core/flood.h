@@ -38,7 +38,8 @@ public:
     ~Triangulator();
     Triangulator(Triangulator&&) noexcept;
     Triangulator& operator=(Triangulator&&) noexcept;
-    const FloodResult& run(const Polygon& polygon, Listener* listener = nullptr, const Options& options = {});
+    const FloodResult& run(const Polygon& polygon, Listener* listener = nullptr,
+                           const Options& options = {});
 
     struct Workspace;  // core/flood.cpp
 

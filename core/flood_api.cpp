@@ -12,7 +12,9 @@ Polygon makePolygon(const std::vector<Rings>& parts) {
     return p;
 }
 
-Diagnostic checkPolygon(Polygon& polygon, const std::string& name) { return validate(polygon, name); }
+Diagnostic checkPolygon(Polygon& polygon, const std::string& name) {
+    return validate(polygon, name);
+}
 
 Triangulation triangulateParts(const std::vector<Rings>& parts, const Options& options) {
     Triangulation t;

@@ -32,7 +32,7 @@ struct Rng {
         return z ^ (z >> 31);
     }
     int range(int lo, int hi) { return lo + int(next() % uint64_t(hi - lo + 1)); }  // [lo, hi]
-    double unit() { return double(next() >> 11) * 0x1p-53; }                       // [0, 1)
+    double unit() { return double(next() >> 11) * 0x1p-53; }                        // [0, 1)
 };
 
 constexpr double kPi = 3.14159265358979323846;
@@ -79,10 +79,8 @@ Pts keepStarShaped(Pts ring, Point centre) {
         out.reserve(ring.size());
         for (size_t i = 0; i < ring.size(); ++i) {
             const Point& prev = out.empty() ? ring.back() : out.back();
-            if (orient(centre, prev, ring[i]) > 0)
-                out.push_back(ring[i]);
-            else
-                changed = true;
+            if (orient(centre, prev, ring[i]) > 0) out.push_back(ring[i]);
+            else changed = true;
         }
         if (out.size() >= 2 && orient(centre, out.back(), out.front()) <= 0) {
             out.pop_back();
@@ -208,13 +206,16 @@ Polygon circleWithHoles(Rng& rng, size_t size, size_t k, double noise) {
     p.addRing(radialRing({0, 0}, outerN, [&](size_t) { return 1.0 + noise * rng.unit(); }), true);
     for (Point c : cells) {
         double r = cell * 0.5 * (0.4 + 0.5 * rng.unit());
-        Pts hole = radialRing(c, holeN, [&](size_t) { return r; }, rng.unit());
+        Pts hole = radialRing(
+            c, holeN, [&](size_t) { return r; }, rng.unit());
         if (hole.size() >= 3) p.addRing(hole, false);
     }
     return p;
 }
 
-Polygon circleHoles(Rng& rng, size_t size) { return circleWithHoles(rng, size, std::max<size_t>(1, size / 24), 0); }
+Polygon circleHoles(Rng& rng, size_t size) {
+    return circleWithHoles(rng, size, std::max<size_t>(1, size / 24), 0);
+}
 
 // The benchmark family of the issue: K = sqrt(N)/2 holes in a 1%-noisy circle.
 Polygon circleSqrtHoles(Rng& rng, size_t size) {
@@ -234,8 +235,7 @@ Polygon gridHoles(Rng& rng, size_t size) {
             switch (rng.range(0, 2)) {
                 case 0: p.addRing({{a, b}, {a + 2, b}, {a + 2, b + 2}, {a, b + 2}}, false); break;
                 case 1: p.addRing({{a, b}, {a + 2, b}, {a + 1, b + 2}}, false); break;
-                default:
-                    p.addRing({{a + 1, b}, {a + 2, b + 1}, {a + 1, b + 2}, {a, b + 1}}, false);
+                default: p.addRing({{a + 1, b}, {a + 2, b + 1}, {a + 1, b + 2}, {a, b + 1}}, false);
             }
         }
     return p;
@@ -429,9 +429,11 @@ Polygon rooms(Rng& rng, size_t size) {
             if (len == 0) continue;
             double in = bottomEdge ? len : -len;
             if (bottomEdge)
-                outer.insert(outer.end(), {{x - 1, y}, {x - 1, y + in}, {x + 1, y + in}, {x + 1, y}});
+                outer.insert(outer.end(),
+                             {{x - 1, y}, {x - 1, y + in}, {x + 1, y + in}, {x + 1, y}});
             else
-                outer.insert(outer.end(), {{x + 1, y}, {x + 1, y + in}, {x - 1, y + in}, {x - 1, y}});
+                outer.insert(outer.end(),
+                             {{x + 1, y}, {x + 1, y + in}, {x - 1, y + in}, {x - 1, y}});
         }
     };
     outer.push_back(pt(0, 0));
@@ -448,9 +450,18 @@ Polygon rooms(Rng& rng, size_t size) {
             double X = c * i, Y = c * j;
             double e = rng.range(2, 4), w = rng.range(2, 4), n = rng.range(2, 4),
                    s = rng.range(2, 4);
-            p.addRing({{X - 1, Y - s}, {X + 1, Y - s}, {X + 1, Y - 1}, {X + e, Y - 1},
-                       {X + e, Y + 1}, {X + 1, Y + 1}, {X + 1, Y + n}, {X - 1, Y + n},
-                       {X - 1, Y + 1}, {X - w, Y + 1}, {X - w, Y - 1}, {X - 1, Y - 1}},
+            p.addRing({{X - 1, Y - s},
+                       {X + 1, Y - s},
+                       {X + 1, Y - 1},
+                       {X + e, Y - 1},
+                       {X + e, Y + 1},
+                       {X + 1, Y + 1},
+                       {X + 1, Y + n},
+                       {X - 1, Y + n},
+                       {X - 1, Y + 1},
+                       {X - w, Y + 1},
+                       {X - w, Y - 1},
+                       {X - 1, Y - 1}},
                       false);
         }
     return p;
@@ -541,23 +552,21 @@ const Family kFamilies[] = {
     {"circle-smooth", "circle with 1% radial noise, double coordinates", circleSmooth},
     {"circle-jagged", "circle with alternating long and short random radii", circleJagged},
     {"circle-holes", "circle with K circular holes, one per grid cell inside it", circleHoles},
-    {"circle-sqrt-holes", "1%-noisy circle with sqrt(N)/2 circular holes (the benchmark's)", circleSqrtHoles},
+    {"circle-sqrt-holes", "1%-noisy circle with sqrt(N)/2 circular holes (the benchmark's)",
+     circleSqrtHoles},
     {"grid-holes", "square with a grid of square, triangle and diamond holes", gridHoles},
     {"comb", "zigzag comb: teeth down (bottoms, ceilings) and up (tops, sags)",
      [](Rng& r, size_t s) { return comb(r, s, 6); }},
-    {"comb-rect", "orthogonal comb with rectangular teeth up and down, equal heights",
-     combRect},
+    {"comb-rect", "orthogonal comb with rectangular teeth up and down, equal heights", combRect},
     {"ortho-histogram", "random orthogonal x-monotone polygon of columns", orthoHistogram},
     {"staircase", "orthogonal monotone staircase with random steps", staircase},
     {"ortho-spiral", "orthogonal corridor around a square spiral", orthoSpiral},
     {"spiral", "smooth Archimedean spiral band, double coordinates", spiral},
-    {"equal-heights", "integer zigzag with heights from {0..5}: many equal heights",
-     equalHeights},
+    {"equal-heights", "integer zigzag with heights from {0..5}: many equal heights", equalHeights},
     {"collinear", "histogram or star with extra collinear vertices on its edges", collinear},
     {"touching-outer", "triangular holes touching the outer ring at shared vertices",
      touchingOuter},
-    {"touching-holes", "rows of diamond holes touching each other at shared tips",
-     touchingHoles},
+    {"touching-holes", "rows of diamond holes touching each other at shared tips", touchingHoles},
     {"rooms", "floor plan: plus-shaped wall holes, wall stubs on the outer ring", rooms},
     {"islands", "several separate square parts, most with a square hole", islands},
     {"t-junctions", "holes touching the outer ring and each other inside edges (T-junctions)",
@@ -595,7 +604,9 @@ Polygon makeFrom(const Family (&table)[N], const std::string& family, uint64_t s
 }  // namespace
 
 std::vector<std::string> familyNames() { return namesOf(kFamilies); }
-std::string familyDescription(const std::string& family) { return descriptionIn(kFamilies, family); }
+std::string familyDescription(const std::string& family) {
+    return descriptionIn(kFamilies, family);
+}
 Polygon generate(const std::string& family, uint64_t seed, size_t size) {
     return makeFrom(kFamilies, family, seed, size, 0x1234567);
 }
@@ -708,7 +719,10 @@ Polygon holeInHole(Rng& rng, size_t size) {
     const Pts& h = parts[0][1 + pick(rng, parts[0].size() - 1)];
     double a = h[0].x, b = h[0].y;
     for (Point q : h) a = std::min(a, q.x), b = std::min(b, q.y);
-    parts[0].push_back({{a + 0.875, b + 0.625}, {a + 0.875, b + 0.875}, {a + 1.125, b + 0.875}, {a + 1.125, b + 0.625}});
+    parts[0].push_back({{a + 0.875, b + 0.625},
+                        {a + 0.875, b + 0.875},
+                        {a + 1.125, b + 0.875},
+                        {a + 1.125, b + 0.625}});
     return polygonOf(parts);
 }
 
@@ -758,7 +772,8 @@ Polygon partsCrossing(Rng& rng, size_t size) {
 Polygon partInsidePart(Rng& rng, size_t size) {
     auto parts = partsOf(islands(rng, size));
     Point o = parts[pick(rng, parts.size())][0][0];  // the island's lower left corner
-    parts.push_back({{{o.x + 0.25, o.y + 0.25}, {o.x + 0.75, o.y + 0.25}, {o.x + 0.5, o.y + 0.75}}});
+    parts.push_back(
+        {{{o.x + 0.25, o.y + 0.25}, {o.x + 0.75, o.y + 0.25}, {o.x + 0.5, o.y + 0.75}}});
     return polygonOf(parts);
 }
 
@@ -774,7 +789,9 @@ Polygon touchCycle(Rng& rng, size_t size) {
         double y = 4.0 * j + 2;
         size_t gap = size_t(j) == closed ? size_t(k) : pick(rng, size_t(k));
         for (int i = 0; i < k; ++i)
-            if (size_t(i) != gap) rings.push_back({{2.0 * i, y}, {2.0 * i + 1, y - 1}, {2.0 * i + 2, y}, {2.0 * i + 1, y + 1}});
+            if (size_t(i) != gap)
+                rings.push_back(
+                    {{2.0 * i, y}, {2.0 * i + 1, y - 1}, {2.0 * i + 2, y}, {2.0 * i + 1, y + 1}});
     }
     return polygonOf({rings});
 }
@@ -789,7 +806,8 @@ Polygon randomLattice(Rng& rng, size_t size) {
         for (Rings& rings : parts) {
             rings.resize(size_t(rng.range(1, 3)));
             for (Pts& r : rings)
-                for (int v = 0, n = rng.range(3, 7); v < n; ++v) r.push_back(pt(rng.range(0, side), rng.range(0, side)));
+                for (int v = 0, n = rng.range(3, 7); v < n; ++v)
+                    r.push_back(pt(rng.range(0, side), rng.range(0, side)));
         }
         Polygon p = polygonOf(parts);
         if (!validate(p, "random-lattice").ok()) return p;
@@ -797,19 +815,27 @@ Polygon randomLattice(Rng& rng, size_t size) {
 }
 
 const Family kInvalidFamilies[] = {
-    {"bowtie-star", "star with two crossing edges (a bow-tie) out between two vertices", bowtieStar},
-    {"self-touching", "star pinched at its centre: the ring passes twice through (0, 0)", selfTouchingStar},
+    {"bowtie-star", "star with two crossing edges (a bow-tie) out between two vertices",
+     bowtieStar},
+    {"self-touching", "star pinched at its centre: the ring passes twice through (0, 0)",
+     selfTouchingStar},
     {"spike", "star with a spike: a vertex folding back onto the edge into it", spikeStar},
-    {"vertex-on-own-edge", "comb whose tooth tip lies inside the ring's own bottom edge", vertexOnOwnEdge},
-    {"hole-crossing-outer", "grid-holes with a hole moved across the outer ring", holeCrossingOuter},
-    {"holes-overlapping", "grid-holes with a shifted copy of a hole overlapping it", holesOverlapping},
+    {"vertex-on-own-edge", "comb whose tooth tip lies inside the ring's own bottom edge",
+     vertexOnOwnEdge},
+    {"hole-crossing-outer", "grid-holes with a hole moved across the outer ring",
+     holeCrossingOuter},
+    {"holes-overlapping", "grid-holes with a shifted copy of a hole overlapping it",
+     holesOverlapping},
     {"hole-in-hole", "grid-holes with a hole inside another hole", holeInHole},
     {"hole-outside", "grid-holes with a hole beyond the outer ring", holeOutside},
-    {"collinear-overlap", "grid-holes with a hole whose edge overlaps the outer ring's", collinearOverlap},
+    {"collinear-overlap", "grid-holes with a hole whose edge overlaps the outer ring's",
+     collinearOverlap},
     {"parts-crossing", "islands with a shifted copy of an island crossing it", partsCrossing},
     {"part-inside-part", "islands with a small part on an island's land", partInsidePart},
-    {"random-lattice", "random rings on a small integer lattice, drawn until validate() refuses them", randomLattice},
-    {"touch-cycle", "a row of holes touching tip to tip from side to side: the interior cut in two", touchCycle},
+    {"random-lattice",
+     "random rings on a small integer lattice, drawn until validate() refuses them", randomLattice},
+    {"touch-cycle", "a row of holes touching tip to tip from side to side: the interior cut in two",
+     touchCycle},
 };
 
 }  // namespace

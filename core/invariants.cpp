@@ -38,8 +38,9 @@ const char* invariantText(Invariant i) { return i < Invariant::Count ? kTexts[in
 bool InvariantChecker::reflexAt(const std::vector<Index>& chain, size_t i, Violation& out) const {
     if (i == 0 || i + 1 >= chain.size()) return true;
     if (orient(P(chain[i - 1]), P(chain[i]), P(chain[i + 1])) <= 0) return true;
-    out = violated(Invariant::ReflexChain, {chain[i], chain[i - 1], chain[i + 1]},
-                   vtx(chain[i]) + " at position " + std::to_string(i) + " of the active chain is convex");
+    out = violated(
+        Invariant::ReflexChain, {chain[i], chain[i - 1], chain[i + 1]},
+        vtx(chain[i]) + " at position " + std::to_string(i) + " of the active chain is convex");
     return false;
 }
 
@@ -129,7 +130,8 @@ Violation InvariantChecker::triangleEmpty(const Triangle& t, uint32_t number) {
     for (int64_t y = y0; y <= y1; ++y) {
         double xl, xr;
         if (!extent(gy0_ + double(y - 1) * gcell_, gy0_ + double(y + 2) * gcell_, xl, xr)) continue;
-        const int64_t x0 = std::max<int64_t>(0, cellX(xl) - 1), x1 = std::min<int64_t>(gw_ - 1, cellX(xr) + 1);
+        const int64_t x0 = std::max<int64_t>(0, cellX(xl) - 1),
+                      x1 = std::min<int64_t>(gw_ - 1, cellX(xr) + 1);
         for (int64_t x = x0; x <= x1; ++x) {
             if (++cells > kMaxCells) return {};  // a long triangle: sampled from its lowest rows
             const uint32_t cell = uint32_t(y * gw_ + x);
@@ -143,13 +145,15 @@ Violation InvariantChecker::triangleEmpty(const Triangle& t, uint32_t number) {
                     ++work().invariantSteps;
                     if (crosses(p, P(u)))
                         return violated(Invariant::TriangleEmpty, {v, u, t[0], t[1], t[2]},
-                                        "the edge between vertices " + std::to_string(v) + " and " + std::to_string(u) + " crosses triangle " +
+                                        "the edge between vertices " + std::to_string(v) + " and " +
+                                            std::to_string(u) + " crosses triangle " +
                                             std::to_string(number) + ", just cut");
                 }
                 if (p.x <= bx0 || p.x >= bx1 || p.y <= by0 || p.y >= by1) continue;
                 if (orient(a, b, p) > 0 && orient(b, c, p) > 0 && orient(c, a, p) > 0)
-                    return violated(Invariant::TriangleEmpty, {v, t[0], t[1], t[2]},
-                                    vtx(v) + " lies inside triangle " + std::to_string(number) + ", just cut");
+                    return violated(
+                        Invariant::TriangleEmpty, {v, t[0], t[1], t[2]},
+                        vtx(v) + " lies inside triangle " + std::to_string(number) + ", just cut");
             }
         }
     }
@@ -173,7 +177,8 @@ Violation InvariantChecker::check(const ReplayState& s) {
 
     // 1. The triangles this step cut turn the polygon's way: a flat or clockwise one covers
     // what is not between the loops (a Fill's fan reaches its ceiling, above the water).
-    for (uint32_t t = e.firstTriangle; t < e.firstTriangle + e.triangleCount && t < tris.size(); ++t) {
+    for (uint32_t t = e.firstTriangle; t < e.firstTriangle + e.triangleCount && t < tris.size();
+         ++t) {
         const Triangle& tr = tris[t];
         if (orient(P(tr[0]), P(tr[1]), P(tr[2])) <= 0)
             return violated(Invariant::TrianglesCounterClockwise, {tr[0], tr[1], tr[2]},
@@ -183,15 +188,19 @@ Violation InvariantChecker::check(const ReplayState& s) {
 
     // Loops: the chain runs from Left to Right; gorges taken were waiting, and as what.
     const Fingers& f = s.fingers;
-    if (f.left != kNone && (s.chain.empty() || s.chain.front() != f.left || s.chain.back() != f.right))
+    if (f.left != kNone &&
+        (s.chain.empty() || s.chain.front() != f.left || s.chain.back() != f.right))
         return violated(Invariant::LoopsConsistent, {f.left, f.right},
-                        "the active chain does not run from Left (" + vtx(f.left) + ") to Right (" + vtx(f.right) + ")");
+                        "the active chain does not run from Left (" + vtx(f.left) + ") to Right (" +
+                            vtx(f.right) + ")");
     if (e.gorgePopped != kNone) {
         auto it = gorges_.find(e.gorgePopped);
         const bool wantHeld = e.action == Action::Jump;
-        if (it == gorges_.end() || it->second.held != wantHeld || (wantHeld && it->second.top != e.top))
+        if (it == gorges_.end() || it->second.held != wantHeld ||
+            (wantHeld && it->second.top != e.top))
             return violated(Invariant::LoopsConsistent, {e.top == kNone ? f.left : e.top},
-                            "gorge " + std::to_string(e.gorgePopped) + " taken by " + actionName(e.action) +
+                            "gorge " + std::to_string(e.gorgePopped) + " taken by " +
+                                actionName(e.action) +
                                 (wantHeld ? " is not held at the top" : " is not pending"));
         if (it->second.held && --heldTops_[it->second.top] == 0) heldTops_.erase(it->second.top);
         gorges_.erase(it);
@@ -200,8 +209,9 @@ Violation InvariantChecker::check(const ReplayState& s) {
     // 4. Jump pointers: set on a top no gorge is held at yet, followed only while one is.
     if (e.action == Action::Spill) {
         if (heldTops_.count(e.top))
-            return violated(Invariant::JumpOnHeldTop, {e.top},
-                            "top " + vtx(e.top) + " already holds a gorge when a second spills over it");
+            return violated(
+                Invariant::JumpOnHeldTop, {e.top},
+                "top " + vtx(e.top) + " already holds a gorge when a second spills over it");
         if (e.gorgePushed != kNone) {
             gorges_[e.gorgePushed] = {true, e.top};
             ++heldTops_[e.top];
@@ -210,7 +220,8 @@ Violation InvariantChecker::check(const ReplayState& s) {
         gorges_[e.gorgePushed] = {false, kNone};
     }
     if (e.action == Action::Jump && e.gorgePopped == kNone)
-        return violated(Invariant::JumpOnHeldTop, {e.top}, "the Jump at top " + vtx(e.top) + " took no held gorge");
+        return violated(Invariant::JumpOnHeldTop, {e.top},
+                        "the Jump at top " + vtx(e.top) + " took no held gorge");
 
     // 2. The reflex chain, where this step changed it.
     const std::vector<Index>& c = s.chain;
@@ -245,12 +256,14 @@ Violation InvariantChecker::check(const ReplayState& s) {
             const bool left = side == Side::Left;
             const Index n = left ? f.nextLeft : f.nextRight, end = left ? f.left : f.right;
             if (n == w || higher(n, w)) continue;
-            const Index inner = c.size() > 1 ? (left ? c[1] : c[c.size() - 2]) : (left ? f.nextRight : f.nextLeft);
+            const Index inner =
+                c.size() > 1 ? (left ? c[1] : c[c.size() - 2]) : (left ? f.nextRight : f.nextLeft);
             const Index pv = left ? n : inner, nv = left ? inner : n;  // end's loop neighbours
             if (orient(P(pv), P(end), P(nv)) <= 0) continue;
             return violated(Invariant::FingersAboveWater, {n, end, w},
-                            std::string(left ? "NextLeft" : "NextRight") + " (" + vtx(n) + ") is below the water at " +
-                                vtx(w) + " beside a convex end of the chain (" + vtx(end) + ")");
+                            std::string(left ? "NextLeft" : "NextRight") + " (" + vtx(n) +
+                                ") is below the water at " + vtx(w) +
+                                " beside a convex end of the chain (" + vtx(end) + ")");
         }
     }
     return out;

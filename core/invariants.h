@@ -19,13 +19,14 @@
 namespace flood {
 
 // X(name, what holds between steps on valid input)
-#define FLOOD_INVARIANTS(X)                                                                     \
-    X(None, "")                                                                                 \
-    X(TrianglesCounterClockwise, "every triangle cut is counter-clockwise: it lies between the loops") \
+#define FLOOD_INVARIANTS(X)                                                                        \
+    X(None, "")                                                                                    \
+    X(TrianglesCounterClockwise,                                                                   \
+      "every triangle cut is counter-clockwise: it lies between the loops")                        \
     X(TriangleEmpty, "no vertex or edge lies inside a triangle cut: the loops bound what is left") \
-    X(ReflexChain, "every node strictly inside the active chain is concave or flat")            \
-    X(FingersAboveWater, "NextLeft and NextRight are above the water, but beside a top")        \
-    X(JumpOnHeldTop, "a top has a jump pointer only while its gorge is held there")             \
+    X(ReflexChain, "every node strictly inside the active chain is concave or flat")               \
+    X(FingersAboveWater, "NextLeft and NextRight are above the water, but beside a top")           \
+    X(JumpOnHeldTop, "a top has a jump pointer only while its gorge is held there")                \
     X(LoopsConsistent, "the chain ends are Left and Right; gorges taken are the ones waiting")
 
 enum class Invariant : uint8_t {
@@ -79,7 +80,8 @@ private:
 
 // Every violation of a whole trace, in step order (one per step at most). `progress` gets
 // the steps done; a set `cancel` stops early (the result then covers a prefix).
-std::vector<Violation> checkInvariants(const Trace& trace, std::atomic<uint32_t>* progress = nullptr,
+std::vector<Violation> checkInvariants(const Trace& trace,
+                                       std::atomic<uint32_t>* progress = nullptr,
                                        const std::atomic<bool>* cancel = nullptr);
 
 }  // namespace flood

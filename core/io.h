@@ -47,8 +47,8 @@ struct FeatureRead {
     // Every property (a GIS feature's fields) as text, in file order, each cut to 60 bytes:
     // what `flood check --json` reports beside the verdict. Null values are left out.
     std::vector<std::pair<std::string, std::string>> attributes;
-    std::string source;     // the Feature as GeoJSON text, when asked for (for extraction)
-    ReadResult read;        // as parsePolygon reads it alone; messages say "NAME: feature N ..."
+    std::string source;  // the Feature as GeoJSON text, when asked for (for extraction)
+    ReadResult read;     // as parsePolygon reads it alone; messages say "NAME: feature N ..."
 };
 
 struct DatasetRead {

@@ -25,7 +25,8 @@ namespace flood::io_detail {
 namespace {
 
 namespace od = simdjson::ondemand;
-static_assert(kReadAhead >= simdjson::SIMDJSON_PADDING, "readInputFile must leave simdjson's padding");
+static_assert(kReadAhead >= simdjson::SIMDJSON_PADDING,
+              "readInputFile must leave simdjson's padding");
 
 class FastReader {
 public:
@@ -76,7 +77,8 @@ private:
         if (k == 0 || token.find_first_not_of(" \t\r\n", k) != std::string_view::npos) return false;
         auto [end, error] = std::from_chars(token.data(), token.data() + k, d);
         if (error != std::errc() || end != token.data() + k) return false;
-        if (d == 0 && std::signbit(d) && token.substr(0, k).find_first_of(".eE") == std::string_view::npos)
+        if (d == 0 && std::signbit(d) &&
+            token.substr(0, k).find_first_of(".eE") == std::string_view::npos)
             d = 0.0;
         return true;
     }
@@ -159,7 +161,8 @@ private:
                 for (auto member : o) {
                     od::field f;
                     std::string_view key;
-                    if (std::move(member).get(f) || f.unescaped_key().get(key) || !valid(f.value(), depth + 1))
+                    if (std::move(member).get(f) || f.unescaped_key().get(key) ||
+                        !valid(f.value(), depth + 1))
                         return false;
                 }
                 return true;
@@ -208,10 +211,10 @@ private:
                 continue;
             }
             const char* wanted = type == "Polygon" || type == "MultiPolygon" ? "coordinates"
-                                 : type == "Feature"                        ? "geometry"
-                                 : type == "FeatureCollection"              ? "features"
-                                 : type == "GeometryCollection"             ? "geometries"
-                                                                            : nullptr;
+                                 : type == "Feature"                         ? "geometry"
+                                 : type == "FeatureCollection"               ? "features"
+                                 : type == "GeometryCollection"              ? "geometries"
+                                                                             : nullptr;
             if (!wanted) return false;  // unsupported type: the nlohmann reader says so
             if (key != wanted) {
                 if (!valid(f.value(), depth + 1)) return false;
@@ -221,8 +224,9 @@ private:
             done = true;
             bool ok = type == "Polygon"        ? rings(f.value())
                       : type == "MultiPolygon" ? multi(f.value())
-                      : type == "Feature"      ? nested(f.value(), depth + 1)
-                                               : collection(f.value(), type == "FeatureCollection", depth + 1);
+                      : type == "Feature"
+                          ? nested(f.value(), depth + 1)
+                          : collection(f.value(), type == "FeatureCollection", depth + 1);
             if (!ok) return false;
         }
         return done;

@@ -16,8 +16,8 @@
 #include <cerrno>
 #include <cstring>
 #include <new>
-#include <optional>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "io.h"
 #include "io_json.h"
@@ -69,12 +69,12 @@ void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Poi
 
 namespace {
 
-using nlohmann::json;
 using io_detail::echo;
 using io_detail::jsonReason;
 using io_detail::kMaxJsonDepth;
 using io_detail::tooDeep;
 using io_detail::where;
+using nlohmann::json;
 
 struct BadStructure {
     std::string message;
@@ -87,8 +87,7 @@ Point readVertex(const json& v, const std::string& ctx) {
     return {v[0].get<double>(), v[1].get<double>()};
 }
 
-void readRings(ReadResult& rr, const std::string& name, const json& rings,
-               const std::string& ctx) {
+void readRings(ReadResult& rr, const std::string& name, const json& rings, const std::string& ctx) {
     if (!rings.is_array()) throw BadStructure{ctx + ": polygon is not an array of rings"};
     if (rings.empty()) throw BadStructure{ctx + ": polygon has no rings"};
     for (size_t r = 0; r < rings.size(); ++r) {
@@ -119,8 +118,8 @@ int arrayDepth(const json& j) {
 void readGeometry(ReadResult& rr, const std::string& name, const json& g, const std::string& ctx,
                   int& polygonCount);
 
-void readPolygonOrMulti(ReadResult& rr, const std::string& name, const json& coords,
-                        bool multi, const std::string& ctx, int& polygonCount) {
+void readPolygonOrMulti(ReadResult& rr, const std::string& name, const json& coords, bool multi,
+                        const std::string& ctx, int& polygonCount) {
     if (!multi) {
         readRings(rr, name, coords, ctx + "polygon " + std::to_string(polygonCount++));
         return;
@@ -136,8 +135,7 @@ void readGeometry(ReadResult& rr, const std::string& name, const json& g, const 
         throw BadStructure{ctx + "GeoJSON object without a \"type\" string"};
     const std::string type = g["type"].get<std::string>();
     if (type == "Polygon" || type == "MultiPolygon") {
-        if (!g.contains("coordinates"))
-            throw BadStructure{ctx + type + " without \"coordinates\""};
+        if (!g.contains("coordinates")) throw BadStructure{ctx + type + " without \"coordinates\""};
         readPolygonOrMulti(rr, name, g["coordinates"], type == "MultiPolygon", ctx, polygonCount);
     } else if (type == "Feature") {
         if (!g.contains("geometry") || g["geometry"].is_null())
@@ -157,10 +155,10 @@ void readGeometry(ReadResult& rr, const std::string& name, const json& g, const 
                                        ": not a Feature with a geometry"};
                 geom = &item["geometry"];
             }
-            std::string gtype = geom->is_object() && geom->contains("type") &&
-                                        (*geom)["type"].is_string()
-                                    ? echo((*geom)["type"].get<std::string>())
-                                    : std::string();
+            std::string gtype =
+                geom->is_object() && geom->contains("type") && (*geom)["type"].is_string()
+                    ? echo((*geom)["type"].get<std::string>())
+                    : std::string();
             bool polygonal = gtype == "Polygon" || gtype == "MultiPolygon" ||
                              gtype == "GeometryCollection" || gtype == "Feature";
             if (!polygonal) {
@@ -189,9 +187,9 @@ ReadResult io_detail::parseJsonTree(std::string_view text, const std::string& na
     ReadResult rr;
     size_t deep = tooDeep(text);
     if (deep != std::string_view::npos) {
-        rr.diagnostic = {Status::Malformed,
-                         where(name, text, deep) + ": JSON nested deeper than " +
-                             std::to_string(kMaxJsonDepth) + " levels; refusing to parse"};
+        rr.diagnostic = {Status::Malformed, where(name, text, deep) + ": JSON nested deeper than " +
+                                                std::to_string(kMaxJsonDepth) +
+                                                " levels; refusing to parse"};
         return rr;
     }
     json doc;
@@ -228,8 +226,9 @@ ReadResult io_detail::parseJsonTree(std::string_view text, const std::string& na
             if (d == 3) readRings(rr, name, doc, "polygon 0");
             else if (d == 4) readPolygonOrMulti(rr, name, doc, true, "", polygonCount);
             else
-                throw BadStructure{"expected an array of rings [[[x,y],...],...] or of polygons "
-                                   "[[[[x,y],...],...],...], or a GeoJSON object"};
+                throw BadStructure{
+                    "expected an array of rings [[[x,y],...],...] or of polygons "
+                    "[[[[x,y],...],...],...], or a GeoJSON object"};
         }
         if (rr.polygon.rings.empty()) throw BadStructure{"no polygon found"};
     } catch (const BadStructure& b) {
@@ -294,8 +293,7 @@ Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t ma
         if (S_ISDIR(st.st_mode)) return {Status::Malformed, name + ": is a directory, not a file"};
         if (S_ISREG(st.st_mode) && uint64_t(st.st_size) > maxBytes)
             return {Status::Malformed, name + ": input is larger than the limit of " +
-                                           std::to_string(maxBytes) +
-                                           " bytes (--max-input-bytes)"};
+                                           std::to_string(maxBytes) + " bytes (--max-input-bytes)"};
     }
     try {
         // The padding lets the fast JSON reader read ahead without a copy of the text.
@@ -310,10 +308,10 @@ Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t ma
                                                " bytes: " + std::strerror(errno)};
             if (k == 0) break;
             if (const void* z = std::memchr(buf, 0, size_t(k)))
-                return {Status::Malformed,
-                        io_detail::binaryData(
-                            name, text.size() + size_t(static_cast<const char*>(z) - buf),
-                            expected)};
+                return {
+                    Status::Malformed,
+                    io_detail::binaryData(
+                        name, text.size() + size_t(static_cast<const char*>(z) - buf), expected)};
             if (text.size() + uint64_t(k) > maxBytes)
                 return {Status::Malformed, name + ": input is larger than the limit of " +
                                                std::to_string(maxBytes) +
@@ -353,7 +351,9 @@ ReadResult readPolygonFile(const std::string& path, uint64_t maxBytes) {
 namespace {
 
 // A property echoed into the report: strings as they are, other values as JSON text.
-std::string propertyText(const json& v) { return echo(v.is_string() ? v.get<std::string>() : v.dump()); }
+std::string propertyText(const json& v) {
+    return echo(v.is_string() ? v.get<std::string>() : v.dump());
+}
 
 FeatureRead readFeature(const std::string& name, const json& item, size_t i, bool keepSource) {
     FeatureRead f;

@@ -55,7 +55,8 @@ inline std::string jsonReason(const char* what) {
     if (q != std::string::npos) {
         q += lastRead.size();
         size_t end = s.rfind('\'');
-        std::string_view token = std::string_view(s).substr(q, end > q ? end - q : std::string::npos);
+        std::string_view token =
+            std::string_view(s).substr(q, end > q ? end - q : std::string::npos);
         std::string echoed = echo(token) + "'";  // before the resize: token views s
         s.resize(q);
         s += echoed;

@@ -37,7 +37,8 @@ public:
     void parse() {
         std::string kw = keyword("POLYGON or MULTIPOLYGON");
         for (const char* dim : {"ZM", "Z", "M"})  // POLYGONZM, as some writers spell it
-            if (kw.size() > 7 && kw.compare(kw.size() - std::strlen(dim), std::string::npos, dim) == 0) {
+            if (kw.size() > 7 &&
+                kw.compare(kw.size() - std::strlen(dim), std::string::npos, dim) == 0) {
                 std::string base = kw.substr(0, kw.size() - std::strlen(dim));
                 if (base == "POLYGON" || base == "MULTIPOLYGON") kw = base;
                 break;
@@ -93,7 +94,8 @@ private:
         expect('(');
         if (acceptEmpty()) {
             if (accept(','))
-                throw WktError{pos_, "the outer ring is EMPTY but holes follow: they have no outer ring"};
+                throw WktError{pos_,
+                               "the outer ring is EMPTY but holes follow: they have no outer ring"};
             expect(')');
             return false;
         }
@@ -101,10 +103,8 @@ private:
         while (accept(',')) {
             skipSpace();
             size_t at = pos_;
-            if (acceptEmpty())
-                rr_.warn([&] { return where(at) + ": WKT: EMPTY hole dropped"; });
-            else
-                ring(false);
+            if (acceptEmpty()) rr_.warn([&] { return where(at) + ": WKT: EMPTY hole dropped"; });
+            else ring(false);
         }
         expect(')');
         return true;
@@ -159,10 +159,10 @@ private:
             ++pos_;
         std::string tok(text_.substr(start, pos_ - start));
         if (tok.empty()) {
-            throw WktError{start, pos_ < text_.size()
-                                      ? std::string("expected a number, found '") +
-                                            text_[pos_] + "'"
-                                      : std::string("expected a number, found end of input")};
+            throw WktError{start,
+                           pos_ < text_.size()
+                               ? std::string("expected a number, found '") + text_[pos_] + "'"
+                               : std::string("expected a number, found end of input")};
         }
         char* end = nullptr;
         double v = std::strtod(tok.c_str(), &end);
@@ -171,9 +171,7 @@ private:
         return v;
     }
 
-    bool peekWord() {
-        return pos_ < text_.size() && std::isalpha((unsigned char)text_[pos_]);
-    }
+    bool peekWord() { return pos_ < text_.size() && std::isalpha((unsigned char)text_[pos_]); }
 
     std::string keyword(const char* what) {
         skipSpace();

@@ -98,12 +98,15 @@ void writeSvg(std::ostream& out, const Polygon& p, const std::vector<Triangle>& 
     }
     // The scale: a power of two, chosen on the exact box.
     int shift = 0, e = 0;
-    const double big = std::max({std::fabs(minx), std::fabs(maxx), std::fabs(miny), std::fabs(maxy)});
+    const double big =
+        std::max({std::fabs(minx), std::fabs(maxx), std::fabs(miny), std::fabs(maxy)});
     if (big > 0x1p500) {
         std::frexp(big, &e);
         shift = -e;
-    } else if (double extent = std::max(maxx - minx, maxy - miny); extent > 0 && extent < 0x1p-500) {
-        std::frexp(extent, &e);  // distinct doubles near `big` differ by >= big·2^-53: big stays finite
+    } else if (double extent = std::max(maxx - minx, maxy - miny);
+               extent > 0 && extent < 0x1p-500) {
+        std::frexp(extent,
+                   &e);  // distinct doubles near `big` differ by >= big·2^-53: big stays finite
         shift = -e;
     }
     auto S = [shift](double v) { return std::ldexp(v, shift); };
@@ -115,10 +118,13 @@ void writeSvg(std::ostream& out, const Polygon& p, const std::vector<Triangle>& 
     if (!(size > 0)) size = 1;
     const double margin = size * 0.02, stroke = size * 0.002;
     const double boxW = w + 2 * margin, boxH = h + 2 * margin, longer = std::max(boxW, boxH);
-    auto pixels = [longer](double side) { return std::max(1L, std::lround(800 * (side / longer))); };
-    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << formatDouble(x0 - margin) << " "
-        << formatDouble(flip(y1 + margin)) << " " << formatDouble(boxW) << " " << formatDouble(boxH)
-        << "\" width=\"" << pixels(boxW) << "\" height=\"" << pixels(boxH) << "\">\n";
+    auto pixels = [longer](double side) {
+        return std::max(1L, std::lround(800 * (side / longer)));
+    };
+    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << formatDouble(x0 - margin)
+        << " " << formatDouble(flip(y1 + margin)) << " " << formatDouble(boxW) << " "
+        << formatDouble(boxH) << "\" width=\"" << pixels(boxW) << "\" height=\"" << pixels(boxH)
+        << "\">\n";
     // The polygon: one path, rings as subpaths, even-odd fill makes holes empty.
     out << "<path fill=\"#cde\" fill-rule=\"evenodd\" stroke=\"#024\" stroke-width=\""
         << formatDouble(stroke * 2) << "\" d=\"";

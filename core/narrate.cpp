@@ -45,16 +45,13 @@ std::string nextGorge(const Polygon& polygon, const Event& e) {
 
 std::string raise(const Polygon& polygon, const Event& e) {
     Side s = e.side;
-    std::string why = std::string(fingerName(s)) + " (" +
-                      vertex(polygon, finger(e.before, s)) + ") is lower than " +
-                      fingerName(other(s)) + " (" + vertex(polygon, finger(e.before, other(s))) +
-                      ")";
+    std::string why = std::string(fingerName(s)) + " (" + vertex(polygon, finger(e.before, s)) +
+                      ") is lower than " + fingerName(other(s)) + " (" +
+                      vertex(polygon, finger(e.before, other(s))) + ")";
     if (e.didTest(Test::SagInside) && !e.testResult(Test::SagInside))
         why += std::string(" and no sag lies between the water and ") + fingerName(s);
     return why + ": the water rises on the " + bankName(s) + " bank to " +
-           vertex(polygon, end(e.after, s)) +
-           cutting(e, ", cutting no triangle yet") +
-           ".";
+           vertex(polygon, end(e.after, s)) + cutting(e, ", cutting no triangle yet") + ".";
 }
 
 std::string bridge(const Polygon& polygon, const Event& e) {
@@ -103,8 +100,8 @@ std::string fill(const Polygon& polygon, const Event& e) {
     // repeats the word.
     std::string s = "NextLeft and NextRight meet at " + vertex(polygon, e.before.nextLeft);
     if (e.didTest(Test::SagInside)) s += " and no sag hangs below it";
-    return s + ": the gorge is filled to its ceiling by a fan from it" +
-           cutting(e, "") + "; " + nextGorge(polygon, e) + ".";
+    return s + ": the gorge is filled to its ceiling by a fan from it" + cutting(e, "") + "; " +
+           nextGorge(polygon, e) + ".";
 }
 
 std::string forbidden(const Polygon& polygon, const Event& e) {
@@ -127,7 +124,8 @@ std::string forbidden(const Polygon& polygon, const Event& e) {
             what = "The water spills over the top " + at + " but finds no gorge to flood";
             break;
         case Forbidden::NotFinite:
-            what = "A coordinate of " + at + " is not a finite number, so no height can be compared";
+            what =
+                "A coordinate of " + at + " is not a finite number, so no height can be compared";
             break;
         case Forbidden::ShortLoop:
             what = "A ring with fewer than three vertices bounds no area and cannot be flooded";
@@ -142,15 +140,10 @@ std::string forbidden(const Polygon& polygon, const Event& e) {
         case Forbidden::LeftBehind:
             what = "Nothing is left to flood, yet the water never reached " + at;
             break;
-        case Forbidden::NoProgress:
-            what = "The machine ran out of steps";
-            break;
-        default:
-            what = "The machine stopped";
-            break;
+        case Forbidden::NoProgress: what = "The machine ran out of steps"; break;
+        default: what = "The machine stopped"; break;
     }
-    return what + ": forbidden (" + forbiddenName(e.reason) + "), " + forbiddenText(e.reason) +
-           ".";
+    return what + ": forbidden (" + forbiddenName(e.reason) + "), " + forbiddenText(e.reason) + ".";
 }
 
 }  // namespace

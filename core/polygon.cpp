@@ -20,12 +20,14 @@ size_t Polygon::expectedTriangles() const {
         size_t n = last.first + last.count - first;
         // Each extra copy of a point (rings touching there) takes 2pi from the angle sum,
         // so two triangles fewer.
-        const size_t copies = repeatedPoints(n, [&](size_t i) { return vertices[first + i]; }).size();
+        const size_t copies =
+            repeatedPoints(n, [&](size_t i) { return vertices[first + i]; }).size();
         // A T-junction adds a boundary node at a point that is already a vertex: one node
         // more, one copy more. A single-point hole has one vertex but turns by 0, not 2pi.
         size_t junctions = 0, points = 0;
         for (const EdgeSplit& s : splits) junctions += s.edge >= first && s.edge < first + n;
-        for (Index r = p.firstRing + 1; r < p.firstRing + p.ringCount; ++r) points += rings[r].count == 1;
+        for (Index r = p.firstRing + 1; r < p.firstRing + p.ringCount; ++r)
+            points += rings[r].count == 1;
         t += n + 2 * (p.ringCount - 1) - 2 - 2 * copies - junctions - points;
     }
     return t;

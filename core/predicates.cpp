@@ -88,8 +88,8 @@ int productSumSign(const double (&f)[N][2]) {
 }
 
 int orientExpansion(Point a, Point b, Point c) {
-    const double f[6][2] = {{a.x, b.y}, {-a.y, b.x}, {b.x, c.y},
-                            {-b.y, c.x}, {c.x, a.y}, {-c.y, a.x}};
+    const double f[6][2] = {{a.x, b.y},  {-a.y, b.x}, {b.x, c.y},
+                            {-b.y, c.x}, {c.x, a.y},  {-c.y, a.x}};
     return productSumSign(f);
 }
 
@@ -147,8 +147,8 @@ inline bool expansionExact(Point a, Point b, Point c) {
 }  // namespace
 
 int orient(Point a, Point b, Point c) {
-    assert(std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(b.x) &&
-           std::isfinite(b.y) && std::isfinite(c.x) && std::isfinite(c.y) &&
+    assert(std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(b.x) && std::isfinite(b.y) &&
+           std::isfinite(c.x) && std::isfinite(c.y) &&
            "orient() needs finite coordinates; validate the input first");
     ++work().orientCalls;
     double det;
@@ -217,8 +217,8 @@ namespace {
 template <class Orient>
 bool onSegment(Orient&& turn, Point s, Point p, Point q) {
     if (turn(p, q, s) != 0) return false;
-    return std::fmin(p.x, q.x) <= s.x && s.x <= std::fmax(p.x, q.x) &&
-           std::fmin(p.y, q.y) <= s.y && s.y <= std::fmax(p.y, q.y);
+    return std::fmin(p.x, q.x) <= s.x && s.x <= std::fmax(p.x, q.x) && std::fmin(p.y, q.y) <= s.y &&
+           s.y <= std::fmax(p.y, q.y);
 }
 
 // Rule: s is inside when it lies on none of the four closed edges L-R, R-NR, NR-NL, NL-L and
@@ -274,10 +274,8 @@ struct ExactSum::Big {
 };
 
 ExactSum::Big& ExactSum::ownBig() {
-    if (!big_)
-        big_ = std::make_shared<Big>();
-    else if (big_.use_count() > 1)
-        big_ = std::make_shared<Big>(*big_);
+    if (!big_) big_ = std::make_shared<Big>();
+    else if (big_.use_count() > 1) big_ = std::make_shared<Big>(*big_);
     return *big_;
 }
 
@@ -379,10 +377,8 @@ void ExactSum::add(const ExactSum& other, int sign) {
     maybeCompress();
     if (other.big_) {
         Big& b = ownBig();
-        if (sign > 0)
-            mpq_add(b.q, b.q, other.big_->q);
-        else
-            mpq_sub(b.q, b.q, other.big_->q);
+        if (sign > 0) mpq_add(b.q, b.q, other.big_->q);
+        else mpq_sub(b.q, b.q, other.big_->q);
     }
 }
 

@@ -74,17 +74,17 @@ InsideReport insideExplained(Point s, Point left, Point right, Point nextRight, 
 // Exact signed doubled area accumulator: add triangles or ring edges, compare sums exactly.
 class ExactSum {
 public:
-    void addProduct(double a, double b);        // += a*b, exactly
-    void addCross(Point a, Point b);             // += a.x*b.y - a.y*b.x, exactly
+    void addProduct(double a, double b);          // += a*b, exactly
+    void addCross(Point a, Point b);              // += a.x*b.y - a.y*b.x, exactly
     void addTriangle(Point a, Point b, Point c);  // += doubled signed area, exactly
     void add(const ExactSum& other, int sign = 1);
-    int sign() const;                             // exact sign of the sum
-    double approx() const;                        // nearest double (for messages)
+    int sign() const;                              // exact sign of the sum
+    double approx() const;                         // nearest double (for messages)
     bool operator==(const ExactSum& other) const;  // exact equality of the two sums
     size_t size() const { return terms_.size(); }  // expansion length (for tests)
 private:
-    struct Big;                  // GMP rational, used once a term leaves the safe range
-    void growTerm(double b);     // += b, exactly (expansion only)
+    struct Big;               // GMP rational, used once a term leaves the safe range
+    void growTerm(double b);  // += b, exactly (expansion only)
     void maybeCompress();
     void toBig();                // moves the expansion into big_
     Big& ownBig();               // big_, unshared (copy-on-write)

@@ -47,7 +47,9 @@ public:
         nodes_.shrink_to_fit();
     }
     size_t nodeCount() const { return nodes_.size(); }
-    size_t bytes() const { return nodes_.capacity() * sizeof(Node) + last_.capacity() * sizeof(uint32_t); }
+    size_t bytes() const {
+        return nodes_.capacity() * sizeof(Node) + last_.capacity() * sizeof(uint32_t);
+    }
 
 private:
     struct Node {

@@ -21,7 +21,8 @@ struct Recorder : Listener {
 void backWithHugePages(void* data, size_t bytes) {
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
     const uintptr_t huge = uintptr_t(2) << 20;
-    uintptr_t a = (uintptr_t(data) + huge - 1) & ~(huge - 1), e = (uintptr_t(data) + bytes) & ~(huge - 1);
+    uintptr_t a = (uintptr_t(data) + huge - 1) & ~(huge - 1),
+              e = (uintptr_t(data) + bytes) & ~(huge - 1);
     if (e <= a) return;
     // NOLINTNEXTLINE(performance-no-int-to-ptr): the buffer rounded in to huge-page bounds
     madvise(reinterpret_cast<void*>(a), e - a, MADV_HUGEPAGE);
@@ -77,7 +78,8 @@ Replay::Replay(const Trace& trace, uint32_t keyframeInterval)
     std::vector<uint32_t>().swap(dormantChains_);
     dormantTree_.finish();
     jumpsTree_.finish();
-    keyframes_.shrink_to_fit(), chainPool_.shrink_to_fit(), chainEnds_.shrink_to_fit();  // no more growth
+    keyframes_.shrink_to_fit(), chainPool_.shrink_to_fit(),
+        chainEnds_.shrink_to_fit();        // no more growth
     keyframeSteps_.push_back(size() + 1);  // a seek re-applies at most up to the next keyframe
     for (size_t k = 0; k + 1 < keyframeSteps_.size(); ++k)
         maxSeekEvents_ = std::max(maxSeekEvents_, keyframeSteps_[k + 1] - 1 - keyframeSteps_[k]);
@@ -88,7 +90,8 @@ Replay::Replay(const Trace& trace, uint32_t keyframeInterval)
 void Replay::addKeyframe() {
     Keyframe k;
     std::vector<Gorge> dormant = std::move(state_.dormant);
-    std::vector<std::pair<Index, Index>> jumps = std::move(state_.jumps), bridges = std::move(state_.bridges);
+    std::vector<std::pair<Index, Index>> jumps = std::move(state_.jumps),
+                                         bridges = std::move(state_.bridges);
     k.head = state_;
     k.bridgeCount = uint32_t(bridges.size());
     // Gorges dormant since the last keyframe keep their place and their copied chain; only
@@ -121,17 +124,20 @@ void Replay::restore(size_t index) {
     size_t keepDormant = 0, keepJumps = 0;
     if (restored_ != kNoKeyframe) {
         const Keyframe& from = keyframes_[restored_];
-        keepDormant = std::min(dormantLow_, dormantTree_.commonPrefix(from.dormantHead, from.dormantCount,
-                                                                      k.dormantHead, k.dormantCount));
+        keepDormant =
+            std::min(dormantLow_, dormantTree_.commonPrefix(from.dormantHead, from.dormantCount,
+                                                            k.dormantHead, k.dormantCount));
         keepJumps = std::min(jumpsLow_, jumpsTree_.commonPrefix(from.jumpsHead, from.jumpsCount,
                                                                 k.jumpsHead, k.jumpsCount));
     }
     std::vector<Gorge> dormant = std::move(state_.dormant);
-    std::vector<std::pair<Index, Index>> jumps = std::move(state_.jumps), bridges = std::move(state_.bridges);
+    std::vector<std::pair<Index, Index>> jumps = std::move(state_.jumps),
+                                         bridges = std::move(state_.bridges);
     state_ = k.head;
     if (bridges.size() > k.bridgeCount) bridges.resize(k.bridgeCount);
-    else bridges.insert(bridges.end(), bridges_.begin() + long(bridges.size()),
-                        bridges_.begin() + long(k.bridgeCount));
+    else
+        bridges.insert(bridges.end(), bridges_.begin() + long(bridges.size()),
+                       bridges_.begin() + long(k.bridgeCount));
     jumps.resize(k.jumpsCount);
     jumpsTree_.load(k.jumpsHead, k.jumpsCount, keepJumps,
                     [&](size_t i, const std::pair<Index, Index>& j) { jumps[i] = j; });
@@ -150,7 +156,8 @@ void Replay::restore(size_t index) {
 }
 
 size_t Replay::keyframeBytes() const {
-    size_t bytes = keyframes_.capacity() * sizeof(Keyframe) + bridges_.capacity() * sizeof(bridges_[0]) +
+    size_t bytes = keyframes_.capacity() * sizeof(Keyframe) +
+                   bridges_.capacity() * sizeof(bridges_[0]) +
                    chainPool_.capacity() * sizeof(Index) + chainEnds_.capacity() * sizeof(size_t) +
                    dormantTree_.bytes() + jumpsTree_.bytes();
     for (const Keyframe& k : keyframes_) bytes += k.head.chain.capacity() * sizeof(Index);
@@ -160,7 +167,8 @@ size_t Replay::keyframeBytes() const {
 const ReplayState& Replay::seek(uint32_t step) {
     step = std::min(step, size());
     size_t k = size_t(std::upper_bound(keyframeSteps_.begin(), keyframeSteps_.end(), step) -
-                      keyframeSteps_.begin()) - 1;
+                      keyframeSteps_.begin()) -
+               1;
     // Stepping forward from where we are is cheapest unless a keyframe lies in between.
     lastSeekRestored_ = 0;
     if (step < state_.step || keyframeSteps_[k] > state_.step) restore(k);
@@ -227,7 +235,8 @@ uint64_t Replay::apply(const Event& e) {
             size_t keepLeft = i + 1 >= e.cutLeft ? i + 1 - e.cutLeft : 0;
             // What stays right of the sag: the copy of the chain vertex and the chain after
             // it, less the wedge cut there.
-            std::vector<Index> rightPart(chain.begin() + long(std::min(chain.size(), i + e.cutRight)), chain.end());
+            std::vector<Index> rightPart(
+                chain.begin() + long(std::min(chain.size(), i + e.cutRight)), chain.end());
             moved = rightPart.size();
             chain.resize(keepLeft);
             chain.push_back(e.sag);
@@ -284,9 +293,7 @@ uint64_t Replay::apply(const Event& e) {
             else if (e.bottom != kNone) chain.assign(1, e.bottom);
             break;
         case Action::Forbidden:
-        case Action::Count:
-            s.forbidden = true;
-            break;
+        case Action::Count: s.forbidden = true; break;
     }
     s.fingers = e.after;
     s.water = e.water;

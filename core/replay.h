@@ -29,22 +29,22 @@ Trace record(const Polygon& polygon, const Options& options = {});
 // A gorge waiting on the to-do list (pending, after a Bridge) or held at a top (after a Spill).
 struct Gorge {
     uint32_t id = 0;
-    bool held = false;          // held at `top` for a Jump; otherwise pending
+    bool held = false;  // held at `top` for a Jump; otherwise pending
     Index top = kNone;
-    std::vector<Index> chain;   // its chain, Left to Right
+    std::vector<Index> chain;  // its chain, Left to Right
 };
 
 struct ReplayState {
-    uint32_t step = 0;            // number of events applied
+    uint32_t step = 0;  // number of events applied
     uint32_t part = 0;
-    Fingers fingers;              // Left, Right, NextLeft, NextRight
-    Index water = kNone;          // vertex at the water level
-    uint32_t triangleCount = 0;   // triangles cut so far (a prefix of Trace::triangles)
-    std::vector<Index> chain;     // active chain, Left to Right
-    std::vector<Gorge> dormant;   // pending and held gorges
+    Fingers fingers;             // Left, Right, NextLeft, NextRight
+    Index water = kNone;         // vertex at the water level
+    uint32_t triangleCount = 0;  // triangles cut so far (a prefix of Trace::triangles)
+    std::vector<Index> chain;    // active chain, Left to Right
+    std::vector<Gorge> dormant;  // pending and held gorges
     std::vector<std::pair<Index, Index>> jumps;    // top -> jump pointer, while set
     std::vector<std::pair<Index, Index>> bridges;  // (sag, chain vertex) of every Bridge so far
-    bool forbidden = false;       // the last applied event was Forbidden
+    bool forbidden = false;                        // the last applied event was Forbidden
 };
 
 class Replay {
@@ -79,7 +79,7 @@ private:
     };
     // A ReplayState's scalars and active chain; its lists are shared with other keyframes.
     struct Keyframe {
-        ReplayState head;  // dormant, jumps and bridges left empty
+        ReplayState head;          // dormant, jumps and bridges left empty
         uint32_t bridgeCount = 0;  // bridges are a prefix of bridges_
         uint32_t dormantHead = 0, dormantCount = 0, jumpsHead = 0, jumpsCount = 0;
     };
@@ -91,11 +91,11 @@ private:
     void restore(size_t keyframe);
     const Trace* trace_;
     uint32_t interval_;
-    std::vector<Keyframe> keyframes_;   // in step order, keyframes_[0] at step 0
+    std::vector<Keyframe> keyframes_;  // in step order, keyframes_[0] at step 0
     std::vector<uint32_t> keyframeSteps_;
     std::vector<std::pair<Index, Index>> bridges_;  // every Bridge of the run, in order
-    std::vector<Index> chainPool_;   // dormant chains seen by keyframes, end to end
-    std::vector<size_t> chainEnds_;  // where each ends in chainPool_
+    std::vector<Index> chainPool_;                  // dormant chains seen by keyframes, end to end
+    std::vector<size_t> chainEnds_;                 // where each ends in chainPool_
     PrefixTree<Dormant> dormantTree_;
     PrefixTree<std::pair<Index, Index>> jumpsTree_;
     // While keyframing: the chain number of each dormant gorge (kNoChain until a keyframe

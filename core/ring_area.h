@@ -35,7 +35,9 @@ public:
     double bound() const {
         return 2 * (double(terms_) + 3) * 0x1p-53 * magnitude_ + 6 * double(terms_) * 0x1p-1074;
     }
-    bool finite() const { return std::isfinite(sum_) && std::isfinite(magnitude_) && terms_ < (size_t(1) << 50); }
+    bool finite() const {
+        return std::isfinite(sum_) && std::isfinite(magnitude_) && terms_ < (size_t(1) << 50);
+    }
     // The sign when the bound decides it, else 0 (undecided, not zero).
     int sign() const {
         if (!finite()) return 0;

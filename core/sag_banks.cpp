@@ -49,11 +49,14 @@ struct Sweep {
             Point q = p == a0 ? a1 : a0, r = p == b0 ? b1 : b0;
             if (q == r) return true;  // the same segment twice
             if (orient(p, q, r) != 0) return false;
-            return (q.x < p.x) == (r.x < p.x) && (q.x > p.x) == (r.x > p.x) && (q.y < p.y) == (r.y < p.y) &&
+            return (q.x < p.x) == (r.x < p.x) && (q.x > p.x) == (r.x > p.x) &&
+                   (q.y < p.y) == (r.y < p.y) &&
                    (q.y > p.y) == (r.y > p.y);  // collinear, one way from p: overlapping
         }
-        if (std::max(a0.x, a1.x) < std::min(b0.x, b1.x) || std::max(b0.x, b1.x) < std::min(a0.x, a1.x) ||
-            std::max(a0.y, a1.y) < std::min(b0.y, b1.y) || std::max(b0.y, b1.y) < std::min(a0.y, a1.y))
+        if (std::max(a0.x, a1.x) < std::min(b0.x, b1.x) ||
+            std::max(b0.x, b1.x) < std::min(a0.x, a1.x) ||
+            std::max(a0.y, a1.y) < std::min(b0.y, b1.y) ||
+            std::max(b0.y, b1.y) < std::min(a0.y, a1.y))
             return false;  // apart
         int o1 = orient(a0, a1, b0), o2 = orient(a0, a1, b1);
         if (o1 * o2 > 0) return false;
@@ -134,12 +137,13 @@ bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t
     std::vector<uint32_t> label[2] = {std::vector<uint32_t>(sagOfRank.size(), kNoEdge),
                                       std::vector<uint32_t>(sagOfRank.size(), kNoEdge)};
     auto meetsBefore = [&](Set::iterator it) {  // it and the edge before it meet
-        return it != active.begin() && it != active.end() && sweep.meet(std::prev(it)->tail, it->tail);
+        return it != active.begin() && it != active.end() &&
+               sweep.meet(std::prev(it)->tail, it->tail);
     };
     for (uint32_t p : order) {
         ++work().nodeVisits;
         const uint32_t in = prev[p], out = p;  // the edges in -> p and p -> next[p]
-        const bool lone = next[p] == p;  // a point hole: no edges
+        const bool lone = next[p] == p;        // a point hole: no edges
         const bool inEnds = !lone && sweep.up(in), outEnds = !lone && !sweep.up(out);
         if (inEnds != outEnds) {  // a regular vertex: one edge ends here, the other starts
             const uint32_t ends = inEnds ? in : out, starts = inEnds ? out : in;
@@ -150,8 +154,10 @@ bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t
             at[starts] = it;
             // The end of the edge that left, hence strictly between the neighbours (the
             // sweep has found no meeting so far): one orientation each clears the new edge.
-            if (it != active.begin() && sweep.meetFrom(std::prev(it)->tail, starts, -1)) return false;
-            if (std::next(it) != active.end() && sweep.meetFrom(std::next(it)->tail, starts, 1)) return false;
+            if (it != active.begin() && sweep.meetFrom(std::prev(it)->tail, starts, -1))
+                return false;
+            if (std::next(it) != active.end() && sweep.meetFrom(std::next(it)->tail, starts, 1))
+                return false;
             continue;
         }
         if (inEnds) {  // a maximum: both edges leave the line
@@ -164,7 +170,8 @@ bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t
         }
         // A minimum (or a point hole): where p falls among the edges crossing the line.
         Set::iterator right = active.lower_bound(point[p]);  // the first edge not left of p
-        if (right != active.end() && sweep.side(right->lo, right->hi, point[p]) == 0) return false;  // p on an edge
+        if (right != active.end() && sweep.side(right->lo, right->hi, point[p]) == 0)
+            return false;            // p on an edge
         if (rankOf[p] != kNoEdge) {  // a sag: the edges just left and right of it
             if (right != active.end()) label[1][rankOf[p]] = right->tail;
             if (right != active.begin()) label[0][rankOf[p]] = std::prev(right)->tail;
@@ -186,7 +193,8 @@ bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t
         if (ia->tail != a || ib->tail != b || std::next(ia) != ib) return false;
         at[a] = ia, at[b] = ib;
         if (ia != active.begin() && sweep.meetFrom(std::prev(ia)->tail, a, -1)) return false;
-        if (std::next(ib) != active.end() && sweep.meetFrom(std::next(ib)->tail, b, 1)) return false;
+        if (std::next(ib) != active.end() && sweep.meetFrom(std::next(ib)->tail, b, 1))
+            return false;
     }
     side_[0].group(label[0], n);
     side_[1].group(label[1], n);

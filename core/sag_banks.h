@@ -54,7 +54,8 @@ int64_t SagBanks::lowest(bool toLeft, uint32_t tail, int64_t lo, int64_t hi, Use
         else last = mid;
     }
     ++work().nodeVisits;
-    for (last = s.ranks.begin() + s.begin[tail + 1]; first != last && int64_t(*first) < hi; ++first) {
+    for (last = s.ranks.begin() + s.begin[tail + 1]; first != last && int64_t(*first) < hi;
+         ++first) {
         ++work().nodeVisits;
         if (!used(*first)) return *first;
     }

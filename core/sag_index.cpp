@@ -52,8 +52,9 @@ void SagIndex::buildNode(uint32_t id, uint32_t begin, uint32_t end, int depth) {
     // Split the wider side of the box at the median.
     bool byX = (xMax - xMin) >= (yMax - yMin);
     uint32_t mid = begin + (end - begin) / 2;
-    std::nth_element(items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
-                     [byX](const Item& a, const Item& b) { return byX ? a.p.x < b.p.x : a.p.y < b.p.y; });
+    std::nth_element(
+        items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
+        [byX](const Item& a, const Item& b) { return byX ? a.p.x < b.p.x : a.p.y < b.p.y; });
     buildNode(2 * id + 1, begin, mid, depth + 1);
     buildNode(2 * id + 2, mid, end, depth + 1);
 }
@@ -74,7 +75,7 @@ SagIndex::Frame SagIndex::frameOf(const Region& r) {
     Frame f;
     if (m > 0 && std::isfinite(m)) {
         int e;
-        std::frexp(m, &e);  // m in [2^(e-1), 2^e), e in [-1073, 1024]
+        std::frexp(m, &e);                   // m in [2^(e-1), 2^e), e in [-1073, 1024]
         f.scale = std::ldexp(1.0, -50 - e);  // 2^-1074 .. 2^1023: a double
     }
     f.lineCount = r.lineCount;

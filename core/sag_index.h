@@ -7,10 +7,10 @@
 // boxes are exact doubles, and the line tests run on coordinates scaled by a power of two so
 // that nothing overflows or underflows enough to matter, from 2^-1074 to 2^1023.
 #pragma once
+#include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <algorithm>
 #include <utility>
 #include <vector>
 
@@ -74,7 +74,7 @@ private:
     std::vector<Node> nodes_;
     static constexpr uint32_t kScanLimit = 48;  // brackets up to this many sags are scanned
     std::vector<Item> items_;
-    std::vector<Point> byRank_;  // the sags' points by rank, for the scan
+    std::vector<Point> byRank_;         // the sags' points by rank, for the scan
     std::vector<uint32_t> leafOfRank_;  // rank -> leaf node id
     std::vector<uint8_t> used_;
     std::vector<uint32_t> stack_;  // scratch, reused by every search
@@ -100,7 +100,8 @@ int64_t SagIndex::lowest(int64_t lo, int64_t hi, const Region& region, Inside&& 
         // A thin band holds few sags: scan them in rank order, as the paper does (§4).
         for (int64_t r = std::max<int64_t>(lo + 1, 0); r < hi && r < int64_t(used_.size()); ++r) {
             ++work().nodeVisits;
-            if (!used_[size_t(r)] && mayContain(region, frame, byRank_[size_t(r)]) && inside(uint32_t(r)))
+            if (!used_[size_t(r)] && mayContain(region, frame, byRank_[size_t(r)]) &&
+                inside(uint32_t(r)))
                 return r;
         }
         return -1;

@@ -2,16 +2,16 @@
 // reduction of parts, holes, vertices and coordinate precision.
 #include "shrink.h"
 
-#include <algorithm>
-#include <charconv>
-#include <cerrno>
-#include <cmath>
-#include <cstring>
-#include <csignal>
-#include <cstdlib>
-#include <ostream>
 #include <sys/wait.h>
 #include <unistd.h>
+#include <algorithm>
+#include <cerrno>
+#include <charconv>
+#include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <ostream>
 
 #include "checker.h"
 #include "io.h"
@@ -79,7 +79,7 @@ Failure classifyInChild(const Polygon& polygon, const ShrinkOptions& o) {
     if (pid == 0) {
         alarm(o.timeoutSeconds);
         Failure f = classifyHere(polygon, o);
-        int code = f.kind == Failure::Kind::Forbidden ? kForbiddenBase + int(f.reason)
+        int code = f.kind == Failure::Kind::Forbidden        ? kForbiddenBase + int(f.reason)
                    : f.kind == Failure::Kind::CheckerRejects ? kCheckerCode
                    : f.kind == Failure::Kind::Slips          ? kSlipsCode
                                                              : 0;
@@ -93,9 +93,9 @@ Failure classifyInChild(const Polygon& polygon, const ShrinkOptions& o) {
     if (WIFSIGNALED(status)) {
         int sig = WTERMSIG(status);
         f.kind = sig == SIGALRM ? Failure::Kind::Hang : Failure::Kind::Crash;
-        f.message = sig == SIGALRM ? "no result within " + std::to_string(o.timeoutSeconds) + " s"
-                                   : "killed by signal " + std::to_string(sig) + " (" +
-                                         strsignal(sig) + ")";
+        f.message = sig == SIGALRM
+                        ? "no result within " + std::to_string(o.timeoutSeconds) + " s"
+                        : "killed by signal " + std::to_string(sig) + " (" + strsignal(sig) + ")";
         return f;
     }
     int code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;

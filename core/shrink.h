@@ -43,10 +43,10 @@ struct Failure {
 const char* failureKindName(Failure::Kind k);
 
 struct ShrinkOptions {
-    Options flood;                  // the vertical
-    bool fork = true;               // classify in a child process (crash/hang become classes)
-    unsigned timeoutSeconds = 10;   // child time limit (a hang), with fork only
-    size_t maxTries = 20000;        // classifications allowed during shrinking
+    Options flood;                 // the vertical
+    bool fork = true;              // classify in a child process (crash/hang become classes)
+    unsigned timeoutSeconds = 10;  // child time limit (a hang), with fork only
+    size_t maxTries = 20000;       // classifications allowed during shrinking
     // Test-only hook: applied to the machine's triangles before the exact check, so a test
     // can plant a checker failure. Null in normal use.
     std::function<void(std::vector<Triangle>&)> corrupt;
@@ -60,10 +60,10 @@ struct ShrinkOptions {
 Failure classify(const Polygon& polygon, const ShrinkOptions& options);
 
 struct ShrinkResult {
-    Polygon polygon;        // the smallest failing polygon found (the input if none smaller)
-    Failure failure;        // its failure (same class as the input's)
+    Polygon polygon;          // the smallest failing polygon found (the input if none smaller)
+    Failure failure;          // its failure (same class as the input's)
     bool inputValid = false;  // validate() accepted the input, so every candidate was kept valid
-    size_t tries = 0;       // classifications made
+    size_t tries = 0;         // classifications made
     bool cancelled = false;   // onTry returned false
 };
 

@@ -29,8 +29,8 @@ struct Combination {
 
 // The columns, in the paper's order (R, F, B, S, J, X), then Start: the machine's entry,
 // not one of the paper's states, kept so that every event has a cell.
-constexpr std::array<Action, 7> kStateColumns = {Action::Raise, Action::Fill,  Action::Bridge,
-                                                 Action::Spill, Action::Jump,  Action::Forbidden,
+constexpr std::array<Action, 7> kStateColumns = {Action::Raise, Action::Fill, Action::Bridge,
+                                                 Action::Spill, Action::Jump, Action::Forbidden,
                                                  Action::Start};
 int columnOf(Action a);
 
@@ -54,6 +54,7 @@ struct StateTable {
 // (a vertex it does not hold has no class).
 Combination combinationOf(const Event& e, const std::vector<VertexClass>& classes);
 
-StateTable buildStateTable(const Polygon& polygon, const std::vector<Event>& events, Up up = Up::PlusY);
+StateTable buildStateTable(const Polygon& polygon, const std::vector<Event>& events,
+                           Up up = Up::PlusY);
 
 }  // namespace flood

@@ -6,7 +6,8 @@ namespace flood {
 
 TodoList todoList(const ReplayState& state) {
     TodoList list;
-    std::unordered_map<Index, Index> jumpOf(state.jumps.begin(), state.jumps.end());  // top -> target
+    std::unordered_map<Index, Index> jumpOf(state.jumps.begin(),
+                                            state.jumps.end());  // top -> target
     // ReplayState::dormant is in the order the gorges were put away: the machine's to-do list
     // is a stack (Machine::takeNextGorge pops its back), so reading it backwards is stack order.
     for (size_t i = state.dormant.size(); i-- > 0;) {

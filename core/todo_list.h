@@ -11,11 +11,11 @@
 namespace flood {
 
 struct TodoEntry {
-    uint32_t gorge = 0;        // its id (Event::gorgePushed)
-    size_t dormant = 0;        // its position in ReplayState::dormant (for its chain)
+    uint32_t gorge = 0;                 // its id (Event::gorgePushed)
+    size_t dormant = 0;                 // its position in ReplayState::dormant (for its chain)
     Index left = kNone, right = kNone;  // its chain's ends
-    Index top = kNone;         // held: the top it waits at
-    Index jumpTarget = kNone;  // held: the top's jump pointer, the chain's other bank
+    Index top = kNone;                  // held: the top it waits at
+    Index jumpTarget = kNone;           // held: the top's jump pointer, the chain's other bank
 };
 
 struct TodoList {

@@ -72,8 +72,9 @@ struct PartSearch {
         // Compare the spans without subtracting (no overflow): x wider if x1 - x0 >= y1 - y0.
         bool byX = nd.x1 - nd.x0 >= nd.y1 - nd.y0 || std::isinf(nd.x1 - nd.x0);
         Index mid = begin + (end - begin) / 2;
-        std::nth_element(spots.begin() + begin, spots.begin() + mid, spots.begin() + end,
-                         [byX](const Spot& a, const Spot& b) { return byX ? a.p.x < b.p.x : a.p.y < b.p.y; });
+        std::nth_element(
+            spots.begin() + begin, spots.begin() + mid, spots.begin() + end,
+            [byX](const Spot& a, const Spot& b) { return byX ? a.p.x < b.p.x : a.p.y < b.p.y; });
         Index l = build(begin, mid), r = build(mid, end);
         tree[at].left = l, tree[at].right = r;
         return at;
@@ -86,7 +87,8 @@ struct PartSearch {
             std::min(a.y, b.y) > n.y1)
             return false;
         int s = 0;
-        for (Point c : {Point{n.x0, n.y0}, Point{n.x1, n.y0}, Point{n.x1, n.y1}, Point{n.x0, n.y1}}) {
+        for (Point c :
+             {Point{n.x0, n.y0}, Point{n.x1, n.y0}, Point{n.x1, n.y1}, Point{n.x0, n.y1}}) {
             int o = orient(a, b, c);
             if (o == 0 || (s != 0 && o != s)) return true;
             s = o;
@@ -128,10 +130,13 @@ struct PartSearch {
         std::vector<Index> spotOf(vertices.size(), kNone);
         for (auto [first, later] : copies) spotOf[later] = 0;  // not a spot of its own
         for (size_t i = 0; i < vertices.size(); ++i)
-            if (spotOf[i] == kNone) spotOf[i] = Index(spots.size()), spots.push_back({pt(vertices[i]), vertices[i], kNone});
+            if (spotOf[i] == kNone)
+                spotOf[i] = Index(spots.size()),
+                spots.push_back({pt(vertices[i]), vertices[i], kNone});
         for (auto [first, later] : copies) {
             Spot& s = spots[spotOf[first]];
-            if (s.other == kNone && ring(vertices[later]) != ring(s.lowest)) s.other = vertices[later];
+            if (s.other == kNone && ring(vertices[later]) != ring(s.lowest))
+                s.other = vertices[later];
         }
         steps += spots.size();
         if (spots.empty()) return true;
@@ -154,14 +159,17 @@ TouchSearch findTouches(Polygon& polygon, uint64_t maxSteps) {
         if (part.ringCount == 0) continue;
         const Ring& first = polygon.rings[part.firstRing];
         const Ring& last = polygon.rings[part.firstRing + part.ringCount - 1];
-        PartSearch s{polygon, first.first, last.first + last.count, {}, result.steps, splits, {}, {}};
+        PartSearch s{polygon, first.first, last.first + last.count, {}, result.steps, splits,
+                     {},      {}};
         if (s.endVertex == s.firstVertex) continue;
         bool allFinite = true;
-        for (Index v = s.firstVertex; v < s.endVertex; ++v) allFinite &= finite(polygon.vertices[v]);
+        for (Index v = s.firstVertex; v < s.endVertex; ++v)
+            allFinite &= finite(polygon.vertices[v]);
         if (!allFinite) continue;
         s.ringOfV.resize(s.endVertex - s.firstVertex);
         for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r)
-            for (Index v = polygon.rings[r].first; v < polygon.rings[r].first + polygon.rings[r].count; ++v)
+            for (Index v = polygon.rings[r].first;
+                 v < polygon.rings[r].first + polygon.rings[r].count; ++v)
                 s.ringOfV[v - s.firstVertex] = r;
         if (!s.run(cap)) {
             result.complete = false;

@@ -123,7 +123,8 @@ uint8_t tests(const json& o, const char* key) {
         int found = -1;
         for (int i = 0; i < int(Test::Count); ++i)
             if (t.is_string() && t.get<std::string>() == kTestNames[i]) found = i;
-        if (found < 0) throw Bad{"unknown test " + io_detail::echo(t.dump()) + " in \"" + key + "\""};
+        if (found < 0)
+            throw Bad{"unknown test " + io_detail::echo(t.dump()) + " in \"" + key + "\""};
         bits |= uint8_t(1u << found);
     }
     return bits;
@@ -175,7 +176,8 @@ void parseHeader(const json& h, Polygon& p) {
     for (size_t i = 0; i < vs.size(); ++i) {
         const json& v = vs[i];
         Point q;
-        if (!v.is_array() || v.size() != 2 || !readCoordinate(v[0], q.x) || !readCoordinate(v[1], q.y))
+        if (!v.is_array() || v.size() != 2 || !readCoordinate(v[0], q.x) ||
+            !readCoordinate(v[1], q.y))
             throw Bad{"vertex " + std::to_string(i) + " is not a pair of numbers"};
         p.vertices.push_back(q);
     }
@@ -231,7 +233,8 @@ void parseUpField(const json& h, Up& up) {
 void writeTrace(std::ostream& out, const Trace& trace) {
     const Polygon& p = trace.polygon;
     json vertices = json::array(), rings = json::array(), parts = json::array();
-    for (const Point& v : p.vertices) vertices.push_back({coordinateJson(v.x), coordinateJson(v.y)});
+    for (const Point& v : p.vertices)
+        vertices.push_back({coordinateJson(v.x), coordinateJson(v.y)});
     for (const Ring& r : p.rings) rings.push_back({r.first, r.count});
     for (const Part& q : p.parts) parts.push_back({q.firstRing, q.ringCount});
     json header = {{"format", "flood-trace"},
@@ -268,7 +271,8 @@ Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& tra
             ++lineNo;
             if (line.find_first_not_of(" \t\r") == std::string_view::npos) continue;
             if (sawEnd) throw Bad{"text after the final triangles line"};
-            if (io_detail::tooDeep(line) != std::string_view::npos) throw Bad{"JSON nested too deeply"};
+            if (io_detail::tooDeep(line) != std::string_view::npos)
+                throw Bad{"JSON nested too deeply"};
             json o;
             try {
                 o = json::parse(line.begin(), line.end());
@@ -290,7 +294,8 @@ Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& tra
                     Triangle tri;
                     for (int k = 0; k < 3; ++k) {
                         if (!t[k].is_number_unsigned() || t[k].get<uint64_t>() >= n)
-                            throw Bad{"triangle " + io_detail::echo(t.dump()) + " has a bad vertex index"};
+                            throw Bad{"triangle " + io_detail::echo(t.dump()) +
+                                      " has a bad vertex index"};
                         tri[k] = t[k].get<Index>();
                     }
                     trace.triangles.push_back(tri);
@@ -329,7 +334,8 @@ Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& tra
                 name + (lineNo ? ":" + std::to_string(lineNo) : std::string()) + ": " + b.message};
     } catch (const json::exception& e) {
         trace = Trace{};
-        return {Status::Malformed, name + ":" + std::to_string(lineNo) + ": " + io_detail::echo(e.what())};
+        return {Status::Malformed,
+                name + ":" + std::to_string(lineNo) + ": " + io_detail::echo(e.what())};
     }
     return {};
 }

@@ -61,7 +61,8 @@ bool parseUp(const std::string& text, Up& out, std::string& why) {
             out = axis[i];
             return true;
         }
-    const std::string hint = " (write +y, -y, +x, -x, an angle in degrees counter-clockwise from +x, or X,Y)";
+    const std::string hint =
+        " (write +y, -y, +x, -x, an angle in degrees counter-clockwise from +x, or X,Y)";
     const size_t comma = text.find(',');
     if (comma == std::string::npos) {
         double degrees;

@@ -35,8 +35,8 @@
 #include <optional>
 #include <string>
 
-#include "io.h"
 #include "coincident.h"
+#include "io.h"
 #include "io_util.h"
 #include "predicates.h"
 #include "ring_area.h"
@@ -114,9 +114,9 @@ struct Validator {
     // "ring R edge A-B (x, y)-(x, y)" for the edge e -> next(e).
     std::string edgeText(Index e) const {
         Index r = ringOfV[e];
-        return "ring " + std::to_string(r) + " edge " + std::to_string(e - P.rings[r].first) +
-               "-" + std::to_string(next(e) - P.rings[r].first) + " " + formatPoint(pt(e)) +
-               "-" + formatPoint(pt(next(e)));
+        return "ring " + std::to_string(r) + " edge " + std::to_string(e - P.rings[r].first) + "-" +
+               std::to_string(next(e) - P.rings[r].first) + " " + formatPoint(pt(e)) + "-" +
+               formatPoint(pt(next(e)));
     }
 
     Diagnostic run();
@@ -127,12 +127,12 @@ struct Validator {
     void touchOnEdge(Index vertex, Index edge);
     void orderJunctions();
     std::optional<std::pair<Index, std::string>> problem;  // check 4's: vertex to report, reason
-    Culprits problemCulprits;                               // and what else it names
+    Culprits problemCulprits;                              // and what else it names
     Diagnostic checkSharedVertices();
     Diagnostic checkTouchTopology();
     Diagnostic checkHoles();
 
-    std::vector<Index> groupOf;  // touch point (index into touchPoints) of each vertex, or kNone
+    std::vector<Index> groupOf;    // touch point (index into touchPoints) of each vertex, or kNone
     std::vector<Index> enclosing;  // innermost ring whose interior contains each ring
 
     // Where rings touch (check 5): every ring passing through one point, as the wedge of its
@@ -199,10 +199,10 @@ Diagnostic Validator::checkRings() {
     std::vector<Point> tmp;
     for (Index r = 0; r < P.rings.size(); ++r) {
         const Ring& ring = P.rings[r];
-        if (ring.count == 0)
-        {
-            Diagnostic d{Status::Invalid, name + ": ring " + std::to_string(r) +
-                                              ": ring is empty, it needs at least 3 distinct points"};
+        if (ring.count == 0) {
+            Diagnostic d{Status::Invalid,
+                         name + ": ring " + std::to_string(r) +
+                             ": ring is empty, it needs at least 3 distinct points"};
             d.culprits.rings = {r};
             return d;
         }
@@ -220,9 +220,8 @@ Diagnostic Validator::checkRings() {
                       [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
             size_t distinct = std::unique(tmp.begin(), tmp.end()) - tmp.begin();
             if (distinct < 3)
-                return fail(ring.first, "ring has " + std::to_string(distinct) +
-                                            " distinct point" + (distinct == 1 ? "" : "s") +
-                                            ", at least 3 are needed" +
+                return fail(ring.first, "ring has " + std::to_string(distinct) + " distinct point" +
+                                            (distinct == 1 ? "" : "s") + ", at least 3 are needed" +
                                             (outer ? "" : " (or exactly one, a point hole)"));
         }
         for (Index v = ring.first; v < ring.first + ring.count; ++v)
@@ -297,8 +296,8 @@ void Validator::classifyMeeting(Index e, Index f) {
         Point p = pt(e1), q = pt(e2), s = pt(next(e2));
         if (orient(p, q, s) == 0 && sameDirection(q, p, s)) {
             problemCulprits = atPoint(e2, {e1, e2});
-            problem.emplace(e2, "the ring folds back on itself here (spike): edge " +
-                                    edgeText(e1) + " overlaps the next edge");
+            problem.emplace(e2, "the ring folds back on itself here (spike): edge " + edgeText(e1) +
+                                    " overlaps the next edge");
             return;
         }
     }
@@ -319,8 +318,8 @@ void Validator::classifyMeeting(Index e, Index f) {
         double h = std::min(std::max(key(a), key(b)), std::max(key(c), key(d)));
         if (l < h) problemCulprits = {}, problemCulprits.edges = {lo, hi};
         if (l < h)
-            problem.emplace(lo, "edge " + edgeText(lo) + " overlaps collinear edge " +
-                                    edgeText(hi));
+            problem.emplace(lo,
+                            "edge " + edgeText(lo) + " overlaps collinear edge " + edgeText(hi));
         return;
     }
     if (o1 == 0 && insideSegment(a, b, c)) touchOnEdge(f, e);
@@ -332,15 +331,15 @@ void Validator::classifyMeeting(Index e, Index f) {
 // `vertex` lies strictly inside `edge`: a touch between rings (a junction, checked in check 5),
 // refused on its own ring or for a point.
 void Validator::touchOnEdge(Index vertex, Index edge) {
-    if (isPoint(vertex) || ringOfV[vertex] == ringOfV[edge]) problemCulprits = atPoint(vertex, {edge});
+    if (isPoint(vertex) || ringOfV[vertex] == ringOfV[edge])
+        problemCulprits = atPoint(vertex, {edge});
     if (isPoint(vertex))
         problem.emplace(vertex, "point hole lies on edge " + edgeText(edge) +
                                     " (a Steiner point must be strictly inside the polygon)");
     else if (ringOfV[vertex] == ringOfV[edge])
         problem.emplace(vertex, "the ring touches itself here: the vertex lies on its own edge " +
                                     edgeText(edge) + " (a ring must be simple)");
-    else
-        junctions.push_back({edge, vertex});
+    else junctions.push_back({edge, vertex});
 }
 
 // The sweep: every pair of edges that become neighbours along the sweep line goes to
@@ -415,9 +414,8 @@ void Validator::sweepEdges() {
         }
         std::vector<std::pair<Index, Index>> leftmost;  // (leftmost edge, ring)
         for (Index r : newRings) leftmost.emplace_back(leftmostOf[r], r), ringSeen[r] = 2;
-        std::sort(leftmost.begin(), leftmost.end(), [&](auto a, auto b) {
-            return active.less()(a.first, b.first);
-        });
+        std::sort(leftmost.begin(), leftmost.end(),
+                  [&](auto a, auto b) { return active.less()(a.first, b.first); });
         for (auto [e, r] : leftmost) enclosing[r] = enclosingAt(e);
     }
 }
@@ -428,7 +426,9 @@ void Validator::orderJunctions() {
     std::sort(junctions.begin(), junctions.end(), [&](const EdgeSplit& s, const EdgeSplit& t) {
         if (s.edge != t.edge) return s.edge < t.edge;
         Point a = pt(s.edge), b = pt(next(s.edge)), p = pt(s.vertex), q = pt(t.vertex);
-        if (p != q) return a.x != b.x ? (a.x < b.x ? p.x < q.x : p.x > q.x) : (a.y < b.y ? p.y < q.y : p.y > q.y);
+        if (p != q)
+            return a.x != b.x ? (a.x < b.x ? p.x < q.x : p.x > q.x)
+                              : (a.y < b.y ? p.y < q.y : p.y > q.y);
         return s.vertex < t.vertex;
     });
     junctions.erase(std::unique(junctions.begin(), junctions.end(),
@@ -453,15 +453,19 @@ Diagnostic Validator::checkEdges() {
 void Validator::collectTouchPoints() {
     // The repeated points (most inputs have none), in coordinate order (x, then y), each
     // point's vertices by index: (first vertex there, a later one) sorted so.
-    std::vector<std::pair<Index, Index>> copies = repeatedPoints(n, [&](size_t v) { return pt(Index(v)); });
-    std::sort(copies.begin(), copies.end(), [&](std::pair<Index, Index> a, std::pair<Index, Index> b) {
-        Point p = pt(a.first), q = pt(b.first);
-        if (p.x != q.x) return p.x < q.x;
-        if (p.y != q.y) return p.y < q.y;
-        return a.second < b.second;
-    });
+    std::vector<std::pair<Index, Index>> copies =
+        repeatedPoints(n, [&](size_t v) { return pt(Index(v)); });
+    std::sort(copies.begin(), copies.end(),
+              [&](std::pair<Index, Index> a, std::pair<Index, Index> b) {
+                  Point p = pt(a.first), q = pt(b.first);
+                  if (p.x != q.x) return p.x < q.x;
+                  if (p.y != q.y) return p.y < q.y;
+                  return a.second < b.second;
+              });
     groupOf.assign(n, kNone);
-    auto vertexOccurrence = [&](Index v) { return Occurrence{v, ringOfV[v], pt(prev(v)), pt(next(v))}; };
+    auto vertexOccurrence = [&](Index v) {
+        return Occurrence{v, ringOfV[v], pt(prev(v)), pt(next(v))};
+    };
     for (size_t i = 0; i < copies.size();) {
         const Index first = copies[i].first, group = Index(touchPoints.size());
         groupOf[first] = group;
@@ -550,15 +554,18 @@ Diagnostic Validator::checkSharedVertices() {
                 const Occurrence& other = o.owner == occ[0].owner ? occ[1] : occ[0];
                 Culprits c = atPoint(o.owner);
                 blame(c, other);
-                return fail(o.owner, "point hole coincides with " + occurrenceText(other) +
-                                         " (a Steiner point must be strictly inside the polygon)", c);
+                return fail(o.owner,
+                            "point hole coincides with " + occurrenceText(other) +
+                                " (a Steiner point must be strictly inside the polygon)",
+                            c);
             }
         rays.clear();
         for (Index i = 0; i < occ.size(); ++i) {
             const Occurrence& o = occ[i];
             // Walking from -> p -> to, the ring's inside is on the left for a counter-clockwise
             // ring; the polygon's interior is the other side for a hole.
-            bool nextAfter = (ringSign[o.ring] > 0) != (P.parts[partOfRing[o.ring]].firstRing != o.ring);
+            bool nextAfter =
+                (ringSign[o.ring] > 0) != (P.parts[partOfRing[o.ring]].firstRing != o.ring);
             rays.push_back({o.from, i, !nextAfter});
             rays.push_back({o.to, i, nextAfter});
         }
@@ -569,7 +576,8 @@ Diagnostic Validator::checkSharedVertices() {
             Index owner = occ[i].owner;
             return owner < n ? owner : junctions[owner - n].vertex;
         };
-        bool junction = std::any_of(occ.begin(), occ.end(), [&](const Occurrence& o) { return o.owner >= n; });
+        bool junction =
+            std::any_of(occ.begin(), occ.end(), [&](const Occurrence& o) { return o.owner >= n; });
         const std::string here = junction ? "at this touching point" : "at this shared vertex";
         chordAt.clear();
         for (const Ray& r : rays) chordAt.push_back(r.occ);
@@ -579,8 +587,10 @@ Diagnostic Validator::checkSharedVertices() {
         if (c != kNone) {
             Culprits also = atPoint(vertexOf(c));
             blame(also, occ[d]);
-            return fail(vertexOf(c), "the boundary crosses itself " + here + " (" +
-                                         occurrenceText(occ[d]) + " passes through to the other side)", also);
+            return fail(vertexOf(c),
+                        "the boundary crosses itself " + here + " (" + occurrenceText(occ[d]) +
+                            " passes through to the other side)",
+                        also);
         }
         // Sectors between consecutive rays must alternate interior / exterior; otherwise two
         // loops overlap here (a loop nested in another with the same orientation, a hole
@@ -593,10 +603,12 @@ Diagnostic Validator::checkSharedVertices() {
                 Index u = std::min(a.occ, b.occ), w = std::max(a.occ, b.occ);
                 Culprits also = atPoint(vertexOf(u));
                 if (u != w) blame(also, occ[w]);
-                return fail(vertexOf(u), "the interior overlaps itself " + here + " (" +
-                                             (u == w ? std::string("a ring") : occurrenceText(occ[w])) +
-                                             " touches here from the inside, with the "
-                                             "orientation of a nested loop or hole)", also);
+                return fail(vertexOf(u),
+                            "the interior overlaps itself " + here + " (" +
+                                (u == w ? std::string("a ring") : occurrenceText(occ[w])) +
+                                " touches here from the inside, with the "
+                                "orientation of a nested loop or hole)",
+                            also);
             }
         }
     }
@@ -627,8 +639,10 @@ Diagnostic Validator::checkTouchTopology() {
             if (ringStamp[b.ring] == t) {
                 Culprits also = atPoint(at);
                 blame(also, occ[ringAt[b.ring]]);
-                return fail(at, "the ring touches itself here (it also passes through " +
-                                    occurrenceText(occ[ringAt[b.ring]]) + "): a ring must be simple", also);
+                return fail(at,
+                            "the ring touches itself here (it also passes through " +
+                                occurrenceText(occ[ringAt[b.ring]]) + "): a ring must be simple",
+                            also);
             }
             ringStamp[b.ring] = t, ringAt[b.ring] = i;
             Index part = partOfRing[b.ring];
@@ -637,12 +651,13 @@ Diagnostic Validator::checkTouchTopology() {
                 continue;
             }
             Index ra = find(partRing[part]), rb = find(b.ring);
-            if (ra == rb)
-            {
+            if (ra == rb) {
                 Culprits also = atPoint(at);
                 also.rings = {partRing[part], b.ring};
-                return fail(at, "rings touching here and elsewhere enclose part of the interior: "
-                                "the interior is disconnected", also);
+                return fail(at,
+                            "rings touching here and elsewhere enclose part of the interior: "
+                            "the interior is disconnected",
+                            also);
             }
             parent[ra] = rb;
         }
@@ -663,20 +678,25 @@ Diagnostic Validator::checkHoles() {
         };
         if (r == outer) {
             if (e != kNone && P.parts[partOfRing[e]].firstRing == e)
-                return fail(v, "outer ring " + std::to_string(r) +
-                                   " lies inside the outer ring " + std::to_string(e) +
-                                   " of another part: parts overlap", ringsCulprits({r, e}));
+                return fail(v,
+                            "outer ring " + std::to_string(r) + " lies inside the outer ring " +
+                                std::to_string(e) + " of another part: parts overlap",
+                            ringsCulprits({r, e}));
             continue;
         }
         if (e == outer) continue;
         if (sameHole(e))
-            return fail(v, "hole (ring " + std::to_string(r) + ") lies inside another hole (ring " +
-                               std::to_string(e) + "): holes overlap", ringsCulprits({r, e}));
-        return fail(v, "hole (ring " + std::to_string(r) + ") lies outside its outer ring (ring " +
-                           std::to_string(outer) + ")" +
-                           (e == kNone ? std::string()
-                                       : ", inside ring " + std::to_string(e) + " instead"),
-                   ringsCulprits(e == kNone ? std::vector<uint32_t>{r, outer} : std::vector<uint32_t>{r, outer, e}));
+            return fail(v,
+                        "hole (ring " + std::to_string(r) + ") lies inside another hole (ring " +
+                            std::to_string(e) + "): holes overlap",
+                        ringsCulprits({r, e}));
+        return fail(
+            v,
+            "hole (ring " + std::to_string(r) + ") lies outside its outer ring (ring " +
+                std::to_string(outer) + ")" +
+                (e == kNone ? std::string() : ", inside ring " + std::to_string(e) + " instead"),
+            ringsCulprits(e == kNone ? std::vector<uint32_t>{r, outer}
+                                     : std::vector<uint32_t>{r, outer, e}));
     }
     return {};
 }

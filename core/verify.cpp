@@ -45,10 +45,13 @@ struct Box {
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     void add(Point p) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;  // the floods refuse those
-        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y),
+        y1 = std::max(y1, p.y);
     }
     bool empty() const { return x0 > x1; }
-    bool contains(const Box& b) const { return x0 <= b.x0 && b.x1 <= x1 && y0 <= b.y0 && b.y1 <= y1; }
+    bool contains(const Box& b) const {
+        return x0 <= b.x0 && b.x1 <= x1 && y0 <= b.y0 && b.y1 <= y1;
+    }
 };
 
 Box ringBox(const Polygon& P, const Ring& r) {
@@ -77,22 +80,27 @@ std::vector<Index> innermostHoles(const Polygon& P) {
             if (!std::isfinite(P.vertices[v].x) || !std::isfinite(P.vertices[v].y)) return false;
         return true;
     };
-    holes.erase(std::remove_if(holes.begin(), holes.end(), [&](Index h) { return !finite(h); }), holes.end());
+    holes.erase(std::remove_if(holes.begin(), holes.end(), [&](Index h) { return !finite(h); }),
+                holes.end());
     std::vector<Box> holeBox(P.rings.size()), partBox(parts);
     for (Index h : holes) holeBox[h] = ringBox(P, P.rings[h]);
     for (Index k = 0; k < parts; ++k) partBox[k] = ringBox(P, P.rings[P.parts[k].firstRing]);
     // Sweep in x: holes enter at their left side; a part is tested against the active holes.
     std::vector<Index> order(parts);
     for (Index k = 0; k < parts; ++k) order[k] = k;
-    std::sort(order.begin(), order.end(), [&](Index a, Index b) { return partBox[a].x0 < partBox[b].x0; });
-    std::sort(holes.begin(), holes.end(), [&](Index a, Index b) { return holeBox[a].x0 < holeBox[b].x0; });
+    std::sort(order.begin(), order.end(),
+              [&](Index a, Index b) { return partBox[a].x0 < partBox[b].x0; });
+    std::sort(holes.begin(), holes.end(),
+              [&](Index a, Index b) { return holeBox[a].x0 < holeBox[b].x0; });
     std::vector<Index> active;
     size_t nextHole = 0;
     for (Index k : order) {
         const Box& pb = partBox[k];
         if (pb.empty() || !finite(P.parts[k].firstRing)) continue;
-        while (nextHole < holes.size() && holeBox[holes[nextHole]].x0 <= pb.x0) active.push_back(holes[nextHole++]);
-        active.erase(std::remove_if(active.begin(), active.end(), [&](Index h) { return holeBox[h].x1 < pb.x0; }),
+        while (nextHole < holes.size() && holeBox[holes[nextHole]].x0 <= pb.x0)
+            active.push_back(holes[nextHole++]);
+        active.erase(std::remove_if(active.begin(), active.end(),
+                                    [&](Index h) { return holeBox[h].x1 < pb.x0; }),
                      active.end());
         const Ring& outer = P.rings[P.parts[k].firstRing];
         for (Index h : active) {
@@ -186,7 +194,8 @@ Verification verify(const Polygon& polygon, const Options& options) {
     if (v.flood.diagnostic.ok()) v.check = checkTriangulation(polygon, v.flood.triangles);
     Polygon complement = complementOf(polygon);
     v.complementFlood = triangulate(complement, nullptr, options);
-    if (v.complementFlood.diagnostic.ok()) v.complementCheck = checkTriangulation(complement, v.complementFlood.triangles);
+    if (v.complementFlood.diagnostic.ok())
+        v.complementCheck = checkTriangulation(complement, v.complementFlood.triangles);
     return v;
 }
 
@@ -194,10 +203,13 @@ std::string Verification::summary() const {
     auto side = [](const char* what, const FloodResult& f, const CheckResult& c) {
         std::string s = what;
         if (!f.diagnostic.ok()) return s + ": flooding stopped: " + f.diagnostic.message;
-        if (!c.ok) return s + ": " + std::to_string(f.triangles.size()) + " triangles, NOT a triangulation: " + c.reason;
+        if (!c.ok)
+            return s + ": " + std::to_string(f.triangles.size()) +
+                   " triangles, NOT a triangulation: " + c.reason;
         return s + ": " + std::to_string(f.triangles.size()) + " triangles, exact triangulation";
     };
-    return side("polygon", flood, check) + "\n" + side("complement", complementFlood, complementCheck);
+    return side("polygon", flood, check) + "\n" +
+           side("complement", complementFlood, complementCheck);
 }
 
 }  // namespace flood

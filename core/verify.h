@@ -35,7 +35,8 @@ struct Verification {
     FloodResult flood, complementFlood;
     CheckResult check, complementCheck;
     bool ok() const {
-        return flood.diagnostic.ok() && check.ok && complementFlood.diagnostic.ok() && complementCheck.ok;
+        return flood.diagnostic.ok() && check.ok && complementFlood.diagnostic.ok() &&
+               complementCheck.ok;
     }
     Caught caught() const;
     std::string summary() const;  // one line per side: what was checked and the verdict

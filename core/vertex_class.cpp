@@ -25,7 +25,8 @@ std::vector<VertexClass> classifyVertices(const Polygon& polygon, Up up) {
     const auto& v = polygon.vertices;
     for (size_t r = 0; r < polygon.rings.size(); ++r) {
         const Ring& ring = polygon.rings[r];
-        if (ring.count == 1) out[ring.first] = VertexClass::Sag;  // a Steiner point: a hole's bottom
+        if (ring.count == 1)
+            out[ring.first] = VertexClass::Sag;  // a Steiner point: a hole's bottom
         if (ring.count < 3) continue;
         // A ring with a non-finite coordinate has no classes (the machine refuses it: NotFinite),
         // and the exact predicates are for finite doubles only.

@@ -97,13 +97,15 @@ struct Reader {
     DatasetRead out;
     Diagnostic failure;
 
-    void malformed(const std::string& message) { failure = {Status::Malformed, name + ": " + message}; }
+    void malformed(const std::string& message) {
+        failure = {Status::Malformed, name + ": " + message};
+    }
 
     void read(const std::string& path, const Selection& s) {
         registerOnce();
         CPLErrorReset();
-        DatasetPtr ds(static_cast<GDALDataset*>(
-            GDALOpenEx(path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+        DatasetPtr ds(static_cast<GDALDataset*>(GDALOpenEx(
+            path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
         if (!ds) {
             // GDAL says nothing of a missing file; GDAL's own names (/vsizip/..., PG:...) are
             // not files, so only a plain path is checked.
@@ -116,12 +118,13 @@ struct Reader {
         OGRLayer* layer = nullptr;
         if (!s.layer.empty()) {
             layer = ds->GetLayerByName(s.layer.c_str());
-            if (!layer) return malformed("no layer \"" + io_detail::echo(s.layer) + "\"" + layerList(*ds));
+            if (!layer)
+                return malformed("no layer \"" + io_detail::echo(s.layer) + "\"" + layerList(*ds));
         } else if (ds->GetLayerCount() == 1) {
             layer = ds->GetLayer(0);
         } else {
-            return malformed(std::to_string(ds->GetLayerCount()) + " layers: choose one with --layer" +
-                             layerList(*ds));
+            return malformed(std::to_string(ds->GetLayerCount()) +
+                             " layers: choose one with --layer" + layerList(*ds));
         }
         const std::string lname = layer->GetName();
         if (!s.where.empty() && layer->SetAttributeFilter(s.where.c_str()) != OGRERR_NONE)
@@ -174,8 +177,9 @@ struct Reader {
         }
         if (!addGeometry(r.read, name, *g) || r.read.polygon.rings.empty()) {
             r.read.polygon = Polygon{};
-            r.read.diagnostic = {Status::Malformed, name + ": " + ctx + ": no polygon found (" +
-                                                        OGRGeometryTypeToName(g->getGeometryType()) + ")"};
+            r.read.diagnostic = {Status::Malformed,
+                                 name + ": " + ctx + ": no polygon found (" +
+                                     OGRGeometryTypeToName(g->getGeometryType()) + ")"};
         }
         out.features.push_back(std::move(r));
     }
@@ -187,7 +191,8 @@ namespace {
 std::string extension(const std::string& path) {
     size_t dot = path.find_last_of("./");
     std::string ext = dot == std::string::npos || path[dot] == '/' ? "" : path.substr(dot + 1);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
     return ext;
 }
 }  // namespace
@@ -200,8 +205,8 @@ bool handles(const std::string& path, const Selection& s) {
 }
 
 bool gisFile(const std::string& path) {
-    static const char* const known[] = {"shp", "gpkg", "fgb", "geojsonl", "geojsons",
-                                        "gml", "kml", "sqlite", "tab", "mif"};
+    static const char* const known[] = {"shp", "gpkg", "fgb",    "geojsonl", "geojsons",
+                                        "gml", "kml",  "sqlite", "tab",      "mif"};
     std::string ext = extension(path);
     return std::find(std::begin(known), std::end(known), ext) != std::end(known);
 }
@@ -236,10 +241,12 @@ ReadResult readPolygon(const std::string& path, const Selection& s) {
         }
         const Polygon& p = f.read.polygon;
         for (size_t k = 0; k < p.parts.size(); ++k)
-            for (Index r = p.parts[k].firstRing; r < p.parts[k].firstRing + p.parts[k].ringCount; ++r) {
+            for (Index r = p.parts[k].firstRing; r < p.parts[k].firstRing + p.parts[k].ringCount;
+                 ++r) {
                 const Ring& ring = p.rings[r];
-                rr.polygon.addRing({p.vertices.begin() + ring.first, p.vertices.begin() + ring.first + ring.count},
-                                   r == p.parts[k].firstRing);
+                rr.polygon.addRing(
+                    {p.vertices.begin() + ring.first, p.vertices.begin() + ring.first + ring.count},
+                    r == p.parts[k].firstRing);
             }
     }
     return rr;

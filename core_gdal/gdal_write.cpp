@@ -24,16 +24,15 @@ Diagnostic writeTriangles(const std::string& path, const std::string& format, co
         return Diagnostic{Status::WriteFailed,
                           path + ": cannot write: " + why + (m.empty() ? "" : ": " + m)};
     };
-    GDALDriver* driver =
-        GetGDALDriverManager()->GetDriverByName(gpkg ? "GPKG" : "FlatGeobuf");
-    if (!driver) return failed(std::string("GDAL has no ") + (gpkg ? "GPKG" : "FlatGeobuf") + " driver");
+    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName(gpkg ? "GPKG" : "FlatGeobuf");
+    if (!driver)
+        return failed(std::string("GDAL has no ") + (gpkg ? "GPKG" : "FlatGeobuf") + " driver");
     // Written beside the target under a temporary name with the format's extension (drivers
     // choose by it), renamed over `path` once closed: a failure leaves any old file as it was.
     namespace fs = std::filesystem;
     fs::path target(path);
-    fs::path tmp = target.parent_path() /
-                   ("." + target.filename().string() + ".tmp" + std::to_string(::getpid()) +
-                    (gpkg ? ".gpkg" : ".fgb"));
+    fs::path tmp = target.parent_path() / ("." + target.filename().string() + ".tmp" +
+                                           std::to_string(::getpid()) + (gpkg ? ".gpkg" : ".fgb"));
     std::error_code ec;
     fs::remove(tmp, ec);
     CPLErrorReset();

@@ -22,7 +22,8 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     flood::FloodResult r = flood::triangulate(d.polygon, nullptr, d.options);
     if (v.ok()) {
         if (!r.diagnostic.ok()) {
-            std::fprintf(stderr, "valid polygon, machine failed: %s\n", r.diagnostic.message.c_str());
+            std::fprintf(stderr, "valid polygon, machine failed: %s\n",
+                         r.diagnostic.message.c_str());
             std::abort();
         }
         flood::CheckResult c = flood::checkTriangulation(d.polygon, r.triangles);

@@ -28,8 +28,10 @@ inline Decoded decode(const uint8_t* data, size_t size, size_t maxVertices = 409
     Decoded d;
     size_t pos = 0;
     if (size == 0) return d;
-    const flood::Up axes[] = {flood::Up::PlusY, flood::Up::MinusY, flood::Up::PlusX, flood::Up::MinusX};
-    d.options.up = (data[pos] & 4) ? flood::upFromDegrees(17 + 11.25 * (data[pos] >> 3)) : axes[data[pos] & 3];
+    const flood::Up axes[] = {flood::Up::PlusY, flood::Up::MinusY, flood::Up::PlusX,
+                              flood::Up::MinusX};
+    d.options.up =
+        (data[pos] & 4) ? flood::upFromDegrees(17 + 11.25 * (data[pos] >> 3)) : axes[data[pos] & 3];
     ++pos;
     while (pos < size && d.polygon.vertices.size() < maxVertices) {
         uint8_t h = data[pos++];

@@ -62,7 +62,8 @@ ReadResult readInput(py::handle input, const std::string& name) {
             outer = false;
         }
     }
-    if (rr.polygon.rings.empty()) rr.diagnostic = {Status::Malformed, name + ": polygon has no rings"};
+    if (rr.polygon.rings.empty())
+        rr.diagnostic = {Status::Malformed, name + ": polygon has no rings"};
     return rr;
 }
 
@@ -96,7 +97,8 @@ void run(Outcome& o, bool validateFirst, const Options& options, const std::stri
     CheckResult c = checkTriangulation(o.polygon, r.triangles);
     if (!c.ok)
         o.diagnostic = {Status::Internal,
-                        name + ": the exact checker rejects the triangulation: " + c.reason, c.culprits};
+                        name + ": the exact checker rejects the triangulation: " + c.reason,
+                        c.culprits};
     else o.triangles = std::move(r.triangles);
 }
 
@@ -115,7 +117,8 @@ Outcome prepare(py::handle input, const std::string& name) {
 py::array_t<double> verticesArray(const Polygon& p) {
     py::array_t<double> a({py::ssize_t(p.vertices.size()), py::ssize_t(2)});
     auto m = a.mutable_unchecked<2>();
-    for (size_t i = 0; i < p.vertices.size(); ++i) m(i, 0) = p.vertices[i].x, m(i, 1) = p.vertices[i].y;
+    for (size_t i = 0; i < p.vertices.size(); ++i)
+        m(i, 0) = p.vertices[i].x, m(i, 1) = p.vertices[i].y;
     return a;
 }
 
@@ -205,9 +208,9 @@ PYBIND11_MODULE(_flood, m) {
         m.attr("TESTS") = tests;
         m.attr("FORBIDDEN") = reasons;
         py::dict statuses;
-        for (Status s : {Status::Ok, Status::Usage, Status::Malformed, Status::Invalid,
-                         Status::Forbidden, Status::Internal, Status::VerifyFailed,
-                         Status::WriteFailed})
+        for (Status s :
+             {Status::Ok, Status::Usage, Status::Malformed, Status::Invalid, Status::Forbidden,
+              Status::Internal, Status::VerifyFailed, Status::WriteFailed})
             statuses[py::int_(int(s))] = statusName(s);
         m.attr("STATUS_NAMES") = statuses;
     }
@@ -222,18 +225,19 @@ PYBIND11_MODULE(_flood, m) {
         return py::make_tuple(diagnosticTuple(o.diagnostic, o.polygon, name), o.warnings);
     });
 
-    m.def("triangulate", [](py::handle input, bool validateFirst, const std::string& up,
-                            const std::string& name) {
-        Options options;
-        options.up = upOf(up);
-        Outcome o = prepare(input, name);
-        {
-            py::gil_scoped_release unlocked;
-            run(o, validateFirst, options, name);
-        }
-        return py::make_tuple(diagnosticTuple(o.diagnostic, o.polygon, name), o.warnings, verticesArray(o.polygon),
-                              trianglesArray(o.triangles), ringCounts(o.polygon));
-    });
+    m.def("triangulate",
+          [](py::handle input, bool validateFirst, const std::string& up, const std::string& name) {
+              Options options;
+              options.up = upOf(up);
+              Outcome o = prepare(input, name);
+              {
+                  py::gil_scoped_release unlocked;
+                  run(o, validateFirst, options, name);
+              }
+              return py::make_tuple(diagnosticTuple(o.diagnostic, o.polygon, name), o.warnings,
+                                    verticesArray(o.polygon), trianglesArray(o.triangles),
+                                    ringCounts(o.polygon));
+          });
 
     // Many features at once on `threads` C++ threads: arrays are read first (they need the
     // GIL), texts (WKT, GeoJSON) by the threads; then every feature is validated, flooded and
@@ -278,9 +282,10 @@ PYBIND11_MODULE(_flood, m) {
         }
         py::list verdicts;
         for (const Outcome& o : outcomes)
-            verdicts.append(py::make_tuple(int(o.diagnostic.status), o.diagnostic.message,
-                                           reasonOf(o.diagnostic.message, names[&o - outcomes.data()], o.where),
-                                           index(o.where.ring), index(o.where.vertex), o.triangles.size()));
+            verdicts.append(
+                py::make_tuple(int(o.diagnostic.status), o.diagnostic.message,
+                               reasonOf(o.diagnostic.message, names[&o - outcomes.data()], o.where),
+                               index(o.where.ring), index(o.where.vertex), o.triangles.size()));
         return verdicts;
     });
 
@@ -344,15 +349,25 @@ PYBIND11_MODULE(_flood, m) {
     // The replay of a trace (core/replay.h); seek returns a copy of the state, so a state read
     // earlier does not change under the caller when the replay moves on.
     py::class_<TraceHandle, std::shared_ptr<TraceHandle>>(m, "Trace")
-        .def_property_readonly("events", [](const TraceHandle& t) {
-            py::array a(eventDtype(), std::vector<py::ssize_t>{py::ssize_t(t.trace.events.size())});
-            if (!t.trace.events.empty())
-                std::memcpy(a.mutable_data(), t.trace.events.data(), t.trace.events.size() * sizeof(Event));
-            return a;
-        })
-        .def_property_readonly("vertices", [](const TraceHandle& t) { return verticesArray(t.trace.polygon); })
-        .def_property_readonly("triangles", [](const TraceHandle& t) { return trianglesArray(t.trace.triangles); })
-        .def_property_readonly("diagnostic", [](const TraceHandle& t) { return diagnosticTuple(t.trace.diagnostic, t.trace.polygon, t.name); })
+        .def_property_readonly(
+            "events",
+            [](const TraceHandle& t) {
+                py::array a(eventDtype(),
+                            std::vector<py::ssize_t>{py::ssize_t(t.trace.events.size())});
+                if (!t.trace.events.empty())
+                    std::memcpy(a.mutable_data(), t.trace.events.data(),
+                                t.trace.events.size() * sizeof(Event));
+                return a;
+            })
+        .def_property_readonly("vertices",
+                               [](const TraceHandle& t) { return verticesArray(t.trace.polygon); })
+        .def_property_readonly(
+            "triangles", [](const TraceHandle& t) { return trianglesArray(t.trace.triangles); })
+        .def_property_readonly("diagnostic",
+                               [](const TraceHandle& t) {
+                                   return diagnosticTuple(t.trace.diagnostic, t.trace.polygon,
+                                                          t.name);
+                               })
         .def_readonly("warnings", &TraceHandle::warnings)
         .def("__len__", [](const TraceHandle& t) { return t.trace.events.size(); })
         .def("seek", [](TraceHandle& t, uint32_t step) {
@@ -364,28 +379,33 @@ PYBIND11_MODULE(_flood, m) {
 
     // Records a run: read, validate (unless told not to), flood with a recorder. A forbidden
     // run is recorded too (it is what one wants to look at); malformed or invalid input is not.
-    m.def("trace", [](py::handle input, bool validateFirst, const std::string& up,
-                      const std::string& name) -> py::object {
-        Options options;
-        options.up = upOf(up);
-        Outcome o = prepare(input, name);
-        auto t = std::make_shared<TraceHandle>();
-        t->warnings = o.warnings;
-        t->name = name;
-        {
-            py::gil_scoped_release unlocked;
-            if (o.diagnostic.ok() && validateFirst) o.diagnostic = validate(o.polygon, name);
-            if (o.diagnostic.ok()) {
-                t->trace = record(o.polygon, options);
-                if (t->trace.diagnostic.ok()) {
-                    CheckResult c = checkTriangulation(t->trace.polygon, t->trace.triangles);
-                    if (!c.ok)
-                        t->trace.diagnostic = {Status::Internal, name + ": the exact checker rejects the triangulation: " + c.reason, c.culprits};
+    m.def(
+        "trace",
+        [](py::handle input, bool validateFirst, const std::string& up,
+           const std::string& name) -> py::object {
+            Options options;
+            options.up = upOf(up);
+            Outcome o = prepare(input, name);
+            auto t = std::make_shared<TraceHandle>();
+            t->warnings = o.warnings;
+            t->name = name;
+            {
+                py::gil_scoped_release unlocked;
+                if (o.diagnostic.ok() && validateFirst) o.diagnostic = validate(o.polygon, name);
+                if (o.diagnostic.ok()) {
+                    t->trace = record(o.polygon, options);
+                    if (t->trace.diagnostic.ok()) {
+                        CheckResult c = checkTriangulation(t->trace.polygon, t->trace.triangles);
+                        if (!c.ok)
+                            t->trace.diagnostic = {
+                                Status::Internal,
+                                name + ": the exact checker rejects the triangulation: " + c.reason,
+                                c.culprits};
+                    }
+                    t->replay = std::make_unique<Replay>(t->trace);
                 }
-                t->replay = std::make_unique<Replay>(t->trace);
             }
-        }
-        if (!o.diagnostic.ok()) return diagnosticTuple(o.diagnostic, o.polygon, name);
-        return py::cast(t);
-    });
+            if (!o.diagnostic.ok()) return diagnosticTuple(o.diagnostic, o.polygon, name);
+            return py::cast(t);
+        });
 }

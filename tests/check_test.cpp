@@ -52,7 +52,9 @@ json checkJson(const std::string& args, int* code = nullptr) {
     return doc;
 }
 
-bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool has(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
 
 // The only part of the output that depends on the run: the time.
 std::string timeless(std::string s) {
@@ -65,8 +67,9 @@ std::string timeless(std::string s) {
 TEST(Check, CountsPerVerdictInTheTableAndTheJson) {
     CheckRun t = cli("check " + kMixed);
     EXPECT_EQ(t.code, 4) << t.out << t.err;  // worst: invalid (no feature got further and failed)
-    EXPECT_TRUE(has(t.out, "check: 9 features in 1 file: 4 ok, 2 malformed, 3 invalid, "
-                           "0 forbidden, 0 checker, 0 internal; "))
+    EXPECT_TRUE(has(t.out,
+                    "check: 9 features in 1 file: 4 ok, 2 malformed, 3 invalid, "
+                    "0 forbidden, 0 checker, 0 internal; "))
         << t.out;
     EXPECT_TRUE(has(t.err, "feature 6: not polygonal (LineString), skipped")) << t.err;
 
@@ -111,20 +114,27 @@ TEST(Check, CountsPerVerdictInTheTableAndTheJson) {
         EXPECT_EQ(r["at"], e.at ? json(e.at) : json(nullptr)) << r;
         EXPECT_EQ(r["reason"].is_null(), e.code == 0) << r;
     }
-    EXPECT_EQ(rows[3]["reason"], "hole (ring 1) lies outside its outer ring (ring 0) (global vertex 4)");
+    EXPECT_EQ(rows[3]["reason"],
+              "hole (ring 1) lies outside its outer ring (ring 0) (global vertex 4)");
     EXPECT_EQ(rows[5]["reason"],
-              "feature 5 polygon 0 ring 0 vertex 2: coordinate is not a pair of numbers (got [10,\"ten\"])");
+              "feature 5 polygon 0 ring 0 vertex 2: coordinate is not a pair of numbers (got "
+              "[10,\"ten\"])");
     EXPECT_EQ(rows[2]["vertices"], 12);
     // The feature's properties come with its row.
     EXPECT_EQ(rows[1]["attributes"], json({{"name", "bow-tie"}})) << rows[1];
     EXPECT_TRUE(rows[0]["attributes"].empty()) << rows[0];
     // The table shows the id where there is one, else the name.
     EXPECT_TRUE(std::regex_search(t.out, std::regex("mixed.geojson +8 +triangle +3 +ok"))) << t.out;
-    EXPECT_TRUE(std::regex_search(t.out, std::regex("mixed.geojson +1 +bow-tie +4 +invalid +ring 0 vertex 0"))) << t.out;
+    EXPECT_TRUE(std::regex_search(
+        t.out, std::regex("mixed.geojson +1 +bow-tie +4 +invalid +ring 0 vertex 0")))
+        << t.out;
 }
 
 TEST(Check, ExitCodeIsZeroOnlyWhenAllPassElseTheWorstClass) {
-    EXPECT_EQ(cli("check " + sourcePath("polygons/hole.json") + " " + sourcePath("polygons/holes.json")).code, 0);
+    EXPECT_EQ(
+        cli("check " + sourcePath("polygons/hole.json") + " " + sourcePath("polygons/holes.json"))
+            .code,
+        0);
     // Without validation the invalid features reach the machine: forbidden (5) for the bow-tie
     // and the hole outside, and the overlapping parts (flooded apart) are caught by the exact
     // checker, which sees all parts together: a checker rejection (6) outranks the rest.
@@ -135,9 +145,12 @@ TEST(Check, ExitCodeIsZeroOnlyWhenAllPassElseTheWorstClass) {
     EXPECT_EQ(doc["features"][4]["verdict"], "checker");
     EXPECT_EQ(doc["summary"]["verdicts"]["forbidden"], 2) << doc["summary"];
     EXPECT_EQ(doc["features"][1]["verdict"], "forbidden");
-    EXPECT_TRUE(has(doc["features"][1]["at"].get<std::string>(), " at step ")) << doc["features"][1];
+    EXPECT_TRUE(has(doc["features"][1]["at"].get<std::string>(), " at step "))
+        << doc["features"][1];
     // Another checker rejection in a second file keeps the worst class.
-    doc = checkJson("--no-validate " + kMixed + " " + sourcePath("polygons/invalid/checker-rejects.json"), &code);
+    doc = checkJson(
+        "--no-validate " + kMixed + " " + sourcePath("polygons/invalid/checker-rejects.json"),
+        &code);
     EXPECT_EQ(code, 6);
     EXPECT_EQ(doc["features"].back()["verdict"], "checker");
     EXPECT_EQ(doc["summary"]["code"], 6);
@@ -183,8 +196,9 @@ TEST(Check, FoldersAreCheckedRecursivelyInSortedOrder) {
 TEST(Check, AnUnreadableFileIsARowAndTheOthersAreChecked) {
     fs::path d = scratch("unreadable");
     int code = -1;
-    json doc = checkJson(sourcePath("polygons/hole.json") + " " + (d / "missing.json").string() + " " +
-                             sourcePath("polygons/holes.json") + " " + sourcePath("polygons/invalid/nul-bytes.json"),
+    json doc = checkJson(sourcePath("polygons/hole.json") + " " + (d / "missing.json").string() +
+                             " " + sourcePath("polygons/holes.json") + " " +
+                             sourcePath("polygons/invalid/nul-bytes.json"),
                          &code);
     EXPECT_EQ(code, 3);
     const json& rows = doc["features"];
@@ -199,7 +213,8 @@ TEST(Check, AnUnreadableFileIsARowAndTheOthersAreChecked) {
     doc = checkJson("--max-input-bytes 100 " + sourcePath("polygons/hole.json") + " " +
                     sourcePath("polygons/holes.json"));
     EXPECT_EQ(doc["features"][0]["verdict"], "ok");
-    EXPECT_TRUE(has(doc["features"][1]["reason"].get<std::string>(), "larger than the limit of 100 bytes"))
+    EXPECT_TRUE(
+        has(doc["features"][1]["reason"].get<std::string>(), "larger than the limit of 100 bytes"))
         << doc["features"][1];
     fs::remove_all(d);
 }
@@ -281,7 +296,8 @@ TEST(Check, SampleFoldersAgreeWithTriangulateFileByFile) {
                 alone.clear();
                 for (size_t i = 0; i < doc["features"].size(); ++i) {
                     const json& g = doc["features"][i]["geometry"];
-                    if (g.is_object() && (g["type"] == "LineString" || g["type"] == "Point")) continue;
+                    if (g.is_object() && (g["type"] == "LineString" || g["type"] == "Point"))
+                        continue;
                     fs::path one = d / ("feature" + std::to_string(i) + ".json");
                     std::ofstream(one) << doc["features"][i].dump();
                     alone.push_back(one.string());
@@ -304,8 +320,9 @@ TEST(Check, SampleFoldersAgreeWithTriangulateFileByFile) {
         EXPECT_EQ(v["ok"], perCode[0]) << folder;
         EXPECT_EQ(v["malformed"], perCode[3]) << folder;
         EXPECT_EQ(v["invalid"], perCode[4]) << folder;
-        EXPECT_EQ(v["forbidden"].get<size_t>() + v["checker"].get<size_t>() + v["internal"].get<size_t>(),
-                  perCode[5] + perCode[6])
+        EXPECT_EQ(
+            v["forbidden"].get<size_t>() + v["checker"].get<size_t>() + v["internal"].get<size_t>(),
+            perCode[5] + perCode[6])
             << folder;
         EXPECT_GT(perCode[4], 5u) << folder << ": the invalid samples are there";
     }
@@ -316,7 +333,8 @@ TEST(Check, SampleFoldersAgreeWithTriangulateFileByFile) {
 TEST(Check, ParseFeaturesSplitsACollectionAndLeavesOtherFilesWhole) {
     flood::ReadResult whole = flood::readPolygonFile(kMixed);
     EXPECT_EQ(whole.diagnostic.status, flood::Status::Malformed);
-    EXPECT_TRUE(has(whole.diagnostic.message, "feature 5 polygon 7 ring 0 vertex 2")) << whole.diagnostic.message;
+    EXPECT_TRUE(has(whole.diagnostic.message, "feature 5 polygon 7 ring 0 vertex 2"))
+        << whole.diagnostic.message;
 
     flood::DatasetRead d = flood::readFeaturesFile(kMixed, flood::kDefaultMaxInputBytes, false);
     ASSERT_EQ(d.features.size(), 9u);
@@ -326,14 +344,16 @@ TEST(Check, ParseFeaturesSplitsACollectionAndLeavesOtherFilesWhole) {
     EXPECT_EQ(d.features[2].read.polygon.parts.size(), 2u);  // a MultiPolygon stays one feature
     EXPECT_EQ(d.features[2].read.polygon.rings.size(), 3u);
     EXPECT_TRUE(d.features[2].source.empty());
-    EXPECT_EQ(d.features[5].read.diagnostic.status, flood::Status::Malformed);  // "feature 5 polygon 0 ..."
+    EXPECT_EQ(d.features[5].read.diagnostic.status,
+              flood::Status::Malformed);  // "feature 5 polygon 0 ..."
     flood::DatasetRead kept = flood::readFeaturesFile(kMixed, flood::kDefaultMaxInputBytes, true);
     EXPECT_TRUE(has(kept.features[1].source, "\"bow-tie\"")) << kept.features[1].source;
 
     for (const char* other : {"polygons/holes.json", "polygons/invalid/malformed-json.json",
                               "polygons/invalid/nan.wkt", "polygons/invalid/deep-nesting.json"}) {
         flood::ReadResult r = flood::readPolygonFile(sourcePath(other));
-        flood::DatasetRead one = flood::readFeaturesFile(sourcePath(other), flood::kDefaultMaxInputBytes, true);
+        flood::DatasetRead one =
+            flood::readFeaturesFile(sourcePath(other), flood::kDefaultMaxInputBytes, true);
         ASSERT_EQ(one.features.size(), 1u) << other;
         EXPECT_TRUE(one.features[0].wholeFile);
         EXPECT_EQ(one.features[0].read.diagnostic.message, r.diagnostic.message) << other;
@@ -377,10 +397,12 @@ TEST(Check, ExtractedNamesNeverCollide) {
     fs::path d = scratch("stems");
     fs::create_directories(d / "copy");
     fs::copy_file(kMixed, d / "copy" / "mixed.geojson");
-    json doc = checkJson("--extract " + (d / "out").string() + " " + kMixed + " " + (d / "copy").string());
+    json doc =
+        checkJson("--extract " + (d / "out").string() + " " + kMixed + " " + (d / "copy").string());
     std::set<std::string> names;
     for (const json& r : doc["features"])
-        if (r["extracted"].is_string()) names.insert(fs::path(r["extracted"].get<std::string>()).filename());
+        if (r["extracted"].is_string())
+            names.insert(fs::path(r["extracted"].get<std::string>()).filename());
     EXPECT_EQ(names.size(), 10u);
     EXPECT_TRUE(names.count("mixed_feature1.json") && names.count("mixed-2_feature1.json")) << doc;
     fs::remove_all(d);

@@ -27,7 +27,9 @@ Polygon part(const Ring& outer, const std::vector<Ring>& holes = {}) {
     return p;
 }
 
-Ring box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+Ring box(double x0, double y0, double x1, double y1) {
+    return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+}
 
 struct Together {
     Polygon polygon;
@@ -46,13 +48,16 @@ Together together(const std::vector<Polygon>& pieces, int rotation = 0, bool mir
         EXPECT_TRUE(checkTriangulation(p, r.triangles).ok);
         const Index shift = Index(t.polygon.vertices.size());
         for (Index k = 0; k < p.parts.size(); ++k)
-            for (Index r = p.parts[k].firstRing; r < p.parts[k].firstRing + p.parts[k].ringCount; ++r) {
+            for (Index r = p.parts[k].firstRing; r < p.parts[k].firstRing + p.parts[k].ringCount;
+                 ++r) {
                 const flood::Ring& ring = p.rings[r];
-                t.polygon.addRing({p.vertices.begin() + ring.first, p.vertices.begin() + ring.first + ring.count},
-                                  r == p.parts[k].firstRing);
+                t.polygon.addRing(
+                    {p.vertices.begin() + ring.first, p.vertices.begin() + ring.first + ring.count},
+                    r == p.parts[k].firstRing);
             }
         for (EdgeSplit s : p.splits) t.polygon.splits.push_back({s.edge + shift, s.vertex + shift});
-        for (Triangle tri : r.triangles) t.triangles.push_back({tri[0] + shift, tri[1] + shift, tri[2] + shift});
+        for (Triangle tri : r.triangles)
+            t.triangles.push_back({tri[0] + shift, tri[1] + shift, tri[2] + shift});
     }
     return t;
 }
@@ -78,7 +83,8 @@ Together together(const std::vector<Polygon>& pieces, int rotation = 0, bool mir
             CheckResult c = checkTriangulation(t.polygon, t.triangles);
             if (!c.ok)
                 return ::testing::AssertionFailure()
-                       << "rotation " << rotation << (mirror ? " mirrored" : "") << ": " << c.reason;
+                       << "rotation " << rotation << (mirror ? " mirrored" : "") << ": "
+                       << c.reason;
         }
     return ::testing::AssertionSuccess();
 }
@@ -97,7 +103,8 @@ TEST(CheckerParts, RejectsPartStrictlyInsideAnother) {
     EXPECT_TRUE(overlapRejected({part(box(0, 0, 10, 10)), part(box(2, 3, 4, 5))}));
     EXPECT_TRUE(overlapRejected({part(box(2, 3, 4, 5)), part(box(0, 0, 10, 10))}));
     // Inside the outer ring but not inside its hole: no boundary contact either.
-    EXPECT_TRUE(overlapRejected({part(box(0, 0, 10, 10), {box(5, 5, 9, 9)}), part(box(1, 1, 3, 3))}));
+    EXPECT_TRUE(
+        overlapRejected({part(box(0, 0, 10, 10), {box(5, 5, 9, 9)}), part(box(1, 1, 3, 3))}));
 }
 
 TEST(CheckerParts, RejectsProperlyCrossingEdges) {
@@ -105,7 +112,8 @@ TEST(CheckerParts, RejectsProperlyCrossingEdges) {
     // A cross: no vertex of either bar lies inside the other, only the edges cross.
     EXPECT_TRUE(overlapRejected({part(box(0, 1, 6, 3)), part(box(2, 0, 4, 4))}));
     // A part larger than the lake it sits in.
-    EXPECT_TRUE(overlapRejected({part(box(0, 0, 10, 10), {box(2, 2, 8, 8)}), part(box(1, 3, 5, 5))}));
+    EXPECT_TRUE(
+        overlapRejected({part(box(0, 0, 10, 10), {box(2, 2, 8, 8)}), part(box(1, 3, 5, 5))}));
 }
 
 // The fuzzer's cases: the parts' boundaries meet only where a vertex of one lies on an edge
@@ -140,10 +148,12 @@ TEST(CheckerParts, RejectsWedgesInterleavingAtASharedVertex) {
 }
 
 TEST(CheckerParts, ReasonNamesTheTwoPartsAndAVertex) {
-    Together t = together({part(box(0, 0, 10, 10)), part(box(10, 0, 12, 2)), part(box(2, 3, 4, 5))});
+    Together t =
+        together({part(box(0, 0, 10, 10)), part(box(10, 0, 12, 2)), part(box(2, 3, 4, 5))});
     CheckResult c = checkTriangulation(t.polygon, t.triangles);
     ASSERT_FALSE(c.ok);
-    EXPECT_NE(c.reason.find("parts-overlap: parts 0 and 2 overlap beside vertex 8 (2, 3)"), std::string::npos)
+    EXPECT_NE(c.reason.find("parts-overlap: parts 0 and 2 overlap beside vertex 8 (2, 3)"),
+              std::string::npos)
         << c.reason;
     // ... and as data, for the viewer's error view: the vertex and the two parts' outer rings.
     EXPECT_EQ(c.culprits.vertices, std::vector<uint32_t>{8});
@@ -163,8 +173,8 @@ TEST(CheckerParts, ReasonNamesTheTwoPartsAndAVertex) {
 
 TEST(CheckerParts, AcceptsPartsTouchingAtVertices) {
     // A 2x2 checkerboard: four squares meeting at (1,1), two of them through corners only.
-    EXPECT_TRUE(touchingAccepted({part(box(0, 0, 1, 1)), part(box(1, 1, 2, 2)), part(box(1, 0, 2, 1)),
-                                  part(box(0, 1, 1, 2))}));
+    EXPECT_TRUE(touchingAccepted({part(box(0, 0, 1, 1)), part(box(1, 1, 2, 2)),
+                                  part(box(1, 0, 2, 1)), part(box(0, 1, 1, 2))}));
     // Triangles fanned around one point, wedges in turn, one point shared by six parts.
     std::vector<Polygon> fan;
     const Point spokes[6] = {{4, 0}, {2, 4}, {-2, 4}, {-4, 0}, {-2, -4}, {2, -4}};
@@ -188,9 +198,10 @@ TEST(CheckerParts, AcceptsGridsOfSquares) {
         std::vector<Polygon> grid, board, bricks;
         for (int i = 0; i < n; ++i)
             for (int j = 0; j < n; ++j) {
-                grid.push_back(part(box(i, j, i + 1, j + 1)));            // along whole edges
+                grid.push_back(part(box(i, j, i + 1, j + 1)));  // along whole edges
                 if ((i + j) % 2 == 0) board.push_back(part(box(i, j, i + 1, j + 1)));  // at corners
-                bricks.push_back(part(box(2 * i + j % 2, j, 2 * i + j % 2 + 2, j + 1)));  // T-junctions
+                bricks.push_back(
+                    part(box(2 * i + j % 2, j, 2 * i + j % 2 + 2, j + 1)));  // T-junctions
             }
         EXPECT_TRUE(touchingAccepted(grid)) << n;
         EXPECT_TRUE(touchingAccepted(board)) << n;
@@ -202,8 +213,10 @@ TEST(CheckerParts, AcceptsIslandsInLakes) {
     Polygon lake = part(box(0, 0, 10, 10), {box(2, 2, 8, 8)});
     EXPECT_TRUE(touchingAccepted({lake, part(box(3, 3, 7, 7))}));
     EXPECT_TRUE(touchingAccepted({lake, part(box(2, 2, 8, 8))}));  // the island fills the lake
-    EXPECT_TRUE(touchingAccepted({lake, part(box(2, 2, 5, 5))}));  // touching the shore along two edges
-    EXPECT_TRUE(touchingAccepted({lake, part({{5, 2}, {8, 5}, {5, 8}, {2, 5}})}));  // at T-junctions
+    EXPECT_TRUE(
+        touchingAccepted({lake, part(box(2, 2, 5, 5))}));  // touching the shore along two edges
+    EXPECT_TRUE(
+        touchingAccepted({lake, part({{5, 2}, {8, 5}, {5, 8}, {2, 5}})}));  // at T-junctions
     // An island with a lake with an island, as one polygon of three parts.
     Polygon nested = lake;
     nested.addRing(box(3, 3, 7, 7), true);
@@ -214,7 +227,8 @@ TEST(CheckerParts, AcceptsIslandsInLakes) {
 
 TEST(CheckerParts, AcceptsTheGeneratedIslands) {
     for (size_t size : {8, 30, 120, 1000})
-        for (uint64_t seed = 0; seed < 10; ++seed) EXPECT_TRUE(touchingAccepted({generate("islands", seed, size)}));
+        for (uint64_t seed = 0; seed < 10; ++seed)
+            EXPECT_TRUE(touchingAccepted({generate("islands", seed, size)}));
 }
 
 // [SECTION] random parts on a small grid, against pairwise triangle tests
@@ -243,23 +257,23 @@ Polygon randomPart(std::mt19937_64& rng) {
     for (;;) {
         Polygon p;
         switch (rng() % 4) {
-        case 0:
-        case 1: {  // a triangle, a quadrangle or a pentagon
-            Ring ring;
-            for (size_t k = 3 + rng() % 3; k > 0; --k) ring.push_back({coord(6), coord(6)});
-            p = part(ring);
-            break;
-        }
-        case 2: {
-            double x = coord(5), y = coord(5);
-            p = part(box(x, y, x + 1 + coord(5 - int(x)), y + 1 + coord(5 - int(y))));
-            break;
-        }
-        default: {  // a box with a hole touching it or not
-            double x = coord(2), y = coord(2), w = 3 + coord(1), h = 3 + coord(1);
-            double hx = x + 1 + coord(int(w) - 3), hy = y + coord(int(h) - 2);
-            p = part(box(x, y, x + w, y + h), {box(hx, hy, hx + 1, hy + 1)});
-        }
+            case 0:
+            case 1: {  // a triangle, a quadrangle or a pentagon
+                Ring ring;
+                for (size_t k = 3 + rng() % 3; k > 0; --k) ring.push_back({coord(6), coord(6)});
+                p = part(ring);
+                break;
+            }
+            case 2: {
+                double x = coord(5), y = coord(5);
+                p = part(box(x, y, x + 1 + coord(5 - int(x)), y + 1 + coord(5 - int(y))));
+                break;
+            }
+            default: {  // a box with a hole touching it or not
+                double x = coord(2), y = coord(2), w = 3 + coord(1), h = 3 + coord(1);
+                double hx = x + 1 + coord(int(w) - 3), hy = y + coord(int(h) - 2);
+                p = part(box(x, y, x + w, y + h), {box(hx, hy, hx + 1, hy + 1)});
+            }
         }
         Polygon q = p;
         if (validate(q, "random part").ok()) return p;
@@ -279,7 +293,8 @@ TEST(CheckerParts, AgreesWithPairwiseTriangleTestsOnRandomParts) {
         for (Index k = 0; k < t.polygon.parts.size(); ++k) {
             const flood::Part& pt = t.polygon.parts[k];
             for (Index r = pt.firstRing; r < pt.firstRing + pt.ringCount; ++r)
-                for (Index i = 0; i < t.polygon.rings[r].count; ++i) partOf[t.polygon.rings[r].first + i] = k;
+                for (Index i = 0; i < t.polygon.rings[r].count; ++i)
+                    partOf[t.polygon.rings[r].first + i] = k;
         }
         bool overlap = false;
         for (size_t i = 0; i < t.triangles.size() && !overlap; ++i)
@@ -324,7 +339,8 @@ TEST(CheckerParts, WorkPerVertexStaysFlat) {
                 t = together({generate("islands", 1, n)});
             } else {  // k long rectangles on top of each other: the sweep holds 2k edges at once
                 std::vector<Polygon> stack;
-                for (size_t k = 0; k < n / 4; ++k) stack.push_back(part(box(k % 7, 2.0 * k, 1000, 2.0 * k + 1)));
+                for (size_t k = 0; k < n / 4; ++k)
+                    stack.push_back(part(box(k % 7, 2.0 * k, 1000, 2.0 * k + 1)));
                 t = together(stack);
             }
             SweepWork w = checkerWork(t);

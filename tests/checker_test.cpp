@@ -81,7 +81,8 @@ TEST(Checker, AcceptsSquareWithHoleBothOrientations) {
     q.addRing({{2, 2}, {2, 4}, {4, 4}, {4, 2}}, false);
     const flood::Index map[8] = {0, 3, 2, 1, 4, 7, 6, 5};
     std::vector<Triangle> t;
-    for (const Triangle& tri : kSquareWithHole) t.push_back({map[tri[0]], map[tri[1]], map[tri[2]]});
+    for (const Triangle& tri : kSquareWithHole)
+        t.push_back({map[tri[0]], map[tri[1]], map[tri[2]]});
     EXPECT_TRUE(accepted(q, t));
     // Outer clockwise, hole counter-clockwise mixed.
     Polygon r;
@@ -89,7 +90,8 @@ TEST(Checker, AcceptsSquareWithHoleBothOrientations) {
     r.addRing({{2, 2}, {4, 2}, {4, 4}, {2, 4}}, false);
     const flood::Index map2[8] = {0, 3, 2, 1, 4, 5, 6, 7};
     t.clear();
-    for (const Triangle& tri : kSquareWithHole) t.push_back({map2[tri[0]], map2[tri[1]], map2[tri[2]]});
+    for (const Triangle& tri : kSquareWithHole)
+        t.push_back({map2[tri[0]], map2[tri[1]], map2[tri[2]]});
     EXPECT_TRUE(accepted(r, t));
 }
 
@@ -150,15 +152,15 @@ TEST(Checker, RejectsDegenerateTriangle) {
 TEST(Checker, RejectsOverlappingTrianglesWithCorrectCount) {
     EXPECT_TRUE(accepted(hexagon(), kHexagonFan));
     // (1, 4, 5) overlaps (0, 3, 4); count is right but boundary edge (5, 0) is never covered.
-    EXPECT_TRUE(rejected(hexagon(), {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {1, 4, 5}},
-                         "boundary-edge-missing"));
+    EXPECT_TRUE(
+        rejected(hexagon(), {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {1, 4, 5}}, "boundary-edge-missing"));
     // Same triangle twice: every edge used twice the same way.
     EXPECT_TRUE(rejected(square(), {{0, 1, 2}, {0, 1, 2}}, "edge-used-twice"));
 }
 
 TEST(Checker, RejectsBoundaryEdgeMissing) {
-    EXPECT_TRUE(rejected(hexagon(), {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {2, 4, 5}},
-                         "boundary-edge-missing"));
+    EXPECT_TRUE(
+        rejected(hexagon(), {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {2, 4, 5}}, "boundary-edge-missing"));
 }
 
 TEST(Checker, RejectsBoundaryEdgeFromOutside) {
@@ -169,25 +171,25 @@ TEST(Checker, RejectsBoundaryEdgeFromOutside) {
 }
 
 TEST(Checker, RejectsEdgeUsedTwiceSameWay) {
-    EXPECT_TRUE(rejected(hexagon(), {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 3, 5}},
-                         "edge-used-twice"));
+    EXPECT_TRUE(
+        rejected(hexagon(), {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {0, 3, 5}}, "edge-used-twice"));
 }
 
 TEST(Checker, RejectsUnmatchedInteriorEdge) {
     // Three ears plus the overlapping middle triangle (1, 3, 5): every boundary edge once, no
     // directed edge twice, count right, but diagonal (2, 0) has no twin.
     EXPECT_TRUE(accepted(hexagon(), {{0, 1, 2}, {2, 3, 4}, {4, 5, 0}, {0, 2, 4}}));
-    EXPECT_TRUE(rejected(hexagon(), {{0, 1, 2}, {2, 3, 4}, {4, 5, 0}, {1, 3, 5}},
-                         "unmatched-edge"));
+    EXPECT_TRUE(
+        rejected(hexagon(), {{0, 1, 2}, {2, 3, 4}, {4, 5, 0}, {1, 3, 5}}, "unmatched-edge"));
 }
 
 TEST(Checker, RejectsCrossingDiagonals) {
     // Diagonals 1-3 and 5-1 cross 2-4, 4-0 and 0-2: all boundary edges covered once.
-    EXPECT_TRUE(rejected(hexagon(), {{0, 1, 2}, {2, 3, 4}, {4, 5, 0}, {1, 3, 5}},
-                         "unmatched-edge"));
+    EXPECT_TRUE(
+        rejected(hexagon(), {{0, 1, 2}, {2, 3, 4}, {4, 5, 0}, {1, 3, 5}}, "unmatched-edge"));
     // Diagonals 0-3 and 1-4 (and 2-4) cross; the count is right, edge (4, 5) is lost.
-    EXPECT_TRUE(rejected(hexagon(), {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {0, 3, 5}},
-                         "boundary-edge-missing"));
+    EXPECT_TRUE(
+        rejected(hexagon(), {{0, 1, 4}, {1, 2, 4}, {2, 3, 4}, {0, 3, 5}}, "boundary-edge-missing"));
     // A square split along both diagonals at once.
     EXPECT_TRUE(rejected(square(), {{0, 1, 2}, {1, 2, 3}}, "edge-used-twice"));
     EXPECT_TRUE(rejected(square(), {{0, 1, 2}, {1, 3, 0}}, "edge-used-twice"));
@@ -243,7 +245,8 @@ TEST(Checker, MillionTrianglesAtScale) {
 TEST(Checker, SplitsBoundaryEdgesAtTJunctions) {
     Polygon p = square4();
     p.addRing({{2, 0}, {3, 1}, {1, 1}}, false);
-    const std::vector<Triangle> t = {{0, 4, 6}, {4, 1, 5}, {1, 2, 5}, {5, 2, 3}, {5, 3, 6}, {6, 3, 0}};
+    const std::vector<Triangle> t = {{0, 4, 6}, {4, 1, 5}, {1, 2, 5},
+                                     {5, 2, 3}, {5, 3, 6}, {6, 3, 0}};
     EXPECT_TRUE(rejected(p, t, "triangle-count"));  // without the split: n + 2h - 2 = 7 expected
     p.splits = {{0, 4}};
     EXPECT_TRUE(accepted(p, t));
@@ -269,7 +272,9 @@ TEST(Checker, PointHolesMustBeUsed) {
 // rejection above, by rule. Rule 7 (area) is implied by rules 3-6, so no input reaches it.
 TEST(Checker, ReportsTheFailedRule) {
     using flood::CheckRule;
-    auto ruleOf = [](const Polygon& p, const std::vector<Triangle>& t) { return checkTriangulation(p, t).rule; };
+    auto ruleOf = [](const Polygon& p, const std::vector<Triangle>& t) {
+        return checkTriangulation(p, t).rule;
+    };
     Polygon outerPoint;
     outerPoint.addRing({{1, 1}}, true);
     EXPECT_EQ(ruleOf(outerPoint, {}), CheckRule::Rings);
@@ -284,14 +289,17 @@ TEST(Checker, ReportsTheFailedRule) {
     EXPECT_EQ(ruleOf(two, {{0, 1, 6}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}}), CheckRule::PartsAndCount);
     EXPECT_EQ(ruleOf(square(), {{0, 2, 1}, {0, 2, 3}}), CheckRule::CounterClockwise);
     EXPECT_EQ(ruleOf(square(), {{0, 1, 2}, {0, 1, 2}}), CheckRule::DistinctEdges);
-    EXPECT_EQ(ruleOf(hexagon(), {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {2, 4, 5}}), CheckRule::BoundaryEdges);
+    EXPECT_EQ(ruleOf(hexagon(), {{0, 1, 2}, {0, 2, 3}, {0, 3, 4}, {2, 4, 5}}),
+              CheckRule::BoundaryEdges);
     std::vector<Triangle> fromOutside = kSquareWithHole;
     fromOutside[7] = {4, 5, 6};
     EXPECT_EQ(ruleOf(squareWithHole(), fromOutside), CheckRule::BoundaryEdges);
-    EXPECT_EQ(ruleOf(hexagon(), {{0, 1, 2}, {2, 3, 4}, {4, 5, 0}, {1, 3, 5}}), CheckRule::InteriorTwins);
+    EXPECT_EQ(ruleOf(hexagon(), {{0, 1, 2}, {2, 3, 4}, {4, 5, 0}, {1, 3, 5}}),
+              CheckRule::InteriorTwins);
     Polygon twice;  // two identical parts, each triangulated alone: only rule 8 can tell
     twice.addRing({{0, 0}, {2, 0}, {2, 2}, {0, 2}}, true);
     twice.addRing({{0, 0}, {2, 0}, {2, 2}, {0, 2}}, true);
-    EXPECT_EQ(ruleOf(twice, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}}), CheckRule::PartsDisjoint);
+    EXPECT_EQ(ruleOf(twice, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}}),
+              CheckRule::PartsDisjoint);
     EXPECT_EQ(ruleOf(square(), {{0, 1, 2}, {0, 2, 3}}), CheckRule::None);
 }

@@ -24,7 +24,8 @@ TEST(CliExactCheck, WhatTheCheckCatchesGoesUnnoticedWithoutIt) {
     const std::string in = sourcePath("polygons/invalid/checker-rejects.json");
     RunResult checked = runCli("triangulate --no-validate " + in + " -o /dev/null");
     EXPECT_EQ(checked.code, 6) << checked.out;
-    RunResult unchecked = runCli("triangulate --no-validate --no-exact-check " + in + " -o /dev/null");
+    RunResult unchecked =
+        runCli("triangulate --no-validate --no-exact-check " + in + " -o /dev/null");
     EXPECT_EQ(unchecked.code, 0) << unchecked.out;
     EXPECT_EQ(unchecked.out.find("checker"), std::string::npos) << unchecked.out;
 }

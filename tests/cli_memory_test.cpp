@@ -19,7 +19,8 @@ constexpr double kBytesPerVertex = 120;
 
 // Peak resident kilobytes of `flood ARGS`, or -1 when it failed.
 long peakKb(const std::string& args) {
-    auto r = runShell("/usr/bin/time -f 'peak %M' " + std::string(FLOOD_CLI) + " " + args + " 2>&1 >/dev/null");
+    auto r = runShell("/usr/bin/time -f 'peak %M' " + std::string(FLOOD_CLI) + " " + args +
+                      " 2>&1 >/dev/null");
     size_t at = r.out.rfind("peak ");
     if (r.code != 0 || at == std::string::npos) return -1;
     return std::stol(r.out.substr(at + 5));

@@ -31,7 +31,9 @@ RunResult run(const std::string& args) { return runCli(args); }
 
 std::string src(const std::string& rel) { return std::string(FLOOD_SOURCE_DIR) + "/" + rel; }
 
-bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool has(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
 
 }  // namespace
 
@@ -44,7 +46,8 @@ TEST(Cli, InvalidInputsGiveTheirExitCodeAndMessage) {
             continue;
         ++rows;
         for (const char* cmd : {"triangulate", "trace", "transcript", "verify"}) {
-            RunResult r = run(std::string(cmd) + " " + src(std::string("polygons/invalid/") + c.file));
+            RunResult r =
+                run(std::string(cmd) + " " + src(std::string("polygons/invalid/") + c.file));
             EXPECT_EQ(r.code, c.code) << cmd << " " << c.file << ": " << r.out;
             EXPECT_TRUE(has(r.out, c.message)) << cmd << " " << c.file << ": " << r.out;
             EXPECT_FALSE(has(r.out, "\"triangles\"")) << "no output for invalid input: " << c.file;
@@ -156,7 +159,7 @@ TEST(Cli, StdoutThatCannotBeWrittenIsAnError) {
     }
     // A failing command keeps its own exit code and still reports the lost output.
     RunResult bad = runShell(std::string(FLOOD_CLI) + " verify " +
-                          src("polygons/invalid/zero-area.json") + " 2>&1 >/dev/full");
+                             src("polygons/invalid/zero-area.json") + " 2>&1 >/dev/full");
     EXPECT_EQ(bad.code, 4) << bad.out;
 }
 
@@ -212,7 +215,8 @@ TEST(Cli, FileSizeLimitLeavesTheOldOutputByteIdentical) {
         std::string err;
         int code = runUnderFileSizeLimit(args, old.size() / 2, err);
         EXPECT_EQ(code, 8) << args[0] << ": " << err;
-        EXPECT_TRUE(has(err, out.string() + ": cannot write: File too large")) << args[0] << ": " << err;
+        EXPECT_TRUE(has(err, out.string() + ": cannot write: File too large"))
+            << args[0] << ": " << err;
         EXPECT_EQ(slurp(out), old) << args[0];
         EXPECT_EQ(listing(d), std::vector<std::string>{"out.json"}) << args[0];
     }
@@ -235,8 +239,8 @@ TEST(Cli, OutputNamingTheInputIsRefused) {
     fs::create_symlink("a.json", d / "link.json");
     const std::string original = slurp(in);
     for (const char* cmd : {"shrink", "triangulate --no-validate", "trace --no-validate"})
-        for (const std::string& o : {in.string(), (d / "." / "a.json").string(),
-                                     (d / "link.json").string()}) {
+        for (const std::string& o :
+             {in.string(), (d / "." / "a.json").string(), (d / "link.json").string()}) {
             RunResult r = run(std::string(cmd) + " " + in.string() + " -o " + o);
             EXPECT_EQ(r.code, 2) << cmd << " -o " << o << ": " << r.out;
             EXPECT_TRUE(has(r.out, "-o " + o + " is the input file " + in.string() +
@@ -257,7 +261,8 @@ TEST(Cli, InputLimitsAndWhatTheInputIs) {
     { std::ofstream(d / "nul.json", std::ios::binary) << std::string(1000, '\0'); }
     RunResult nul = run("triangulate " + (d / "nul.json").string());
     EXPECT_EQ(nul.code, 3) << nul.out;
-    EXPECT_TRUE(has(nul.out, "nul.json: binary data (a NUL byte at byte 0), not GeoJSON or WKT")) << nul.out;
+    EXPECT_TRUE(has(nul.out, "nul.json: binary data (a NUL byte at byte 0), not GeoJSON or WKT"))
+        << nul.out;
     // /dev/zero has no size: reading stops at the first chunk instead of at 4 GB.
     RunResult zero = run("verify /dev/zero");
     EXPECT_EQ(zero.code, 3) << zero.out;
@@ -270,11 +275,12 @@ TEST(Cli, InputLimitsAndWhatTheInputIs) {
     for (const char* cmd : {"triangulate", "trace", "transcript", "verify", "bench", "shrink"}) {
         RunResult f = run(std::string(cmd) + " --max-input-bytes 20 " + holes);
         EXPECT_EQ(f.code, 3) << cmd << ": " << f.out;
-        EXPECT_TRUE(has(f.out, "holes.json: input is larger than the limit of 20 bytes (--max-input-bytes)"))
+        EXPECT_TRUE(has(
+            f.out, "holes.json: input is larger than the limit of 20 bytes (--max-input-bytes)"))
             << cmd << ": " << f.out;
     }
     RunResult pipe = runShell("yes '[' | head -c 100000 | " + std::string(FLOOD_CLI) +
-                           " verify --max-input-bytes 1k - 2>&1");
+                              " verify --max-input-bytes 1k - 2>&1");
     EXPECT_EQ(pipe.code, 3) << pipe.out;
     EXPECT_TRUE(has(pipe.out, "<stdin>: input is larger than the limit of 1024 bytes")) << pipe.out;
     EXPECT_EQ(run("verify --max-input-bytes 1M " + holes).code, 0);
@@ -293,9 +299,11 @@ TEST(Cli, WarningsAreCappedWithACountOfTheRest) {
     RunResult r = run("verify " + (d / "rep.wkt").string());
     EXPECT_EQ(r.code, 0) << r.out.substr(0, 2000);
     size_t lines = 0;
-    for (size_t at = 0; (at = r.out.find("repeated point dropped", at)) != std::string::npos; ++at) ++lines;
+    for (size_t at = 0; (at = r.out.find("repeated point dropped", at)) != std::string::npos; ++at)
+        ++lines;
     EXPECT_EQ(lines, 10u);
-    EXPECT_TRUE(has(r.out, "rep.wkt: \u2026 and 99,990 more warnings like these")) << r.out.substr(0, 2000);
+    EXPECT_TRUE(has(r.out, "rep.wkt: \u2026 and 99,990 more warnings like these"))
+        << r.out.substr(0, 2000);
     EXPECT_LT(r.out.size(), 2000u);
     fs::remove_all(d);
 }
@@ -312,7 +320,8 @@ TEST(Cli, LongLiteralsAreCutInMessages) {
         {"s.json", "[[[0,0],[1,0],[1,\"" + digits, "JSON syntax error"},
         {"t.json", "{\"type\":\"" + digits + "\"}", "unsupported GeoJSON type \"777"},
         {"w.wkt", "POLYGON((0 0, 1 0, 1 " + digits + "x))", "expected a number, found \"777"},
-        {"k.wkt", "POLYGON((0 0, 1 0, 1 1), Q" + digits + ")", "expected '(' or EMPTY, found \"Q777"},
+        {"k.wkt", "POLYGON((0 0, 1 0, 1 1), Q" + digits + ")",
+         "expected '(' or EMPTY, found \"Q777"},
         {"g.wkt", "P" + digits + "((0 0, 1 0, 1 1))", "unsupported WKT geometry \"P777"},
     };
     for (const Case& c : cases) {
@@ -329,8 +338,9 @@ TEST(Cli, LongLiteralsAreCutInMessages) {
 TEST(Cli, UnknownSubcommandIsNamed) {
     RunResult r = run("frobnicate x.json");
     EXPECT_EQ(r.code, 2) << r.out;
-    EXPECT_TRUE(has(r.out, "unknown subcommand 'frobnicate'; expected one of triangulate, trace, "
-                           "transcript, verify, bench, generate, shrink"))
+    EXPECT_TRUE(has(r.out,
+                    "unknown subcommand 'frobnicate'; expected one of triangulate, trace, "
+                    "transcript, verify, bench, generate, shrink"))
         << r.out;
     EXPECT_FALSE(has(r.out, "A subcommand is required")) << r.out;
 }

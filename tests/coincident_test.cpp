@@ -19,7 +19,8 @@ std::vector<std::pair<uint32_t, uint32_t>> sortedRepeats(const std::vector<Point
 
 TEST(Coincident, PairsEachLaterCopyWithTheFirst) {
     const std::vector<Point> pts = {{0, 0}, {1, 0}, {0, 0}, {2, 5}, {1, 0}, {0, 0}, {-0.0, 0.0}};
-    EXPECT_EQ(sortedRepeats(pts), (std::vector<std::pair<uint32_t, uint32_t>>{{0, 2}, {0, 5}, {0, 6}, {1, 4}}));
+    EXPECT_EQ(sortedRepeats(pts),
+              (std::vector<std::pair<uint32_t, uint32_t>>{{0, 2}, {0, 5}, {0, 6}, {1, 4}}));
     EXPECT_TRUE(sortedRepeats({{0, 0}, {0, 1}, {1, 0}}).empty());
     EXPECT_TRUE(sortedRepeats({{NAN, 0}, {NAN, 0}}).empty());  // a NaN equals nothing
 }

@@ -26,7 +26,8 @@ TEST(Conjecture, EveryInvalidFamilyIsRefusedByValidate) {
         for (uint64_t seed : {1, 2, 3, 4})
             for (size_t size : {30, 300, 3000}) {
                 Polygon p = generateInvalid(family, seed, size);
-                EXPECT_FALSE(validate(p, family).ok()) << family << " " << size << " --seed " << seed;
+                EXPECT_FALSE(validate(p, family).ok())
+                    << family << " " << size << " --seed " << seed;
                 EXPECT_FALSE(invalidFamilyDescription(family).empty());
             }
 }
@@ -35,7 +36,8 @@ TEST(Conjecture, InvalidFamiliesAreDeterministic) {
     for (const std::string& family : invalidFamilyNames()) {
         Polygon a = generateInvalid(family, 5, 100), b = generateInvalid(family, 5, 100);
         ASSERT_EQ(a.vertices.size(), b.vertices.size()) << family;
-        for (size_t i = 0; i < a.vertices.size(); ++i) EXPECT_EQ(a.vertices[i], b.vertices[i]) << family;
+        for (size_t i = 0; i < a.vertices.size(); ++i)
+            EXPECT_EQ(a.vertices[i], b.vertices[i]) << family;
     }
 }
 
@@ -43,7 +45,8 @@ TEST(Conjecture, InvalidFamiliesAreDeterministic) {
 TEST(Conjecture, WhatCatchesEachKind) {
     EXPECT_EQ(unvalidated(generateInvalid("bowtie-star", 1, 300)).caught(), Caught::Polygon);
     EXPECT_EQ(unvalidated(generateInvalid("hole-outside", 1, 300)).caught(), Caught::Polygon);
-    EXPECT_EQ(unvalidated(generateInvalid("part-inside-part", 1, 300)).caught(), Caught::Complement);
+    EXPECT_EQ(unvalidated(generateInvalid("part-inside-part", 1, 300)).caught(),
+              Caught::Complement);
     EXPECT_EQ(unvalidated(generateInvalid("self-touching", 1, 300)).caught(), Caught::Checker);
     // The touches cut the interior in two: each piece is a region the machine floods and the
     // checker accepts, and so is the complement. It slips through.
@@ -66,7 +69,8 @@ TEST(Conjecture, TheSlippingExamplesSlip) {
     for (const std::string& f : files) {
         Polygon p = readPolygonFile(f).polygon;
         EXPECT_FALSE(validate(p, f).ok()) << f;
-        EXPECT_EQ(unvalidated(p).caught(), Caught::Nothing) << f << ": " << unvalidated(p).summary();
+        EXPECT_EQ(unvalidated(p).caught(), Caught::Nothing)
+            << f << ": " << unvalidated(p).summary();
     }
 }
 

@@ -24,7 +24,8 @@ using Kind = DecisionNode::Kind;
 int expectPathOfOwnAction(const Event& e, const std::string& what) {
     const DecisionTree& t = decisionTree();
     DecisionPath p = decisionPath(e);
-    EXPECT_TRUE(p.ok()) << what << ": event " << e.step << " (" << actionName(e.action) << ") fits no path";
+    EXPECT_TRUE(p.ok()) << what << ": event " << e.step << " (" << actionName(e.action)
+                        << ") fits no path";
     if (!p.ok()) return -1;
     const DecisionNode& leaf = t.nodes[size_t(p.leaf)];
     EXPECT_EQ(p.steps.back().node, p.leaf) << what;
@@ -32,7 +33,8 @@ int expectPathOfOwnAction(const Event& e, const std::string& what) {
     if (e.action == Action::Forbidden) {
         EXPECT_EQ(leaf.kind, Kind::Stop) << what;
         EXPECT_NE(std::find(leaf.reasons.begin(), leaf.reasons.end(), e.reason), leaf.reasons.end())
-            << what << ": event " << e.step << " stops in " << leaf.label << ", not " << forbiddenName(e.reason);
+            << what << ": event " << e.step << " stops in " << leaf.label << ", not "
+            << forbiddenName(e.reason);
     }
     // The answers are the recorded ones, and the tests that ran are exactly the recorded ones.
     uint8_t ran = 0;
@@ -50,7 +52,8 @@ int expectPathOfOwnAction(const Event& e, const std::string& what) {
         EXPECT_EQ(s.ran, e.didTest(n.test)) << what << ": " << n.label;
         if (!s.ran) continue;
         ran |= uint8_t(1u << int(n.test));
-        EXPECT_EQ(s.answer, e.testResult(n.test)) << what << ": event " << e.step << ", " << n.label;
+        EXPECT_EQ(s.answer, e.testResult(n.test))
+            << what << ": event " << e.step << ", " << n.label;
     }
     EXPECT_EQ(ran, e.tested) << what << ": event " << e.step;
     return p.leaf;
@@ -74,7 +77,8 @@ void expectEveryEventFits(const Polygon& p, const std::string& what, std::set<in
 
 TEST(DecisionTree, EveryEventOfSamplesInvalidInputsAndFamiliesEndsInItsOwnAction) {
     std::vector<std::string> files = filesIn(sourcePath("polygons"), ".json");
-    for (const char* dir : {"polygons/invalid", "polygons/tutorial", "polygons/regress", "polygons/conjecture"})
+    for (const char* dir :
+         {"polygons/invalid", "polygons/tutorial", "polygons/regress", "polygons/conjecture"})
         for (const char* ext : {".json", ".wkt"})
             for (const std::string& f : filesIn(sourcePath(dir), ext)) files.push_back(f);
     std::set<int> leaves;
@@ -88,7 +92,8 @@ TEST(DecisionTree, EveryEventOfSamplesInvalidInputsAndFamiliesEndsInItsOwnAction
     }
     EXPECT_GE(runs, 30u);
     for (const std::string& family : familyNames())
-        for (size_t size : {8, 60, 400}) expectEveryEventFits(generate(family, 5, size), family, leaves);
+        for (size_t size : {8, 60, 400})
+            expectEveryEventFits(generate(family, 5, size), family, leaves);
     for (const std::string& family : invalidFamilyNames())
         expectEveryEventFits(generateInvalid(family, 5, 40), "invalid " + family, leaves);
     // Every action is met, and every forbidden state the invalid samples are named for.
@@ -101,9 +106,9 @@ TEST(DecisionTree, EveryEventOfSamplesInvalidInputsAndFamiliesEndsInItsOwnAction
         if (n.kind == Kind::Stop) stops.insert(n.reasons.begin(), n.reasons.end());
     }
     EXPECT_EQ(actions.size(), size_t(Action::Count));
-    for (Forbidden f : {Forbidden::StartNotBottom, Forbidden::CeilingAsEnd, Forbidden::JumpWrongSide,
-                        Forbidden::SpillNoBottom, Forbidden::FillOpen, Forbidden::LeftBehind,
-                        Forbidden::ShortLoop, Forbidden::NotFinite})
+    for (Forbidden f : {Forbidden::StartNotBottom, Forbidden::CeilingAsEnd,
+                        Forbidden::JumpWrongSide, Forbidden::SpillNoBottom, Forbidden::FillOpen,
+                        Forbidden::LeftBehind, Forbidden::ShortLoop, Forbidden::NotFinite})
         EXPECT_TRUE(stops.count(f)) << forbiddenName(f) << " never reached";
 }
 
@@ -150,8 +155,8 @@ TEST(DecisionTree, LayoutHasNoOverlappingBoxes) {
         for (size_t j = i + 1; j < t.nodes.size(); ++j) {
             const DecisionNode& b = t.nodes[j];
             bool apart = std::abs(a.column - b.column) >= w || std::abs(a.row - b.row) >= h;
-            EXPECT_TRUE(apart) << a.label << " (" << a.column << ", " << a.row << ") overlaps " << b.label
-                               << " (" << b.column << ", " << b.row << ")";
+            EXPECT_TRUE(apart) << a.label << " (" << a.column << ", " << a.row << ") overlaps "
+                               << b.label << " (" << b.column << ", " << b.row << ")";
         }
     }
 }
@@ -193,7 +198,8 @@ TEST(DecisionTree, PathsOfHandMadeEvents) {
     EXPECT_FALSE(decisionPath(bad).ok());
     Event spill;  // the walk met a pending gorge: WalkLanded reached but not run
     spill.action = Action::Spill;
-    mark(spill, flood::Test::SameNext, false), mark(spill, flood::Test::LeftLower, false), mark(spill, flood::Test::NextAbove, false);
+    mark(spill, flood::Test::SameNext, false), mark(spill, flood::Test::LeftLower, false),
+        mark(spill, flood::Test::NextAbove, false);
     mark(spill, flood::Test::CIsTop, true), mark(spill, flood::Test::JumpSet, false);
     p = decisionPath(spill);
     ASSERT_TRUE(p.ok());

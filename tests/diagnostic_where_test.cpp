@@ -50,7 +50,8 @@ TEST(DiagnosticWhere, AReasonWithoutALocationIsTheMessageAfterTheName) {
     Where ring1;
     ring1.ring = 1, ring1.text = "ring 1";
     // "ring 12" is not "ring 1": only a whole location is taken off.
-    EXPECT_EQ(reasonOf("a.json: ring 12: ring is empty", "a.json", ring1), "ring 12: ring is empty");
+    EXPECT_EQ(reasonOf("a.json: ring 12: ring is empty", "a.json", ring1),
+              "ring 12: ring is empty");
     EXPECT_EQ(reasonOf("a.json: ring 1: ring is empty", "a.json", ring1), "ring is empty");
 }
 
@@ -66,7 +67,8 @@ TEST(DiagnosticWhere, CheckShowsItInTheAtColumn) {
         std::string at = w.text;
         if (p.parts.size() > 1)
             for (size_t k = 0; k < p.parts.size(); ++k)
-                if (w.ring >= p.parts[k].firstRing && w.ring < p.parts[k].firstRing + p.parts[k].ringCount)
+                if (w.ring >= p.parts[k].firstRing &&
+                    w.ring < p.parts[k].firstRing + p.parts[k].ringCount)
                     at += " (part " + std::to_string(k) + ")";
         EXPECT_EQ(row["at"], at) << f;
         EXPECT_EQ(row["reason"], reasonOf(d.message, f, w)) << f;

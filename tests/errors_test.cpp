@@ -8,10 +8,10 @@
 #include "invalid_catalogue.h"
 #include "test_support.h"
 
+#include <sys/wait.h>
 #include <array>
 #include <cstdio>
 #include <string>
-#include <sys/wait.h>
 
 #include "events.h"
 
@@ -25,13 +25,16 @@ RunResult run(const std::string& args) { return runCli(args); }
 
 TEST(Errors, EveryCatalogueEntryGivesItsExitCodeAndMessage) {
     for (const CatalogueRow& row : kInvalidCatalogue) {
-        std::string file = *row.file ? std::string(FLOOD_SOURCE_DIR) + "/polygons/invalid/" + row.file : "";
+        std::string file =
+            *row.file ? std::string(FLOOD_SOURCE_DIR) + "/polygons/invalid/" + row.file : "";
         RunResult r = run(std::string(row.args) + " " + file);
         EXPECT_EQ(r.code, row.code) << row.args << " " << row.file << ":\n" << r.out;
         EXPECT_NE(r.out.find(row.message), std::string::npos)
-            << row.args << " " << row.file << ": expected \"" << row.message << "\" in:\n" << r.out;
+            << row.args << " " << row.file << ": expected \"" << row.message << "\" in:\n"
+            << r.out;
         if (row.code != 0 && std::string(row.args).rfind("triangulate", 0) == 0) {
-            EXPECT_EQ(r.out.find("\"triangles\""), std::string::npos) << "no triangles on failure: " << row.file;
+            EXPECT_EQ(r.out.find("\"triangles\""), std::string::npos)
+                << "no triangles on failure: " << row.file;
         }
     }
 }
@@ -41,7 +44,8 @@ TEST(Errors, EveryCatalogueEntryGivesItsExitCodeAndMessage) {
 TEST(Errors, MachineExamplesAreCaughtByValidationFirst) {
     for (const CatalogueRow& row : kInvalidCatalogue) {
         if (row.code != 5 && row.code != 6) continue;
-        RunResult r = run(std::string("triangulate ") + FLOOD_SOURCE_DIR + "/polygons/invalid/" + row.file);
+        RunResult r =
+            run(std::string("triangulate ") + FLOOD_SOURCE_DIR + "/polygons/invalid/" + row.file);
         EXPECT_EQ(r.code, 4) << row.file << ":\n" << r.out;
     }
 }
@@ -55,7 +59,8 @@ TEST(Errors, CatalogueCoversEveryForbiddenReason) {
         if (name == "NoProgress") continue;
         bool found = false;
         for (const CatalogueRow& row : kInvalidCatalogue)
-            found |= std::string(row.message).find("forbidden transition " + name) != std::string::npos;
+            found |=
+                std::string(row.message).find("forbidden transition " + name) != std::string::npos;
         EXPECT_TRUE(found) << "no catalogue example for forbidden reason " << name;
     }
 }

@@ -99,7 +99,8 @@ TEST(Export, SequenceFilesAreNumberedToSortInOrder) {
 std::vector<uint8_t> pixelsOf(const std::vector<Rgb>& colours, size_t each) {
     std::vector<uint8_t> px;
     for (size_t i = 0; i < colours.size(); ++i)
-        for (size_t k = 0; k < (i + 1) * each; ++k) px.insert(px.end(), {colours[i][0], colours[i][1], colours[i][2], 255});
+        for (size_t k = 0; k < (i + 1) * each; ++k)
+            px.insert(px.end(), {colours[i][0], colours[i][1], colours[i][2], 255});
     return px;
 }
 
@@ -111,7 +112,8 @@ TEST(Export, PaletteIsExactWhenTheFramesHoldFewColours) {
     b.add(px.data(), px.size() / 4);
     ASSERT_EQ(b.distinct(), 256u);
     std::vector<Rgb> palette = b.build(256);
-    EXPECT_EQ(std::set<Rgb>(palette.begin(), palette.end()), std::set<Rgb>(colours.begin(), colours.end()));
+    EXPECT_EQ(std::set<Rgb>(palette.begin(), palette.end()),
+              std::set<Rgb>(colours.begin(), colours.end()));
     PaletteMap map(palette);
     std::vector<uint8_t> idx(px.size() / 4);
     map.map(px.data(), idx.size(), idx.data());
@@ -123,7 +125,8 @@ TEST(Export, PaletteKeepsTheFrequentColoursExactBeyond256) {
     // 40 flat fills (frequent) and 3000 rare anti-aliasing shades.
     std::vector<Rgb> fills, shades;
     for (int i = 0; i < 40; ++i) fills.push_back({uint8_t(6 * i), 200, uint8_t(250 - 6 * i)});
-    for (int i = 0; i < 3000; ++i) shades.push_back({uint8_t(i % 251), uint8_t(i % 13 * 19), uint8_t(i / 12)});
+    for (int i = 0; i < 3000; ++i)
+        shades.push_back({uint8_t(i % 251), uint8_t(i % 13 * 19), uint8_t(i / 12)});
     std::vector<uint8_t> px;
     for (const Rgb& s : shades) px.insert(px.end(), {s[0], s[1], s[2], 255});
     std::vector<uint8_t> flat = pixelsOf(fills, 1000);
@@ -144,7 +147,8 @@ TEST(Export, PaletteKeepsTheFrequentColoursExactBeyond256) {
         uint8_t rgba[4] = {s[0], s[1], s[2], 255}, i = 0;
         map.map(rgba, 1, &i);
         uint64_t d = 0;
-        for (int k = 0; k < 3; ++k) d += uint64_t((int(s[k]) - palette[i][k]) * (int(s[k]) - palette[i][k]));
+        for (int k = 0; k < 3; ++k)
+            d += uint64_t((int(s[k]) - palette[i][k]) * (int(s[k]) - palette[i][k]));
         worst = std::max(worst, d);
     }
     EXPECT_LT(worst, 3u * 64 * 64);
@@ -198,7 +202,8 @@ TEST(Export, SvgThroughTheExportCameraHasOneElementPerTriangle) {
     std::string text = svg.str();
     auto count = [&](const std::string& needle) {
         size_t n = 0;
-        for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1)) ++n;
+        for (size_t at = text.find(needle); at != std::string::npos; at = text.find(needle, at + 1))
+            ++n;
         return n;
     };
     const Event* e = m.currentEvent();

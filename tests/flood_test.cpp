@@ -23,10 +23,11 @@ TEST(Flood, GeneratedFamiliesAreExactValid) {
                 Polygon base = generate(family, seed, size);
                 for (int rotation = 0; rotation < 4; ++rotation) {
                     for (bool mirror : {false, true}) {
-                        Polygon p = transform(base, rotation, mirror, seed % 2 == 1, seed * 7 + size);
+                        Polygon p =
+                            transform(base, rotation, mirror, seed % 2 == 1, seed * 7 + size);
                         std::string what = family + " size " + std::to_string(size) + " seed " +
-                                           std::to_string(seed) + " rot " + std::to_string(rotation) +
-                                           (mirror ? " mirrored" : "");
+                                           std::to_string(seed) + " rot " +
+                                           std::to_string(rotation) + (mirror ? " mirrored" : "");
                         ASSERT_TRUE(validate(p, what).ok()) << what << " is not a valid polygon";
                         FloodResult r = triangulate(p);
                         ASSERT_TRUE(r.diagnostic.ok()) << what << ": " << r.diagnostic.message;
@@ -99,14 +100,17 @@ TEST(Flood, GoldenTranscripts) {
 // Each of the five actions appears where the polygon calls for it.
 TEST(Flood, ActionsAppearWhereExpected) {
     auto count = [](const Trace& t, Action a) {
-        return std::count_if(t.events.begin(), t.events.end(), [&](const Event& e) { return e.action == a; });
+        return std::count_if(t.events.begin(), t.events.end(),
+                             [&](const Event& e) { return e.action == a; });
     };
     Trace mono = record(readOrFail(sourcePath("polygons/monotone.json")));
-    EXPECT_EQ(count(mono, Action::Bridge) + count(mono, Action::Spill) + count(mono, Action::Jump), 0);
+    EXPECT_EQ(count(mono, Action::Bridge) + count(mono, Action::Spill) + count(mono, Action::Jump),
+              0);
     EXPECT_EQ(count(mono, Action::Fill), 1);
     Trace holes = record(readOrFail(sourcePath("polygons/holes.json")));
     EXPECT_EQ(count(holes, Action::Bridge), 4) << "one bridge per hole";
-    EXPECT_EQ(count(holes, Action::Spill), count(holes, Action::Jump)) << "every spill is answered by a jump";
+    EXPECT_EQ(count(holes, Action::Spill), count(holes, Action::Jump))
+        << "every spill is answered by a jump";
 }
 
 // Invalid input ends in a forbidden state (or at worst a result the checker rejects) —
@@ -139,7 +143,8 @@ TEST(Flood, InvalidPeerFixturesNeverCrashOrPassSilently) {
         // Only validation finds T-junctions (touching2): a valid input failing unvalidated
         // must have some, and must flood once they are known.
         if (!validate(rr.polygon, f).ok()) continue;
-        EXPECT_FALSE(rr.polygon.splits.empty()) << f << ": valid input that did not flood: " << r.diagnostic.message;
+        EXPECT_FALSE(rr.polygon.splits.empty())
+            << f << ": valid input that did not flood: " << r.diagnostic.message;
         expectTriangulates(rr.polygon, f);
     }
 }

@@ -96,7 +96,8 @@ TEST(Gallery, PaperFigure7ActionSequence) {
 }
 
 TEST(Gallery, WordsOfDropsNumbers) {
-    EXPECT_EQ(wordsOf("Raise 0-7, Spill; Raise, Bridge 9-10, Fill 11"), "Raise, Spill; Raise, Bridge, Fill");
+    EXPECT_EQ(wordsOf("Raise 0-7, Spill; Raise, Bridge 9-10, Fill 11"),
+              "Raise, Spill; Raise, Bridge, Fill");
 }
 
 // The small gallery polygons flood as their golden transcripts say (tests/golden_transcripts.h).
@@ -125,7 +126,8 @@ TEST(Gallery, EveryEntryExistsAndFloodsAsDescribed) {
             if (r != refused.end()) {
                 ASSERT_FALSE(t.events.empty());
                 EXPECT_EQ(t.events.back().action, Action::Forbidden);
-                EXPECT_EQ(t.events.back().reason, r->second) << forbiddenName(t.events.back().reason);
+                EXPECT_EQ(t.events.back().reason, r->second)
+                    << forbiddenName(t.events.back().reason);
                 ++checkedRefused;
             }
             continue;

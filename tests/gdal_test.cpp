@@ -69,7 +69,7 @@ fs::path Gdal::dir_;
 // Triangles as sorted corner coordinates: formats may reorder or reorient rings (Shapefile
 // stores outer rings clockwise), but the triangles, as point sets, must be the same.
 std::vector<std::array<std::pair<double, double>, 3>> geometric(const Polygon& p,
-                                                               const std::vector<Triangle>& t) {
+                                                                const std::vector<Triangle>& t) {
     std::vector<std::array<std::pair<double, double>, 3>> out;
     for (const Triangle& tri : t) {
         std::array<std::pair<double, double>, 3> c;
@@ -92,7 +92,8 @@ TEST_F(Gdal, EveryFormatGivesTheTrianglesOfTheGeoJsonSource) {
             ASSERT_TRUE(r.diagnostic.ok()) << r.diagnostic.message;
             ASSERT_TRUE(validate(r.polygon, file).ok());
             EXPECT_EQ(r.polygon.vertices.size(), expected.vertices.size());
-            FloodResult got = expectTriangulates(r.polygon, file), want = expectTriangulates(expected, name);
+            FloodResult got = expectTriangulates(r.polygon, file),
+                        want = expectTriangulates(expected, name);
             EXPECT_EQ(geometric(r.polygon, got.triangles), geometric(expected, want.triangles));
         }
     }
@@ -101,13 +102,15 @@ TEST_F(Gdal, EveryFormatGivesTheTrianglesOfTheGeoJsonSource) {
 TEST_F(Gdal, LayerFeatureAndWhereChoose) {
     const std::string two = path("two-layers.gpkg");
     shell("ogr2ogr -f GPKG " + two + " " + path("source.geojson") + " -nln first");
-    shell("ogr2ogr -update " + two + " " + path("source.geojson") + " -nln second -where \"name = 'comb'\"");
+    shell("ogr2ogr -update " + two + " " + path("source.geojson") +
+          " -nln second -where \"name = 'comb'\"");
     // Two layers and none chosen: refused, naming both.
     DatasetRead d = gdal::readFeatures(two, {});
     ASSERT_EQ(d.features.size(), 1u);
     EXPECT_EQ(d.features[0].read.diagnostic.status, Status::Malformed);
     EXPECT_NE(d.features[0].read.diagnostic.message.find("--layer (layers: first, second)"),
-              std::string::npos) << d.features[0].read.diagnostic.message;
+              std::string::npos)
+        << d.features[0].read.diagnostic.message;
     d = gdal::readFeatures(two, {"second", -1, ""});
     ASSERT_EQ(d.features.size(), 1u);
     EXPECT_EQ(d.features[0].name, "comb");
@@ -156,7 +159,8 @@ TEST_F(Gdal, CheckReportsVerdictsWithFidsAndNames) {
     // The table's ID/NAME column carries the FID.
     r = runCli("check " + path("source.gpkg") + " --where \"name = 'invalid/hole-outside'\"");
     EXPECT_EQ(r.code, 4);
-    EXPECT_NE(r.out.find("source.gpkg  0        6        8         invalid"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("source.gpkg  0        6        8         invalid"), std::string::npos)
+        << r.out;
 }
 
 // A curve is linearised by OGR; a point feature is skipped with a warning, as GeoJSON's are.
@@ -167,7 +171,8 @@ TEST_F(Gdal, CurvesAreLinearisedAndOtherGeometriesSkipped) {
     GDALDataset* ds = driver->Create(file.c_str(), 0, 0, 0, GDT_Unknown, nullptr);
     ASSERT_NE(ds, nullptr);
     OGRLayer* layer = ds->CreateLayer("shapes", nullptr, wkbUnknown, nullptr);
-    for (const char* wkt : {"CURVEPOLYGON(CIRCULARSTRING(0 0,10 10,20 0,10 -10,0 0))", "POINT(1 2)"}) {
+    for (const char* wkt :
+         {"CURVEPOLYGON(CIRCULARSTRING(0 0,10 10,20 0,10 -10,0 0))", "POINT(1 2)"}) {
         OGRGeometry* g = nullptr;
         ASSERT_EQ(OGRGeometryFactory::createFromWkt(wkt, nullptr, &g), OGRERR_NONE);
         OGRFeature* f = OGRFeature::CreateFeature(layer->GetLayerDefn());
@@ -228,7 +233,8 @@ TEST_F(Gdal, TrianglesWrittenAsGeoPackageAndFlatGeobufReadBack) {
         for (const std::string ext : {"gpkg", "fgb"}) {
             SCOPED_TRACE(name + "." + ext);
             const std::string out = path(name + "-triangles." + ext);
-            RunResult r = runCli("triangulate " + sourcePath("polygons/" + name + ".json") + " -o " + out);
+            RunResult r =
+                runCli("triangulate " + sourcePath("polygons/" + name + ".json") + " -o " + out);
             ASSERT_EQ(r.code, 0) << r.out;
             GDALDataset* ds = static_cast<GDALDataset*>(
                 GDALOpenEx(out.c_str(), GDAL_OF_VECTOR, nullptr, nullptr, nullptr));
@@ -237,7 +243,8 @@ TEST_F(Gdal, TrianglesWrittenAsGeoPackageAndFlatGeobufReadBack) {
             ASSERT_NE(layer, nullptr);
             EXPECT_EQ(size_t(layer->GetFeatureCount()), p.expectedTriangles());
             double sum = 0;
-            for (OGRFeature* f; (f = layer->GetNextFeature()) != nullptr; OGRFeature::DestroyFeature(f))
+            for (OGRFeature* f; (f = layer->GetNextFeature()) != nullptr;
+                 OGRFeature::DestroyFeature(f))
                 sum += f->GetGeometryRef()->toPolygon()->get_Area();
             GDALClose(ds);
             EXPECT_EQ(sum, area);
@@ -248,7 +255,8 @@ TEST_F(Gdal, TrianglesWrittenAsGeoPackageAndFlatGeobufReadBack) {
         RunResult r = runCli("triangulate " + sourcePath("polygons/hole.json") + " -o " +
                              path("missing/t." + ext));
         EXPECT_EQ(r.code, 8) << r.out;
-        EXPECT_EQ(r.out.rfind("error: " + path("missing/t." + ext) + ": cannot write: ", 0), 0u) << r.out;
+        EXPECT_EQ(r.out.rfind("error: " + path("missing/t." + ext) + ": cannot write: ", 0), 0u)
+            << r.out;
         EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 1) << r.out;
     }
     EXPECT_FALSE(fs::exists(path("missing")));

@@ -72,7 +72,8 @@ std::string validity(const Polygon& p) {
     std::vector<Index> partOf(p.rings.size());
     std::vector<bool> isPoint(p.rings.size());  // a hole of one vertex: a Steiner point
     for (Index pi = 0; pi < p.parts.size(); ++pi)
-        for (Index r = p.parts[pi].firstRing; r < p.parts[pi].firstRing + p.parts[pi].ringCount; ++r)
+        for (Index r = p.parts[pi].firstRing; r < p.parts[pi].firstRing + p.parts[pi].ringCount;
+             ++r)
             partOf[r] = pi, isPoint[r] = p.rings[r].count == 1 && r != p.parts[pi].firstRing;
     for (Index r = 0; r < p.rings.size(); ++r) {
         const flood::Ring& ring = p.rings[r];
@@ -90,7 +91,8 @@ std::string validity(const Polygon& p) {
         flood::ExactSum area;
         const flood::Ring& ring = p.rings[r];
         for (Index i = 0; i < ring.count; ++i)
-            area.addCross(p.vertices[ring.first + i], p.vertices[ring.first + (i + 1) % ring.count]);
+            area.addCross(p.vertices[ring.first + i],
+                          p.vertices[ring.first + (i + 1) % ring.count]);
         if (area.sign() == 0) return "ring with zero area";
         std::vector<Point> pts(p.vertices.begin() + ring.first,
                                p.vertices.begin() + ring.first + ring.count);
@@ -111,8 +113,8 @@ std::string validity(const Polygon& p) {
     for (Index r = 0; r < p.rings.size(); ++r) {
         const flood::Ring& ring = p.rings[r];
         for (Index i = 0; i < ring.count && !isPoint[r]; ++i)
-            edges.push_back({p.vertices[ring.first + i],
-                             p.vertices[ring.first + (i + 1) % ring.count], r});
+            edges.push_back(
+                {p.vertices[ring.first + i], p.vertices[ring.first + (i + 1) % ring.count], r});
     }
     for (size_t i = 0; i < edges.size(); ++i)
         for (size_t j = i + 1; j < edges.size(); ++j) {
@@ -132,7 +134,8 @@ std::string validity(const Polygon& p) {
                         touches.push_back({e.ring, f.ring});
                         continue;
                     }
-                    err << "vertex (" << s.x << ", " << s.y << ") of edge " << j << " touches edge " << i;
+                    err << "vertex (" << s.x << ", " << s.y << ") of edge " << j << " touches edge "
+                        << i;
                     return err.str();
                 }
             for (Point s : {e.a, e.b})
@@ -141,7 +144,8 @@ std::string validity(const Polygon& p) {
                         touches.push_back({e.ring, f.ring});
                         continue;
                     }
-                    err << "vertex (" << s.x << ", " << s.y << ") of edge " << i << " touches edge " << j;
+                    err << "vertex (" << s.x << ", " << s.y << ") of edge " << i << " touches edge "
+                        << j;
                     return err.str();
                 }
             if ((e.a == f.a && e.b == f.b) || (e.a == f.b && e.b == f.a)) return "repeated edge";
@@ -268,14 +272,16 @@ TEST(Generate, EveryTransformValid) {
                     size_t shift = size_t(rot * 3 + mirror + 1);
                     Polygon t = flood::transform(base, rot, mirror, reverse, shift);
                     ASSERT_EQ(t.vertices.size(), base.vertices.size());
-                    EXPECT_EQ(validity(t), "") << name << " rot " << rot << " mirror " << mirror
-                                               << " reverse " << reverse;
+                    EXPECT_EQ(validity(t), "")
+                        << name << " rot " << rot << " mirror " << mirror << " reverse " << reverse;
                     // Orientation flips exactly with mirror xor reverse.
                     flood::ExactSum a, b;
                     const flood::Ring& r = base.rings[0];
                     for (Index i = 0; i < r.count; ++i) {
-                        a.addCross(base.vertices[r.first + i], base.vertices[r.first + (i + 1) % r.count]);
-                        b.addCross(t.vertices[r.first + i], t.vertices[r.first + (i + 1) % r.count]);
+                        a.addCross(base.vertices[r.first + i],
+                                   base.vertices[r.first + (i + 1) % r.count]);
+                        b.addCross(t.vertices[r.first + i],
+                                   t.vertices[r.first + (i + 1) % r.count]);
                     }
                     EXPECT_EQ(a.sign() * b.sign(), (mirror != reverse) ? -1 : 1) << name;
                 }

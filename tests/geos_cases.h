@@ -19,7 +19,8 @@ namespace flood::testing {
 class GeosCases {
 public:
     // `samples`: polygons to mutate (the repository's sample polygons).
-    GeosCases(uint64_t seed, std::vector<Polygon> samples) : state_(seed), samples_(std::move(samples)) {}
+    GeosCases(uint64_t seed, std::vector<Polygon> samples)
+        : state_(seed), samples_(std::move(samples)) {}
 
     struct Case {
         Polygon polygon;
@@ -84,7 +85,9 @@ private:
         if (below(2)) std::reverse(r.begin(), r.end());
         return r;
     }
-    Ring box(double x0, double y0, double x1, double y1) { return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}; }
+    Ring box(double x0, double y0, double x1, double y1) {
+        return {{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}};
+    }
     Rings star(int size, size_t count, size_t holes) {
         Rings rs{starRing(0, size, count)};
         for (size_t h = 0; h < holes; ++h) rs.push_back(starRing(1, size - 1, 3 + below(2)));
@@ -119,10 +122,12 @@ private:
         if (c < d) {
             Rings island{box(c, c, d, d)};
             if (d - c >= 2 && below(2)) island = {starRing(int(c), int(d), 3 + below(4))};
-            if (d - c >= 2 && below(2)) island.push_back(box(c + 1, c + 1, d - coord(0, 1), d - coord(0, 1)));
+            if (d - c >= 2 && below(2))
+                island.push_back(box(c + 1, c + 1, d - coord(0, 1), d - coord(0, 1)));
             ps.push_back(island);
         }
-        if (below(2)) ps.push_back({box(coord(0, 10), coord(0, 10), coord(0, 10) + 1, coord(0, 10) + 1)});
+        if (below(2))
+            ps.push_back({box(coord(0, 10), coord(0, 10), coord(0, 10) + 1, coord(0, 10) + 1)});
         return fromParts(ps);
     }
     // Triangles (parts, or holes of a big square) with a common apex: they touch there, and
@@ -180,7 +185,8 @@ private:
         std::vector<Rings> ps;
         if (holes) ps.push_back({box(-1, -1, 4, 4)});
         for (size_t i = 0, k = 2 + below(3); i < k; ++i) {
-            Ring t{{coord(0, 3), coord(0, 3)}, {coord(0, 3), coord(0, 3)}, {coord(0, 3), coord(0, 3)}};
+            Ring t{
+                {coord(0, 3), coord(0, 3)}, {coord(0, 3), coord(0, 3)}, {coord(0, 3), coord(0, 3)}};
             if (holes) ps[0].push_back(t);
             else ps.push_back({t});
         }

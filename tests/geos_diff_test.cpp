@@ -97,8 +97,9 @@ TEST(GeosDiff, SameVerdictAsGeosAndAcceptedCasesTriangulate) {
         (g.valid ? valid : invalid)++;
         multi += c.polygon.parts.size() > 1;
         if (d.ok() != g.valid && ++disagreements <= 20) {  // the first 20 in full, then a count
-            ADD_FAILURE() << "case " << i << " (" << c.family << ", seed " << seed << "): flood says "
-                          << (d.ok() ? "valid" : d.message) << "; GEOS says " << g.reason << "\n"
+            ADD_FAILURE() << "case " << i << " (" << c.family << ", seed " << seed
+                          << "): flood says " << (d.ok() ? "valid" : d.message) << "; GEOS says "
+                          << g.reason << "\n"
                           << geoJson(c.polygon);
         }
         if (!g.valid && dumpDir && *dumpDir) {
@@ -112,7 +113,8 @@ TEST(GeosDiff, SameVerdictAsGeosAndAcceptedCasesTriangulate) {
             CheckResult chk = checkTriangulation(p, r.triangles);
             if (!(r.diagnostic.ok() && chk.ok) && ++badTriangulations <= 20)
                 ADD_FAILURE() << "case " << i << " (" << c.family << "): " << r.diagnostic.message
-                              << " " << chk.reason << "\n" << geoJson(c.polygon);
+                              << " " << chk.reason << "\n"
+                              << geoJson(c.polygon);
         }
     }
     std::cout << "[ GEOS DIFF ] seed " << seed << ": " << count << " cases, " << valid

@@ -32,7 +32,8 @@ public:
             std::vector<GEOSGeometry*> holes;
             for (Index r = part.firstRing + 1; r < part.firstRing + part.ringCount; ++r)
                 holes.push_back(ring(p, p.rings[r]));
-            polys.push_back(GEOSGeom_createPolygon_r(h_, shell, holes.data(), unsigned(holes.size())));
+            polys.push_back(
+                GEOSGeom_createPolygon_r(h_, shell, holes.data(), unsigned(holes.size())));
         }
         GEOSGeometry* g = polys.size() == 1
                               ? polys[0]

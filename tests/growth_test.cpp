@@ -48,8 +48,8 @@ double workPerVertex(Polygon p, const std::string& name) {
 }
 
 // Runs make(size) for size = base, 10 base, 100 base (up to maxN()) and checks the growth.
-void expectLinear(const std::string& name, const std::function<Polygon(size_t)>& make, double factor,
-                  size_t base = 1000) {
+void expectLinear(const std::string& name, const std::function<Polygon(size_t)>& make,
+                  double factor, size_t base = 1000) {
     double first = 0;
     for (size_t size = base; size <= 100 * base && size <= maxN(); size *= 10) {
         double w = workPerVertex(make(size), name + " at " + std::to_string(size));
@@ -72,7 +72,8 @@ constexpr double kFactor = 2.0;
 // collinear were left out while the sag tree visited O(sqrt S) boxes per search on them).
 TEST(Growth, GeneratedFamiliesWorkPerVertexIsLinear) {
     for (const std::string& family : familyNames())
-        expectLinear(family, [&](size_t n) { return generate(family, 7, n); }, kFactor);
+        expectLinear(
+            family, [&](size_t n) { return generate(family, 7, n); }, kFactor);
 }
 
 // k triangular holes through one point, in disjoint wedges around it: the loops merge there
@@ -93,7 +94,9 @@ Polygon ringsThroughOnePoint(size_t k) {
 
 // k = 10^2, 10^3, 10^4 rings. The merge at the point sorts its 2k passages: O(k log k).
 TEST(Growth, RingsThroughOnePointAreLinear) {
-    expectLinear("rings through one point", [](size_t n) { return ringsThroughOnePoint(n / 3); }, kFactor, 300);
+    expectLinear(
+        "rings through one point", [](size_t n) { return ringsThroughOnePoint(n / 3); }, kFactor,
+        300);
 }
 
 // k separate unit squares in a grid (a MultiPolygon of k parts, one sag-free part each):
@@ -109,7 +112,8 @@ Polygon gridOfSquares(size_t k) {
 }
 
 TEST(Growth, ManySmallPartsAreLinear) {
-    expectLinear("grid of squares", [](size_t n) { return gridOfSquares(n / 4); }, kFactor);
+    expectLinear(
+        "grid of squares", [](size_t n) { return gridOfSquares(n / 4); }, kFactor);
 }
 
 }  // namespace

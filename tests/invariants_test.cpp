@@ -38,19 +38,21 @@ TEST(Invariants, NoneBrokenOnValidInput) {
                 Trace t = record(p);
                 ASSERT_TRUE(t.diagnostic.ok()) << family;
                 std::vector<Violation> v = checkInvariants(t);
-                ASSERT_TRUE(v.empty()) << family << " size " << size << " seed " << seed << ", step " << v[0].step
-                                       << ": " << invariantName(v[0].which) << ": " << v[0].detail;
+                ASSERT_TRUE(v.empty())
+                    << family << " size " << size << " seed " << seed << ", step " << v[0].step
+                    << ": " << invariantName(v[0].which) << ": " << v[0].detail;
                 ++runs, steps += t.events.size();
             }
     for (const char* dir : {"polygons", "polygons/regress", "polygons/conjecture"})
         for (const std::string& f : filesIn(sourcePath(dir), ".json")) {
             ReadResult r = readPolygonFile(f);
-            if (!r.diagnostic.ok() || !validate(r.polygon, f).ok()) continue;  // kept as invalid input
+            if (!r.diagnostic.ok() || !validate(r.polygon, f).ok())
+                continue;  // kept as invalid input
             Trace t = record(r.polygon);
             ASSERT_TRUE(t.diagnostic.ok()) << f;
             std::vector<Violation> v = checkInvariants(t);
-            ASSERT_TRUE(v.empty()) << f << ", step " << v[0].step << ": " << invariantName(v[0].which) << ": "
-                                   << v[0].detail;
+            ASSERT_TRUE(v.empty()) << f << ", step " << v[0].step << ": "
+                                   << invariantName(v[0].which) << ": " << v[0].detail;
             ++runs;
         }
     EXPECT_GT(runs, 400u);
@@ -101,7 +103,8 @@ TEST(Invariants, UsuallyBrokenBeforeTheMachineStopsOnInvalidFamilies) {
     }
     std::printf("  all invalid families: %zu/%zu\n", before, runs);
     EXPECT_GE(before * 3, runs);
-    for (const char* family : {"vertex-on-own-edge", "hole-crossing-outer", "parts-crossing", "part-inside-part"})
+    for (const char* family :
+         {"vertex-on-own-edge", "hole-crossing-outer", "parts-crossing", "part-inside-part"})
         for (uint64_t seed = 0; seed < 4; ++seed) {
             Trace t = record(generateInvalid(family, seed, 200));
             std::vector<Violation> v = checkInvariants(t);
@@ -118,7 +121,8 @@ TEST(Invariants, TamperedLogsAreCaught) {
         Trace t = good;  // a triangle turned clockwise
         uint32_t k = 0;
         while (t.events[k].triangleCount == 0) ++k;
-        std::swap(t.triangles[t.events[k].firstTriangle][0], t.triangles[t.events[k].firstTriangle][1]);
+        std::swap(t.triangles[t.events[k].firstTriangle][0],
+                  t.triangles[t.events[k].firstTriangle][1]);
         std::vector<Violation> v = checkInvariants(t);
         ASSERT_FALSE(v.empty());
         EXPECT_EQ(v[0].which, Invariant::TrianglesCounterClockwise);
@@ -149,7 +153,8 @@ TEST(Invariants, WorkIsLinearInTheTrace) {
             double events = double(t.events.size());
             perEvent[i++] = double(work().orientCalls + work().invariantSteps) / events;
         }
-        std::printf("  %-14s work per event: %.1f at 2000, %.1f at 16000\n", family, perEvent[0], perEvent[1]);
+        std::printf("  %-14s work per event: %.1f at 2000, %.1f at 16000\n", family, perEvent[0],
+                    perEvent[1]);
         EXPECT_LT(perEvent[1], 2000) << family;
         // Eight times the vertices: an O(n^1.5) check would cost 2.8 times as much per event.
         EXPECT_LT(perEvent[1], 2 * perEvent[0]) << family;

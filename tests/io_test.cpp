@@ -3,13 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <limits>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
-#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "checker.h"
@@ -52,9 +52,10 @@ TEST(IoRead, PointHoles) {
 }
 
 TEST(IoRead, RingArrayAndClosingPointAndDuplicates) {
-    ReadResult r = parsePolygon("[[[0,0],[10,0],[10,0],[10,10],[0,10],[0,0]],"
-                                "[[2,2],[2,4],[4,4],[4,2]]]",
-                                "t.json");
+    ReadResult r = parsePolygon(
+        "[[[0,0],[10,0],[10,0],[10,10],[0,10],[0,0]],"
+        "[[2,2],[2,4],[4,4],[4,2]]]",
+        "t.json");
     ASSERT_TRUE(r.diagnostic.ok()) << r.diagnostic.message;
     ASSERT_EQ(r.polygon.rings.size(), 2u);
     EXPECT_EQ(r.polygon.rings[0].count, 4u);  // duplicate and closing point dropped
@@ -66,12 +67,13 @@ TEST(IoRead, RingArrayAndClosingPointAndDuplicates) {
 }
 
 TEST(IoRead, GeoJsonKinds) {
-    ReadResult a = parsePolygon(
-        R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,0]]]})", "a");
+    ReadResult a =
+        parsePolygon(R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1],[0,0]]]})", "a");
     ASSERT_TRUE(a.diagnostic.ok()) << a.diagnostic.message;
     EXPECT_EQ(a.polygon.vertices.size(), 3u);
     ReadResult m = parsePolygon(R"({"type":"MultiPolygon","coordinates":[
-        [[[0,0],[1,0],[1,1]]], [[[5,5],[6,5],[6,6]],[[5.1,5.05],[5.2,5.05],[5.2,5.1]]]]})", "m");
+        [[[0,0],[1,0],[1,1]]], [[[5,5],[6,5],[6,6]],[[5.1,5.05],[5.2,5.05],[5.2,5.1]]]]})",
+                                "m");
     ASSERT_TRUE(m.diagnostic.ok()) << m.diagnostic.message;
     EXPECT_EQ(m.polygon.parts.size(), 2u);
     EXPECT_EQ(m.polygon.rings.size(), 3u);
@@ -90,11 +92,13 @@ TEST(IoRead, GeoJsonKinds) {
 }
 
 TEST(IoRead, Wkt) {
-    ReadResult r = parsePolygon("polygon ((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 2 4, 4 4, 2 2))", "w");
+    ReadResult r =
+        parsePolygon("polygon ((0 0, 10 0, 10 10, 0 10, 0 0), (2 2, 2 4, 4 4, 2 2))", "w");
     ASSERT_TRUE(r.diagnostic.ok()) << r.diagnostic.message;
     EXPECT_EQ(r.polygon.rings.size(), 2u);
     EXPECT_EQ(r.polygon.rings[0].count, 4u);
-    ReadResult m = parsePolygon("MULTIPOLYGON Z (((0 0 1, 1 0 1, 1 1 1)), ((5 5 0, 6 5 0, 6 6 0)))", "m");
+    ReadResult m =
+        parsePolygon("MULTIPOLYGON Z (((0 0 1, 1 0 1, 1 1 1)), ((5 5 0, 6 5 0, 6 6 0)))", "m");
     ASSERT_TRUE(m.diagnostic.ok()) << m.diagnostic.message;
     EXPECT_EQ(m.polygon.parts.size(), 2u);
     ReadResult n = parsePolygon("POLYGON((0 0, 1 0, inf 1, nan 2))", "n");
@@ -116,8 +120,8 @@ TEST(IoRead, WktDimensions) {
     for (const char* text :
          {"POLYGON ZM ((0 0 1 2, 4 0 1 2, 4 4 1 2, 0 4 1 2, 0 0 1 2))",
           "POLYGON ((0 0 1 2, 4 0 1 2, 4 4 1 2, 0 4 1 2, 0 0 1 2))",
-          "POLYGON M ((0 0 1, 4 0 1, 4 4 1, 0 4 1, 0 0 1))", "POLYGONZM((0 0 1 2,4 0 1 2,4 4 1 2,0 4 1 2))",
-          "polygonz ((0 0 1, 4 0 1, 4 4 1, 0 4 1))",
+          "POLYGON M ((0 0 1, 4 0 1, 4 4 1, 0 4 1, 0 0 1))",
+          "POLYGONZM((0 0 1 2,4 0 1 2,4 4 1 2,0 4 1 2))", "polygonz ((0 0 1, 4 0 1, 4 4 1, 0 4 1))",
           "MULTIPOLYGON ZM (((0 0 1 2, 4 0 1 2, 4 4 1 2, 0 4 1 2)))"}) {
         ReadResult r = parsePolygon(text, "z");
         ASSERT_TRUE(r.diagnostic.ok()) << text << ": " << r.diagnostic.message;
@@ -135,7 +139,8 @@ TEST(IoRead, WktDimensions) {
 // dropped with a warning naming its place; nothing left is "polygon has no rings", as for
 // JSON. These used to be "expected '(', found 'E'".
 TEST(IoRead, WktEmpty) {
-    ReadResult hole = parsePolygon("POLYGON((0 0,4 0,4 4,0 4,0 0), EMPTY, (1 1,1 2,2 2,1 1))", "h.wkt");
+    ReadResult hole =
+        parsePolygon("POLYGON((0 0,4 0,4 4,0 4,0 0), EMPTY, (1 1,1 2,2 2,1 1))", "h.wkt");
     ASSERT_TRUE(hole.diagnostic.ok()) << hole.diagnostic.message;
     EXPECT_EQ(hole.polygon.rings.size(), 2u);
     ASSERT_EQ(hole.warnings.size(), 1u);
@@ -155,13 +160,15 @@ TEST(IoRead, WktEmpty) {
         {"POLYGON(EMPTY)", "e:1:8: WKT: POLYGON (EMPTY): polygon has no rings"},
         {"MULTIPOLYGON EMPTY", "e:1:14: WKT: MULTIPOLYGON EMPTY: no polygon"},
         {"MULTIPOLYGON(EMPTY, (EMPTY))", "e:1:13: WKT: every polygon of the MULTIPOLYGON is EMPTY"},
-        {"POLYGON(EMPTY, (0 0, 1 0, 1 1))", "e:1:15: WKT: the outer ring is EMPTY but holes follow"},
+        {"POLYGON(EMPTY, (0 0, 1 0, 1 1))",
+         "e:1:15: WKT: the outer ring is EMPTY but holes follow"},
         {"POLYGON((0 0, 1 0, 1 1), EMPTI)", "e:1:26: WKT: expected '(' or EMPTY, found \"EMPTI\""},
     };
     for (const Case& c : bad) {
         ReadResult r = parsePolygon(c.text, "e");
         EXPECT_EQ(r.diagnostic.status, Status::Malformed) << c.text;
-        EXPECT_TRUE(contains(r.diagnostic.message, c.message)) << c.text << ": " << r.diagnostic.message;
+        EXPECT_TRUE(contains(r.diagnostic.message, c.message))
+            << c.text << ": " << r.diagnostic.message;
     }
 }
 
@@ -176,8 +183,9 @@ TEST(IoRead, EmptyArrays) {
     EXPECT_EQ(v.status, Status::Invalid);
     EXPECT_TRUE(contains(v.message, "b.json: ring 0: ring is empty")) << v.message;
     ReadResult point = parsePolygon("[[[]]]", "c.json");
-    EXPECT_TRUE(contains(point.diagnostic.message,
-                         "c.json: polygon 0 ring 0 vertex 0: coordinate is not a pair of numbers (got [])"))
+    EXPECT_TRUE(
+        contains(point.diagnostic.message,
+                 "c.json: polygon 0 ring 0 vertex 0: coordinate is not a pair of numbers (got [])"))
         << point.diagnostic.message;
 }
 
@@ -196,12 +204,14 @@ TEST(IoRead, WarningsCapped) {
 // NUL bytes are binary data, whatever else the text holds (it used to be "empty input").
 TEST(IoRead, BinaryData) {
     ReadResult z = parsePolygon(std::string(100, '\0'), "z.bin");
-    EXPECT_EQ(z.diagnostic.message, "z.bin: binary data (a NUL byte at byte 0), not GeoJSON or WKT");
+    EXPECT_EQ(z.diagnostic.message,
+              "z.bin: binary data (a NUL byte at byte 0), not GeoJSON or WKT");
     ReadResult mid = parsePolygon(std::string("[[[0,0],\0[1,0],[1,1]]]", 22), "m");
     EXPECT_TRUE(contains(mid.diagnostic.message, "m: binary data (a NUL byte at byte 8)"))
         << mid.diagnostic.message;
     std::string text;
-    Diagnostic dir = readInputFile(source("polygons"), text, kDefaultMaxInputBytes, "GeoJSON or WKT");
+    Diagnostic dir =
+        readInputFile(source("polygons"), text, kDefaultMaxInputBytes, "GeoJSON or WKT");
     EXPECT_TRUE(contains(dir.message, "polygons: is a directory, not a file")) << dir.message;
     Diagnostic cap = readInputFile(source("polygons/hole.json"), text, 10, "GeoJSON or WKT");
     EXPECT_TRUE(contains(cap.message, "hole.json: input is larger than the limit of 10 bytes"))
@@ -213,12 +223,16 @@ TEST(IoRead, BinaryData) {
 TEST(IoRead, MalformedMessages) {
     ReadResult j = parsePolygon("[[[0,0],[1,0]\n,,]]", "bad.json");
     EXPECT_EQ(j.diagnostic.status, Status::Malformed);
-    EXPECT_TRUE(contains(j.diagnostic.message, "bad.json:2:2: JSON syntax error")) << j.diagnostic.message;
+    EXPECT_TRUE(contains(j.diagnostic.message, "bad.json:2:2: JSON syntax error"))
+        << j.diagnostic.message;
     ReadResult s = parsePolygon("[[[0,0],[1,0],[1,\"a\"]]]", "s.json");
     EXPECT_EQ(s.diagnostic.status, Status::Malformed);
-    EXPECT_TRUE(contains(s.diagnostic.message, "s.json: polygon 0 ring 0 vertex 2")) << s.diagnostic.message;
-    ReadResult ring = parsePolygon(R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1]], 5]})", "r");
-    EXPECT_TRUE(contains(ring.diagnostic.message, "ring 1: ring is not an array")) << ring.diagnostic.message;
+    EXPECT_TRUE(contains(s.diagnostic.message, "s.json: polygon 0 ring 0 vertex 2"))
+        << s.diagnostic.message;
+    ReadResult ring =
+        parsePolygon(R"({"type":"Polygon","coordinates":[[[0,0],[1,0],[1,1]], 5]})", "r");
+    EXPECT_TRUE(contains(ring.diagnostic.message, "ring 1: ring is not an array"))
+        << ring.diagnostic.message;
     std::string deep(100000, '[');
     ReadResult d = parsePolygon(deep, "deep.json");
     EXPECT_EQ(d.diagnostic.status, Status::Malformed);
@@ -233,9 +247,9 @@ TEST(Validate, AcceptsSimpleAndTouching) {
     EXPECT_TRUE(validate(sq, "sq").ok());
     EXPECT_TRUE(sq.splits.empty());
     Polygon p = square();
-    p.addRing({{0, 0}, {2, 3}, {3, 2}}, false);   // hole touching the outer ring at a corner
+    p.addRing({{0, 0}, {2, 3}, {3, 2}}, false);  // hole touching the outer ring at a corner
     p.addRing({{5, 5}, {6, 5}, {6, 6}, {5, 6}}, false);
-    p.addRing({{6, 6}, {7, 6}, {7, 7}}, false);   // holes touching each other at a vertex
+    p.addRing({{6, 6}, {7, 6}, {7, 7}}, false);  // holes touching each other at a vertex
     Diagnostic d = validate(p, "t");
     EXPECT_TRUE(d.ok()) << d.message;
     EXPECT_TRUE(p.splits.empty());
@@ -246,10 +260,11 @@ TEST(Validate, AcceptsSimpleAndTouching) {
 TEST(Validate, AcceptsTJunctionsAndPointHoles) {
     Polygon p;
     p.addRing({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, true);
-    p.addRing({{5, 0}, {6, 1}, {4, 1}}, false);       // vertex 4 on edge 0-1
+    p.addRing({{5, 0}, {6, 1}, {4, 1}}, false);  // vertex 4 on edge 0-1
     p.addRing({{2, 5}, {3, 6}, {2, 7}, {1, 6}}, false);
-    p.addRing({{3, 6}, {10, 8}, {4, 5}}, false);      // touches ring 2 at (3, 6), ring 0 inside edge 1-2
-    p.addRing({{8, 2}}, false);                       // a Steiner point
+    p.addRing({{3, 6}, {10, 8}, {4, 5}},
+              false);            // touches ring 2 at (3, 6), ring 0 inside edge 1-2
+    p.addRing({{8, 2}}, false);  // a Steiner point
     Diagnostic d = validate(p, "t");
     ASSERT_TRUE(d.ok()) << d.message;
     ASSERT_EQ(p.splits.size(), 2u);
@@ -284,14 +299,18 @@ TEST(Validate, RejectsEachClassWithPosition) {
     };
     double nan = std::nan("");
     std::vector<InvalidCase> cases = {
-        {"nan", poly({{{0, 0}, {1, 0}, {1, nan}}}), "N: ring 0 vertex 2 (1, nan): coordinate is not a finite"},
-        {"few", poly({{{0, 0}, {1, 0}, {0, 0}, {1, 0}}}), "N: ring 0 vertex 0 (0, 0): ring has 2 distinct points"},
+        {"nan", poly({{{0, 0}, {1, 0}, {1, nan}}}),
+         "N: ring 0 vertex 2 (1, nan): coordinate is not a finite"},
+        {"few", poly({{{0, 0}, {1, 0}, {0, 0}, {1, 0}}}),
+         "N: ring 0 vertex 0 (0, 0): ring has 2 distinct points"},
         {"zero", poly({{{0, 0}, {1, 1}, {2, 2}}}), "ring 0 vertex 0 (0, 0): ring has zero area"},
-        {"cross", poly({{{0, 0}, {10, 10}, {10, 0}, {0, 12}}}), "ring 0 vertex 0 (0, 0): edge ring 0 edge 0-1"},
+        {"cross", poly({{{0, 0}, {10, 10}, {10, 0}, {0, 12}}}),
+         "ring 0 vertex 0 (0, 0): edge ring 0 edge 0-1"},
         {"on own edge", poly({{{0, 0}, {10, 0}, {10, 10}, {6, 3}, {5, 0}, {4, 3}, {0, 10}}}),
-         "ring 0 vertex 4 (5, 0): the ring touches itself here: the vertex lies on its own edge ring 0 edge 0-1"},
-        {"T-junction crossing", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{5, 0}, {6, 1}, {4, -2}}}),
-         "cross"},
+         "ring 0 vertex 4 (5, 0): the ring touches itself here: the vertex lies on its own edge "
+         "ring 0 edge 0-1"},
+        {"T-junction crossing",
+         poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{5, 0}, {6, 1}, {4, -2}}}), "cross"},
         {"point on edge", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{5, 0}}}),
          "ring 1 vertex 0 (5, 0): point hole lies on edge ring 0 edge 0-1"},
         {"point on vertex", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{10, 10}}}),
@@ -303,18 +322,27 @@ TEST(Validate, RejectsEachClassWithPosition) {
          "ring has 2 distinct points, at least 3 are needed (or exactly one, a point hole)"},
         {"overlap", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{2, 0}, {4, 0}, {3, 1}}}),
          "edge ring 0 edge 0-1 (0, 0)-(10, 0)"},
-        {"overlap at shared vertex", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{0, 0}, {0, 4}, {1, 1}}}),
+        {"overlap at shared vertex",
+         poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{0, 0}, {0, 4}, {1, 1}}}),
          "overlaps collinear edge"},
         {"spike", poly({{{0, 0}, {10, 0}, {5, 0}, {5, 5}}}), "spike"},
         {"outside", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{20, 20}, {21, 20}, {21, 21}}}),
          "ring 1 vertex 0 (20, 20): hole (ring 1) lies outside its outer ring (ring 0)"},
-        {"nested holes", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{1, 1}, {9, 1}, {9, 9}, {1, 9}}, {{2, 2}, {3, 2}, {3, 3}}}),
+        {"nested holes",
+         poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+               {{1, 1}, {9, 1}, {9, 9}, {1, 9}},
+               {{2, 2}, {3, 2}, {3, 3}}}),
          "ring 2 vertex 0 (2, 2): hole (ring 2) lies inside another hole (ring 1)"},
-        {"cross at shared vertex", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{5, 5}, {6, 4}, {6, 6}}, {{5, 5}, {4, 6}, {4, 4}},
-                                         {{5, 5}, {5.5, 7}, {4.5, 7}}}),
+        {"cross at shared vertex",
+         poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+               {{5, 5}, {6, 4}, {6, 6}},
+               {{5, 5}, {4, 6}, {4, 4}},
+               {{5, 5}, {5.5, 7}, {4.5, 7}}}),
          "ok"},  // placeholder replaced below
-        {"figure eight crossing", poly({{{0, 0}, {2, 2}, {4, 4}, {0, 5}, {2, 2}, {4, 0}}}), "crosses itself at this shared vertex"},
-        {"same-orientation loop inside", poly({{{0, 0}, {10, 0}, {10, 10}, {5, 10}, {4, 8}, {6, 8}, {5, 10}, {0, 10}}}),
+        {"figure eight crossing", poly({{{0, 0}, {2, 2}, {4, 4}, {0, 5}, {2, 2}, {4, 0}}}),
+         "crosses itself at this shared vertex"},
+        {"same-orientation loop inside",
+         poly({{{0, 0}, {10, 0}, {10, 10}, {5, 10}, {4, 8}, {6, 8}, {5, 10}, {0, 10}}}),
          "crosses itself at this shared vertex"},
     };
     // Three holes fanning around one shared point without crossing: valid.
@@ -474,7 +502,8 @@ TEST(TraceIo, NonFiniteCoordinatesRoundTrip) {
     t.diagnostic = {Status::Forbidden, "forbidden transition NotFinite"};
     std::ostringstream out;
     writeTrace(out, t);
-    EXPECT_TRUE(contains(out.str(), R"([[0.0,0.0],["Infinity",0.0],[1.0,"NaN"],["-Infinity",1.0]])"))
+    EXPECT_TRUE(
+        contains(out.str(), R"([[0.0,0.0],["Infinity",0.0],[1.0,"NaN"],["-Infinity",1.0]])"))
         << out.str();
     Trace back;
     Diagnostic d = parseTrace(out.str(), "t.jsonl", back);
@@ -485,15 +514,16 @@ TEST(TraceIo, NonFiniteCoordinatesRoundTrip) {
     EXPECT_EQ(back.polygon.vertices[3].x, -inf);
     std::string text = out.str();
     text.replace(text.find("\"NaN\""), 5, "\"nan\"");
-    EXPECT_TRUE(contains(parseTrace(text, "t", back).message, "t:1: vertex 2 is not a pair of numbers"));
+    EXPECT_TRUE(
+        contains(parseTrace(text, "t", back).message, "t:1: vertex 2 is not a pair of numbers"));
 }
 
 // A long literal in a trace is cut in the message too.
 TEST(TraceIo, LongLiteralsCut) {
     Trace back;
     std::string junk(1000000, 'q');
-    for (const std::string& text : {"{\"format\":\"" + junk, "{\"format\":" + junk + "}",
-                                    "[\"" + junk + "\"]"}) {
+    for (const std::string& text :
+         {"{\"format\":\"" + junk, "{\"format\":" + junk + "}", "[\"" + junk + "\"]"}) {
         Diagnostic d = parseTrace(text, "t", back);
         EXPECT_EQ(d.status, Status::Malformed);
         EXPECT_LT(d.message.size(), 400u) << d.message.substr(0, 400);

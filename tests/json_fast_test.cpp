@@ -30,16 +30,15 @@ std::optional<ReadResult> fast(const std::string& text) {
 }
 
 // Bit for bit: -0.0 is not 0.0 here.
-bool samePoint(Point a, Point b) {
-    return std::memcmp(&a, &b, sizeof a) == 0;
-}
+bool samePoint(Point a, Point b) { return std::memcmp(&a, &b, sizeof a) == 0; }
 
 void expectSame(const ReadResult& a, const ReadResult& b, const std::string& what) {
     ASSERT_EQ(a.diagnostic.ok(), b.diagnostic.ok()) << what << ": " << b.diagnostic.message;
     EXPECT_EQ(a.diagnostic.message, b.diagnostic.message) << what;
     ASSERT_EQ(a.polygon.vertices.size(), b.polygon.vertices.size()) << what;
     for (size_t i = 0; i < a.polygon.vertices.size(); ++i)
-        ASSERT_TRUE(samePoint(a.polygon.vertices[i], b.polygon.vertices[i])) << what << " vertex " << i;
+        ASSERT_TRUE(samePoint(a.polygon.vertices[i], b.polygon.vertices[i]))
+            << what << " vertex " << i;
     ASSERT_EQ(a.polygon.rings.size(), b.polygon.rings.size()) << what;
     for (size_t r = 0; r < a.polygon.rings.size(); ++r) {
         EXPECT_EQ(a.polygon.rings[r].first, b.polygon.rings[r].first) << what;
@@ -78,23 +77,29 @@ TEST(JsonFast, ReadsRingArraysAndGeoJsonAsTheTreeReaderDoes) {
     // "-0" is an integer to the tree reader: +0.0; "-0.0" stays -0.0.
     expectFast("[[[-0,-0.0],[4,0],[4,4]]]");
     // Digits beyond a double, tiny and huge values, integers past 2^53 and 2^64.
-    expectFast("[[[0.1000000000000000055511151231257827,1e-300],[9007199254740993,"
-               "18446744073709551617],[-4.9e-324,1.7976931348623157e308]]]");
-    expectFast("[[[0.30000000000000001665334536938,2.2250738585072011e-308],[7.3177701707893310e+15,"
-               "-123456789012345678901234567890e-10],[1e23,8.98846567431158e307]]]");
+    expectFast(
+        "[[[0.1000000000000000055511151231257827,1e-300],[9007199254740993,"
+        "18446744073709551617],[-4.9e-324,1.7976931348623157e308]]]");
+    expectFast(
+        "[[[0.30000000000000001665334536938,2.2250738585072011e-308],[7.3177701707893310e+15,"
+        "-123456789012345678901234567890e-10],[1e23,8.98846567431158e307]]]");
     // Members after x and y (z, m) are ignored but must be valid.
     expectFast("[[[0,0,7],[4,0,\"z\",{\"a\":[null,true]}],[4,4,1.5]]]");
     expectFast("{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[4,0],[4,4]]]}");
-    expectFast("{\"bbox\":[0,0,4,4],\"type\":\"MultiPolygon\",\"crs\":{\"x\":\"\\u00e9\"},"
-               "\"coordinates\":[[[[0,0],[4,0],[4,4]]],[[[9,9],[8,9],[9,8]]]]}");
-    expectFast("{\"t\\u0079pe\":\"Feature\",\"properties\":{\"name\":\"a\\\"b\",\"n\":[1,{}]},"
-               "\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[4,0],[4,4]]]}}");
-    expectFast("{\"type\":\"FeatureCollection\",\"features\":[{\"type\":\"Feature\",\"geometry\":"
-               "{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[4,0],[4,4]]]},\"properties\":null},"
-               "{\"geometry\":{\"type\":\"MultiPolygon\",\"coordinates\":[[[[5,5],[6,5],[6,6]]]]}}]}");
-    expectFast("{\"type\":\"GeometryCollection\",\"geometries\":[{\"type\":\"Polygon\","
-               "\"coordinates\":[[[0,0],[4,0],[4,4]]]},{\"type\":\"Feature\",\"geometry\":"
-               "{\"type\":\"Polygon\",\"coordinates\":[[[5,5],[6,5],[6,6]]]}}]}");
+    expectFast(
+        "{\"bbox\":[0,0,4,4],\"type\":\"MultiPolygon\",\"crs\":{\"x\":\"\\u00e9\"},"
+        "\"coordinates\":[[[[0,0],[4,0],[4,4]]],[[[9,9],[8,9],[9,8]]]]}");
+    expectFast(
+        "{\"t\\u0079pe\":\"Feature\",\"properties\":{\"name\":\"a\\\"b\",\"n\":[1,{}]},"
+        "\"geometry\":{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[4,0],[4,4]]]}}");
+    expectFast(
+        "{\"type\":\"FeatureCollection\",\"features\":[{\"type\":\"Feature\",\"geometry\":"
+        "{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[4,0],[4,4]]]},\"properties\":null},"
+        "{\"geometry\":{\"type\":\"MultiPolygon\",\"coordinates\":[[[[5,5],[6,5],[6,6]]]]}}]}");
+    expectFast(
+        "{\"type\":\"GeometryCollection\",\"geometries\":[{\"type\":\"Polygon\","
+        "\"coordinates\":[[[0,0],[4,0],[4,4]]]},{\"type\":\"Feature\",\"geometry\":"
+        "{\"type\":\"Polygon\",\"coordinates\":[[[5,5],[6,5],[6,6]]]}}]}");
 }
 
 TEST(JsonFast, ReadsEveryGeneratedFamilyAndSample) {
@@ -103,7 +108,8 @@ TEST(JsonFast, ReadsEveryGeneratedFamilyAndSample) {
         writePolygonJson(text, generate(family, 3, 300));
         expectFast(text.str());
     }
-    for (const std::string& path : flood::testing::filesIn(flood::testing::sourcePath("polygons"), ".json")) {
+    for (const std::string& path :
+         flood::testing::filesIn(flood::testing::sourcePath("polygons"), ".json")) {
         std::string text = flood::testing::slurp(path);
         std::optional<ReadResult> f = fast(text);
         if (f) expectSame(*f, parseJsonTree(text, path), path);
@@ -132,13 +138,16 @@ TEST(JsonFast, DeclinesWhatOnlyTheTreeReaderCanExplain) {
     expectDeclined("[]");
     expectDeclined("[[[[[0,0]]]]]");
     expectDeclined("{\"coordinates\":[[[0,0],[4,0],[4,4]]],\"type\":\"Polygon\"}");
-    expectDeclined("{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[4,0],[4,4]]],\"type\":\"Point\"}");
-    expectDeclined("{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[4,0],[4,4]]],"
-                   "\"coordinates\":[[[0,0],[5,0],[5,5]]]}");
+    expectDeclined(
+        "{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[4,0],[4,4]]],\"type\":\"Point\"}");
+    expectDeclined(
+        "{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[4,0],[4,4]]],"
+        "\"coordinates\":[[[0,0],[5,0],[5,5]]]}");
     expectDeclined("{\"type\":\"Point\",\"coordinates\":[0,0]}");
-    expectDeclined("{\"type\":\"FeatureCollection\",\"features\":[{\"geometry\":{\"type\":\"Point\","
-                   "\"coordinates\":[0,0]}},{\"geometry\":{\"type\":\"Polygon\",\"coordinates\":"
-                   "[[[0,0],[4,0],[4,4]]]}}]}");
+    expectDeclined(
+        "{\"type\":\"FeatureCollection\",\"features\":[{\"geometry\":{\"type\":\"Point\","
+        "\"coordinates\":[0,0]}},{\"geometry\":{\"type\":\"Polygon\",\"coordinates\":"
+        "[[[0,0],[4,0],[4,4]]]}}]}");
     expectDeclined("{\"type\":\"Feature\",\"geometry\":null}");
     // Nested deeper than the tree reader allows.
     expectDeclined("{\"type\":\"Polygon\",\"coordinates\":[[[0,0],[4,0],[4,4]]],\"p\":" +

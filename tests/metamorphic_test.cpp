@@ -33,7 +33,8 @@ bool sumIsExact(double a, double b) {
 
 // `p` with every vertex mapped by f, or nothing when f is not exact on some coordinate.
 // The T-junctions are dropped: validate() must find them again.
-std::optional<Polygon> mapped(const Polygon& p, const std::function<std::optional<Point>(Point)>& f) {
+std::optional<Polygon> mapped(const Polygon& p,
+                              const std::function<std::optional<Point>(Point)>& f) {
     Polygon q = p;
     q.splits.clear();
     for (Point& v : q.vertices) {
@@ -88,8 +89,18 @@ std::vector<Variant> variants(const Polygon& p, std::vector<std::string>& skippe
             continue;
         }
         out.push_back({s, *q, true});
-        out.push_back({s + " turned 90°", *mapped(*q, [](Point v) { return Point{-v.y, v.x}; }), false});
-        out.push_back({s + " mirrored", *mapped(*q, [](Point v) { return Point{-v.x, v.y}; }), false});
+        out.push_back({s + " turned 90°",
+                       *mapped(*q,
+                               [](Point v) {
+                                   return Point{-v.y, v.x};
+                               }),
+                       false});
+        out.push_back({s + " mirrored",
+                       *mapped(*q,
+                               [](Point v) {
+                                   return Point{-v.x, v.y};
+                               }),
+                       false});
     }
     // The shift is exact only where every coordinate + 2^40 is a double (integer families are;
     // the sin/cos ones are not): checked per coordinate, the input skipped otherwise.
@@ -97,10 +108,8 @@ std::vector<Variant> variants(const Polygon& p, std::vector<std::string>& skippe
         if (!sumIsExact(v.x, kShift) || !sumIsExact(v.y, kShift)) return std::nullopt;
         return Point{v.x + kShift, v.y + kShift};
     });
-    if (shifted)
-        out.push_back({"shifted by 2^40", *shifted, false});
-    else
-        skipped.push_back("shift by 2^40 (not exact)");
+    if (shifted) out.push_back({"shifted by 2^40", *shifted, false});
+    else skipped.push_back("shift by 2^40 (not exact)");
     return out;
 }
 
@@ -127,7 +136,8 @@ void expectSameVerdicts(const Polygon& original, const std::string& what) {
             EXPECT_TRUE(c.ok) << name << ": " << c.reason;
             EXPECT_EQ(r.triangles.size(), baseFlood.triangles.size()) << name;
         } else if (v.scaleOnly) {
-            EXPECT_EQ(r.diagnostic.status, baseFlood.diagnostic.status) << name << ": " << r.diagnostic.message;
+            EXPECT_EQ(r.diagnostic.status, baseFlood.diagnostic.status)
+                << name << ": " << r.diagnostic.message;
         }
     }
     for (const std::string& s : skipped) std::cout << "  " << what << ": skipped " << s << "\n";

@@ -16,7 +16,9 @@ using namespace flood::testing;
 
 namespace {
 
-bool has(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+bool has(const std::string& s, const std::string& part) {
+    return s.find(part) != std::string::npos;
+}
 
 // The narration of the first event of kind `a` in the run of polygons/`file`.
 std::string first(const std::string& file, Action a, Event* out = nullptr) {
@@ -87,7 +89,8 @@ TEST(Narrate, StartBridgeSpillJumpFill) {
     EXPECT_TRUE(has(spill, "is a top with no jump pointer")) << spill;
     EXPECT_TRUE(has(spill, "pending gorge")) << spill;  // around the hole onto the other half
     std::string spillToBottom = first("two-gorges.json", Action::Spill, &e);
-    EXPECT_TRUE(has(spillToBottom, "to bottom vertex " + std::to_string(e.bottom))) << spillToBottom;
+    EXPECT_TRUE(has(spillToBottom, "to bottom vertex " + std::to_string(e.bottom)))
+        << spillToBottom;
 
     std::string jump = first("hole.json", Action::Jump, &e);
     EXPECT_TRUE(has(jump, "jump pointer is set")) << jump;
@@ -156,7 +159,8 @@ std::string repeatedWord(const std::string& s) {
         return again;
     };
     for (char ch : s) {
-        if (std::isalpha(static_cast<unsigned char>(ch)) || std::isdigit(static_cast<unsigned char>(ch))) {
+        if (std::isalpha(static_cast<unsigned char>(ch)) ||
+            std::isdigit(static_cast<unsigned char>(ch))) {
             word += char(std::tolower(static_cast<unsigned char>(ch)));
             continue;
         }
@@ -191,7 +195,8 @@ TEST(Narrate, RepeatedWordFinder) {
 // samples or the generated families says a word twice in a row.
 TEST(Narrate, NoWordRepeatedOnGalleryAndSamples) {
     std::vector<std::string> files = filesIn(sourcePath("polygons"), ".json");
-    for (const std::string& f : filesIn(sourcePath("polygons/invalid"), ".json")) files.push_back(f);
+    for (const std::string& f : filesIn(sourcePath("polygons/invalid"), ".json"))
+        files.push_back(f);
     for (const std::string& f : files) {
         ReadResult r = readPolygonFile(f);
         if (!r.diagnostic.ok()) continue;  // unreadable samples have no run to narrate

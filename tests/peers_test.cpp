@@ -57,13 +57,14 @@ TEST(Peers, InvalidFixturesAreRefusedOrCleaned) {
         Diagnostic d = validate(rr.polygon, path);
         if (!d.ok()) {
             EXPECT_EQ(d.status, Status::Invalid) << name;
-            EXPECT_NE(d.message.find(name), std::string::npos) << "message names the file: " << d.message;
+            EXPECT_NE(d.message.find(name), std::string::npos)
+                << "message names the file: " << d.message;
             continue;
         }
         // Accepted after cleaning (repeated points dropped, reported as warnings): then it
         // must triangulate exactly.
-        EXPECT_FALSE(rr.warnings.empty()) << name << " is GEOS-invalid (" << verdict
-                                          << ") but was accepted without any cleaning";
+        EXPECT_FALSE(rr.warnings.empty())
+            << name << " is GEOS-invalid (" << verdict << ") but was accepted without any cleaning";
         expectTriangulates(rr.polygon, name);
     }
 }

@@ -86,7 +86,9 @@ TEST(Orient, IntegerGrid) {
             for (int bx = -2; bx <= 2; ++bx)
                 for (int by = -2; by <= 2; ++by)
                     for (int cx = -2; cx <= 2; ++cx)
-                        for (int cy = -2; cy <= 2; ++cy) expectOrient({double(ax), double(ay)}, {double(bx), double(by)}, {double(cx), double(cy)});
+                        for (int cy = -2; cy <= 2; ++cy)
+                            expectOrient({double(ax), double(ay)}, {double(bx), double(by)},
+                                         {double(cx), double(cy)});
     // Large integers where products exceed 2^53.
     const double big = 9007199254740993.0 - 1;  // 2^53
     expectOrient({big, big - 1}, {big - 2, big - 3}, {big - 4, big - 5});
@@ -114,22 +116,26 @@ TEST(Orient, HugeAndTinyCoordinates) {
 
 TEST(Orient, RandomNearlyCollinearAgainstGmp) {
     std::mt19937_64 rng(12345);
-    const int ranges[][2] = {{-10, 10}, {-1074, -1000}, {-600, -400}, {400, 600},
-                             {1000, 1023}, {-1074, 1023}, {-30, 30}};
+    const int ranges[][2] = {{-10, 10},    {-1074, -1000}, {-600, -400}, {400, 600},
+                             {1000, 1023}, {-1074, 1023},  {-30, 30}};
     for (auto& range : ranges) {
         for (int i = 0; i < 3000; ++i) {
-            Point a{randomMagnitude(rng, range[0], range[1]), randomMagnitude(rng, range[0], range[1])};
-            Point b{randomMagnitude(rng, range[0], range[1]), randomMagnitude(rng, range[0], range[1])};
+            Point a{randomMagnitude(rng, range[0], range[1]),
+                    randomMagnitude(rng, range[0], range[1])};
+            Point b{randomMagnitude(rng, range[0], range[1]),
+                    randomMagnitude(rng, range[0], range[1])};
             // c on the segment ab (rounded), then nudged by a few ulps.
             double t = std::ldexp(double(rng() % 1024), -10);
             Point c{a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
-            if (!std::isfinite(c.x) || !std::isfinite(c.y)) c = {a.x / 2 + b.x / 2, a.y / 2 + b.y / 2};
+            if (!std::isfinite(c.x) || !std::isfinite(c.y))
+                c = {a.x / 2 + b.x / 2, a.y / 2 + b.y / 2};
             int nudge = int(rng() % 5) - 2;
             for (int k = 0; k < std::abs(nudge); ++k)
                 c.y = std::nextafter(c.y, nudge > 0 ? HUGE_VAL : -HUGE_VAL);
             expectOrient(a, b, c);
             // And fully random triples of mixed magnitudes.
-            Point d{randomMagnitude(rng, range[0], range[1]), randomMagnitude(rng, range[0], range[1])};
+            Point d{randomMagnitude(rng, range[0], range[1]),
+                    randomMagnitude(rng, range[0], range[1])};
             expectOrient(a, b, d);
         }
     }

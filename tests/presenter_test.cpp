@@ -41,7 +41,8 @@ TEST(UiScale, ZoomStepsFrom50To300PercentAndBack) {
     EXPECT_EQ(s.fontPixels(), 39.f);
     EXPECT_TRUE(s.resetZoom());
     EXPECT_EQ(s.zoom(), 1.f);
-    while (s.zoomOut()) {}
+    while (s.zoomOut()) {
+    }
     EXPECT_FLOAT_EQ(s.zoom(), 0.5f);
     EXPECT_EQ(s.zoomStep(), UiScale::kMinZoomStep);
     EXPECT_FALSE(s.setZoomStep(-100));  // clamped to where it is
@@ -109,16 +110,20 @@ TEST_F(ThemeTest, LightIsALightGroundWithDarkLinesAndDarkRestoresTheDarkColours)
 TEST_F(ThemeTest, EveryDrawnColourStandsOutFromTheBackground) {
     for (Theme t : {Theme::Dark, Theme::Light}) {
         palette::setTheme(t);
-        const Rgba drawn[] = {palette::kBoundary, palette::kChain, palette::kLeft, palette::kRight,
-                              palette::kJump, palette::kDormant, palette::kCulprit,
-                              palette::kVertexNumber, palette::kWaterLevel, palette::kBridge};
+        const Rgba drawn[] = {palette::kBoundary, palette::kChain,        palette::kLeft,
+                              palette::kRight,    palette::kJump,         palette::kDormant,
+                              palette::kCulprit,  palette::kVertexNumber, palette::kWaterLevel,
+                              palette::kBridge};
         for (const Rgba& c : drawn) {
-            double d = std::abs(c.r - palette::kBackground.r) + std::abs(c.g - palette::kBackground.g) +
+            double d = std::abs(c.r - palette::kBackground.r) +
+                       std::abs(c.g - palette::kBackground.g) +
                        std::abs(c.b - palette::kBackground.b);
-            EXPECT_GT(d, 150) << palette::themeName(t) << " " << int(c.r) << "," << int(c.g) << "," << int(c.b);
+            EXPECT_GT(d, 150) << palette::themeName(t) << " " << int(c.r) << "," << int(c.g) << ","
+                              << int(c.b);
         }
         for (int a = 0; a < int(Action::Count); ++a) {
-            double d = std::abs(luminance(palette::action(Action(a))) - luminance(palette::kBackground));
+            double d =
+                std::abs(luminance(palette::action(Action(a))) - luminance(palette::kBackground));
             EXPECT_GT(d, 40) << palette::themeName(t) << " " << actionName(Action(a));
         }
     }

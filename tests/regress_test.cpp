@@ -23,14 +23,17 @@ using namespace flood::testing;
 
 namespace {
 
-bool startsWith(const std::string& s, const std::string& p) { return s.compare(0, p.size(), p) == 0; }
+bool startsWith(const std::string& s, const std::string& p) {
+    return s.compare(0, p.size(), p) == 0;
+}
 
 }  // namespace
 
 TEST(Regress, NoCrashNoHangOnRegressionInputs) {
     auto files = filesIn(sourcePath("polygons/regress"), ".json");
     ASSERT_FALSE(files.empty()) << "polygons/regress/ holds the regression inputs";
-    for (const std::string& f : filesIn(sourcePath("polygons/regress"), ".fuzz")) files.push_back(f);
+    for (const std::string& f : filesIn(sourcePath("polygons/regress"), ".fuzz"))
+        files.push_back(f);
     ShrinkOptions o;
     o.timeoutSeconds = 10;  // generous for sanitizer builds; a real hang never ends
     for (const std::string& path : files) {
@@ -38,8 +41,11 @@ TEST(Regress, NoCrashNoHangOnRegressionInputs) {
         ReadResult rr;
         if (path.size() > 5 && path.compare(path.size() - 5, 5, ".fuzz") == 0) {
             std::ifstream in(path, std::ios::binary);
-            std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-            rr.polygon = fuzzpoly::decode(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size()).polygon;
+            std::string bytes((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+            rr.polygon =
+                fuzzpoly::decode(reinterpret_cast<const uint8_t*>(bytes.data()), bytes.size())
+                    .polygon;
         } else {
             rr = readPolygonFile(path);
         }
@@ -47,13 +53,14 @@ TEST(Regress, NoCrashNoHangOnRegressionInputs) {
         bool valid = validate(rr.polygon, name).ok();
         Failure f = classify(rr.polygon, o);
         if (startsWith(name, "open-")) {
-            Failure::Kind expected = startsWith(name, "open-hang") ? Failure::Kind::Hang : Failure::Kind::Crash;
+            Failure::Kind expected =
+                startsWith(name, "open-hang") ? Failure::Kind::Hang : Failure::Kind::Crash;
             EXPECT_EQ(failureKindName(f.kind), std::string(failureKindName(expected)))
                 << name << " is a known open bug of core/flood.cpp; if it is fixed, drop the "
                 << "'open-' prefix from its name";
             std::cout << "[ KNOWN BUG ] " << name << ": still a " << failureKindName(f.kind)
-                      << " with validation skipped (validate(): "
-                      << (valid ? "valid" : "invalid") << ")\n";
+                      << " with validation skipped (validate(): " << (valid ? "valid" : "invalid")
+                      << ")\n";
             continue;
         }
         EXPECT_NE(f.kind, Failure::Kind::Crash) << name << ": " << f.message;
@@ -90,5 +97,6 @@ TEST(Regress, HugeNestingIsRefusedWithoutStackExhaustion) {
     // Exactly at the limit parses (and then fails on structure, not depth).
     std::string ok = std::string(64, '[') + std::string(64, ']');
     ReadResult r = parsePolygon(ok, "deep");
-    EXPECT_EQ(r.diagnostic.message.find("nested deeper"), std::string::npos) << r.diagnostic.message;
+    EXPECT_EQ(r.diagnostic.message.find("nested deeper"), std::string::npos)
+        << r.diagnostic.message;
 }

@@ -115,11 +115,13 @@ TEST(ReplayMemory, SteppingBackRewritesOnlyWhatChanged) {
 // loading a version can skip the prefix it shares with another.
 TEST(PrefixTree, VersionsShareTheirPrefix) {
     PrefixTree<int> tree;
-    std::vector<std::vector<int>> versions = {{1, 2, 3}, {1, 2, 3, 4, 5}, {1, 2}, {1, 2, 9}, {}, {7}};
+    std::vector<std::vector<int>> versions = {{1, 2, 3}, {1, 2, 3, 4, 5}, {1, 2}, {1, 2, 9}, {},
+                                              {7}};
     std::vector<size_t> keep = {0, 3, 2, 2, 0, 0};
     std::vector<uint32_t> heads;
     for (size_t v = 0; v < versions.size(); ++v)
-        heads.push_back(tree.store(versions[v].size(), keep[v], [&](size_t i) { return versions[v][i]; }));
+        heads.push_back(
+            tree.store(versions[v].size(), keep[v], [&](size_t i) { return versions[v][i]; }));
     EXPECT_EQ(tree.nodeCount(), 3u + 2 + 0 + 1 + 0 + 1);
     for (size_t v = 0; v < versions.size(); ++v) {
         std::vector<int> back(versions[v].size(), -1);

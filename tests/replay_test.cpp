@@ -13,7 +13,8 @@ namespace {
 bool sameState(const ReplayState& a, const ReplayState& b) {
     if (a.step != b.step || !(a.fingers == b.fingers) || a.water != b.water ||
         a.triangleCount != b.triangleCount || a.chain != b.chain || a.jumps != b.jumps ||
-        a.bridges != b.bridges || a.dormant.size() != b.dormant.size() || a.forbidden != b.forbidden)
+        a.bridges != b.bridges || a.dormant.size() != b.dormant.size() ||
+        a.forbidden != b.forbidden)
         return false;
     for (size_t i = 0; i < a.dormant.size(); ++i)
         if (a.dormant[i].id != b.dormant[i].id || a.dormant[i].chain != b.dormant[i].chain ||

@@ -48,7 +48,8 @@ TEST(RingArea, DecidesWhatDoublesCannot) {
     const double big = 0x1p40;
     Polygon flat = ring({{big, big}, {big + 1, big + 1}, {big + 2, big + 2}});
     EXPECT_EQ(ringAreaSign(flat, 0, 3), 0);
-    Polygon sliver = ring({{big, big}, {big + 2, big + 2}, {big + 1, std::nextafter(big + 1, 1e300)}});
+    Polygon sliver =
+        ring({{big, big}, {big + 2, big + 2}, {big + 1, std::nextafter(big + 1, 1e300)}});
     EXPECT_EQ(ringAreaSign(sliver, 0, 3), exactSign(sliver));
     EXPECT_NE(ringAreaSign(sliver, 0, 3), 0);
     AreaEstimate e;

@@ -45,7 +45,9 @@ uint64_t agreesWithAScan(const std::function<double(double)>& coord, uint32_t se
                 for (int e = 0; e < 2; ++e)
                     region.lines[k][e] = {coord(double(rng() % 50)), coord(double(rng() % 50))};
             auto inRegion = [&](Point p) {
-                if (p.x < region.xMin || p.x > region.xMax || p.y < region.yMin || p.y > region.yMax) return false;
+                if (p.x < region.xMin || p.x > region.xMax || p.y < region.yMin ||
+                    p.y > region.yMax)
+                    return false;
                 for (int k = 0; k < region.lineCount; ++k)
                     if (orient(region.lines[k][0], region.lines[k][1], p) <= 0) return false;
                 return true;
@@ -127,7 +129,8 @@ const auto kNoneUsed = [](uint32_t) { return false; };
 // to the left meets B's edge 9 -> 7 before the square's left side; B's ray to the right passes
 // under A and meets the square's right side, as does A's.
 TEST(SagBanks, LabelsEachSagWithTheEdgesItsRaysMeetFirst) {
-    std::vector<Point> pts = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {5, 2}, {4, 6}, {6, 6}, {2, 1}, {1, 8}, {3, 8}};
+    std::vector<Point> pts = {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {5, 2},
+                              {4, 6}, {6, 6},  {2, 1},   {1, 8},  {3, 8}};
     SagBanks banks;
     ASSERT_TRUE(banks.build(pts, loopsOf({4, 3, 3}), {7, 4}));
     EXPECT_EQ(banks.lowest(true, 3, -1, 2, kNoneUsed), 0);   // the square's left side sees B only
@@ -137,7 +140,8 @@ TEST(SagBanks, LabelsEachSagWithTheEdgesItsRaysMeetFirst) {
     EXPECT_EQ(banks.lowest(false, 1, -1, 1, kNoneUsed), 0);  // below A's rank: B
     EXPECT_EQ(banks.lowest(false, 1, -1, 2, [](uint32_t r) { return r == 0; }), 1);  // B used
     EXPECT_EQ(banks.lowest(false, 1, 1, 2, kNoneUsed), -1);  // an empty bracket
-    EXPECT_EQ(banks.lowest(true, 1, -1, 2, kNoneUsed), -1);  // nothing left of it sees the right side
+    EXPECT_EQ(banks.lowest(true, 1, -1, 2, kNoneUsed),
+              -1);  // nothing left of it sees the right side
     EXPECT_EQ(banks.lowest(false, 5, -1, 2, kNoneUsed), -1);  // A's top edge: no sag
 }
 
@@ -158,12 +162,15 @@ TEST(SagBanks, RefusesLoopsWhoseEdgesMeet) {
     EXPECT_FALSE(banks.build({{0, 0}, {10, 10}, {10, 0}, {0, 10}}, loopsOf({4}), {}));
     EXPECT_FALSE(banks.built());
     // A hole whose sag lies on the square's bottom edge.
-    EXPECT_FALSE(banks.build({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {5, 0}, {4, 6}, {6, 6}}, loopsOf({4, 3}), {4}));
+    EXPECT_FALSE(banks.build({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {5, 0}, {4, 6}, {6, 6}},
+                             loopsOf({4, 3}), {4}));
     // A hole crossing the square's right side.
-    EXPECT_FALSE(banks.build({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {9, 2}, {8, 6}, {12, 6}}, loopsOf({4, 3}), {4}));
+    EXPECT_FALSE(banks.build({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {9, 2}, {8, 6}, {12, 6}},
+                             loopsOf({4, 3}), {4}));
     // Two holes overlapping along an edge.
-    EXPECT_FALSE(banks.build({{0, 0}, {10, 0}, {10, 10}, {0, 10}, {2, 2}, {2, 6}, {4, 6}, {2, 3}, {2, 5}, {1, 5}},
-                             loopsOf({4, 3, 3}), {}));
+    EXPECT_FALSE(banks.build(
+        {{0, 0}, {10, 0}, {10, 10}, {0, 10}, {2, 2}, {2, 6}, {4, 6}, {2, 3}, {2, 5}, {1, 5}},
+        loopsOf({4, 3, 3}), {}));
     // The same square is fine.
     EXPECT_TRUE(banks.build({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, loopsOf({4}), {}));
 }
@@ -180,6 +187,7 @@ TEST(SagBanks, SagSearchCostsNoMoreThanTheRestOfTheMachine) {
         ASSERT_TRUE(r.diagnostic.ok()) << family << ": " << r.diagnostic.message;
         const WorkCounters& w = work();
         const uint64_t total = w.nodeVisits + w.sagTests + w.orientCalls;
-        EXPECT_LE(w.sagSearch, total - w.sagSearch) << family << ": sag search " << w.sagSearch << " of " << total;
+        EXPECT_LE(w.sagSearch, total - w.sagSearch)
+            << family << ": sag search " << w.sagSearch << " of " << total;
     }
 }

@@ -89,7 +89,8 @@ TEST(Shrink, APassingPolygonIsNotShrunk) {
 TEST(Shrink, PrecisionIsReduced) {
     // A bow-tie with awkward coordinates: the shrunk one has small-integer coordinates.
     Polygon p;
-    p.addRing({{0.1234567, 0.7654321}, {10.987654, 10.123456}, {10.5555, 0.3333}, {0.2222, 12.456}}, true);
+    p.addRing({{0.1234567, 0.7654321}, {10.987654, 10.123456}, {10.5555, 0.3333}, {0.2222, 12.456}},
+              true);
     ShrinkOptions o;
     ASSERT_EQ(classify(p, o).kind, Failure::Kind::Forbidden);
     ShrinkResult r = shrink(p, o);

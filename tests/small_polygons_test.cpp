@@ -30,7 +30,9 @@ void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
 // Every form is replaced, so no allocation made by one form (simdjson's nothrow new, say) is
 // freed by another's allocator: AddressSanitizer reports that mismatch.
 void* operator new[](std::size_t size) { return operator new(size); }
-void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept { return operator new(size, tag); }
+void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept {
+    return operator new(size, tag);
+}
 void operator delete(void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
@@ -54,10 +56,12 @@ Polygon validated(const std::string& path) {
 // Every input the tests below flood: the samples, and earcut's fixtures when shared/ is there.
 std::vector<Polygon> inputs() {
     std::vector<Polygon> out;
-    for (const std::string& f : testing::filesIn(sourcePath("polygons"), ".json")) out.push_back(validated(f));
+    for (const std::string& f : testing::filesIn(sourcePath("polygons"), ".json"))
+        out.push_back(validated(f));
     for (const std::string& f : testing::filesIn(sharedPath("peers/earcut/fixtures"), ".json")) {
         ReadResult rr = readPolygonFile(f);
-        if (rr.diagnostic.ok() && validate(rr.polygon, f).ok()) out.push_back(std::move(rr.polygon));
+        if (rr.diagnostic.ok() && validate(rr.polygon, f).ok())
+            out.push_back(std::move(rr.polygon));
     }
     for (const std::string& family : familyNames()) out.push_back(generate(family, 7, 300));
     for (Polygon& p : out) EXPECT_TRUE(validate(p, "input").ok());
@@ -67,9 +71,11 @@ std::vector<Polygon> inputs() {
 TEST(SmallPolygons, ValidationTellsWhetherPointsRepeat) {
     Polygon holes = validated(sourcePath("polygons/holes.json"));
     EXPECT_TRUE(holes.pointsDistinct);
-    EXPECT_FALSE(validated(sourcePath("polygons/touching-hole.json")).pointsDistinct);  // a shared vertex
-    EXPECT_FALSE(validated(sourcePath("polygons/t-junction.json")).pointsDistinct);     // a vertex on an edge
-    holes.addRing({{1, 1}, {1, 1.5}, {1.5, 1}}, false);  // not validated since
+    EXPECT_FALSE(
+        validated(sourcePath("polygons/touching-hole.json")).pointsDistinct);  // a shared vertex
+    EXPECT_FALSE(
+        validated(sourcePath("polygons/t-junction.json")).pointsDistinct);  // a vertex on an edge
+    holes.addRing({{1, 1}, {1, 1.5}, {1.5, 1}}, false);                     // not validated since
     EXPECT_FALSE(holes.pointsDistinct);
 }
 
@@ -98,8 +104,9 @@ TEST(SmallPolygons, NoTouchingPointSearchWithoutRepeatedPoints) {
 }
 
 TEST(SmallPolygons, TriangulatorAllocatesNothingOnceWarm) {
-    for (const char* name : {"polygons/holes.json", "polygons/touching-hole.json", "polygons/t-junction.json",
-                             "polygons/steiner.json", "polygons/comb.json"}) {
+    for (const char* name :
+         {"polygons/holes.json", "polygons/touching-hole.json", "polygons/t-junction.json",
+          "polygons/steiner.json", "polygons/comb.json"}) {
         Polygon p = validated(sourcePath(name));
         Triangulator t;
         const size_t triangles = t.run(p).triangles.size();
@@ -135,7 +142,8 @@ TEST(SmallPolygons, ReusedBuffersGiveTheSameTriangles) {
             for (Up up : {Up::MinusY, Up::PlusX}) {
                 Options o;
                 o.up = up;
-                EXPECT_EQ(t.run(p, nullptr, o).triangles, triangulate(p, nullptr, o).triangles) << k;
+                EXPECT_EQ(t.run(p, nullptr, o).triangles, triangulate(p, nullptr, o).triangles)
+                    << k;
             }
         }
 }

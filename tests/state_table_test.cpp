@@ -44,7 +44,8 @@ TEST(StateTable, RowsRoundTrip) {
 
 TEST(StateTable, CountsSumToEventsOnGalleryAndFamilies) {
     std::vector<std::string> files = filesIn(sourcePath("polygons"), ".json");
-    for (const std::string& f : filesIn(sourcePath("polygons/invalid"), ".json")) files.push_back(f);
+    for (const std::string& f : filesIn(sourcePath("polygons/invalid"), ".json"))
+        files.push_back(f);
     size_t runs = 0;
     for (const std::string& f : files) {
         ReadResult r = readPolygonFile(f);

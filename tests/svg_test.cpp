@@ -54,13 +54,15 @@ void expectSaneSvg(const std::vector<Point>& pts, const std::string& what) {
     EXPECT_EQ(std::max(width, height), 800);
     std::regex stroke("stroke-width=\"([^\"]*)\"");
     int strokes = 0;
-    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), stroke); it != std::sregex_iterator(); ++it, ++strokes)
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), stroke);
+         it != std::sregex_iterator(); ++it, ++strokes)
         EXPECT_GT(number((*it)[1], "stroke-width"), 0);
     EXPECT_EQ(strokes, 2);
     // Every point drawn (M or L, x then y) lies in the viewBox.
     std::regex point("[ML](\\S+) (\\S+)");
     size_t drawn = 0;
-    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), point); it != std::sregex_iterator(); ++it, ++drawn) {
+    for (auto it = std::sregex_iterator(svg.begin(), svg.end(), point);
+         it != std::sregex_iterator(); ++it, ++drawn) {
         double x = number((*it)[1], "path x"), y = number((*it)[2], "path y");
         EXPECT_TRUE(box[0] <= x && x <= box[0] + box[2]) << x << " outside the viewBox";
         EXPECT_TRUE(box[1] <= y && y <= box[1] + box[3]) << y << " outside the viewBox";
@@ -80,10 +82,14 @@ TEST(Svg, FiniteAndSaneAtEveryExtent) {
     expectSaneSvg({{0, 0}, {max, 0}, {max, max}}, "an extent of DBL_MAX");
     expectSaneSvg({{0, -max}, {0, max}, {0, 0}}, "zero width, 2 DBL_MAX tall");
     expectSaneSvg({{0, 0}, {tiny, 0}, {tiny, tiny}, {0, tiny}}, "an extent of 2^-1074");
-    expectSaneSvg({{0x1p-1000, 0x1p-1000}, {0x1.8p-1000, 0x1p-1000}, {0x1p-1000, 0x1.8p-1000}}, "at 2^-1000");
-    expectSaneSvg({{1e300, 1e300}, {std::nextafter(1e300, 2e300), 1e300}, {1e300, std::nextafter(1e300, 2e300)}},
+    expectSaneSvg({{0x1p-1000, 0x1p-1000}, {0x1.8p-1000, 0x1p-1000}, {0x1p-1000, 0x1.8p-1000}},
+                  "at 2^-1000");
+    expectSaneSvg({{1e300, 1e300},
+                   {std::nextafter(1e300, 2e300), 1e300},
+                   {1e300, std::nextafter(1e300, 2e300)}},
                   "one ulp wide at 1e300");
-    expectSaneSvg({{-max, 0}, {-max, tiny}, {std::nextafter(-max, 0.0), 0}}, "one ulp wide at -DBL_MAX");
+    expectSaneSvg({{-max, 0}, {-max, tiny}, {std::nextafter(-max, 0.0), 0}},
+                  "one ulp wide at -DBL_MAX");
 }
 
 // Ordinary pictures keep their coordinates as written (no scaling below 2^500).

@@ -19,13 +19,17 @@
 
 namespace flood::testing {
 
-inline std::string sourcePath(const std::string& rel) { return std::string(FLOOD_SOURCE_DIR) + "/" + rel; }
-inline std::string sharedPath(const std::string& rel) { return std::string(FLOOD_SHARED_DIR) + "/" + rel; }
+inline std::string sourcePath(const std::string& rel) {
+    return std::string(FLOOD_SOURCE_DIR) + "/" + rel;
+}
+inline std::string sharedPath(const std::string& rel) {
+    return std::string(FLOOD_SHARED_DIR) + "/" + rel;
+}
 
 // A fresh empty directory for one test (named for it and this process, so parallel runs differ).
 inline std::filesystem::path scratch(const std::string& name) {
-    std::filesystem::path d =
-        std::filesystem::temp_directory_path() / ("flood-test-" + name + "-" + std::to_string(getpid()));
+    std::filesystem::path d = std::filesystem::temp_directory_path() /
+                              ("flood-test-" + name + "-" + std::to_string(getpid()));
     std::filesystem::remove_all(d);
     std::filesystem::create_directories(d);
     return d;

@@ -60,10 +60,12 @@ size_t expectListMatchesReplay(const Polygon& polygon, const std::string& what) 
 
 TEST(TodoList, MatchesReplayStateAtEveryStep) {
     size_t busy = 0;
-    for (const char* f : {"polygons/paper-figure-7.json", "polygons/holes.json", "polygons/pending-bottoms.json",
-                          "polygons/comb.json", "polygons/two-gorges.json"})
+    for (const char* f :
+         {"polygons/paper-figure-7.json", "polygons/holes.json", "polygons/pending-bottoms.json",
+          "polygons/comb.json", "polygons/two-gorges.json"})
         busy += expectListMatchesReplay(readOrFail(sourcePath(f)), f);
-    for (const std::string& family : familyNames()) busy += expectListMatchesReplay(generate(family, 2, 300), family);
+    for (const std::string& family : familyNames())
+        busy += expectListMatchesReplay(generate(family, 2, 300), family);
     EXPECT_GT(busy, 100u);  // the runs do put gorges away
 }
 

@@ -18,7 +18,8 @@ namespace {
 
 std::string text(const std::vector<EdgeSplit>& s) {
     std::string t;
-    for (const EdgeSplit& e : s) t += "(" + std::to_string(e.edge) + "," + std::to_string(e.vertex) + ")";
+    for (const EdgeSplit& e : s)
+        t += "(" + std::to_string(e.edge) + "," + std::to_string(e.vertex) + ")";
     return t;
 }
 
@@ -31,13 +32,18 @@ std::vector<std::pair<Index, Point>> bruteForce(const Polygon& p) {
             for (Index e = p.rings[r].first; e < p.rings[r].first + p.rings[r].count; ++e) {
                 const Ring& ring = p.rings[r];
                 if (ring.count < 2) continue;
-                Point a = p.vertices[e], b = p.vertices[e + 1 == ring.first + ring.count ? ring.first : e + 1];
+                Point a = p.vertices[e],
+                      b = p.vertices[e + 1 == ring.first + ring.count ? ring.first : e + 1];
                 for (Index s = part.firstRing; s < part.firstRing + part.ringCount; ++s)
-                    for (Index v = p.rings[s].first; s != r && p.rings[s].count > 1 && v < p.rings[s].first + p.rings[s].count; ++v)
+                    for (Index v = p.rings[s].first;
+                         s != r && p.rings[s].count > 1 && v < p.rings[s].first + p.rings[s].count;
+                         ++v)
                         if (insideSegment(a, b, p.vertices[v])) out.push_back({e, p.vertices[v]});
             }
     std::sort(out.begin(), out.end(), [](auto& x, auto& y) {
-        return x.first != y.first ? x.first < y.first : x.second.x != y.second.x ? x.second.x < y.second.x : x.second.y < y.second.y;
+        return x.first != y.first         ? x.first < y.first
+               : x.second.x != y.second.x ? x.second.x < y.second.x
+                                          : x.second.y < y.second.y;
     });
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
@@ -47,7 +53,9 @@ std::vector<std::pair<Index, Point>> asSet(const Polygon& p) {
     std::vector<std::pair<Index, Point>> out;
     for (const EdgeSplit& s : p.splits) out.push_back({s.edge, p.vertices[s.vertex]});
     std::sort(out.begin(), out.end(), [](auto& x, auto& y) {
-        return x.first != y.first ? x.first < y.first : x.second.x != y.second.x ? x.second.x < y.second.x : x.second.y < y.second.y;
+        return x.first != y.first         ? x.first < y.first
+               : x.second.x != y.second.x ? x.second.x < y.second.x
+                                          : x.second.y < y.second.y;
     });
     return out;
 }
@@ -70,7 +78,8 @@ TEST(Touches, SameSplitsAsValidateOnEveryFamily) {
             for (size_t size : {40, 400}) {
                 Polygon p = generate(family, seed, size);
                 for (int rot = 0; rot < 4; ++rot)
-                    expectSameSplits(transform(p, rot, rot == 1, rot == 2, rot), family + " " + std::to_string(seed));
+                    expectSameSplits(transform(p, rot, rot == 1, rot == 2, rot),
+                                     family + " " + std::to_string(seed));
             }
 }
 
@@ -86,7 +95,8 @@ TEST(Touches, SameSplitsAsValidateOnTheSamples) {
 // before: without splits the machine ends in a forbidden state or the checker rejects).
 TEST(Touches, UnvalidatedTJunctionsTriangulate) {
     std::vector<std::pair<std::string, Polygon>> inputs;
-    for (uint64_t seed : {1, 2, 3, 4}) inputs.push_back({"t-junctions", generate("t-junctions", seed, 300)});
+    for (uint64_t seed : {1, 2, 3, 4})
+        inputs.push_back({"t-junctions", generate("t-junctions", seed, 300)});
     for (const std::string& f : filesIn(sourcePath("polygons"), ".json"))
         inputs.push_back({f, readPolygonFile(f).polygon});
     size_t withSplits = 0;
@@ -114,7 +124,8 @@ TEST(Touches, ExactAndCompleteOnInvalidInput) {
         for (int k = 0; k < parts; ++k)
             for (int r = 0, rings = 1 + rnd(4); r < rings; ++r) {
                 std::vector<Point> ring;
-                for (int v = 0, n = 1 + rnd(7); v < n; ++v) ring.push_back({double(rnd(7)), double(rnd(7))});
+                for (int v = 0, n = 1 + rnd(7); v < n; ++v)
+                    ring.push_back({double(rnd(7)), double(rnd(7))});
                 p.addRing(ring, r == 0);
             }
         Polygon found = p;
@@ -158,7 +169,8 @@ TEST(Touches, RingsThroughOnePointWithinTheBound) {
     for (int k : {100, 1000, 10000}) {
         Polygon p;
         p.addRing({{-1e6, -1e6}, {1e6, -1e6}, {1e6, 1e6}, {-1e6, 1e6}}, true);
-        for (int i = 0; i < k; ++i) p.addRing({{0, 0}, {double(i + 1), 1e5}, {double(i + 1), 2e5}}, false);
+        for (int i = 0; i < k; ++i)
+            p.addRing({{0, 0}, {double(i + 1), 1e5}, {double(i + 1), 2e5}}, false);
         work() = {};
         EXPECT_TRUE(findTouches(p).complete);
         if (k <= 1000) {  // wide triangles hold narrow ones' tips: splits, found exactly

@@ -90,12 +90,14 @@ TEST(UpPredicates, AgreeWithRationalsOnNearTies) {
         Point a{any(), any()}, b;
         double t = any();
         b = {a.x + t * d.y, a.y - t * d.x};
-        for (int k = int(rng() % 3); k-- > 0;) b.x = std::nextafter(b.x, (rng() & 1) ? INFINITY : -INFINITY);
+        for (int k = int(rng() % 3); k-- > 0;)
+            b.x = std::nextafter(b.x, (rng() & 1) ? INFINITY : -INFINITY);
         if (!std::isfinite(b.x) || !std::isfinite(b.y)) continue;
         const int want = referenceSign(d, a, b);
         ties += want == 0;
-        ASSERT_EQ(heightSign(d, a, b), want) << "d = (" << d.x << ", " << d.y << "), a = (" << a.x << ", " << a.y
-                                             << "), b = (" << b.x << ", " << b.y << ")";
+        ASSERT_EQ(heightSign(d, a, b), want)
+            << "d = (" << d.x << ", " << d.y << "), a = (" << a.x << ", " << a.y << "), b = ("
+            << b.x << ", " << b.y << ")";
         ASSERT_EQ(acrossSign(d, a, b), referenceSign(Up{d.y, -d.x}, a, b));
     }
     EXPECT_GT(ties, 100) << "the generator should produce exact ties";
@@ -166,7 +168,8 @@ TEST(UpFlood, SamplePolygonsAreExactValidAtAnyAngle) {
     for (const auto& [f, p] : samples)
         for (double angle : kAngles)
             for (size_t shift : {0, 3})
-                expectTriangulates(transform(p, 0, false, false, shift), f + " at " + std::to_string(angle) + "°",
+                expectTriangulates(transform(p, 0, false, false, shift),
+                                   f + " at " + std::to_string(angle) + "°",
                                    Options{upFromDegrees(angle)});
 }
 
@@ -175,10 +178,12 @@ TEST(UpFlood, GeneratedFamiliesAreExactValidAtAnyAngle) {
         for (size_t size : {8, 40, 300})
             for (uint64_t seed = 0; seed < 3; ++seed) {
                 Polygon p = generate(family, seed, size);
-                const std::string what = family + " size " + std::to_string(size) + " seed " + std::to_string(seed);
+                const std::string what =
+                    family + " size " + std::to_string(size) + " seed " + std::to_string(seed);
                 ASSERT_TRUE(validate(p, what).ok()) << what;
                 for (double angle : kAngles)
-                    expectTriangulates(p, what + " at " + std::to_string(angle) + "°", Options{upFromDegrees(angle)});
+                    expectTriangulates(p, what + " at " + std::to_string(angle) + "°",
+                                       Options{upFromDegrees(angle)});
             }
 }
 
@@ -201,7 +206,8 @@ TEST(UpFlood, AxisTranscriptsAreAsBefore) {
 // direction: exact heights sorted into ranks. The floods must be the axis floods, step for step.
 TEST(UpFlood, TheGeneralPathFloodsAnAxisAsTheFastPathDoes) {
     std::vector<std::pair<std::string, Polygon>> inputs = validSamples();
-    for (const std::string& family : familyNames()) inputs.emplace_back(family, generate(family, 5, 200));
+    for (const std::string& family : familyNames())
+        inputs.emplace_back(family, generate(family, 5, 200));
     for (const auto& [what, p] : inputs)
         for (Up axis : {Up::PlusY, Up::MinusY, Up::PlusX, Up::MinusX}) {
             const Up tilted{axis.x + 0x1p-1074 * axis.y, axis.y - 0x1p-1074 * axis.x};
@@ -209,7 +215,8 @@ TEST(UpFlood, TheGeneralPathFloodsAnAxisAsTheFastPathDoes) {
             Trace fast = record(p, Options{axis}), general = record(p, Options{tilted});
             ASSERT_TRUE(fast.diagnostic.ok()) << what << ": " << fast.diagnostic.message;
             EXPECT_EQ(general.triangles, fast.triangles) << what << " along " << upName(axis);
-            EXPECT_EQ(transcript(general.events), transcript(fast.events)) << what << " along " << upName(axis);
+            EXPECT_EQ(transcript(general.events), transcript(fast.events))
+                << what << " along " << upName(axis);
         }
 }
 
@@ -217,7 +224,8 @@ TEST(UpFlood, TheGeneralPathFloodsAnAxisAsTheFastPathDoes) {
 // does scaling the input (or the direction) by a power of two, at every scale.
 TEST(UpFlood, TurningInputAndDirectionTogetherChangesNothing) {
     std::vector<std::pair<std::string, Polygon>> inputs = validSamples();
-    for (const std::string& family : familyNames()) inputs.emplace_back(family, generate(family, 9, 120));
+    for (const std::string& family : familyNames())
+        inputs.emplace_back(family, generate(family, 9, 120));
     auto scaled = [](Polygon p, int e) {
         for (Point& v : p.vertices) v = {std::ldexp(v.x, e), std::ldexp(v.y, e)};
         return p;
@@ -228,18 +236,21 @@ TEST(UpFlood, TurningInputAndDirectionTogetherChangesNothing) {
             FloodResult base = triangulate(p, nullptr, Options{d});
             ASSERT_TRUE(base.diagnostic.ok()) << what << ": " << base.diagnostic.message;
             Polygon turned = transform(p, 1, false, false, 0);
-            EXPECT_EQ(triangulate(turned, nullptr, Options{Up{-d.y, d.x}}).triangles, base.triangles)
-                << what << " at " << angle << "°, turned";
-            EXPECT_EQ(triangulate(p, nullptr, Options{Up{std::ldexp(d.x, -1060), std::ldexp(d.y, -1060)}}).triangles,
+            EXPECT_EQ(triangulate(turned, nullptr, Options{Up{-d.y, d.x}}).triangles,
                       base.triangles)
+                << what << " at " << angle << "°, turned";
+            EXPECT_EQ(
+                triangulate(p, nullptr, Options{Up{std::ldexp(d.x, -1060), std::ldexp(d.y, -1060)}})
+                    .triangles,
+                base.triangles)
                 << what << " at " << angle << "°, subnormal direction";
             for (int e : {-1000, 900}) {
                 Polygon s = scaled(p, e);
                 bool exact = true;  // a subnormal's last bits may be lost: then skip that scale
                 for (size_t i = 0; i < s.vertices.size(); ++i)
                     exact &= std::ldexp(s.vertices[i].x, -e) == p.vertices[i].x &&
-                             std::ldexp(s.vertices[i].y, -e) == p.vertices[i].y && std::isfinite(s.vertices[i].x) &&
-                             std::isfinite(s.vertices[i].y);
+                             std::ldexp(s.vertices[i].y, -e) == p.vertices[i].y &&
+                             std::isfinite(s.vertices[i].x) && std::isfinite(s.vertices[i].y);
                 if (!exact) continue;
                 s.splits = p.splits;
                 EXPECT_EQ(triangulate(s, nullptr, Options{d}).triangles, base.triangles)
@@ -262,7 +273,8 @@ TEST(UpFlood, VerificationAtAnAngle) {
     Polygon outside;
     outside.addRing({{0, 0}, {4, 0}, {4, 4}, {0, 4}}, true);
     outside.addRing({{10, 10}, {10, 12}, {12, 12}}, false);
-    EXPECT_EQ(triangulate(outside, nullptr, Options{upFromDegrees(333)}).failure.reason, Forbidden::LeftBehind);
+    EXPECT_EQ(triangulate(outside, nullptr, Options{upFromDegrees(333)}).failure.reason,
+              Forbidden::LeftBehind);
     int tried = 0;
     for (const std::string& f : filesIn(sourcePath("polygons/invalid"), ".json")) {
         ReadResult r = readPolygonFile(f);
@@ -282,7 +294,8 @@ TEST(UpFlood, NoDirectionIsRefused) {
     for (Up bad : {Up{0, 0}, Up{NAN, 1}, Up{1, INFINITY}}) {
         FloodResult r = triangulate(p, nullptr, Options{bad});
         EXPECT_EQ(r.diagnostic.status, Status::Usage);
-        EXPECT_NE(r.diagnostic.message.find("flood direction"), std::string::npos) << r.diagnostic.message;
+        EXPECT_NE(r.diagnostic.message.find("flood direction"), std::string::npos)
+            << r.diagnostic.message;
         EXPECT_TRUE(r.triangles.empty());
     }
 }
@@ -303,11 +316,12 @@ TEST(UpFlood, WorkPerVertexStaysLinearAtAnAngle) {
             FloodResult r = triangulate(p, nullptr, Options{upFromDegrees(17)});
             const WorkCounters& w = work();
             const double perVertex =
-                double(w.nodeVisits + w.sagTests + w.orientCalls + w.heightCalls) / double(p.vertices.size());
+                double(w.nodeVisits + w.sagTests + w.orientCalls + w.heightCalls) /
+                double(p.vertices.size());
             ASSERT_TRUE(r.diagnostic.ok()) << family << " at " << n << ": " << r.diagnostic.message;
             if (n == 1000) first = perVertex;
-            EXPECT_LE(perVertex, 2.0 * first) << family << " at " << n << ": " << perVertex << " per vertex, "
-                                              << first << " at 1000";
+            EXPECT_LE(perVertex, 2.0 * first) << family << " at " << n << ": " << perVertex
+                                              << " per vertex, " << first << " at 1000";
         }
     }
 }
@@ -320,7 +334,8 @@ TEST(UpTrace, DirectionRoundTripsAndDrivesTheInvariants) {
         ASSERT_TRUE(t.diagnostic.ok()) << t.diagnostic.message;
         std::ostringstream out;
         writeTrace(out, t);
-        EXPECT_EQ(out.str().find("\"up\"") != std::string::npos, up != Up::PlusY) << upName(up);  // +y: as before
+        EXPECT_EQ(out.str().find("\"up\"") != std::string::npos, up != Up::PlusY)
+            << upName(up);  // +y: as before
         Trace back;
         ASSERT_TRUE(parseTrace(out.str(), "t", back).ok());
         EXPECT_EQ(back.up, up);
@@ -352,7 +367,8 @@ TEST(UpTrace, DirectionRoundTripsAndDrivesTheInvariants) {
 
 TEST(UpCli, AngleVectorAndAxes) {
     const std::string hole = sourcePath("polygons/hole.json");
-    for (const char* up : {"--up 17", "--up 1,2", "--up=-y", "--up=-30.5", "--up x", "--up=-1,0.25"}) {
+    for (const char* up :
+         {"--up 17", "--up 1,2", "--up=-y", "--up=-30.5", "--up x", "--up=-1,0.25"}) {
         RunResult r = runCli("triangulate " + hole + " " + up + " -o /dev/null");
         EXPECT_EQ(r.code, 0) << up << ": " << r.out;
     }

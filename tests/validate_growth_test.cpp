@@ -19,7 +19,8 @@ namespace {
 void addFan(Polygon& p, size_t k, double y0, double step, bool outer) {
     double m = 8.0 * double(k);
     for (size_t i = 0; i < k; ++i)
-        p.addRing({{0, 0}, {m, y0 + step * double(2 * i)}, {m, y0 + step * double(2 * i + 1)}}, outer);
+        p.addRing({{0, 0}, {m, y0 + step * double(2 * i)}, {m, y0 + step * double(2 * i + 1)}},
+                  outer);
 }
 
 Polygon fanOfParts(size_t k) {
@@ -66,8 +67,11 @@ struct Adversary {
 };
 
 std::string crossingMessage(size_t k) {
-    return "ring " + std::to_string(k - 2) + " vertex 0 (0, 0): the boundary crosses itself at this "
-           "shared vertex (ring " + std::to_string(k - 1) + " vertex 0 (0, 0) passes through to the "
+    return "ring " + std::to_string(k - 2) +
+           " vertex 0 (0, 0): the boundary crosses itself at this "
+           "shared vertex (ring " +
+           std::to_string(k - 1) +
+           " vertex 0 (0, 0) passes through to the "
            "other side)";
 }
 
@@ -86,14 +90,18 @@ TEST(ValidateGrowth, WorkPerVertexStaysNearlyFlat) {
             Polygon p = a.make(k);
             work() = {};
             Diagnostic d = validate(p, "g");
-            double perVertex = double(work().orientCalls + work().validatorSteps) / double(p.vertices.size());
+            double perVertex =
+                double(work().orientCalls + work().validatorSteps) / double(p.vertices.size());
             EXPECT_EQ(d.ok(), a.valid) << a.name << " at k = " << k << ": " << d.message;
             if (!a.valid) {
-                EXPECT_NE(d.message.find(a.message(k)), std::string::npos) << a.name << ": " << d.message;
+                EXPECT_NE(d.message.find(a.message(k)), std::string::npos)
+                    << a.name << ": " << d.message;
             }
             if (base == 0) base = perVertex;
-            std::cout << "[ WORK ] " << a.name << ", k = " << k << ": " << perVertex << " per vertex\n";
-            EXPECT_LE(perVertex, 3 * base) << a.name << " at k = " << k << " (k = 100: " << base << ")";
+            std::cout << "[ WORK ] " << a.name << ", k = " << k << ": " << perVertex
+                      << " per vertex\n";
+            EXPECT_LE(perVertex, 3 * base)
+                << a.name << " at k = " << k << " (k = 100: " << base << ")";
         }
     }
 }

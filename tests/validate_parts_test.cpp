@@ -26,17 +26,20 @@ Polygon multi(const std::vector<Rings>& parts) {
 const std::vector<Point> kSquare{{0, 0}, {4, 0}, {4, 4}, {0, 4}};
 
 // Every quarter turn and mirror of p gets the same verdict; valid ones triangulate exactly.
-void expectVerdict(const Polygon& p, bool valid, const std::string& what, const std::string& reason = "") {
+void expectVerdict(const Polygon& p, bool valid, const std::string& what,
+                   const std::string& reason = "") {
     for (int rot = 0; rot < 4; ++rot)
         for (bool mirror : {false, true})
             for (bool reverse : {false, true}) {
                 Polygon q = transform(p, rot, mirror, reverse, 0);
-                std::string how = what + " (rotation " + std::to_string(rot) + (mirror ? ", mirrored" : "") +
-                                  (reverse ? ", reversed" : "") + ")";
+                std::string how = what + " (rotation " + std::to_string(rot) +
+                                  (mirror ? ", mirrored" : "") + (reverse ? ", reversed" : "") +
+                                  ")";
                 Diagnostic d = validate(q, what);
                 EXPECT_EQ(d.ok(), valid) << how << ": " << d.message;
                 if (!valid && !reason.empty()) {
-                    EXPECT_NE(d.message.find(reason), std::string::npos) << how << ": " << d.message;
+                    EXPECT_NE(d.message.find(reason), std::string::npos)
+                        << how << ": " << d.message;
                 }
                 if (valid && d.ok()) expectTriangulates(q, how);
             }
@@ -49,7 +52,8 @@ void expectVerdict(const Polygon& p, bool valid, const std::string& what, const 
 // triangulated with overlapping triangles.
 TEST(ValidateParts, PartsCrossingThroughVerticesOnEdgesAreRefused) {
     Polygon p = multi({{kSquare}, {{{2, 0}, {3, 2}, {4, 2}, {6, -2}}}});
-    expectVerdict(p, false, "crossing through T-junctions", "the boundary crosses itself at this touching point");
+    expectVerdict(p, false, "crossing through T-junctions",
+                  "the boundary crosses itself at this touching point");
     // The GEOS-differential case: a hole of a big part with vertices on a small part's edges.
     Polygon q = multi({{{{6, 6}, {10, 6}, {10, 10}, {6, 10}}},
                        {{{-4, -4}, {14, -4}, {14, 14}, {-4, 14}}, {{8, 6}, {1, 5}, {6, 8}}}});
@@ -61,7 +65,8 @@ TEST(ValidateParts, PartsTouchingAtATJunctionFromOutsideAreValid) {
     expectVerdict(p, true, "touching from outside");
     Polygon q = p;
     ASSERT_TRUE(validate(q, "t").ok());
-    EXPECT_TRUE(q.splits.empty()) << "a T-junction between parts is no split: parts are flooded apart";
+    EXPECT_TRUE(q.splits.empty())
+        << "a T-junction between parts is no split: parts are flooded apart";
 }
 
 TEST(ValidateParts, PartsAlongACollinearStretchAreRefused) {
@@ -74,8 +79,10 @@ TEST(ValidateParts, PartsAlongACollinearStretchAreRefused) {
 TEST(ValidateParts, PartsCrossingAtSharedVerticesAreRefused) {
     // Two diamonds through (0, 0) and (0, 4), the second's wedge interleaving the first's at both.
     Polygon p = multi({{{{0, 0}, {2, 2}, {0, 4}, {-2, 2}}}, {{{0, 0}, {1, 2}, {0, 4}, {-4, 2}}}});
-    expectVerdict(p, false, "interleaving wedges", "the boundary crosses itself at this shared vertex");
-    Polygon q = multi({{{{0, 0}, {2, 2}, {0, 4}, {-2, 2}}}, {{{0, 0}, {2, -2}, {0, -4}, {-2, -2}}}});
+    expectVerdict(p, false, "interleaving wedges",
+                  "the boundary crosses itself at this shared vertex");
+    Polygon q =
+        multi({{{{0, 0}, {2, 2}, {0, 4}, {-2, 2}}}, {{{0, 0}, {2, -2}, {0, -4}, {-2, -2}}}});
     expectVerdict(q, true, "touching at a vertex");
 }
 
@@ -86,17 +93,22 @@ TEST(ValidateParts, IslandInALakeIsValidAndMayTouchTheLake) {
     expectVerdict(multi({lake, {{{2, 2}, {6, 4}, {4, 6}}}}), true, "island at a shore vertex");
     expectVerdict(multi({lake, {{{5, 2}, {6, 4}, {4, 4}}}}), true, "island at a shore T-junction");
     // Reaching through the shore into the land: the interiors overlap.
-    expectVerdict(multi({lake, {{{5, 2}, {6, 4}, {4, 4}, {5, 0}}}}), false, "island crossing the shore");
-    expectVerdict(multi({lake, {{{5, 2}, {6, 1}, {4, 1}}}}), false, "island on the land side of the shore",
+    expectVerdict(multi({lake, {{{5, 2}, {6, 4}, {4, 4}, {5, 0}}}}), false,
+                  "island crossing the shore");
+    expectVerdict(multi({lake, {{{5, 2}, {6, 1}, {4, 1}}}}), false,
+                  "island on the land side of the shore",
                   "the interior overlaps itself at this touching point");
 }
 
 TEST(ValidateParts, PartInsideAnotherPartIsRefused) {
-    expectVerdict(multi({{kSquare}, {{{1, 1}, {2, 1}, {2, 2}}}}), false, "part inside a part", "parts overlap");
+    expectVerdict(multi({{kSquare}, {{{1, 1}, {2, 1}, {2, 2}}}}), false, "part inside a part",
+                  "parts overlap");
     // Touching the outer part's edge from inside: caught at the touch.
-    expectVerdict(multi({{kSquare}, {{{2, 0}, {3, 1}, {1, 1}}}}), false, "part inside touching at a T-junction",
+    expectVerdict(multi({{kSquare}, {{{2, 0}, {3, 1}, {1, 1}}}}), false,
+                  "part inside touching at a T-junction",
                   "the interior overlaps itself at this touching point");
-    expectVerdict(multi({{kSquare}, {{{0, 0}, {2, 1}, {1, 2}}}}), false, "part inside touching at a vertex",
+    expectVerdict(multi({{kSquare}, {{{0, 0}, {2, 1}, {1, 2}}}}), false,
+                  "part inside touching at a vertex",
                   "the interior overlaps itself at this shared vertex");
 }
 

@@ -22,7 +22,8 @@ TEST(Verify, ComplementOfValidPolygonsTriangulates) {
             Polygon c = complementOf(p);
             size_t pointHoles = 0;
             for (Index r = 0; r < p.rings.size(); ++r) pointHoles += p.rings[r].count == 1;
-            EXPECT_EQ(c.parts.size(), 1 + p.holeCount() - pointHoles) << "one island per hole, none per point";
+            EXPECT_EQ(c.parts.size(), 1 + p.holeCount() - pointHoles)
+                << "one island per hole, none per point";
             EXPECT_EQ(c.rings[0].count, 4u);
         }
 }
@@ -89,7 +90,8 @@ TEST(Verify, IslandTouchingTheShore) {
 TEST(Verify, HugeCoordinates) {
     Polygon p;
     p.addRing({{1e308, 1e308}, {1.5e308, 1e308}, {1.5e308, 1.5e308}, {1e308, 1.5e308}}, true);
-    p.addRing({{1.2e308, 1.2e308}, {1.2e308, 1.3e308}, {1.3e308, 1.3e308}, {1.3e308, 1.2e308}}, false);
+    p.addRing({{1.2e308, 1.2e308}, {1.2e308, 1.3e308}, {1.3e308, 1.3e308}, {1.3e308, 1.2e308}},
+              false);
     ASSERT_TRUE(validate(p, "huge").ok());
     Verification v = verify(p);
     EXPECT_TRUE(v.ok()) << v.summary();

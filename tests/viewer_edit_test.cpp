@@ -32,7 +32,8 @@ void openSquare(Model& m) {
 }
 
 std::vector<Point> ring(const Polygon& p, Index r) {
-    return {p.vertices.begin() + p.rings[r].first, p.vertices.begin() + p.rings[r].first + p.rings[r].count};
+    return {p.vertices.begin() + p.rings[r].first,
+            p.vertices.begin() + p.rings[r].first + p.rings[r].count};
 }
 
 // Same rings and parts, every coordinate bit for bit.
@@ -48,7 +49,8 @@ void expectSamePolygon(const Polygon& a, const Polygon& b) {
         EXPECT_EQ(a.rings[r].count, b.rings[r].count);
     }
     ASSERT_EQ(a.vertices.size(), b.vertices.size());
-    for (size_t i = 0; i < a.vertices.size(); ++i) EXPECT_TRUE(a.vertices[i] == b.vertices[i]) << "vertex " << i;
+    for (size_t i = 0; i < a.vertices.size(); ++i)
+        EXPECT_TRUE(a.vertices[i] == b.vertices[i]) << "vertex " << i;
 }
 
 // The model floods what the editor holds, and the exact checker passed on it.
@@ -121,7 +123,8 @@ TEST(ViewerEdit, InsertOnAnEdgeShiftsTheRingsAfterItAndUndoes) {
     EXPECT_EQ(ring(p, 1), ring(original, 1));
     expectFloodedValid(m, original.expectedTriangles() + 1);
     // The closing edge: after the ring's last vertex.
-    ASSERT_TRUE(e.insertVertex(8, {5, 4}));  // the hole's closing edge (6,4) -> (4,4), now from vertex 8
+    ASSERT_TRUE(
+        e.insertVertex(8, {5, 4}));  // the hole's closing edge (6,4) -> (4,4), now from vertex 8
     EXPECT_EQ(ring(m.polygon(), 1), (std::vector<Point>{{4, 4}, {4, 6}, {6, 6}, {6, 4}, {5, 4}}));
     e.undo();
     e.undo();
@@ -254,7 +257,8 @@ TEST(ViewerEdit, ABowTieIsKeptWithTheValidatorsDiagnosticAndUndoRestoresValidity
     ASSERT_EQ(expected.status, Status::Invalid);
     EXPECT_EQ(m.inputDiagnostic().status, Status::Invalid);
     EXPECT_EQ(m.inputDiagnostic().message, expected.message);
-    EXPECT_NE(m.inputDiagnostic().message.find("ring 0"), std::string::npos) << m.inputDiagnostic().message;
+    EXPECT_NE(m.inputDiagnostic().message.find("ring 0"), std::string::npos)
+        << m.inputDiagnostic().message;
     EXPECT_TRUE(m.failed());
     EXPECT_EQ(m.exitCode(), int(Status::Invalid));
     ASSERT_FALSE(m.verdictLines().empty());
@@ -286,7 +290,8 @@ TEST(ViewerEdit, SaveWritesGeoJsonThatReloadsEqualAndNeverTheInputSilently) {
 
     const std::string out = e.defaultSavePath();
     ASSERT_TRUE(e.save(out).ok());
-    EXPECT_EQ(e.defaultSavePath(), (dir / "square-edited-2.json").string()) << "never the saved one either";
+    EXPECT_EQ(e.defaultSavePath(), (dir / "square-edited-2.json").string())
+        << "never the saved one either";
     ReadResult back = readPolygonFile(out);
     ASSERT_TRUE(back.diagnostic.ok()) << back.diagnostic.message;
     expectSamePolygon(back.polygon, e.polygon());
@@ -350,7 +355,8 @@ TEST(ViewerEdit, BackgroundFloodShowsTheOldTraceUntilTheNewOneIsAdopted) {
     EXPECT_TRUE(e.polygon().vertices[0] == (Point{v.x * 1.0001, v.y}));
     e.wait();
     EXPECT_FALSE(e.pending());
-    EXPECT_TRUE(m.polygon().vertices[0] == (Point{v.x * 1.0001, v.y})) << "the latest edit is what is shown";
+    EXPECT_TRUE(m.polygon().vertices[0] == (Point{v.x * 1.0001, v.y}))
+        << "the latest edit is what is shown";
     EXPECT_FALSE(m.failed()) << m.verdict();
 
     // A flood overtaken by an open is dropped, never adopted over the new file.

@@ -17,7 +17,8 @@ using flood::testing::scratch;
 
 #ifdef FLOOD_GDAL
 TEST(ViewerGis, LayerWhereAndFeatureChooseWhatOpens) {
-    if (runShell("command -v ogr2ogr").code != 0) GTEST_SKIP() << "ogr2ogr (gdal-bin) is not installed";
+    if (runShell("command -v ogr2ogr").code != 0)
+        GTEST_SKIP() << "ogr2ogr (gdal-bin) is not installed";
     std::filesystem::path d = scratch("viewer-gis");
     // a: a square (4 vertices), b: a square with a hole (8), c: a triangle (3).
     std::ofstream(d / "src.geojson") << R"({"type": "FeatureCollection", "features": [
@@ -30,7 +31,10 @@ TEST(ViewerGis, LayerWhereAndFeatureChooseWhatOpens) {
          "geometry": {"type": "Polygon", "coordinates": [[[40,0],[50,0],[45,8],[40,0]]]}}]})";
     std::string gpkg = (d / "two.gpkg").string(), src = (d / "src.geojson").string();
     ASSERT_EQ(runShell("ogr2ogr -f GPKG " + gpkg + " " + src + " -nln first 2>&1").code, 0);
-    ASSERT_EQ(runShell("ogr2ogr -update " + gpkg + " " + src + " -nln second -where \"name = 'c'\" 2>&1").code, 0);
+    ASSERT_EQ(
+        runShell("ogr2ogr -update " + gpkg + " " + src + " -nln second -where \"name = 'c'\" 2>&1")
+            .code,
+        0);
 
     Model m;
     m.gisLayer = "second";
@@ -60,17 +64,20 @@ TEST(ViewerGis, LayerWhereAndFeatureChooseWhatOpens) {
     m.gisWhere = "no_such_field = 1";
     m.open(gpkg);
     EXPECT_FALSE(m.openDiagnostic().ok());
-    EXPECT_NE(m.openDiagnostic().message.find(gpkg), std::string::npos) << m.openDiagnostic().message;
+    EXPECT_NE(m.openDiagnostic().message.find(gpkg), std::string::npos)
+        << m.openDiagnostic().message;
     m.gisLayer = "third", m.gisWhere = "";
     m.open(gpkg);
     EXPECT_FALSE(m.openDiagnostic().ok());
-    EXPECT_NE(m.openDiagnostic().message.find("third"), std::string::npos) << m.openDiagnostic().message;
+    EXPECT_NE(m.openDiagnostic().message.find("third"), std::string::npos)
+        << m.openDiagnostic().message;
     EXPECT_EQ(m.polygon().vertices.size(), 3u);
     std::filesystem::remove_all(d);
 }
 #else
 TEST(ViewerGis, LayerWhereAndFeatureChooseWhatOpens) {
-    GTEST_SKIP() << "built without GDAL (libgdal-dev): the viewer's --layer and --where are not there";
+    GTEST_SKIP()
+        << "built without GDAL (libgdal-dev): the viewer's --layer and --where are not there";
 }
 #endif
 

@@ -38,7 +38,7 @@ TEST(GorgeFocus, OutsideOfIsTheAreaMinusTheOutline) {
     EXPECT_FALSE(dimmed(dim, {50, 60}));  // inside
     EXPECT_TRUE(dimmed(dim, {15, 20}));   // in the box, outside the triangle
     EXPECT_TRUE(dimmed(dim, {85, 20}));
-    EXPECT_TRUE(dimmed(dim, {50, 95}));   // below it
+    EXPECT_TRUE(dimmed(dim, {50, 95}));  // below it
     EXPECT_TRUE(dimmed(dim, {5, 50}));
     // Every sampled pixel centre is dimmed exactly when it is outside.
     for (double y = 0.5; y < 100; y += 3)
@@ -79,13 +79,16 @@ TEST(GorgeFocus, TheOutlineRunsNextLeftLeftChainRightNextRight) {
         Rect area{0, 0, 800, 600};
         std::vector<Rect> dim = outsideOf(screen, area);
         double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-        for (Vec2 p : screen) x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+        for (Vec2 p : screen)
+            x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x),
+            y1 = std::max(y1, p.y);
         bool boxOnly = false;
         for (double y = std::floor(y0) + 0.5; y < y1; y += 2)
             for (double x = std::floor(x0) + 0.5; x < x1; x += 2) {
                 if (!area.contains({x, y})) continue;
                 ++checked;
-                ASSERT_EQ(dimmed(dim, {x, y}), !inside(screen, {x, y})) << "step " << s << " at " << x << ", " << y;
+                ASSERT_EQ(dimmed(dim, {x, y}), !inside(screen, {x, y}))
+                    << "step " << s << " at " << x << ", " << y;
                 boxOnly |= !inside(screen, {x, y});
             }
         notBoxes += boxOnly;

@@ -4,21 +4,21 @@
 #if __has_include("model.h")
 #include <gtest/gtest.h>
 
-#include <filesystem>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 
 #include "canvas_geometry.h"
-#include "gorge_focus.h"
 #include "generate.h"
+#include "gorge_focus.h"
+#include "io.h"
 #include "model.h"
 #include "scene.h"
-#include "transcript.h"
-#include "trace_io.h"
-#include "io.h"
 #include "test_support.h"
+#include "trace_io.h"
+#include "transcript.h"
 
 using namespace flood;
 using namespace flood::view;
@@ -277,7 +277,8 @@ TEST(ViewerModel, TranscriptItemsFollowTheCoreTranscript) {
 
 TEST(ViewerModel, InvalidInputStillOpensAndBlamesVertices) {
     std::string path = ::testing::TempDir() + "viewer-bowtie.json";
-    std::ofstream(path) << R"({"type":"Polygon","coordinates":[[[0,0],[10,10],[10,0],[0,10],[0,0]]]})";
+    std::ofstream(path)
+        << R"({"type":"Polygon","coordinates":[[[0,0],[10,10],[10,0],[0,10],[0,0]]]})";
     Model m;
     m.open(path);
     EXPECT_FALSE(m.inputDiagnostic().ok());
@@ -350,7 +351,8 @@ TEST(ViewerModel, CanvasBuffersDrawWhatTheSceneDraws) {
             EXPECT_EQ(full.water.size(), e ? e->firstTriangle : n);
             for (uint32_t t = 0; t < n && t < 3; ++t) {
                 Point a = m.polygon().vertices[g.triangles[3 * t]];
-                const Scene::Tri& st = t < full.water.size() ? full.water[t] : full.current[t - full.water.size()];
+                const Scene::Tri& st =
+                    t < full.water.size() ? full.water[t] : full.current[t - full.water.size()];
                 EXPECT_EQ(a, st.a);
             }
             if (HasFailure()) return;
@@ -368,7 +370,8 @@ TEST(ViewerModel, TriangleGridFindsTheCutTrianglesInAView) {
     Point lo{-0.3, -0.2}, hi{0.25, 0.4};
     for (uint32_t count : {0u, 17u, uint32_t(tris.size() / 2), uint32_t(tris.size())}) {
         std::vector<uint32_t> got, want;
-        EXPECT_TRUE(grid.forEach(lo, hi, count, tris.size(), [&](uint32_t t) { got.push_back(t); }));
+        EXPECT_TRUE(
+            grid.forEach(lo, hi, count, tris.size(), [&](uint32_t t) { got.push_back(t); }));
         for (uint32_t t = 0; t < count; ++t) {
             Point c = grid.centroid(t);
             if (c.x >= lo.x && c.x <= hi.x && c.y >= lo.y && c.y <= hi.y) want.push_back(t);
@@ -382,19 +385,24 @@ TEST(ViewerModel, TriangleGridFindsTheCutTrianglesInAView) {
         for (uint32_t t : got) EXPECT_LT(t, count);
     }
     size_t calls = 0;
-    EXPECT_FALSE(grid.forEach({-10, -10}, {10, 10}, uint32_t(tris.size()), 50, [&](uint32_t) { ++calls; }));
+    EXPECT_FALSE(
+        grid.forEach({-10, -10}, {10, 10}, uint32_t(tris.size()), 50, [&](uint32_t) { ++calls; }));
     EXPECT_EQ(calls, 0u) << "over the cap: nothing drawn";
 }
 
 // ---- verdicts, culprits, find, traces (issue 11) ------------------------------------------
 namespace {
-std::string invalidPath(const std::string& f) { return std::string(FLOOD_SOURCE_DIR) + "/polygons/invalid/" + f; }
+std::string invalidPath(const std::string& f) {
+    return std::string(FLOOD_SOURCE_DIR) + "/polygons/invalid/" + f;
+}
 size_t countKind(const Model& m, VerdictKind k) {
     size_t n = 0;
     for (const auto& l : m.verdictLines()) n += l.kind == k;
     return n;
 }
-bool contains(const std::vector<uint32_t>& v, uint32_t x) { return std::find(v.begin(), v.end(), x) != v.end(); }
+bool contains(const std::vector<uint32_t>& v, uint32_t x) {
+    return std::find(v.begin(), v.end(), x) != v.end();
+}
 }  // namespace
 
 TEST(ViewerVerdict, ValidSampleIsOkOnlyBecauseTheCheckerPassed) {
@@ -481,31 +489,40 @@ TEST(ViewerVerdict, CheckerRejectionIsShownAndBlamesTheTriangle) {
 TEST(ViewerCulprits, ValidationBlamesWhatItsMessageNames) {
     // Every vertex the culprits list is named in the message as "ring R vertex V" or as an
     // edge "ring R edge A-B"; the first is the message's global vertex.
-    for (const char* f : {"self-intersection.json", "spike.json", "vertex-on-own-edge.json",
-                          "hole-outside.json", "holes-overlapping.json", "point-hole-on-edge.json",
-                          "crossing-at-shared-vertex.json", "collinear-overlap.json", "zero-area.json"}) {
+    for (const char* f :
+         {"self-intersection.json", "spike.json", "vertex-on-own-edge.json", "hole-outside.json",
+          "holes-overlapping.json", "point-hole-on-edge.json", "crossing-at-shared-vertex.json",
+          "collinear-overlap.json", "zero-area.json"}) {
         Model m;
         m.open(invalidPath(f));
         const Diagnostic& d = m.inputDiagnostic();
         ASSERT_FALSE(d.ok()) << f;
         const Culprits& c = d.culprits;
         ASSERT_FALSE(c.vertices.empty()) << f << ": " << d.message;
-        EXPECT_NE(d.message.find("(global vertex " + std::to_string(c.vertices[0]) + ")"), std::string::npos)
+        EXPECT_NE(d.message.find("(global vertex " + std::to_string(c.vertices[0]) + ")"),
+                  std::string::npos)
             << f << ": " << d.message;
         const Polygon& P = m.polygon();
-        for (uint32_t r : c.rings) EXPECT_NE(d.message.find("ring " + std::to_string(r)), std::string::npos) << f << ": " << d.message;
+        for (uint32_t r : c.rings)
+            EXPECT_NE(d.message.find("ring " + std::to_string(r)), std::string::npos)
+                << f << ": " << d.message;
         for (uint32_t e : c.edges) {
             uint32_t r = P.ringOf(e), local = e - P.rings[r].first;
-            if (e == c.vertices[0] && d.message.find("the next edge") != std::string::npos) continue;
-            EXPECT_NE(d.message.find("ring " + std::to_string(r) + " edge " + std::to_string(local) + "-"),
-                      std::string::npos) << f << ": " << d.message;
+            if (e == c.vertices[0] && d.message.find("the next edge") != std::string::npos)
+                continue;
+            EXPECT_NE(d.message.find("ring " + std::to_string(r) + " edge " +
+                                     std::to_string(local) + "-"),
+                      std::string::npos)
+                << f << ": " << d.message;
         }
         EXPECT_EQ(m.offenders().empty(), false);
-        for (uint32_t v : c.vertices) EXPECT_TRUE(std::binary_search(m.offenders().begin(), m.offenders().end(), v));
+        for (uint32_t v : c.vertices)
+            EXPECT_TRUE(std::binary_search(m.offenders().begin(), m.offenders().end(), v));
         m.camera.setViewport({0, 0, 800, 600});
         EXPECT_TRUE(m.showError()) << f;
         EXPECT_TRUE(m.errorView);
-        for (uint32_t v : c.vertices) EXPECT_TRUE(m.camera.viewport().contains(m.camera.toScreen(P.vertices[v]))) << f;
+        for (uint32_t v : c.vertices)
+            EXPECT_TRUE(m.camera.viewport().contains(m.camera.toScreen(P.vertices[v]))) << f;
     }
 }
 
@@ -518,11 +535,13 @@ TEST(ViewerCulprits, GeneratedInvalidFamiliesBlameTheNamedVertex) {
             const Culprits& c = d.culprits;
             ASSERT_FALSE(c.vertices.empty()) << family << ": " << d.message;
             EXPECT_NE(d.message.find("(global vertex " + std::to_string(c.vertices[0]) + ")"),
-                      std::string::npos) << family << ": " << d.message;
+                      std::string::npos)
+                << family << ": " << d.message;
             uint32_t r = p.ringOf(c.vertices[0]);
             EXPECT_NE(d.message.find("ring " + std::to_string(r) + " vertex " +
                                      std::to_string(c.vertices[0] - p.rings[r].first)),
-                      std::string::npos) << family << ": " << d.message;
+                      std::string::npos)
+                << family << ": " << d.message;
             for (uint32_t x : c.rings) EXPECT_LT(x, p.rings.size());
             for (uint32_t v : c.vertices) EXPECT_TRUE(contains(c.rings, p.ringOf(v))) << family;
         }
@@ -565,7 +584,8 @@ TEST(ViewerFind, EachQueryKindCentresAndSeeks) {
     EXPECT_EQ(m.step(), f.seekTo);
     const Event& e = m.trace().events[m.step() - 1];
     bool involved = false;
-    for (Index u : {e.after.left, e.after.right, e.after.nextLeft, e.after.nextRight, e.bottom, e.sag, e.top})
+    for (Index u :
+         {e.after.left, e.after.right, e.after.nextLeft, e.after.nextRight, e.bottom, e.sag, e.top})
         involved |= u == 5;
     EXPECT_TRUE(involved);
 
@@ -582,7 +602,8 @@ TEST(ViewerFind, EachQueryKindCentresAndSeeks) {
     ASSERT_TRUE(f.ok) << f.message;
     EXPECT_EQ(m.step(), 7u) << "a ring does not seek";
     for (Index i = 0; i < P.rings[0].count; ++i)
-        EXPECT_TRUE(m.camera.viewport().contains(m.camera.toScreen(P.vertices[P.rings[0].first + i])));
+        EXPECT_TRUE(
+            m.camera.viewport().contains(m.camera.toScreen(P.vertices[P.rings[0].first + i])));
 }
 
 TEST(ViewerFind, BadQueriesSayWhy) {
@@ -590,10 +611,16 @@ TEST(ViewerFind, BadQueriesSayWhy) {
     m.open(std::string(FLOOD_SOURCE_DIR) + "/polygons/paper-figure-7.json");
     m.seek(4);
     for (auto [q, why] : std::vector<std::pair<std::string, std::string>>{
-             {"", "type v"}, {"x12", "start with v"}, {"v", "a number must follow"},
-             {"v1x", "a number must follow"}, {"v-1", "a number must follow"},
-             {"v999999", "no vertex 999999: there are"}, {"t999999", "no triangle"},
-             {"s999999", "no step"}, {"r99", "no ring 99"}, {"v99999999999999999999", "a number must follow"}}) {
+             {"", "type v"},
+             {"x12", "start with v"},
+             {"v", "a number must follow"},
+             {"v1x", "a number must follow"},
+             {"v-1", "a number must follow"},
+             {"v999999", "no vertex 999999: there are"},
+             {"t999999", "no triangle"},
+             {"s999999", "no step"},
+             {"r99", "no ring 99"},
+             {"v99999999999999999999", "a number must follow"}}) {
         FindTarget f = m.find(q);
         EXPECT_FALSE(f.ok) << q;
         EXPECT_NE(f.message.find(why), std::string::npos) << q << ": " << f.message;
@@ -626,7 +653,8 @@ TEST(ViewerTraces, OpenLikeAPolygonAndFailWithTheLine) {
     std::ofstream(dir + "truncated.jsonl") << text.substr(0, text.size() / 2);
     m.open(dir + "truncated.jsonl");
     EXPECT_EQ(m.openDiagnostic().status, Status::Malformed);
-    EXPECT_NE(m.openDiagnostic().message.find("truncated.jsonl:"), std::string::npos) << m.openDiagnostic().message;
+    EXPECT_NE(m.openDiagnostic().message.find("truncated.jsonl:"), std::string::npos)
+        << m.openDiagnostic().message;
     EXPECT_EQ(m.exitCode(), 3);
     EXPECT_EQ(m.steps(), t.events.size()) << "a failed open keeps the loaded run";
     EXPECT_EQ(m.path(), dir + "good.jsonl");
@@ -640,7 +668,8 @@ TEST(ViewerTraces, OpenLikeAPolygonAndFailWithTheLine) {
     Model fresh;
     fresh.open(dir + "bad-line.jsonl");
     EXPECT_EQ(fresh.exitCode(), 3);
-    EXPECT_NE(fresh.openDiagnostic().message.find("bad-line.jsonl:3:"), std::string::npos) << fresh.openDiagnostic().message;
+    EXPECT_NE(fresh.openDiagnostic().message.find("bad-line.jsonl:3:"), std::string::npos)
+        << fresh.openDiagnostic().message;
     EXPECT_TRUE(fresh.failed());
     EXPECT_EQ(fresh.verdictLines().at(0).kind, VerdictKind::Unreadable);
 }
@@ -674,8 +703,8 @@ TEST(ViewerModel, TimelineClickLandsOnTheHoveredStep) {
             EXPECT_EQ(tv.eventAt(x, width, n), i) << x;
             EXPECT_EQ(tv.stepAt(x, width, n), i + 1) << x;
         }
-    EXPECT_EQ(tv.stepAt(-5, width, n), 1u);     // left of the strip: the first event's step
-    EXPECT_EQ(tv.stepAt(width, width, n), n);   // its right edge: the last step
+    EXPECT_EQ(tv.stepAt(-5, width, n), 1u);    // left of the strip: the first event's step
+    EXPECT_EQ(tv.stepAt(width, width, n), n);  // its right edge: the last step
     EXPECT_EQ(tv.stepAt(10, width, 0), 0u);
     // The same on a zoomed and panned strip: the mark under the cursor is the one named.
     tv.zoomAt(50, width, 4, 1000);
@@ -775,7 +804,8 @@ TEST(ViewerModel, InspectorRecomputesTheRecordedTests) {
         m.open(f);
         traces.push_back(m.trace());
     }
-    for (const std::string& family : invalidFamilyNames()) traces.push_back(record(generateInvalid(family, 3, 200)));
+    for (const std::string& family : invalidFamilyNames())
+        traces.push_back(record(generateInvalid(family, 3, 200)));
     size_t rows = 0, sagRows = 0, forbidden = 0;
     std::array<size_t, 3> stages{};
     for (const Trace& t : traces) {
@@ -783,7 +813,8 @@ TEST(ViewerModel, InspectorRecomputesTheRecordedTests) {
         std::vector<VertexClass> classes = classifyVertices(t.polygon);
         for (const Event& e : t.events) {
             forbidden += e.action == Action::Forbidden && e.tested != 0;
-            const std::vector<PredicateRow> rs = inspectDecision(t, before.seek(e.step), e, classes);
+            const std::vector<PredicateRow> rs =
+                inspectDecision(t, before.seek(e.step), e, classes);
             for (const PredicateRow& r : rs) {
                 if (r.hasRecorded) {
                     ++rows;
@@ -798,7 +829,8 @@ TEST(ViewerModel, InspectorRecomputesTheRecordedTests) {
             for (int i = 0; i < int(flood::Test::WalkLanded); ++i) {
                 const flood::Test test = flood::Test(i);
                 if (!e.didTest(test)) continue;
-                EXPECT_TRUE(std::any_of(rs.begin(), rs.end(), [&](const PredicateRow& r) { return r.test == test; }))
+                EXPECT_TRUE(std::any_of(rs.begin(), rs.end(),
+                                        [&](const PredicateRow& r) { return r.test == test; }))
                     << "step " << e.step + 1 << " test " << testText(test);
             }
         }
@@ -832,7 +864,9 @@ std::string scratchDir(const std::string& name) {
     return dir;
 }
 
-std::string mixedPath() { return std::string(FLOOD_SOURCE_DIR) + "/polygons/datasets/mixed.geojson"; }
+std::string mixedPath() {
+    return std::string(FLOOD_SOURCE_DIR) + "/polygons/datasets/mixed.geojson";
+}
 
 }  // namespace
 
@@ -936,9 +970,12 @@ TEST(ViewerFeatures, OutOfRangeOrNotACollectionIsAClearFailureKeepingWhatWasLoad
     const size_t loaded = m.polygon().vertices.size();
     EXPECT_FALSE(m.openFeature(mixedPath(), 99));
     EXPECT_EQ(m.openDiagnostic().status, Status::Usage);
-    EXPECT_NE(m.openDiagnostic().message.find("mixed.geojson"), std::string::npos) << m.openDiagnostic().message;
-    EXPECT_NE(m.openDiagnostic().message.find("99"), std::string::npos) << m.openDiagnostic().message;
-    EXPECT_NE(m.openDiagnostic().message.find("0..9"), std::string::npos) << m.openDiagnostic().message;
+    EXPECT_NE(m.openDiagnostic().message.find("mixed.geojson"), std::string::npos)
+        << m.openDiagnostic().message;
+    EXPECT_NE(m.openDiagnostic().message.find("99"), std::string::npos)
+        << m.openDiagnostic().message;
+    EXPECT_NE(m.openDiagnostic().message.find("0..9"), std::string::npos)
+        << m.openDiagnostic().message;
     EXPECT_EQ(m.polygon().vertices.size(), loaded);
     EXPECT_EQ(m.feature(), 8u);
 
@@ -957,16 +994,22 @@ TEST(ViewerFeatures, ListShowsVerdictsFailingFirst) {
     EXPECT_TRUE(scan.diagnostic().ok()) << scan.diagnostic().message;
     std::vector<std::pair<size_t, VerdictKind>> got;
     for (const auto& f : scan.features()) got.push_back({f.index, f.kind});
-    const std::vector<std::pair<size_t, VerdictKind>> want = {
-        {1, VerdictKind::InvalidInput}, {3, VerdictKind::InvalidInput}, {4, VerdictKind::InvalidInput},
-        {5, VerdictKind::Unreadable},   {9, VerdictKind::Unreadable},   {0, VerdictKind::Ok},
-        {2, VerdictKind::Ok},           {7, VerdictKind::Ok},           {8, VerdictKind::Ok}};
+    const std::vector<std::pair<size_t, VerdictKind>> want = {{1, VerdictKind::InvalidInput},
+                                                              {3, VerdictKind::InvalidInput},
+                                                              {4, VerdictKind::InvalidInput},
+                                                              {5, VerdictKind::Unreadable},
+                                                              {9, VerdictKind::Unreadable},
+                                                              {0, VerdictKind::Ok},
+                                                              {2, VerdictKind::Ok},
+                                                              {7, VerdictKind::Ok},
+                                                              {8, VerdictKind::Ok}};
     EXPECT_EQ(got, want);
     EXPECT_EQ(scan.total(), want.size());
     EXPECT_EQ(scan.progress(), want.size());
     ASSERT_FALSE(scan.features().empty());
     EXPECT_EQ(scan.features()[0].name, "bow-tie");
-    EXPECT_NE(scan.features()[0].reason.find("ring 0"), std::string::npos) << scan.features()[0].reason;
+    EXPECT_NE(scan.features()[0].reason.find("ring 0"), std::string::npos)
+        << scan.features()[0].reason;
     EXPECT_EQ(scan.features().back().id, "triangle");
     EXPECT_EQ(scan.features().back().vertices, 3u);
 
@@ -999,7 +1042,9 @@ struct DenseFace {
         c.zoomAt({view.w / 2, view.h / 2}, factor);
         return c;
     }
-    Vec2 screen(const Camera& c, const MarkerVertex& k) const { return c.toScreen({g.origin.x + k.x, g.origin.y + k.y}); }
+    Vec2 screen(const Camera& c, const MarkerVertex& k) const {
+        return c.toScreen({g.origin.x + k.x, g.origin.y + k.y});
+    }
 };
 
 }  // namespace
@@ -1017,7 +1062,10 @@ TEST(ViewerDeclutter, ThinningKeepsAtMostOneMarkerPerCellAndAllWhenZoomedIn) {
         std::set<std::pair<long, long>> cells;
         for (const MarkerVertex& k : kept) {
             Vec2 p = f.screen(c, k);
-            EXPECT_TRUE(cells.insert({long(std::floor((p.x + cell) / cell)), long(std::floor((p.y + cell) / cell))}).second);
+            EXPECT_TRUE(cells
+                            .insert({long(std::floor((p.x + cell) / cell)),
+                                     long(std::floor((p.y + cell) / cell))})
+                            .second);
         }
         // Every marker on screen is in a cell that kept one: thinning never empties a cell.
         std::set<std::pair<long, long>> occupied;
@@ -1026,7 +1074,8 @@ TEST(ViewerDeclutter, ThinningKeepsAtMostOneMarkerPerCellAndAllWhenZoomedIn) {
             Vec2 p = f.screen(c, k);
             if (!f.view.contains(p)) continue;
             ++onScreen;
-            occupied.insert({long(std::floor((p.x + cell) / cell)), long(std::floor((p.y + cell) / cell))});
+            occupied.insert(
+                {long(std::floor((p.x + cell) / cell)), long(std::floor((p.y + cell) / cell))});
         }
         for (const auto& o : occupied) EXPECT_TRUE(cells.count(o));
         // Deterministic: the same camera keeps the same markers.
@@ -1046,14 +1095,16 @@ TEST(ViewerDeclutter, ThinningKeepsAtMostOneMarkerPerCellAndAllWhenZoomedIn) {
         double closest = INFINITY;
         for (size_t i = 0; i < seen.size() && seen.size() < 2000; ++i)
             for (size_t j = i + 1; j < seen.size(); ++j)
-                closest = std::min(closest, std::hypot(seen[i].x - seen[j].x, seen[i].y - seen[j].y));
+                closest =
+                    std::min(closest, std::hypot(seen[i].x - seen[j].x, seen[i].y - seen[j].y));
         if (seen.size() < 2000 && closest > cell * std::sqrt(2.0)) {
             size_t keptOnScreen = 0;
             for (const MarkerVertex& k : kept) keptOnScreen += f.view.contains(f.screen(c, k));
             EXPECT_EQ(keptOnScreen, onScreen);
             if (onScreen > 3) ++sparseViews;
         }
-        std::printf("zoom %g: %zu of %zu markers kept, %zu on screen\n", zoom, kept.size(), f.markers.size(), onScreen);
+        std::printf("zoom %g: %zu of %zu markers kept, %zu on screen\n", zoom, kept.size(),
+                    f.markers.size(), onScreen);
         previous = kept.size();
     }
     EXPECT_GT(previous, 0u);
@@ -1075,8 +1126,10 @@ TEST(ViewerDeclutter, VertexLabelsOnlyWhereTheyDoNotOverlap) {
         // No two labelled vertices closer on screen than a label: they cannot overlap.
         for (size_t i = 0; i < shown.size(); ++i)
             for (size_t j = i + 1; j < shown.size(); ++j) {
-                Vec2 a = c.toScreen(f.m.polygon().vertices[shown[i]]), b = c.toScreen(f.m.polygon().vertices[shown[j]]);
-                ASSERT_GE(std::hypot(a.x - b.x, a.y - b.y), room * 0.999) << shown[i] << " " << shown[j];
+                Vec2 a = c.toScreen(f.m.polygon().vertices[shown[i]]),
+                     b = c.toScreen(f.m.polygon().vertices[shown[j]]);
+                ASSERT_GE(std::hypot(a.x - b.x, a.y - b.y), room * 0.999)
+                    << shown[i] << " " << shown[j];
             }
         std::printf("zoom %g: %zu vertex labels\n", zoom, shown.size());
     }
@@ -1106,9 +1159,12 @@ TEST(ViewerDeclutter, VertexLabelsOnlyWhereTheyDoNotOverlap) {
 
 TEST(ViewerDeclutter, BridgesHaveTheirOwnColourAndGorgeFocusHasAnOutline) {
     // Bridges must not read as the just-cut triangles (both were yellow).
-    auto dist = [](Rgba a, Rgba b) { return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b); };
-    for (Rgba other : {palette::kCurrent, palette::kWater, palette::kPolygonFill, palette::kChain,
-                       palette::kJump, palette::kDormant, palette::kWaterLevel, palette::kTriangleEdge})
+    auto dist = [](Rgba a, Rgba b) {
+        return std::abs(a.r - b.r) + std::abs(a.g - b.g) + std::abs(a.b - b.b);
+    };
+    for (Rgba other :
+         {palette::kCurrent, palette::kWater, palette::kPolygonFill, palette::kChain,
+          palette::kJump, palette::kDormant, palette::kWaterLevel, palette::kTriangleEdge})
         EXPECT_GT(dist(palette::kBridge, other), 120);
     Model m;
     m.openPolygon(generate("circle-holes", 7, 1500), "circle-holes", {});
@@ -1130,7 +1186,8 @@ TEST(ViewerDeclutter, BridgesHaveTheirOwnColourAndGorgeFocusHasAnOutline) {
     SceneOptions o;
     o.bridges = false;
     for (const Scene::Line& l : buildScene(m, o).lines)
-        EXPECT_FALSE(l.color.r == palette::kBridge.r && l.color.g == palette::kBridge.g && l.color.b == palette::kBridge.b);
+        EXPECT_FALSE(l.color.r == palette::kBridge.r && l.color.g == palette::kBridge.g &&
+                     l.color.b == palette::kBridge.b);
 }
 #ifdef FLOOD_GDAL
 // The viewer opens a GIS dataset like a polygon file (core_gdal/): a GeoPackage made here
@@ -1172,8 +1229,8 @@ TEST(ViewerDirection, TurningFloodsAgainAndSaysWhatChanged) {
     EXPECT_EQ(m.path(), std::string(FLOOD_SOURCE_DIR) + "/polygons/two-gorges.json");
     // The summary is the run's own: the same as flooding and classifying along +x directly.
     Trace direct = record(m.polygon(), Options{Up::PlusX});
-    for (const SummaryChange& c : compareSummaries(summarizeFlood(direct, classifyVertices(m.polygon(), Up::PlusX)),
-                                                   m.summary()))
+    for (const SummaryChange& c : compareSummaries(
+             summarizeFlood(direct, classifyVertices(m.polygon(), Up::PlusX)), m.summary()))
         EXPECT_FALSE(c.changed()) << c.what;
     // Before is the +y run; the decomposition is not the same along +x.
     ASSERT_TRUE(m.hasPreviousSummary());
@@ -1185,7 +1242,8 @@ TEST(ViewerDirection, TurningFloodsAgainAndSaysWhatChanged) {
         }
     }
     EXPECT_TRUE(changed);
-    for (const SummaryChange& c : compareSummaries(m.previousSummary(), along90)) EXPECT_FALSE(c.changed()) << c.what;
+    for (const SummaryChange& c : compareSummaries(m.previousSummary(), along90))
+        EXPECT_FALSE(c.changed()) << c.what;
     // Not a direction, or the same one: nothing happens.
     EXPECT_FALSE(m.setUp(Up::PlusX));
     EXPECT_FALSE(m.setUp(Up{0, 0}));
@@ -1210,4 +1268,3 @@ TEST(ViewerDirection, SummaryCountsTheRun) {
 }
 
 #endif
-

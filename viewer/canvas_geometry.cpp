@@ -23,7 +23,8 @@ CanvasGeometry buildCanvasGeometry(const Model& model) {
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     for (Point p : v)
         if (std::isfinite(p.x) && std::isfinite(p.y))
-            x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x), y1 = std::max(y1, p.y);
+            x0 = std::min(x0, p.x), y0 = std::min(y0, p.y), x1 = std::max(x1, p.x),
+            y1 = std::max(y1, p.y);
     if (!(x0 <= x1)) x0 = y0 = x1 = y1 = 0;
     g.origin = {(x0 + x1) / 2, (y0 + y1) / 2};
     const Point o = g.origin;
@@ -31,7 +32,8 @@ CanvasGeometry buildCanvasGeometry(const Model& model) {
     g.bbox[2] = float(x1 - o.x), g.bbox[3] = float(y1 - o.y);
 
     g.positions.reserve(2 * size_t(n));
-    for (Point p : v) g.positions.push_back(float(p.x - o.x)), g.positions.push_back(float(p.y - o.y));
+    for (Point p : v)
+        g.positions.push_back(float(p.x - o.x)), g.positions.push_back(float(p.y - o.y));
 
     // Triangles keep their flood-order slot even when broken, so a step's triangles stay a
     // prefix; a broken one becomes degenerate (draws nothing).
@@ -50,7 +52,8 @@ CanvasGeometry buildCanvasGeometry(const Model& model) {
         for (Index i = 1; i + 1 < r.count; ++i)
             g.fans.insert(g.fans.end(), {r.first, r.first + i, r.first + i + 1});
         for (Index i = 0; i < r.count; ++i)
-            g.boundaryEdges.insert(g.boundaryEdges.end(), {r.first + i, r.first + (i + 1) % r.count});
+            g.boundaryEdges.insert(g.boundaryEdges.end(),
+                                   {r.first + i, r.first + (i + 1) % r.count});
         for (Index i = 0; i < r.count; ++i)
             g.boundary.push_back(segment(v[r.first + i], v[r.first + (i + 1) % r.count], o,
                                          palette::kBoundary, 1.5f));
@@ -90,7 +93,8 @@ CanvasOverlay buildCanvasOverlay(const Model& model, const SceneOptions& options
     }
     ov.markers.reserve(sc.markers.size());
     for (const Scene::Marker& m : sc.markers) {
-        ov.markers.push_back({float(m.p.x - o.x), float(m.p.y - o.y), m.color, m.radius, float(m.shape)});
+        ov.markers.push_back(
+            {float(m.p.x - o.x), float(m.p.y - o.y), m.color, m.radius, float(m.shape)});
         ov.gorgeMarkers += m.thin;  // buildScene lists the gorge rings first
     }
     ov.labels = std::move(sc.labels);
@@ -105,7 +109,8 @@ std::vector<MarkerVertex> thinMarkers(const std::vector<MarkerVertex>& markers, 
     std::vector<uint8_t> taken(size_t(std::max(nx, 0)) * size_t(std::max(ny, 0)), 0);
     std::vector<MarkerVertex> kept;
     // The camera is affine: its map from (origin-relative) world to cell coordinates, once.
-    const Vec2 at = cam.toScreen(o), ex = cam.toScreen({o.x + 1, o.y}), ey = cam.toScreen({o.x, o.y + 1});
+    const Vec2 at = cam.toScreen(o), ex = cam.toScreen({o.x + 1, o.y}),
+               ey = cam.toScreen({o.x, o.y + 1});
     const double ix = (ex.x - at.x) / cell, jx = (ex.y - at.y) / cell;
     const double iy = (ey.x - at.x) / cell, jy = (ey.y - at.y) / cell;
     const double i0 = (at.x - x0) / cell, j0 = (at.y - y0) / cell;
@@ -130,9 +135,11 @@ std::vector<uint32_t> visibleLabels(const TriangleGrid& grid, const Camera& cam,
     std::vector<uint32_t> shown;
     // The grid's cells overhang the view: keep what is on screen, or near enough to show
     // part of its text.
-    const Rect near{r.x - kLabelMargin, r.y - kLabelMargin, r.w + 2 * kLabelMargin, r.h + 2 * kLabelMargin};
+    const Rect near{r.x - kLabelMargin, r.y - kLabelMargin, r.w + 2 * kLabelMargin,
+                    r.h + 2 * kLabelMargin};
     grid.forEach(a, b, count, cap, [&](uint32_t t) {
-        if (grid.area(t) * px2 >= minArea && near.contains(cam.toScreen(grid.centroid(t)))) shown.push_back(t);
+        if (grid.area(t) * px2 >= minArea && near.contains(cam.toScreen(grid.centroid(t))))
+            shown.push_back(t);
     });
     return shown;
 }
@@ -161,10 +168,12 @@ void TriangleGrid::buildVertices(const Polygon& polygon) {
                 double best = cell_ * cell_;
                 if (block > kMaxScan) best = 0;
                 for (int jj = j0; jj <= j1 && best > 0; ++jj)
-                    for (uint32_t q = start_[size_t(jj) * nx_ + i0]; q < start_[size_t(jj) * nx_ + i1 + 1]; ++q) {
+                    for (uint32_t q = start_[size_t(jj) * nx_ + i0];
+                         q < start_[size_t(jj) * nx_ + i1 + 1]; ++q) {
                         if (ids_[q] == a) continue;
                         Point o = centroid_[ids_[q]];
-                        best = std::min(best, (o.x - p.x) * (o.x - p.x) + (o.y - p.y) * (o.y - p.y));
+                        best =
+                            std::min(best, (o.x - p.x) * (o.x - p.x) + (o.y - p.y) * (o.y - p.y));
                     }
                 area_[a] = float(best);
             }
@@ -191,7 +200,8 @@ void TriangleGrid::bucket(double perCell) {
     double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
     for (Point c : centroid_) {
         if (!std::isfinite(c.x) || !std::isfinite(c.y)) continue;
-        x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y), y1 = std::max(y1, c.y);
+        x0 = std::min(x0, c.x), x1 = std::max(x1, c.x), y0 = std::min(y0, c.y),
+        y1 = std::max(y1, c.y);
     }
     if (!(x0 <= x1)) x0 = x1 = y0 = y1 = 0;
     // About perCell items a cell: cheap to count, and a zoomed-in view visits few cells.
@@ -217,9 +227,12 @@ void TriangleGrid::bucket(double perCell) {
 bool TriangleGrid::cells(Point lo, Point hi, int& i0, int& j0, int& i1, int& j1) const {
     if (ids_.empty()) return false;
     auto clampCell = [](double x, int n) { return int(std::clamp(x, -1.0, double(n))); };
-    i0 = clampCell(std::floor((lo.x - x0_) / cell_), nx_), i1 = clampCell(std::floor((hi.x - x0_) / cell_), nx_);
-    j0 = clampCell(std::floor((lo.y - y0_) / cell_), ny_), j1 = clampCell(std::floor((hi.y - y0_) / cell_), ny_);
-    i0 = std::max(i0, 0), j0 = std::max(j0, 0), i1 = std::min(i1, nx_ - 1), j1 = std::min(j1, ny_ - 1);
+    i0 = clampCell(std::floor((lo.x - x0_) / cell_), nx_),
+    i1 = clampCell(std::floor((hi.x - x0_) / cell_), nx_);
+    j0 = clampCell(std::floor((lo.y - y0_) / cell_), ny_),
+    j1 = clampCell(std::floor((hi.y - y0_) / cell_), ny_);
+    i0 = std::max(i0, 0), j0 = std::max(j0, 0), i1 = std::min(i1, nx_ - 1),
+    j1 = std::min(j1, ny_ - 1);
     return i0 <= i1 && j0 <= j1;
 }
 

@@ -39,20 +39,20 @@ struct CanvasGeometry {
     float bbox[4] = {0, 0, 0, 0};     // x0, y0, x1, y1 of the rings
     std::vector<SegmentVertex> boundary;
     std::vector<uint32_t> boundaryEdges;  // 2 per edge: the boundary as thin GL_LINES
-    std::vector<SegmentVertex> bridges;  // every Bridge, in event order
-    std::vector<MarkerVertex> classes;   // bottoms, sags, tops and ceilings
-    std::vector<MarkerVertex> regular;   // the other vertices (most of a big polygon)
-    bool dryIsUncut = false;  // the triangles tile the polygon: the untriangulated rest
-                              // is their suffix, no stencil fill needed
+    std::vector<SegmentVertex> bridges;   // every Bridge, in event order
+    std::vector<MarkerVertex> classes;    // bottoms, sags, tops and ceilings
+    std::vector<MarkerVertex> regular;    // the other vertices (most of a big polygon)
+    bool dryIsUncut = false;              // the triangles tile the polygon: the untriangulated rest
+                                          // is their suffix, no stencil fill needed
 };
 CanvasGeometry buildCanvasGeometry(const Model& model);
 
 struct CanvasOverlay {
-    std::vector<SegmentVertex> lines;     // in buildScene's order
-    std::vector<MarkerVertex> markers;    // in buildScene's order
-    size_t gorgeMarkers = 0;              // markers [0, gorgeMarkers): pending/held rings (thin)
-    std::vector<Scene::Line> arrows;      // jump pointers: heads are drawn in screen space
-    std::vector<Scene::Label> labels;     // L, R, NL, NR, pending/held gorges
+    std::vector<SegmentVertex> lines;   // in buildScene's order
+    std::vector<MarkerVertex> markers;  // in buildScene's order
+    size_t gorgeMarkers = 0;            // markers [0, gorgeMarkers): pending/held rings (thin)
+    std::vector<Scene::Line> arrows;    // jump pointers: heads are drawn in screen space
+    std::vector<Scene::Label> labels;   // L, R, NL, NR, pending/held gorges
 };
 // The per-step part of buildScene(model, options), as GPU vertices relative to `origin`.
 CanvasOverlay buildCanvasOverlay(const Model& model, const SceneOptions& options, Point origin);

@@ -27,8 +27,9 @@ Model::EditedRun Model::floodEdit(Polygon polygon, const std::string& name) {
             run.trace.diagnostic = {Status::Internal, name + ": " + ex.what()};
         }
         // The checker is the costly half of adopting a run: done here, off the UI thread.
-        const bool forbidden = std::any_of(run.trace.events.begin(), run.trace.events.end(),
-                                           [](const Event& e) { return e.action == Action::Forbidden; });
+        const bool forbidden =
+            std::any_of(run.trace.events.begin(), run.trace.events.end(),
+                        [](const Event& e) { return e.action == Action::Forbidden; });
         if (!forbidden && run.trace.diagnostic.ok()) {
             run.check = checkTriangulation(polygon, run.trace.triangles);
             run.checked = true;
@@ -81,7 +82,8 @@ Index partOfRing(const Polygon& p, Index ring) {
 }
 
 void shiftRings(Polygon& p, Index fromRing, long delta) {
-    for (Index r = fromRing; r < p.rings.size(); ++r) p.rings[r].first = Index(long(p.rings[r].first) + delta);
+    for (Index r = fromRing; r < p.rings.size(); ++r)
+        p.rings[r].first = Index(long(p.rings[r].first) + delta);
 }
 
 void insertPoint(Polygon& p, Index ring, Index at, Point q) {
@@ -211,7 +213,9 @@ void Editor::apply(const EditCommand& c, bool forward) {
     using K = EditCommand::Kind;
     Polygon& p = polygon_;
     switch (c.kind) {
-        case K::MoveVertex: p.vertices[p.rings[c.ring].first + c.at] = forward ? c.to : c.from; break;
+        case K::MoveVertex:
+            p.vertices[p.rings[c.ring].first + c.at] = forward ? c.to : c.from;
+            break;
         case K::InsertVertex:
             if (forward) insertPoint(p, c.ring, c.at, c.to);
             else erasePoint(p, c.ring, c.at);
@@ -275,7 +279,8 @@ bool Editor::moveVertex(Index v, Point to) {
 bool Editor::insertVertex(Index edge, Point q) {
     sync();
     const Polygon& p = polygon_;
-    if (edge >= p.vertices.size()) return message_ = "no edge from vertex " + std::to_string(edge), false;
+    if (edge >= p.vertices.size())
+        return message_ = "no edge from vertex " + std::to_string(edge), false;
     if (!finite(q)) return message_ = "a vertex needs finite coordinates", false;
     EditCommand c;
     c.kind = EditCommand::Kind::InsertVertex;
@@ -302,7 +307,9 @@ bool Editor::deleteVertex(Index v) {
         c.kind = EditCommand::Kind::RemoveRing;
         c.outer = p.parts[k].firstRing == c.ring;
         if (c.outer && p.parts[k].ringCount > 1)
-            return message_ = "ring " + std::to_string(c.ring) + " is an outer ring with holes: delete its holes first", false;
+            return message_ = "ring " + std::to_string(c.ring) +
+                              " is an outer ring with holes: delete its holes first",
+                   false;
         c.before = ringPoints(p, c.ring);
     } else {
         c.kind = EditCommand::Kind::DeleteVertex;
@@ -332,7 +339,8 @@ bool Editor::addRing(const std::vector<Point>& pts) {
     if (c.outer) {
         if (pts.size() < 3) return message_ = "an outer ring needs at least 3 corners", false;
         c.ring = Index(p.rings.size());
-        c.label = p.parts.empty() ? "draw the outer ring" : "add part " + std::to_string(p.parts.size());
+        c.label =
+            p.parts.empty() ? "draw the outer ring" : "add part " + std::to_string(p.parts.size());
     }
     message_.clear();
     merging_ = false;
@@ -346,7 +354,8 @@ bool Editor::moveRing(Index ring, Point offset) {
     EditCommand c;
     c.kind = EditCommand::Kind::MoveRing;
     c.ring = ring;
-    const bool merge = merging_ && done_ > 0 && history_[done_ - 1].kind == c.kind && history_[done_ - 1].ring == ring;
+    const bool merge = merging_ && done_ > 0 && history_[done_ - 1].kind == c.kind &&
+                       history_[done_ - 1].ring == ring;
     c.before = merge ? history_[done_ - 1].before : ringPoints(p, ring);
     c.after = c.before;
     for (Point& q : c.after) q = {q.x + offset.x, q.y + offset.y};
@@ -448,7 +457,8 @@ namespace {
 // The file an edited polygon came from: "FILE#3" is feature 3 of FILE, "X (shrunk)" a shrink of X.
 std::string inputFile(std::string name) {
     const std::string shrunk = " (shrunk)";
-    while (name.size() > shrunk.size() && name.compare(name.size() - shrunk.size(), shrunk.size(), shrunk) == 0)
+    while (name.size() > shrunk.size() &&
+           name.compare(name.size() - shrunk.size(), shrunk.size(), shrunk) == 0)
         name.resize(name.size() - shrunk.size());
     if (size_t hash = name.rfind('#'); hash != std::string::npos) name.resize(hash);
     return name;
@@ -462,7 +472,8 @@ std::string Editor::defaultSavePath() const {
     std::string stem = input.empty() || input == "-" ? "polygon" : fs::path(input).stem().string();
     std::error_code ec;
     for (int n = 1;; ++n) {
-        fs::path candidate = dir / (stem + "-edited" + (n == 1 ? "" : "-" + std::to_string(n)) + ".json");
+        fs::path candidate =
+            dir / (stem + "-edited" + (n == 1 ? "" : "-" + std::to_string(n)) + ".json");
         if (!fs::exists(candidate, ec)) return candidate.string();
     }
 }
@@ -471,10 +482,12 @@ Diagnostic Editor::save(const std::string& path, bool overwriteInput) {
     namespace fs = std::filesystem;
     sync();
     if (path.empty()) return {Status::Usage, "no file name to save to"};
-    if (polygon_.vertices.empty()) return {Status::Usage, path + ": nothing to save: the polygon is empty"};
+    if (polygon_.vertices.empty())
+        return {Status::Usage, path + ": nothing to save: the polygon is empty"};
     std::error_code ec;
     const std::string input = inputFile(name_);
-    if (!overwriteInput && !input.empty() && fs::exists(input, ec) && fs::equivalent(input, path, ec))
+    if (!overwriteInput && !input.empty() && fs::exists(input, ec) &&
+        fs::equivalent(input, path, ec))
         return {Status::Usage, path + " is the file being edited: confirm to overwrite it"};
     return saveGeoJson(polygon_, path);
 }
@@ -502,14 +515,18 @@ Index Editor::pickEdge(Vec2 screen, double radiusPx, Point* onEdge) {
             Vec2 a = model_.camera.toScreen(polygon_.vertices[g.first + i]);
             Vec2 b = model_.camera.toScreen(polygon_.vertices[g.first + (i + 1) % g.count]);
             double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
-            double t = len2 > 0 ? std::clamp(((screen.x - a.x) * dx + (screen.y - a.y) * dy) / len2, 0.0, 1.0) : 0;
+            double t = len2 > 0 ? std::clamp(((screen.x - a.x) * dx + (screen.y - a.y) * dy) / len2,
+                                             0.0, 1.0)
+                                : 0;
             double px = a.x + t * dx - screen.x, py = a.y + t * dy - screen.y;
-            if (px * px + py * py <= bestD) bestD = px * px + py * py, best = g.first + i, bestT = t;
+            if (px * px + py * py <= bestD)
+                bestD = px * px + py * py, best = g.first + i, bestT = t;
         }
     }
     if (best != kNone && onEdge) {
         const Ring& g = polygon_.rings[polygon_.ringOf(best)];
-        Point a = polygon_.vertices[best], b = polygon_.vertices[best + 1 == g.first + g.count ? g.first : best + 1];
+        Point a = polygon_.vertices[best],
+              b = polygon_.vertices[best + 1 == g.first + g.count ? g.first : best + 1];
         *onEdge = {a.x + bestT * (b.x - a.x), a.y + bestT * (b.y - a.y)};
     }
     return best;

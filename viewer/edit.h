@@ -27,10 +27,10 @@ struct EditCommand {
         MoveVertex,    // rings[ring][at]: from -> to
         InsertVertex,  // `to` becomes rings[ring][at]
         DeleteVertex,  // rings[ring][at] (it was `from`) removed
-        AddRing,       // `after` becomes ring `ring`: a new part's outer ring if `outer`, else a hole
-        RemoveRing,    // the inverse: ring `ring` (`before`) removed, with its part if `outer`
-        MoveRing,      // ring `ring`'s points: before -> after
-        Replace,       // the whole polygon: `was` -> `now` (a new empty canvas)
+        AddRing,     // `after` becomes ring `ring`: a new part's outer ring if `outer`, else a hole
+        RemoveRing,  // the inverse: ring `ring` (`before`) removed, with its part if `outer`
+        MoveRing,    // ring `ring`'s points: before -> after
+        Replace,     // the whole polygon: `was` -> `now` (a new empty canvas)
     };
     Kind kind = Kind::MoveVertex;
     Index ring = 0, at = 0;
@@ -114,19 +114,19 @@ public:
     Index pickEdge(Vec2 screen, double radiusPx, Point* onEdge = nullptr);  // its first vertex
 
 private:
-    void sync();                       // follow the model if it opened something else
-    bool push(EditCommand c);          // applies and records it (merging within a gesture)
+    void sync();               // follow the model if it opened something else
+    bool push(EditCommand c);  // applies and records it (merging within a gesture)
     void apply(const EditCommand& c, bool forward);
-    void reflood();                    // hands polygon_ to the model (now, or in a thread)
+    void reflood();  // hands polygon_ to the model (now, or in a thread)
     void startJob();
     void finishJob();  // joins the flood and adopts it unless an open overtook it
 
     Model& model_;
     Polygon polygon_;
-    uint64_t generation_ = ~0ull;      // the model generation polygon_ belongs to
-    std::string name_;                 // the loaded file's name, kept by every edit
+    uint64_t generation_ = ~0ull;  // the model generation polygon_ belongs to
+    std::string name_;             // the loaded file's name, kept by every edit
     std::vector<EditCommand> history_;
-    size_t done_ = 0;                  // commands applied: history_[0, done_)
+    size_t done_ = 0;  // commands applied: history_[0, done_)
     bool gesture_ = false, merging_ = false;
     std::string message_;
 

@@ -22,13 +22,16 @@ using namespace flood::view;
 
 namespace {
 double now() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
 }
 double median(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     return v.empty() ? 0 : v[v.size() / 2] * 1e3;
 }
-double maximum(const std::vector<double>& v) { return v.empty() ? 0 : *std::max_element(v.begin(), v.end()) * 1e3; }
+double maximum(const std::vector<double>& v) {
+    return v.empty() ? 0 : *std::max_element(v.begin(), v.end()) * 1e3;
+}
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -59,15 +62,20 @@ int main(int argc, char** argv) {
         vertexLabels.buildVertices(model.polygon());
         CanvasOverlay o = buildCanvasOverlay(model, {}, g.origin);
         double t3 = now();
-        flood.push_back(t1 - t0), adopt.push_back(t2 - t1), canvas.push_back(t3 - t2), total.push_back(t3 - t0);
+        flood.push_back(t1 - t0), adopt.push_back(t2 - t1), canvas.push_back(t3 - t2),
+            total.push_back(t3 - t0);
     }
-    std::printf("flood-edit-bench: %s %zu: %zu vertices, %u events, %zu triangles, %s\n", family.c_str(), size,
-                model.polygon().vertices.size(), model.steps(), model.trace().triangles.size(),
-                model.failed() ? "FAILED" : "valid");
-    std::printf("flood-edit-bench: edit -> new trace ready, median / max of %d edits (ms):\n", edits);
-    std::printf("  flood (validate, record, exact checker; background thread) %.1f / %.1f\n", median(flood), maximum(flood));
-    std::printf("  adopt (classes, transcript, keyframes; UI thread) %.1f / %.1f\n", median(adopt), maximum(adopt));
-    std::printf("  canvas buffers (geometry, label grids, overlay; UI thread) %.1f / %.1f\n", median(canvas), maximum(canvas));
+    std::printf("flood-edit-bench: %s %zu: %zu vertices, %u events, %zu triangles, %s\n",
+                family.c_str(), size, model.polygon().vertices.size(), model.steps(),
+                model.trace().triangles.size(), model.failed() ? "FAILED" : "valid");
+    std::printf("flood-edit-bench: edit -> new trace ready, median / max of %d edits (ms):\n",
+                edits);
+    std::printf("  flood (validate, record, exact checker; background thread) %.1f / %.1f\n",
+                median(flood), maximum(flood));
+    std::printf("  adopt (classes, transcript, keyframes; UI thread) %.1f / %.1f\n", median(adopt),
+                maximum(adopt));
+    std::printf("  canvas buffers (geometry, label grids, overlay; UI thread) %.1f / %.1f\n",
+                median(canvas), maximum(canvas));
     std::printf("  total %.1f / %.1f\n", median(total), maximum(total));
     model.cancelInvariants();
     return model.failed() ? 1 : 0;

@@ -33,11 +33,13 @@ protected:
         unsigned char* pixels;
         int w, h;
         io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // the atlas NewFrame needs
-        Polygon p = makePolygon({{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{4, 4}, {4, 6}, {6, 6}, {6, 4}}}});
+        Polygon p =
+            makePolygon({{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{4, 4}, {4, 6}, {6, 6}, {6, 4}}}});
         model.openPolygon(p, "square.json", validate(p, "square.json"));
         ui.layout.canvas = {100, 0, 1000, 1000};
-        model.camera.fit(model.polygon(), ui.layout.canvas);  // 88 px per unit: clicks round to 0.01
-        ui.edit.editor.onReady = nullptr;  // no event loop to wake
+        model.camera.fit(model.polygon(),
+                         ui.layout.canvas);  // 88 px per unit: clicks round to 0.01
+        ui.edit.editor.onReady = nullptr;    // no event loop to wake
         ui.edit.on = true;
     }
     void TearDown() override {
@@ -46,7 +48,8 @@ protected:
     }
 
     // One frame with the mouse at `world`, the left button and keys as given.
-    void frame(Point world, bool down, std::initializer_list<int> keys = {}, bool shift = false, bool ctrl = false) {
+    void frame(Point world, bool down, std::initializer_list<int> keys = {}, bool shift = false,
+               bool ctrl = false) {
         ImGuiIO& io = ImGui::GetIO();
         Vec2 s = model.camera.toScreen(world);
         io.MousePos = ImVec2(float(s.x), float(s.y));

@@ -17,7 +17,8 @@ namespace {
 
 // A step number: digits only, at most 2^32 - 2 (kNone means "the end").
 bool parseStep(const std::string& s, uint32_t& out) {
-    if (s.empty() || s.size() > 10 || s.find_first_not_of("0123456789") != std::string::npos) return false;
+    if (s.empty() || s.size() > 10 || s.find_first_not_of("0123456789") != std::string::npos)
+        return false;
     unsigned long long v = std::strtoull(s.c_str(), nullptr, 10);
     if (v >= kNone) return false;
     out = uint32_t(v);
@@ -31,13 +32,16 @@ bool parseStepRange(const std::string& text, uint32_t& first, uint32_t& last, st
     std::string a = colon == std::string::npos ? text : text.substr(0, colon);
     std::string b = colon == std::string::npos ? "" : text.substr(colon + 1);
     uint32_t f = 0, l = kNone;
-    bool ok = colon != std::string::npos && (a.empty() || parseStep(a, f)) && (b.empty() || parseStep(b, l));
+    bool ok = colon != std::string::npos && (a.empty() || parseStep(a, f)) &&
+              (b.empty() || parseStep(b, l));
     if (ok && f > l) {
         if (error) *error = "--steps " + text + ": the first step is after the last";
         return false;
     }
     if (!ok) {
-        if (error) *error = "--steps wants A:B (step numbers, A: or :B for an open end), got '" + text + "'";
+        if (error)
+            *error =
+                "--steps wants A:B (step numbers, A: or :B for an open end), got '" + text + "'";
         return false;
     }
     first = f, last = l;
@@ -62,7 +66,8 @@ Camera exportCamera(const Camera& canvas, const Rect& area) {
     const double usable = 0.88;
     Camera cam;
     Point c = canvas.center();
-    cam.fitBox(c.x - w * usable / 2, c.y - h * usable / 2, c.x + w * usable / 2, c.y + h * usable / 2, area);
+    cam.fitBox(c.x - w * usable / 2, c.y - h * usable / 2, c.x + w * usable / 2,
+               c.y + h * usable / 2, area);
     cam.centerOn(c);  // exactly the canvas's centre, not a rounded midpoint
     return cam;
 }

@@ -17,13 +17,13 @@ struct ExportSettings {
     int width = 1280, height = 800;  // pixels of every picture
     // The step range, inclusive; kNone as last: the flood's last step.
     uint32_t first = 0, last = kNone;
-    uint32_t every = 1;  // one frame every K steps (the last step of the range always ends it)
-    double fps = 10;     // GIF frames per second
+    uint32_t every = 1;    // one frame every K steps (the last step of the range always ends it)
+    double fps = 10;       // GIF frames per second
     bool caption = false;  // a line under the canvas: step, action, narration
-    std::string png;     // one canvas-only PNG of the current step
-    std::string svg;     // one SVG of the current step
-    std::string gif;     // an animated GIF of the range
-    std::string pngDir;  // a numbered PNG sequence of the range, in this directory
+    std::string png;       // one canvas-only PNG of the current step
+    std::string svg;       // one SVG of the current step
+    std::string gif;       // an animated GIF of the range
+    std::string pngDir;    // a numbered PNG sequence of the range, in this directory
     bool animated() const { return !gif.empty() || !pngDir.empty(); }
 };
 

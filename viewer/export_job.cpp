@@ -21,7 +21,8 @@ namespace flood::view {
 namespace {
 
 double now() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
 }
 
 // Draws a draw list of our own (not a window's) into the bound framebuffer.
@@ -46,8 +47,8 @@ struct ExportJob::Impl {
     Ui& ui;
     ExportSettings s;
     uint32_t startStep;
-    Camera camera;  // the canvas's view at the export's size
-    Rect area;      // the canvas in the picture: all of it but the caption band
+    Camera camera;                // the canvas's view at the export's size
+    Rect area;                    // the canvas in the picture: all of it but the caption band
     std::vector<uint32_t> steps;  // the frames of an animation
     enum class Phase { Still, Frames, Encode, Done } phase = Phase::Still;
     size_t frame = 0;
@@ -68,7 +69,8 @@ struct ExportJob::Impl {
     std::vector<uint8_t> indices;
 #endif
 
-    Impl(Ui& u, ExportSettings settings) : ui(u), s(std::move(settings)), startStep(u.model.step()) {
+    Impl(Ui& u, ExportSettings settings)
+        : ui(u), s(std::move(settings)), startStep(u.model.step()) {
         const Model& m = ui.model;
         if (s.animated()) steps = exportSteps(s.first, s.last, s.every, m.steps());
         area = {0, 0, double(s.width), double(s.height)};
@@ -85,11 +87,14 @@ struct ExportJob::Impl {
         std::vector<uint32_t> shown = steps;
         if (!s.png.empty() || !s.svg.empty()) shown.push_back(startStep);
         for (uint32_t st : shown)
-            headWidth = std::max(headWidth, f->CalcTextSizeA(fontSize, FLT_MAX, 0, captionOf(ui.model, st).head.c_str()).x);
+            headWidth = std::max(
+                headWidth,
+                f->CalcTextSizeA(fontSize, FLT_MAX, 0, captionOf(ui.model, st).head.c_str()).x);
         float textHeight = fontSize;
         for (uint32_t st : shown)
             textHeight = std::max(textHeight, f->CalcTextSizeA(fontSize, FLT_MAX, wrapWidth(),
-                                                               captionOf(ui.model, st).text.c_str()).y);
+                                                               captionOf(ui.model, st).text.c_str())
+                                                  .y);
         double band = std::min<double>(textHeight + 2 * pad, s.height / 3.0);
         area.h = s.height - std::floor(band);
     }
@@ -118,8 +123,8 @@ struct ExportJob::Impl {
             CaptionLine c = captionOf(m, step);
             float y = float(area.h) + pad;
             dl.AddText(font(), fontSize, ImVec2(pad, y), toImU32(c.headColor), c.head.c_str());
-            dl.AddText(font(), fontSize, ImVec2(textX(), y), toImU32(palette::kBoundary), c.text.c_str(), nullptr,
-                       wrapWidth());
+            dl.AddText(font(), fontSize, ImVec2(textX(), y), toImU32(palette::kBoundary),
+                       c.text.c_str(), nullptr, wrapWidth());
         }
         m.camera = keep;
         ui.layout.canvas = keepCanvas;
@@ -153,8 +158,8 @@ struct ExportJob::Impl {
             cli::Output out(s.svg);
             std::optional<CaptionLine> c;
             if (s.caption) c = captionOf(ui.model, startStep);
-            writeSceneSvg(out.stream(), buildScene(ui.model, ui.sceneOptions), camera, s.width, s.height,
-                          c ? &*c : nullptr);
+            writeSceneSvg(out.stream(), buildScene(ui.model, ui.sceneOptions), camera, s.width,
+                          s.height, c ? &*c : nullptr);
             std::string error;
             if (out.commit(&error) != Status::Ok) fail(Status::WriteFailed, error);
             else written.push_back(s.svg);
@@ -184,7 +189,8 @@ struct ExportJob::Impl {
             gifFile = std::make_unique<cli::Output>(s.gif);
             map = std::make_unique<PaletteMap>(colours.build(256));
             int delay = std::max(2, int(std::lround(100 / std::clamp(s.fps, kMinFps, kMaxFps))));
-            gif = std::make_unique<GifWriter>(gifFile->stream(), s.width, s.height, map->palette(), delay);
+            gif = std::make_unique<GifWriter>(gifFile->stream(), s.width, s.height, map->palette(),
+                                              delay);
         }
         if (!render(steps[frame])) return;
         indices.resize(rgba.size() / 4);
@@ -195,14 +201,16 @@ struct ExportJob::Impl {
         std::string error;
         Status st = gifFile->commit(&error);  // an encoder failure is a write failure too
         if (!ok || st != Status::Ok) {
-            fail(Status::WriteFailed, st != Status::Ok ? error : "error: " + s.gif + ": cannot write: " + gif->error());
+            fail(Status::WriteFailed,
+                 st != Status::Ok ? error : "error: " + s.gif + ": cannot write: " + gif->error());
             return;
         }
         written.push_back(s.gif + " (" + std::to_string(steps.size()) + " frames, " +
                           std::to_string(map->palette().size()) + " colours)");
         phase = Phase::Done;
 #else
-        fail(Status::Usage, "error: " + s.gif + ": this flood-viewer was built without giflib (FLOOD_GIF)");
+        fail(Status::Usage,
+             "error: " + s.gif + ": this flood-viewer was built without giflib (FLOOD_GIF)");
 #endif
     }
 
@@ -216,7 +224,8 @@ struct ExportJob::Impl {
     }
 };
 
-ExportJob::ExportJob(Ui& ui, ExportSettings settings) : impl_(std::make_unique<Impl>(ui, std::move(settings))) {}
+ExportJob::ExportJob(Ui& ui, ExportSettings settings)
+    : impl_(std::make_unique<Impl>(ui, std::move(settings))) {}
 
 ExportJob::~ExportJob() {
     if (impl_->phase != Impl::Phase::Done) impl_->finish();
@@ -245,7 +254,8 @@ double ExportJob::progress() const {
     if (j.phase == Impl::Phase::Done) return 1;
     if (j.steps.empty()) return 0;
     double passes = j.s.gif.empty() ? 1 : 2;
-    double done = j.phase == Impl::Phase::Encode ? double(j.steps.size()) + j.frame : double(j.frame);
+    double done =
+        j.phase == Impl::Phase::Encode ? double(j.steps.size()) + j.frame : double(j.frame);
     return done / (passes * double(j.steps.size()));
 }
 

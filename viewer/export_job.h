@@ -24,7 +24,7 @@ public:
 
     // Works for about `seconds` (0: to the end). False once finished, well or not.
     bool advance(double seconds);
-    void cancel();  // stops at the next frame; files already complete are kept
+    void cancel();                       // stops at the next frame; files already complete are kept
     Status status() const;               // Ok, WriteFailed, or Internal (the GL refused)
     const std::string& message() const;  // "wrote ..." or the first failure
     double progress() const;             // 0..1

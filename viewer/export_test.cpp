@@ -20,8 +20,8 @@
 #include <gif_lib.h>
 #endif
 
-#include "gui_test_display.h"
 #include "export.h"
+#include "gui_test_display.h"
 #include "model.h"
 #include "palette.h"
 
@@ -31,13 +31,12 @@ namespace fs = std::filesystem;
 
 namespace {
 
-
-#define NEED_DISPLAY()                                                                     \
-    do {                                                                                   \
-        if (!hasDisplay()) {                                                                \
-            if (inCi()) FAIL() << "no display in CI: run under xvfb-run -a";               \
-            GTEST_SKIP() << "no display (run under xvfb-run -a)";                          \
-        }                                                                                  \
+#define NEED_DISPLAY()                                                       \
+    do {                                                                     \
+        if (!hasDisplay()) {                                                 \
+            if (inCi()) FAIL() << "no display in CI: run under xvfb-run -a"; \
+            GTEST_SKIP() << "no display (run under xvfb-run -a)";            \
+        }                                                                    \
     } while (0)
 
 struct ViewerRun {
@@ -58,7 +57,8 @@ ViewerRun viewer(const std::string& args) {
 }
 
 fs::path scratch(const std::string& name) {
-    fs::path d = fs::path(FLOOD_WORK_DIR) / ("export-test-" + name + "-" + std::to_string(getpid()));
+    fs::path d =
+        fs::path(FLOOD_WORK_DIR) / ("export-test-" + name + "-" + std::to_string(getpid()));
     fs::remove_all(d);
     fs::create_directories(d);
     return d;
@@ -69,7 +69,8 @@ std::string squareWithHole(const fs::path& dir) {
     std::string path = (dir / "square-hole.json").string();
     std::ofstream(path) << R"({"type": "Polygon", "coordinates": [
         [[0, 0], [10, 1], [11, 9], [1, 10], [0, 0]],
-        [[4, 4], [4, 6], [6, 6.5], [6.5, 4], [4, 4]]]})" "\n";
+        [[4, 4], [4, 6], [6, 6.5], [6.5, 4], [4, 4]]]})"
+                           "\n";
     return path;
 }
 
@@ -133,10 +134,11 @@ TEST(ExportGui, CanvasOnlyPngHasTheSizeAndNoPanels) {
     m.seek(step);
     const int W = 640, H = 480;
     std::string whole = (dir / "window.png").string(), canvas = (dir / "canvas.png").string();
-    ViewerRun w = viewer("'" + input + "' --step " + std::to_string(step) + " --screenshot '" + whole + "' --size 640x480");
+    ViewerRun w = viewer("'" + input + "' --step " + std::to_string(step) + " --screenshot '" +
+                         whole + "' --size 640x480");
     ASSERT_EQ(w.code, 0) << w.out;
-    ViewerRun c = viewer("'" + input + "' --step " + std::to_string(step) + " --screenshot '" + canvas +
-                   "' --canvas-only --size 640x480");
+    ViewerRun c = viewer("'" + input + "' --step " + std::to_string(step) + " --screenshot '" +
+                         canvas + "' --canvas-only --size 640x480");
     ASSERT_EQ(c.code, 0) << c.out;
     Image win, img;
     ASSERT_TRUE(win.load(whole));
@@ -152,16 +154,18 @@ TEST(ExportGui, CanvasOnlyPngHasTheSizeAndNoPanels) {
     Camera cam = exportView(m, Rect{0, 0, double(W), double(H)});
     const auto& v = m.polygon().vertices;
     const Triangle& t = m.trace().triangles[0];  // flooded first, not by the current event
-    bool water = false;  // away from the centroid's label and the edges
+    bool water = false;                          // away from the centroid's label and the edges
     for (auto [a, b, c] : {std::tuple{0.6, 0.2, 0.2}, {0.2, 0.6, 0.2}, {0.2, 0.2, 0.6}}) {
-        Vec2 s = cam.toScreen({a * v[t[0]].x + b * v[t[1]].x + c * v[t[2]].x, a * v[t[0]].y + b * v[t[1]].y + c * v[t[2]].y});
+        Vec2 s = cam.toScreen({a * v[t[0]].x + b * v[t[1]].x + c * v[t[2]].x,
+                               a * v[t[0]].y + b * v[t[1]].y + c * v[t[2]].y});
         water |= close(img.at(int(s.x), int(s.y)), palette::kWater, 6);
     }
     EXPECT_TRUE(water) << "water inside triangle 0";
     Vec2 left = cam.toScreen(v[m.state().fingers.left]);
     bool found = false;
     for (int dy = -1; dy <= 1; ++dy)
-        for (int dx = -1; dx <= 1; ++dx) found |= close(img.at(int(left.x) + dx, int(left.y) + dy), palette::kLeft, 6);
+        for (int dx = -1; dx <= 1; ++dx)
+            found |= close(img.at(int(left.x) + dx, int(left.y) + dy), palette::kLeft, 6);
     EXPECT_TRUE(found) << "Left marker at " << left.x << "," << left.y;
 }
 
@@ -173,8 +177,8 @@ TEST(ExportGui, CaptionIsABandUnderTheCanvas) {
     m.open(input);
     uint32_t step = middleStep(input);
     std::string out = (dir / "captioned.png").string();
-    ViewerRun c = viewer("'" + input + "' --step " + std::to_string(step) + " --screenshot '" + out +
-                   "' --canvas-only --caption --size 800x500");
+    ViewerRun c = viewer("'" + input + "' --step " + std::to_string(step) + " --screenshot '" +
+                         out + "' --canvas-only --caption --size 800x500");
     ASSERT_EQ(c.code, 0) << c.out;
     Image img;
     ASSERT_TRUE(img.load(out));
@@ -202,14 +206,17 @@ TEST(ExportGui, SvgIsWellFormedWithATriangleElementPerTriangle) {
     uint32_t step = middleStep(input);
     m.seek(step);
     std::string out = (dir / "canvas.svg").string();
-    ViewerRun c = viewer("'" + input + "' --step " + std::to_string(step) + " --screenshot '" + out +
-                   "' --canvas-only --caption --size 800x600");
+    ViewerRun c = viewer("'" + input + "' --step " + std::to_string(step) + " --screenshot '" +
+                         out + "' --canvas-only --caption --size 800x600");
     ASSERT_EQ(c.code, 0) << c.out;
     // Debian's Python parses it: well-formed XML, and counts the triangle elements.
-    std::string py = "/usr/bin/python3 -c \"import sys, xml.etree.ElementTree as E; r = E.parse(sys.argv[1]).getroot(); "
-                     "p = [e for e in r.iter('{http://www.w3.org/2000/svg}polygon')]; "
-                     "print(r.get('width'), r.get('height'), len(p), sum(e.get('class') == 'current' for e in p))\" '" +
-                     out + "' 2>&1";
+    std::string py =
+        "/usr/bin/python3 -c \"import sys, xml.etree.ElementTree as E; r = "
+        "E.parse(sys.argv[1]).getroot(); "
+        "p = [e for e in r.iter('{http://www.w3.org/2000/svg}polygon')]; "
+        "print(r.get('width'), r.get('height'), len(p), sum(e.get('class') == 'current' for e in "
+        "p))\" '" +
+        out + "' 2>&1";
     FILE* pipe = popen(py.c_str(), "r");
     ASSERT_NE(pipe, nullptr);
     char buf[512] = "";
@@ -232,7 +239,8 @@ TEST(ExportGui, GifHasAFramePerExportedStep) {
     ASSERT_GE(m.steps(), 7u);
     std::string out = (dir / "flood.gif").string();
     // Steps 1, 4 and the range's end 6: three frames.
-    ViewerRun c = viewer("'" + input + "' --export-gif '" + out + "' --steps 1:6 --every 3 --fps 4 --caption --size 320x240");
+    ViewerRun c = viewer("'" + input + "' --export-gif '" + out +
+                         "' --steps 1:6 --every 3 --fps 4 --caption --size 320x240");
     ASSERT_EQ(c.code, 0) << c.out;
     int err = 0;
     GifFileType* g = DGifOpenFileName(out.c_str(), &err);
@@ -265,13 +273,15 @@ TEST(ExportGui, PngSequenceHasAFilePerExportedStep) {
     fs::path dir = scratch("seq");
     std::string input = squareWithHole(dir);
     fs::path frames = dir / "frames";
-    ViewerRun c = viewer("'" + input + "' --export-png-dir '" + frames.string() + "' --steps 0:5 --every 2 --size 200x150");
+    ViewerRun c = viewer("'" + input + "' --export-png-dir '" + frames.string() +
+                         "' --steps 0:5 --every 2 --size 200x150");
     ASSERT_EQ(c.code, 0) << c.out;
     // Steps 0, 2, 4 and 5.
     std::vector<std::string> names;
     for (auto& e : fs::directory_iterator(frames)) names.push_back(e.path().filename().string());
     std::sort(names.begin(), names.end());
-    EXPECT_EQ(names, (std::vector<std::string>{"frame-0000.png", "frame-0001.png", "frame-0002.png", "frame-0003.png"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"frame-0000.png", "frame-0001.png", "frame-0002.png",
+                                               "frame-0003.png"}));
     Image a, b;
     ASSERT_TRUE(a.load((frames / "frame-0000.png").string()));
     ASSERT_TRUE(b.load((frames / "frame-0003.png").string()));
@@ -309,13 +319,15 @@ TEST(ExportGui, UnwritablePathExits8AndSaysWhy) {
 TEST(ExportGui, BadExportOptionsAreUsageErrors) {
     fs::path dir = scratch("usage");
     std::string input = squareWithHole(dir);
-    for (const char* bad : {"--steps 0:3", "--export-gif x.gif --steps 3:1", "--export-gif x.gif --every 0",
-                            "--export-gif x.gif --fps 100", "--canvas-only", "--caption --screenshot x.png"}) {
+    for (const char* bad :
+         {"--steps 0:3", "--export-gif x.gif --steps 3:1", "--export-gif x.gif --every 0",
+          "--export-gif x.gif --fps 100", "--canvas-only", "--caption --screenshot x.png"}) {
         ViewerRun r = viewer("'" + input + "' " + bad);
         EXPECT_EQ(r.code, 2) << bad << "\n" << r.out;
     }
     if (hasDisplay()) {  // past the flood's end: known once the file is open
-        ViewerRun r = viewer("'" + input + "' --export-png-dir '" + (dir / "f").string() + "' --steps 0:9999");
+        ViewerRun r = viewer("'" + input + "' --export-png-dir '" + (dir / "f").string() +
+                             "' --steps 0:9999");
         EXPECT_EQ(r.code, 2) << r.out;
         EXPECT_NE(r.out.find("steps (0.."), std::string::npos) << r.out;
     }

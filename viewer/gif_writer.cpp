@@ -16,7 +16,8 @@ int writeTo(GifFileType* gif, const GifByteType* data, int length) {
 
 }  // namespace
 
-GifWriter::GifWriter(std::ostream& out, int width, int height, const std::vector<Rgb>& palette, int delay)
+GifWriter::GifWriter(std::ostream& out, int width, int height, const std::vector<Rgb>& palette,
+                     int delay)
     : width_(width), height_(height), delay_(delay) {
     int err = 0;
     gif_ = EGifOpen(&out, writeTo, &err);
@@ -37,8 +38,8 @@ GifWriter::GifWriter(std::ostream& out, int width, int height, const std::vector
     // NETSCAPE2.0: loop forever (count 0), as a slide expects.
     const unsigned char loop[3] = {1, 0, 0};
     ok = ok && check(EGifPutExtensionLeader(gif_, APPLICATION_EXT_FUNC_CODE)) &&
-         check(EGifPutExtensionBlock(gif_, 11, "NETSCAPE2.0")) && check(EGifPutExtensionBlock(gif_, 3, loop)) &&
-         check(EGifPutExtensionTrailer(gif_));
+         check(EGifPutExtensionBlock(gif_, 11, "NETSCAPE2.0")) &&
+         check(EGifPutExtensionBlock(gif_, 3, loop)) && check(EGifPutExtensionTrailer(gif_));
     (void)ok;  // a failure is kept in error_ and refuses every later call
 }
 

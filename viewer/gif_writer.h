@@ -22,7 +22,7 @@ public:
 
     // One frame of width x height palette indices, top row first.
     bool addFrame(const std::vector<uint8_t>& indices);
-    bool finish();  // the trailer; false if anything failed
+    bool finish();                                       // the trailer; false if anything failed
     const std::string& error() const { return error_; }  // giflib's reason of the first failure
 
 private:

@@ -11,7 +11,8 @@ std::vector<Point> activeGorgeOutline(const Model& model) {
     const Fingers& f = s.fingers;
     std::vector<Index> ids;
     auto add = [&](Index v) {
-        if (v != kNone && v < poly.vertices.size() && (ids.empty() || ids.back() != v)) ids.push_back(v);
+        if (v != kNone && v < poly.vertices.size() && (ids.empty() || ids.back() != v))
+            ids.push_back(v);
     };
     if (s.chain.empty() && f.left == kNone) return {};
     add(f.nextLeft);
@@ -38,7 +39,8 @@ std::vector<Rect> outsideOf(const std::vector<Vec2>& outline, const Rect& area, 
         double first = std::ceil((lo - area.y) / rowHeight - 0.5);
         double last = std::ceil((hi - area.y) / rowHeight - 0.5) - 1;
         if (last < 0 || first > double(rows) - 1) continue;
-        for (size_t i = size_t(std::max(first, 0.0)); i <= size_t(std::min(last, double(rows) - 1)); ++i) {
+        for (size_t i = size_t(std::max(first, 0.0)); i <= size_t(std::min(last, double(rows) - 1));
+             ++i) {
             double y = area.y + (double(i) + 0.5) * rowHeight;
             crossings[i].push_back(a.x + (y - a.y) * (b.x - a.x) / (b.y - a.y));
         }

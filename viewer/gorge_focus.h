@@ -15,6 +15,7 @@ std::vector<Point> activeGorgeOutline(const Model& model);
 // self-crossing outline of invalid input still dims something sensible), as rectangles in
 // rows `rowHeight` high: each row's spans outside the outline at the row's middle. The work
 // is the rows each edge spans: a caller redraws it only when the step or the camera changed.
-std::vector<Rect> outsideOf(const std::vector<Vec2>& outline, const Rect& area, double rowHeight = 1);
+std::vector<Rect> outsideOf(const std::vector<Vec2>& outline, const Rect& area,
+                            double rowHeight = 1);
 
 }  // namespace flood::view

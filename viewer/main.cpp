@@ -16,10 +16,10 @@
 
 #include "export_job.h"
 #include "model.h"
-#include "transcript.h"
 #include "panels.h"
 #include "platform_glfw.h"
 #include "renderer.h"
+#include "transcript.h"
 
 using namespace flood;
 using namespace flood::view;
@@ -28,11 +28,11 @@ namespace {
 
 struct Args {
     std::string file;
-    long step = -1;  // -1: where the model lands by itself
+    long step = -1;               // -1: where the model lands by itself
     std::vector<uint32_t> steps;  // every --step in order: one frame at each before the last
     std::string screenshot;
     int width = 1280, height = 800;
-    bool bench = false;  // measure open, seek and frame times, print them, exit
+    bool bench = false;      // measure open, seek and frame times, print them, exit
     bool showError = false;  // open in the error view (as the E key does)
     long feature = -1;       // --feature N: that feature of a FeatureCollection
     float scale = 0;         // --scale S: the content scale, instead of the monitor's
@@ -45,17 +45,19 @@ struct Args {
         bool ctrl;
     };
     std::vector<Press> presses;  // --press KEY: presenter keys pressed before a screenshot
-    bool canvasOnly = false;  // --canvas-only: --screenshot renders the canvas alone
+    bool canvasOnly = false;     // --canvas-only: --screenshot renders the canvas alone
     bool sizeGiven = false;
     ExportSettings exports;  // canvas-only PNG, SVG, GIF, PNG sequence (export.h)
     bool rangeGiven = false, everyGiven = false, fpsGiven = false;
-    bool exporting() const { return !exports.png.empty() || !exports.svg.empty() || exports.animated(); }
+    bool exporting() const {
+        return !exports.png.empty() || !exports.svg.empty() || exports.animated();
+    }
     std::string layer, where;  // --layer, --where: a GIS dataset's layer and feature filter
     bool predicates = false;   // --predicates: the predicate inspector open
     bool gorgeFocus = false;   // --gorge-focus: "current gorge only"
     bool mouse = false;        // --mouse X,Y (screenshots): the pointer there, for hover pictures
     float mouseX = 0, mouseY = 0;
-    std::string up;          // --up: flood along this direction, with the dial open
+    std::string up;  // --up: flood along this direction, with the dial open
 };
 
 // --press names: the presenter keys, so a screenshot can show what they do.
@@ -71,7 +73,8 @@ bool pressNamed(const std::string& name, Args::Press& p) {
 const char* const kUsage =
     "usage: flood-viewer [FILE] [--feature N] [--layer NAME] [--where SQL] [--step N]\n"
     "                    [--show-error] [--predicates] [--gorge-focus] [--screenshot OUT.png]\n"
-    "                    [--size WxH] [--mouse X,Y] [--scale S] [--presenter] [--theme light|dark]\n"
+    "                    [--size WxH] [--mouse X,Y] [--scale S] [--presenter] [--theme "
+    "light|dark]\n"
     "                    [--up DIRECTION]\n"
     "       flood-viewer FILE --screenshot OUT.png|OUT.svg --canvas-only [--size WxH] [--caption]\n"
     "       flood-viewer FILE --export-gif OUT.gif|--export-png-dir DIR [--steps A:B] [--every K]\n"
@@ -131,7 +134,8 @@ int parseArgs(int argc, char** argv, Args& a) {
             const char* v = value("--step");
             char* end = nullptr;
             if (!v || (a.step = std::strtol(v, &end, 10), *end != 0) || a.step < 0) {
-                if (v) std::fprintf(stderr, "flood-viewer: --step wants a number >= 0, got '%s'\n", v);
+                if (v)
+                    std::fprintf(stderr, "flood-viewer: --step wants a number >= 0, got '%s'\n", v);
                 return 2 + 1;
             }
             a.steps.push_back(uint32_t(std::min<long>(a.step, ~0u)));
@@ -139,20 +143,27 @@ int parseArgs(int argc, char** argv, Args& a) {
             const char* v = value("--feature");
             char* end = nullptr;
             if (!v || (a.feature = std::strtol(v, &end, 10), *end != 0) || a.feature < 0) {
-                if (v) std::fprintf(stderr, "flood-viewer: --feature wants a number >= 0, got '%s'\n", v);
+                if (v)
+                    std::fprintf(stderr, "flood-viewer: --feature wants a number >= 0, got '%s'\n",
+                                 v);
                 return 2 + 1;
             }
         } else if (s == "--scale") {
             const char* v = value("--scale");
             char* end = nullptr;
-            if (!v || (a.scale = std::strtof(v, &end), *end != 0) || !(a.scale >= 0.5f && a.scale <= 4)) {
-                if (v) std::fprintf(stderr, "flood-viewer: --scale wants a number in 0.5..4, got '%s'\n", v);
+            if (!v || (a.scale = std::strtof(v, &end), *end != 0) ||
+                !(a.scale >= 0.5f && a.scale <= 4)) {
+                if (v)
+                    std::fprintf(stderr,
+                                 "flood-viewer: --scale wants a number in 0.5..4, got '%s'\n", v);
                 return 2 + 1;
             }
         } else if (s == "--theme") {
             const char* v = value("--theme");
             if (!v || !palette::parseTheme(v, a.theme)) {
-                if (v) std::fprintf(stderr, "flood-viewer: --theme wants light or dark, got '%s'\n", v);
+                if (v)
+                    std::fprintf(stderr, "flood-viewer: --theme wants light or dark, got '%s'\n",
+                                 v);
                 return 2 + 1;
             }
             a.themeGiven = true;
@@ -162,7 +173,11 @@ int parseArgs(int argc, char** argv, Args& a) {
             const char* v = value("--press");
             Args::Press p{};
             if (!v || !pressNamed(v, p)) {
-                if (v) std::fprintf(stderr, "flood-viewer: --press wants tab, f11, ctrl+plus, ctrl+minus or ctrl+0, got '%s'\n", v);
+                if (v)
+                    std::fprintf(stderr,
+                                 "flood-viewer: --press wants tab, f11, ctrl+plus, ctrl+minus or "
+                                 "ctrl+0, got '%s'\n",
+                                 v);
                 return 2 + 1;
             }
             a.presses.push_back(p);
@@ -191,7 +206,8 @@ int parseArgs(int argc, char** argv, Args& a) {
             const char* v = value("--up");
             Up d;
             std::string why;
-            if (v && !parseUp(v, d, why)) std::fprintf(stderr, "flood-viewer: --up: %s\n", why.c_str());
+            if (v && !parseUp(v, d, why))
+                std::fprintf(stderr, "flood-viewer: --up: %s\n", why.c_str());
             if (!v || !why.empty()) return 2 + 1;
             a.up = v;
         } else if (s == "--screenshot") {
@@ -202,7 +218,9 @@ int parseArgs(int argc, char** argv, Args& a) {
             const char* v = value("--size");
             if (!v || std::sscanf(v, "%dx%d", &a.width, &a.height) != 2 || a.width < 64 ||
                 a.height < 64 || a.width > 16384 || a.height > 16384) {
-                if (v) std::fprintf(stderr, "flood-viewer: --size wants WxH (64..16384), got '%s'\n", v);
+                if (v)
+                    std::fprintf(stderr, "flood-viewer: --size wants WxH (64..16384), got '%s'\n",
+                                 v);
                 return 2 + 1;
             }
             a.sizeGiven = true;
@@ -228,7 +246,10 @@ int parseArgs(int argc, char** argv, Args& a) {
             char* end = nullptr;
             long k = v ? std::strtol(v, &end, 10) : 0;
             if (!v || *end != 0 || k < 1 || k > 1000000000L) {
-                if (v) std::fprintf(stderr, "flood-viewer: --every wants a number of steps >= 1, got '%s'\n", v);
+                if (v)
+                    std::fprintf(stderr,
+                                 "flood-viewer: --every wants a number of steps >= 1, got '%s'\n",
+                                 v);
                 return 2 + 1;
             }
             a.exports.every = uint32_t(k);
@@ -238,7 +259,11 @@ int parseArgs(int argc, char** argv, Args& a) {
             char* end = nullptr;
             double f = v ? std::strtod(v, &end) : 0;
             if (!v || *end != 0 || !(f >= kMinFps && f <= kMaxFps)) {
-                if (v) std::fprintf(stderr, "flood-viewer: --fps wants frames per second from 0.1 to 50, got '%s'\n", v);
+                if (v)
+                    std::fprintf(
+                        stderr,
+                        "flood-viewer: --fps wants frames per second from 0.1 to 50, got '%s'\n",
+                        v);
                 return 2 + 1;
             }
             a.exports.fps = f;
@@ -263,10 +288,12 @@ int parseArgs(int argc, char** argv, Args& a) {
     else if ((a.rangeGiven || a.everyGiven) && !a.exports.animated())
         needs = "--steps and --every need --export-gif or --export-png-dir";
     else if (a.fpsGiven && a.exports.gif.empty()) needs = "--fps needs --export-gif";
-    else if (a.exports.caption && !a.exporting()) needs = "--caption needs --canvas-only, an SVG or an export";
+    else if (a.exports.caption && !a.exporting())
+        needs = "--caption needs --canvas-only, an SVG or an export";
     else if (a.exporting() && a.bench) needs = "--bench cannot be combined with exports";
 #ifndef FLOOD_GIF
-    if (!a.exports.gif.empty()) needs = "--export-gif: this flood-viewer was built without giflib (FLOOD_GIF)";
+    if (!a.exports.gif.empty())
+        needs = "--export-gif: this flood-viewer was built without giflib (FLOOD_GIF)";
 #endif
     if (needs) {
         std::fprintf(stderr, "flood-viewer: %s\n%s", needs, kUsage);
@@ -284,10 +311,12 @@ int parseArgs(int argc, char** argv, Args& a) {
 int printSummary(const std::string& why, Model& model, const Args& args) {
     std::printf("flood-viewer: %s.\n", why.c_str());
     if (!args.screenshot.empty() || args.exports.animated()) {
-        std::string out = !args.screenshot.empty() ? args.screenshot
-                          : !args.exports.gif.empty() ? args.exports.gif : args.exports.pngDir;
-        std::fprintf(stderr, "flood-viewer: cannot write %s without a display; try\n"
-                             "  xvfb-run -a flood-viewer %s --screenshot %s\n",
+        std::string out = !args.screenshot.empty()    ? args.screenshot
+                          : !args.exports.gif.empty() ? args.exports.gif
+                                                      : args.exports.pngDir;
+        std::fprintf(stderr,
+                     "flood-viewer: cannot write %s without a display; try\n"
+                     "  xvfb-run -a flood-viewer %s --screenshot %s\n",
                      out.c_str(), args.file.c_str(), out.c_str());
         return 1;
     }
@@ -304,16 +333,18 @@ int printSummary(const std::string& why, Model& model, const Args& args) {
                 t.triangles.size());
     std::printf("  verdict: %s\n", model.verdict().c_str());
     std::printf("  transcript: %s\n", transcript(model.trace().events).c_str());
-    std::printf("For more without a display:\n"
-                "  flood transcript %s      every event, one per line\n"
-                "  flood trace %s           the recorded trace\n"
-                "  xvfb-run -a flood-viewer %s --step N --screenshot out.png\n",
-                model.path().c_str(), model.path().c_str(), model.path().c_str());
+    std::printf(
+        "For more without a display:\n"
+        "  flood transcript %s      every event, one per line\n"
+        "  flood trace %s           the recorded trace\n"
+        "  xvfb-run -a flood-viewer %s --step N --screenshot out.png\n",
+        model.path().c_str(), model.path().c_str(), model.path().c_str());
     return 0;
 }
 
 double now() {  // seconds; works before the window system is up
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
 }
 
 // --bench: what a user waits for on a big polygon, in milliseconds. Frames are timed in three
@@ -323,7 +354,7 @@ double now() {  // seconds; works before the window system is up
 struct BenchStats {
     double openMs = 0, firstFrameMs = 0;
     size_t keyframes = 0, keyframeBytes = 0;
-    std::vector<double> seeks;                    // seconds
+    std::vector<double> seeks;  // seconds
     struct Frames {
         std::vector<double> build, submit, all;  // seconds, from the frame's start
     } step, pan;  // a new random step every frame; the same step while the camera moves
@@ -340,19 +371,24 @@ struct BenchStats {
         return v[std::min(v.size() - 1, size_t(q * double(v.size())))] * 1e3;
     }
     static void frames(const char* what, const Frames& f) {
-        std::printf("bench: frame, %s (%zu frames), median / max ms:\n"
-                    "bench:   build (viewer CPU) %.2f / %.2f; + GL submit %.2f / %.2f; + glFinish %.2f / %.2f\n",
-                    what, f.build.size(), pct(f.build, 0.5), pct(f.build, 1.0), pct(f.submit, 0.5),
-                    pct(f.submit, 1.0), pct(f.all, 0.5), pct(f.all, 1.0));
+        std::printf(
+            "bench: frame, %s (%zu frames), median / max ms:\n"
+            "bench:   build (viewer CPU) %.2f / %.2f; + GL submit %.2f / %.2f; + glFinish %.2f / "
+            "%.2f\n",
+            what, f.build.size(), pct(f.build, 0.5), pct(f.build, 1.0), pct(f.submit, 0.5),
+            pct(f.submit, 1.0), pct(f.all, 0.5), pct(f.all, 1.0));
     }
     void print(const Model& model) const {
         std::printf("bench: %s: %zu vertices, %u events, %zu triangles\n", model.path().c_str(),
                     model.polygon().vertices.size(), steps, model.trace().triangles.size());
-        std::printf("bench: open (read, validate, flood with trace, replay keyframes): %.0f ms\n", openMs);
+        std::printf("bench: open (read, validate, flood with trace, replay keyframes): %.0f ms\n",
+                    openMs);
         std::printf("bench: keyframes: %zu, %.1f MB\n", keyframes, keyframeBytes / 1e6);
-        std::printf("bench: first frame (canvas buffers built and uploaded): %.0f ms\n", firstFrameMs);
-        std::printf("bench: seek to a random step: median %.3f ms, 99%% %.3f ms, max %.3f ms (%zu seeks)\n",
-                    pct(seeks, 0.5), pct(seeks, 0.99), pct(seeks, 1.0), seeks.size());
+        std::printf("bench: first frame (canvas buffers built and uploaded): %.0f ms\n",
+                    firstFrameMs);
+        std::printf(
+            "bench: seek to a random step: median %.3f ms, 99%% %.3f ms, max %.3f ms (%zu seeks)\n",
+            pct(seeks, 0.5), pct(seeks, 0.99), pct(seeks, 1.0), seeks.size());
         frames("full zoom-out, new random step every frame", step);
         frames("full zoom-out, panning at a fixed step", pan);
     }
@@ -436,7 +472,8 @@ int main(int argc, char** argv) {
     platform::WindowOptions wo;
     wo.width = args.width, wo.height = args.height, wo.hidden = shot;
     auto title = [&] {
-        return "flood-viewer — " + (model.path().empty() ? std::string("no polygon") : model.path());
+        return "flood-viewer — " +
+               (model.path().empty() ? std::string("no polygon") : model.path());
     };
     wo.title = title();
     IMGUI_CHECKVERSION();
@@ -479,7 +516,8 @@ int main(int argc, char** argv) {
         else platform::waitEvents(0.25);  // idle: wake on input, or 4 times a second
         for (const auto& path : platform::takeDroppedPaths()) {
             model.open(path);
-            ui.message = model.openDiagnostic().ok() ? "opened " + path : model.openDiagnostic().message;
+            ui.message =
+                model.openDiagnostic().ok() ? "opened " + path : model.openDiagnostic().message;
         }
         // The title names the file loaded (a failed open keeps the previous one).
         if (model.generation() != titled) {
@@ -487,7 +525,8 @@ int main(int argc, char** argv) {
             platform::setTitle(title());
         }
         // Between frames: a new monitor scale, Ctrl +/-/0 or a theme chosen in the toolbar.
-        if (float s; platform::takeContentScaleChange(&s) && args.scale <= 0 && !shot) ui.uiScale.setContentScale(s);
+        if (float s; platform::takeContentScaleChange(&s) && args.scale <= 0 && !shot)
+            ui.uiScale.setContentScale(s);
         if (ui.theme != palette::theme()) {
             palette::setTheme(ui.theme);
             ui.canvas.generation = ~0ull;  // the canvas buffers hold the old theme's colours
@@ -497,7 +536,8 @@ int main(int argc, char** argv) {
             ui.canvas.thinKey = {};  // marker thinning cells follow the scale
             styled = ui.uiScale.generation(), styledTheme = ui.theme;
             // Remembered at once, as Recent is on every open.
-            if (!settingsFile.empty()) saveSettings(settingsFile, {ui.theme, ui.uiScale.zoomStep()});
+            if (!settingsFile.empty())
+                saveSettings(settingsFile, {ui.theme, ui.uiScale.zoomStep()});
         }
         ui.scale = ui.uiScale.value();
         const float scale = ui.scale;
@@ -519,7 +559,8 @@ int main(int argc, char** argv) {
         // measured) the camera is fitted to the canvas it ends up with; the error view keeps its
         // own zoom.
         const Rect& c = ui.layout.canvas;
-        bool moved = c.x != canvasWas.x || c.y != canvasWas.y || c.w != canvasWas.w || c.h != canvasWas.h;
+        bool moved =
+            c.x != canvasWas.x || c.y != canvasWas.y || c.w != canvasWas.w || c.h != canvasWas.h;
         if (frame > 0 && frame < 3 && moved && !model.errorView) model.needsFit = true;
         if (frame == 0 && args.showError) {
             model.camera.setViewport(ui.layout.canvas);
@@ -568,7 +609,9 @@ int main(int argc, char** argv) {
             double all = now() - frameStart;
             if (frame == 0) bench.firstFrameMs = all * 1e3;
             for (auto* f : {benchPhase == 1 ? &bench.step : benchPhase == 2 ? &bench.pan : nullptr})
-                if (f) f->build.push_back(built), f->submit.push_back(submitted), f->all.push_back(all);
+                if (f)
+                    f->build.push_back(built), f->submit.push_back(submitted),
+                        f->all.push_back(all);
             if (benchPhase == 3) {
                 bench.print(model);
                 platform::requestClose();
@@ -589,18 +632,22 @@ int main(int argc, char** argv) {
             exitCode = ok ? model.exitCode() : int(job.status());
             platform::requestClose();
         }
-        std::string png = !args.bench && !args.exporting() && shot && frame == shotFrame ? args.screenshot
-                                                                                         : ui.pngRequest;
+        std::string png = !args.bench && !args.exporting() && shot && frame == shotFrame
+                              ? args.screenshot
+                              : ui.pngRequest;
         if (!png.empty()) {
             std::vector<uint8_t> pixels;
-            bool ok = renderer.readPixels(fbW, fbH, pixels) && writePng(png, fbW, fbH, pixels, &error);
+            bool ok =
+                renderer.readPixels(fbW, fbH, pixels) && writePng(png, fbW, fbH, pixels, &error);
             ui.message = ok ? "wrote " + png : error;
             ui.pngRequest.clear();
             if (shot) {
                 std::fprintf(ok ? stdout : stderr, "flood-viewer: %s\n", ui.message.c_str());
-                for (auto [name, r] : {std::pair{"caption", ui.captionRect}, {"toolbar-end", ui.toolbarEnd}})
+                for (auto [name, r] :
+                     {std::pair{"caption", ui.captionRect}, {"toolbar-end", ui.toolbarEnd}})
                     if (args.printLayout && r.w > 0)
-                        std::printf("flood-viewer: layout %s %.0f %.0f %.0f %.0f\n", name, r.x, r.y, r.w, r.h);
+                        std::printf("flood-viewer: layout %s %.0f %.0f %.0f %.0f\n", name, r.x, r.y,
+                                    r.w, r.h);
                 // The picture is written; the exit code still says what the input was.
                 exitCode = !ok ? int(Status::WriteFailed) : model.exitCode();
                 platform::requestClose();

@@ -2,6 +2,7 @@
 // [SECTION] text views  [SECTION] Model  [SECTION] polygon files
 #include "model.h"
 
+#include <unistd.h>
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -13,7 +14,6 @@
 #include <sstream>
 #include <system_error>
 #include <utility>
-#include <unistd.h>
 
 #include <nlohmann/json.hpp>
 
@@ -158,9 +158,7 @@ std::string describeEvent(const Trace& trace, const Event& e) {
             s << " at " << vertexName(e.before.nextLeft);
             if (e.gorgePopped != kNone) s << ", resume gorge " << e.gorgePopped;
             break;
-        case Action::Forbidden:
-            s << ": " << describeForbidden(trace.polygon, e);
-            break;
+        case Action::Forbidden: s << ": " << describeForbidden(trace.polygon, e); break;
         default: break;
     }
     if (e.triangleCount == 1) s << "; triangle " << e.firstTriangle;
@@ -196,7 +194,8 @@ std::vector<TranscriptItem> buildTranscript(const Trace& trace) {
         // The paper's punctuation: a Spill, Jump or Fill ends a group.
         if (!items.empty()) {
             Action a = ev[items.back().firstEvent].action;
-            items.back().separator = a == Action::Spill || a == Action::Jump || a == Action::Fill ? "; " : ", ";
+            items.back().separator =
+                a == Action::Spill || a == Action::Jump || a == Action::Fill ? "; " : ", ";
         }
         items.push_back(std::move(it));
         i = j;
@@ -228,8 +227,9 @@ PredicateRow belowRow(const Polygon& p, Up up, Test t, const char* text, Index a
 }
 }  // namespace
 
-std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState& before, const Event& e,
-                                          const std::vector<VertexClass>& classes, size_t maxSags) {
+std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState& before,
+                                          const Event& e, const std::vector<VertexClass>& classes,
+                                          size_t maxSags) {
     std::vector<PredicateRow> rows;
     const Polygon& p = trace.polygon;
     const Fingers& f = e.before;
@@ -253,12 +253,14 @@ std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState&
     add(same);
     Index nx = f.nextLeft;  // Next: where the water rises to
     if (e.didTest(Test::LeftLower)) {
-        PredicateRow r = belowRow(p, trace.up, Test::LeftLower, "below(NextLeft, NextRight)", f.nextLeft, f.nextRight);
+        PredicateRow r = belowRow(p, trace.up, Test::LeftLower, "below(NextLeft, NextRight)",
+                                  f.nextLeft, f.nextRight);
         const bool leftLower = r.result;
         add(std::move(r));
         Index c = leftLower ? f.left : f.right;
         nx = leftLower ? f.nextLeft : f.nextRight;
-        if (e.didTest(Test::NextAbove)) add(belowRow(p, trace.up, Test::NextAbove, "below(C, Next)", c, nx));
+        if (e.didTest(Test::NextAbove))
+            add(belowRow(p, trace.up, Test::NextAbove, "below(C, Next)", c, nx));
         if (e.didTest(Test::CIsTop)) {
             // C's loop neighbours: the finger beyond it and the chain node inside it.
             const auto& ch = before.chain;
@@ -297,15 +299,20 @@ std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState&
     std::sort(bridged.begin(), bridged.end());
     std::vector<Index> sags;
     for (Index v = 0; v < classes.size() && v < p.vertices.size(); ++v)
-        if (classes[v] == VertexClass::Sag && before.water != kNone && compareHeight(p, trace.up, before.water, v) < 0 &&
-            compareHeight(p, trace.up, v, nx) < 0 && !std::binary_search(bridged.begin(), bridged.end(), v))
+        if (classes[v] == VertexClass::Sag && before.water != kNone &&
+            compareHeight(p, trace.up, before.water, v) < 0 &&
+            compareHeight(p, trace.up, v, nx) < 0 &&
+            !std::binary_search(bridged.begin(), bridged.end(), v))
             sags.push_back(v);
-    std::sort(sags.begin(), sags.end(), [&](Index a, Index b) { return compareHeight(p, trace.up, a, b) < 0; });
+    std::sort(sags.begin(), sags.end(),
+              [&](Index a, Index b) { return compareHeight(p, trace.up, a, b) < 0; });
     // The one bridged is listed even when the cap cuts the rest.
-    if (e.action == Action::Bridge && std::find(sags.begin(), sags.end(), e.sag) == sags.end()) sags.insert(sags.begin(), e.sag);
+    if (e.action == Action::Bridge && std::find(sags.begin(), sags.end(), e.sag) == sags.end())
+        sags.insert(sags.begin(), e.sag);
     if (sags.size() > maxSags) {
         auto it = std::find(sags.begin(), sags.end(), e.sag);
-        if (it != sags.end() && size_t(it - sags.begin()) >= maxSags) std::rotate(sags.begin(), it, it + 1);
+        if (it != sags.end() && size_t(it - sags.begin()) >= maxSags)
+            std::rotate(sags.begin(), it, it + 1);
         sags.resize(maxSags);
     }
     bool any = false;
@@ -316,7 +323,8 @@ std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState&
         row.args = {s, f.left, f.right, f.nextRight, f.nextLeft};
         row.result = in.inside;
         row.sign = in.inside;
-        row.stage = std::string(stageName(in.stage)) + " (" + std::to_string(in.orients) + " orients)";
+        row.stage =
+            std::string(stageName(in.stage)) + " (" + std::to_string(in.orients) + " orients)";
         any = any || in.inside;
         rows.push_back(std::move(row));
     }
@@ -324,7 +332,8 @@ std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState&
     sagRow.test = Test::SagInside;
     sagRow.predicate = "some sag is inside (the rows below)";
     if (e.action == Action::Bridge) sagRow.args = {e.sag};
-    sagRow.result = e.action == Action::Bridge ? insideExplained(pt(e.sag), l, r, nr, nl).inside : any;
+    sagRow.result =
+        e.action == Action::Bridge ? insideExplained(pt(e.sag), l, r, nr, nl).inside : any;
     sagRow.sign = sagRow.result;
     sagRow.stage = "inside";
     add(std::move(sagRow));
@@ -396,8 +405,10 @@ Model::~Model() { cancelInvariants(); }
 // trace saved under any name opens as one.
 #ifndef FLOOD_GDAL
 static Diagnostic gisUnavailable(const std::string& path) {
-    return {Status::Usage, path + ": --layer and --where need GIS support: this viewer was built without "
-                                  "GDAL (install libgdal-dev and reconfigure)"};
+    return {Status::Usage,
+            path +
+                ": --layer and --where need GIS support: this viewer was built without "
+                "GDAL (install libgdal-dev and reconfigure)"};
 }
 #endif
 
@@ -407,7 +418,9 @@ static bool isTracePath(const std::string& path) {
     char head[64] = {};
     in.read(head, sizeof head - 1);
     std::string h(head, size_t(in.gcount()));
-    h.erase(std::remove_if(h.begin(), h.end(), [](char c) { return std::isspace(static_cast<unsigned char>(c)); }), h.end());
+    h.erase(std::remove_if(h.begin(), h.end(),
+                           [](char c) { return std::isspace(static_cast<unsigned char>(c)); }),
+            h.end());
     return h.rfind("{\"format\":\"flood-trace\"", 0) == 0;
 }
 
@@ -420,7 +433,8 @@ void Model::open(const std::string& path) {
 #ifdef FLOOD_GDAL
         // GIS datasets (Shapefile, GeoPackage, ...) through GDAL: the selected layer's
         // polygonal features as one polygon, as `flood triangulate FILE` reads them.
-        else if (gdal::handles(path, {gisLayer, -1, gisWhere})) r = gdal::readPolygon(path, {gisLayer, -1, gisWhere});
+        else if (gdal::handles(path, {gisLayer, -1, gisWhere}))
+            r = gdal::readPolygon(path, {gisLayer, -1, gisWhere});
 #else
         else if (!gisLayer.empty() || !gisWhere.empty()) r.diagnostic = gisUnavailable(path);
 #endif
@@ -592,9 +606,12 @@ void Model::computeVerdictLines() {
     error_ = {};
     firstErrorStep_ = kNone;
     const Polygon& P = trace_->polygon;
-    auto line = [&](VerdictKind k, std::string text) { verdictLines_.push_back({k, std::move(text)}); };
+    auto line = [&](VerdictKind k, std::string text) {
+        verdictLines_.push_back({k, std::move(text)});
+    };
     if (!input_.ok() && P.vertices.empty()) {
-        line(input_.status == Status::Malformed ? VerdictKind::Unreadable : VerdictKind::InvalidInput,
+        line(input_.status == Status::Malformed ? VerdictKind::Unreadable
+                                                : VerdictKind::InvalidInput,
              input_.message);
         return;
     }
@@ -625,7 +642,8 @@ void Model::computeVerdictLines() {
     check_ = checked_ ? std::move(*checked_) : checkTriangulation(P, trace_->triangles);
     checked_.reset();
     if (!check_.ok) {
-        line(VerdictKind::Rejected, "the exact checker rejects the triangulation: " + check_.reason);
+        line(VerdictKind::Rejected,
+             "the exact checker rejects the triangulation: " + check_.reason);
         if (error_.empty()) error_ = check_.culprits;
         for (uint32_t t : check_.culprits.triangles)
             if (t < triangleStep_.size() && triangleStep_[t] &&
@@ -702,7 +720,8 @@ bool Model::showError() {
     double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
     auto grow = [&](Point p) {
         if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
-        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y),
+        y1 = std::max(y1, p.y);
     };
     for (Index v : error_.vertices)
         if (v < V.size()) grow(V[v]);
@@ -737,13 +756,17 @@ FindTarget findTarget(const Trace& trace, const std::string& query) {
     FindTarget f;
     std::string q;
     for (char c : query)
-        if (!std::isspace(static_cast<unsigned char>(c))) q += char(std::tolower(static_cast<unsigned char>(c)));
+        if (!std::isspace(static_cast<unsigned char>(c)))
+            q += char(std::tolower(static_cast<unsigned char>(c)));
     if (q.empty()) return f.message = "type v<vertex>, t<triangle>, s<step> or r<ring>", f;
     f.kind = q[0];
     if (std::string("vtsr").find(f.kind) == std::string::npos)
-        return f.message = "'" + query + "': start with v (vertex), t (triangle), s (step) or r (ring)", f;
+        return f.message =
+                   "'" + query + "': start with v (vertex), t (triangle), s (step) or r (ring)",
+               f;
     if (q.size() == 1 || q.size() > 12 || q.find_first_not_of("0123456789", 1) != std::string::npos)
-        return f.message = "'" + query + "': a number must follow '" + std::string(1, f.kind) + "'", f;
+        return f.message = "'" + query + "': a number must follow '" + std::string(1, f.kind) + "'",
+               f;
     f.index = std::stoull(q.substr(1));
     const Polygon& P = trace.polygon;
     const auto& V = P.vertices;
@@ -752,7 +775,9 @@ FindTarget findTarget(const Trace& trace, const std::string& query) {
                     std::to_string(count) + (count ? " (0-" + std::to_string(count - 1) + ")" : "");
         return f;
     };
-    auto at = [&](Point p) { f.hasCenter = true, f.center = p, f.x0 = f.x1 = p.x, f.y0 = f.y1 = p.y; };
+    auto at = [&](Point p) {
+        f.hasCenter = true, f.center = p, f.x0 = f.x1 = p.x, f.y0 = f.y1 = p.y;
+    };
     switch (f.kind) {
         case 'v': {
             if (f.index >= V.size()) return outOfRange("vertex", V.size());
@@ -769,10 +794,13 @@ FindTarget findTarget(const Trace& trace, const std::string& query) {
             break;
         }
         case 't': {
-            if (f.index >= trace.triangles.size()) return outOfRange("triangle", trace.triangles.size());
+            if (f.index >= trace.triangles.size())
+                return outOfRange("triangle", trace.triangles.size());
             const Triangle& t = trace.triangles[f.index];
             if (t[0] >= V.size() || t[1] >= V.size() || t[2] >= V.size())
-                return f.message = "triangle " + std::to_string(f.index) + " has a vertex out of range", f;
+                return f.message =
+                           "triangle " + std::to_string(f.index) + " has a vertex out of range",
+                       f;
             at({(V[t[0]].x + V[t[1]].x + V[t[2]].x) / 3, (V[t[0]].y + V[t[1]].y + V[t[2]].y) / 3});
             for (Index v : t)
                 f.x0 = std::min(f.x0, V[v].x), f.x1 = std::max(f.x1, V[v].x),
@@ -813,7 +841,8 @@ FindTarget findTarget(const Trace& trace, const std::string& query) {
                 f.y0 = std::min(f.y0, p.y), f.y1 = std::max(f.y1, p.y);
             }
             f.center = {(f.x0 + f.x1) / 2, (f.y0 + f.y1) / 2};
-            f.message = "ring " + std::to_string(f.index) + ": " + std::to_string(r.count) + " vertices";
+            f.message =
+                "ring " + std::to_string(f.index) + ": " + std::to_string(r.count) + " vertices";
             break;
         }
     }
@@ -827,8 +856,7 @@ FindTarget Model::find(const std::string& query) {
     if (f.seekTo != kNone) seek(f.seekTo);
     if (f.kind == 'r' && (f.x1 > f.x0 || f.y1 > f.y0))
         camera.fitBox(f.x0, f.y0, f.x1, f.y1, camera.viewport());
-    else if (f.hasCenter)
-        camera.centerOn(f.center);
+    else if (f.hasCenter) camera.centerOn(f.center);
     if (f.hasCenter) needsFit = false;
     return f;
 }
@@ -995,7 +1023,8 @@ bool Model::openFeature(const std::string& path, size_t index) {
     try {
 #ifdef FLOOD_GDAL
         // A GIS layer's features, numbered by position among those --where keeps.
-        if (gdal::handles(path, {gisLayer, -1, gisWhere})) d = gdal::readFeatures(path, {gisLayer, -1, gisWhere});
+        if (gdal::handles(path, {gisLayer, -1, gisWhere}))
+            d = gdal::readFeatures(path, {gisLayer, -1, gisWhere});
         else
 #else
         if (!gisLayer.empty() || !gisWhere.empty()) {
@@ -1003,7 +1032,7 @@ bool Model::openFeature(const std::string& path, size_t index) {
             return false;
         }
 #endif
-        d = readFeaturesFile(path, kDefaultMaxInputBytes, false);
+            d = readFeaturesFile(path, kDefaultMaxInputBytes, false);
     } catch (const std::exception& ex) {
         openDiag_ = {Status::Malformed, path + ": " + ex.what()};
         return false;
@@ -1011,8 +1040,9 @@ bool Model::openFeature(const std::string& path, size_t index) {
     if (d.features.size() == 1 && d.features[0].wholeFile) {
         const Diagnostic& r = d.features[0].read.diagnostic;
         openDiag_ = !r.ok() ? r
-                            : Diagnostic{Status::Usage, path + ": not a FeatureCollection, it has no feature " +
-                                                            std::to_string(index)};
+                            : Diagnostic{Status::Usage,
+                                         path + ": not a FeatureCollection, it has no feature " +
+                                             std::to_string(index)};
         return false;
     }
     // Indices are positions in "features"; a non-polygonal feature has none of its own here.
@@ -1021,10 +1051,12 @@ bool Model::openFeature(const std::string& path, size_t index) {
     if (it == d.features.end()) {
         size_t last = 0;
         for (const auto& f : d.features) last = std::max(last, f.index);
-        openDiag_ = {Status::Usage, path + ": no polygonal feature " + std::to_string(index) + " (the collection's " +
-                                        (d.features.empty() ? std::string("features are not polygons")
-                                                            : "features run 0.." + std::to_string(last)) +
-                                        ")"};
+        openDiag_ = {Status::Usage,
+                     path + ": no polygonal feature " + std::to_string(index) +
+                         " (the collection's " +
+                         (d.features.empty() ? std::string("features are not polygons")
+                                             : "features run 0.." + std::to_string(last)) +
+                         ")"};
         return false;
     }
     FeatureRead& f = *it;
@@ -1138,7 +1170,8 @@ FeatureVerdict judgeFeature(const FeatureRead& f) {
     v.vertices = f.read.polygon.vertices.size();
     try {
         if (!f.read.diagnostic.ok()) {
-            v.kind = f.read.diagnostic.status == Status::Internal ? VerdictKind::Internal : VerdictKind::Unreadable;
+            v.kind = f.read.diagnostic.status == Status::Internal ? VerdictKind::Internal
+                                                                  : VerdictKind::Unreadable;
             v.reason = f.read.diagnostic.message;
             return v;
         }
@@ -1161,9 +1194,10 @@ FeatureVerdict judgeFeature(const FeatureRead& f) {
 }
 
 void orderFailingFirst(std::vector<FeatureVerdict>& list) {
-    std::stable_sort(list.begin(), list.end(), [](const FeatureVerdict& a, const FeatureVerdict& b) {
-        return a.failure() != b.failure() ? a.failure() : a.index < b.index;
-    });
+    std::stable_sort(list.begin(), list.end(),
+                     [](const FeatureVerdict& a, const FeatureVerdict& b) {
+                         return a.failure() != b.failure() ? a.failure() : a.index < b.index;
+                     });
 }
 
 void FeatureScan::start(const std::string& path) {
@@ -1232,8 +1266,10 @@ FloodSummary summarizeFlood(const Trace& trace, const std::vector<VertexClass>& 
 std::vector<SummaryChange> compareSummaries(const FloodSummary& before, const FloodSummary& after) {
     std::vector<SummaryChange> out;
     out.push_back({"gorges", before.gorges, after.gorges});
-    for (VertexClass c : {VertexClass::Bottom, VertexClass::Sag, VertexClass::Top, VertexClass::Ceiling})
-        out.push_back({std::string(vertexClassName(c)) + "s", before.classes[size_t(c)], after.classes[size_t(c)]});
+    for (VertexClass c :
+         {VertexClass::Bottom, VertexClass::Sag, VertexClass::Top, VertexClass::Ceiling})
+        out.push_back({std::string(vertexClassName(c)) + "s", before.classes[size_t(c)],
+                       after.classes[size_t(c)]});
     for (size_t a = 0; a < size_t(Action::Count); ++a)
         if (Action(a) != Action::Forbidden || before.actions[a] || after.actions[a])
             out.push_back({actionName(Action(a)), before.actions[a], after.actions[a]});

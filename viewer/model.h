@@ -31,9 +31,9 @@
 namespace flood::view {
 
 // Vertex classes of §3 (Fig. 1): core/vertex_class.h.
+using flood::classifyVertices;
 using flood::VertexClass;
 using flood::vertexClassName;
-using flood::classifyVertices;
 
 // ----------------------------------------------------------------------------------------
 // Screen geometry. Screen coordinates are ImGui's logical pixels: origin top-left, y down.
@@ -67,10 +67,10 @@ public:
     void setViewport(const Rect& viewport) { viewport_ = viewport; }
     Vec2 toScreen(Point p) const;
     Point toWorld(Vec2 s) const;
-    void pan(double dx, double dy);                 // by screen pixels
-    void zoomAt(Vec2 screen, double factor);         // keeps the world point under `screen`
-    double scale() const { return scale_; }          // pixels per world unit
-    Point center() const { return {cx_, cy_}; }      // world point at the viewport centre
+    void pan(double dx, double dy);              // by screen pixels
+    void zoomAt(Vec2 screen, double factor);     // keeps the world point under `screen`
+    double scale() const { return scale_; }      // pixels per world unit
+    Point center() const { return {cx_, cy_}; }  // world point at the viewport centre
     const Rect& viewport() const { return viewport_; }
 
 private:
@@ -83,8 +83,8 @@ private:
 struct Breakpoints {
     std::array<bool, size_t(Action::Count)> actions{};  // on these action kinds
     bool forbidden = false;                             // on a Forbidden event
-    Index vertex = kNone;     // when this vertex becomes Left, Right, NextLeft or NextRight
-    int64_t triangle = -1;    // when this triangle number is cut
+    Index vertex = kNone;   // when this vertex becomes Left, Right, NextLeft or NextRight
+    int64_t triangle = -1;  // when this triangle number is cut
     bool any() const;
 };
 bool hits(const Breakpoints& b, const Event& e);
@@ -105,7 +105,15 @@ std::vector<TranscriptItem> buildTranscript(const Trace& trace);
 // The verdict, one line per finding. Ok only when the exact checker passed on valid input;
 // every failure (unreadable, invalid input, forbidden state, checker rejection, internal)
 // has its own line, drawn red.
-enum class VerdictKind : uint8_t { Ok, Note, Unreadable, InvalidInput, Forbidden, Rejected, Internal };
+enum class VerdictKind : uint8_t {
+    Ok,
+    Note,
+    Unreadable,
+    InvalidInput,
+    Forbidden,
+    Rejected,
+    Internal
+};
 struct VerdictLine {
     VerdictKind kind = VerdictKind::Ok;
     std::string text;
@@ -117,34 +125,35 @@ struct VerdictLine {
 struct FindTarget {
     bool ok = false;
     std::string message;
-    char kind = 0;               // 'v', 't', 's' or 'r'
+    char kind = 0;  // 'v', 't', 's' or 'r'
     uint64_t index = 0;
     bool hasCenter = false;
-    Point center;                // where to centre the view
+    Point center;                           // where to centre the view
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // what to show (a ring's box; a point otherwise)
-    uint32_t seekTo = kNone;     // step to seek to, kNone: stay
+    uint32_t seekTo = kNone;                // step to seek to, kNone: stay
 };
 FindTarget findTarget(const Trace& trace, const std::string& query);
 // Predicate inspector: the tests of one event's decision path (Fig. 9), recomputed from the
 // replay state before the event, each with its predicate, arguments, floating-point value,
 // exact result and the stage of the exact predicate that decided it.
 struct PredicateRow {
-    Test test = Test::Count;     // Test::Count: one of the sag search's inside() tests
-    std::string predicate;       // "below(NextLeft, NextRight)", "orient(prev C, C, next C) <= 0", ...
-    std::vector<Index> args;     // vertex ids, in the predicate's order
-    bool result = false;         // recomputed
-    bool recorded = false;       // what the event says (decision tests only)
+    Test test = Test::Count;  // Test::Count: one of the sag search's inside() tests
+    std::string predicate;    // "below(NextLeft, NextRight)", "orient(prev C, C, next C) <= 0", ...
+    std::vector<Index> args;  // vertex ids, in the predicate's order
+    bool result = false;      // recomputed
+    bool recorded = false;    // what the event says (decision tests only)
     bool hasRecorded = false;
-    bool hasValue = false;       // orient-based: `value` and `stage` mean something
-    double value = 0;            // the filter's determinant
-    int sign = 0;                // exact sign (orient) or the comparison's outcome
-    std::string stage;           // "filter" / "expansion" / "rationals" / "comparison" / "identity"
+    bool hasValue = false;  // orient-based: `value` and `stage` mean something
+    double value = 0;       // the filter's determinant
+    int sign = 0;           // exact sign (orient) or the comparison's outcome
+    std::string stage;      // "filter" / "expansion" / "rationals" / "comparison" / "identity"
 };
 // The sag search's inside() tests are listed for the sags it could test: unbridged sags
 // strictly between the water and Next (at most `maxSags` of them; the machine's sag index
 // tests fewer, Event::sagTests of them).
-std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState& before, const Event& e,
-                                          const std::vector<VertexClass>& classes, size_t maxSags = 64);
+std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState& before,
+                                          const Event& e, const std::vector<VertexClass>& classes,
+                                          size_t maxSags = 64);
 
 // ----------------------------------------------------------------------------------------
 // The timeline strip: which events a strip `width` pixels wide shows, zoomed and panned.
@@ -154,7 +163,9 @@ struct TimelineView {
     double first = 0;  // event index (fractional) at the strip's left edge
     double span = 0;   // events across the strip; 0: the whole log
     double visible(uint32_t events) const { return span > 0 ? span : double(events); }
-    double perEvent(double width, uint32_t events) const { return width / std::max(1.0, visible(events)); }
+    double perEvent(double width, uint32_t events) const {
+        return width / std::max(1.0, visible(events));
+    }
     double xOfStep(uint32_t step, double width, uint32_t events) const {
         return (step - first) * perEvent(width, events);
     }
@@ -187,7 +198,6 @@ private:
     std::vector<KeyPress> presses_;
 };
 
-
 // ----------------------------------------------------------------------------------------
 // Shrink from the viewer: core/shrink.h run in a background thread, with the tries made as
 // progress and a Cancel that stops it before its next classification. An `onTry` in the
@@ -205,9 +215,9 @@ public:
     size_t maxTries() const { return maxTries_; }
     void cancel();  // asks the thread to stop and joins it; the result so far stays readable
     void requestCancel() { cancel_.store(true, std::memory_order_relaxed); }  // without joining
-    void wait();    // joins (tests)
-    const ShrinkResult& result() const { return result_; }  // once done()
-    void reset();   // cancels and forgets the result
+    void wait();                                                              // joins (tests)
+    const ShrinkResult& result() const { return result_; }                    // once done()
+    void reset();  // cancels and forgets the result
 
 private:
     std::thread thread_;
@@ -225,11 +235,12 @@ Diagnostic saveGeoJson(const Polygon& polygon, const std::string& path);
 // The features of a FeatureCollection with their verdicts (read, validate, flood, exact
 // check: the first failure), as `flood check` judges them.
 struct FeatureVerdict {
-    size_t index = 0;        // position in the collection's "features" array
+    size_t index = 0;  // position in the collection's "features" array
     std::string id, name;
     size_t vertices = 0;
-    VerdictKind kind = VerdictKind::Ok;  // Ok, Unreadable, InvalidInput, Forbidden, Rejected, Internal
-    std::string reason;      // the diagnostic's message; "" when ok
+    VerdictKind kind =
+        VerdictKind::Ok;  // Ok, Unreadable, InvalidInput, Forbidden, Rejected, Internal
+    std::string reason;   // the diagnostic's message; "" when ok
     bool failure() const { return kind != VerdictKind::Ok; }
 };
 FeatureVerdict judgeFeature(const FeatureRead& feature);
@@ -268,7 +279,7 @@ private:
 // remark that the decomposition into gorges is not unique, as numbers (the direction dial).
 struct FloodSummary {
     std::array<uint32_t, size_t(VertexClass::Count)> classes{};  // bottoms, sags, tops, ceilings
-    uint32_t gorges = 0;     // gorges started at a bottom (Start, and each later bottom reached)
+    uint32_t gorges = 0;  // gorges started at a bottom (Start, and each later bottom reached)
     std::array<uint32_t, size_t(Action::Count)> actions{};
     uint32_t triangles = 0;
 };
@@ -333,10 +344,12 @@ public:
     const std::vector<std::string>& recentFiles() const { return recent_; }
     void loadRecent(const std::string& file);  // one path per line; missing file: no-op
     void saveRecent(const std::string& file) const;
-    const std::string& verdict() const { return verdict_; }  // "ok: 64 triangles" / "Forbidden at step 12: ..."
+    const std::string& verdict() const {
+        return verdict_;
+    }  // "ok: 64 triangles" / "Forbidden at step 12: ..."
     const std::vector<VerdictLine>& verdictLines() const { return verdictLines_; }
     const CheckResult& check() const { return check_; }  // the exact checker, on a completed run
-    bool failed() const;  // any failure line in the verdict
+    bool failed() const;                                 // any failure line in the verdict
     // The CLI's exit code for what is loaded: 0, 3 unreadable, 4 invalid, 5 forbidden,
     // 6 checker rejection or internal error (docs/ERRORS.md).
     int exitCode() const;
@@ -401,19 +414,19 @@ public:
     bool invariantsDone() const { return scan_.done.load(std::memory_order_acquire); }
     uint32_t invariantProgress() const { return scan_.progress.load(std::memory_order_relaxed); }
     const std::vector<Violation>& violations() const;  // empty until done
-    uint32_t firstViolationStep() const;                // 0 until done or when none
-    void cancelInvariants();                            // stops and joins the scan
+    uint32_t firstViolationStep() const;               // 0 until done or when none
+    void cancelInvariants();                           // stops and joins the scan
     // Once the scan is done: moves to the first violation if the user has not moved since
     // the open landed (on the forbidden step, or step 0). True when it moved. Every frame.
     bool landOnFirstViolation();
-    void waitForInvariants();                           // joins it (tests)
+    void waitForInvariants();  // joins it (tests)
 
     // Live editing (viewer/edit.h). An edited polygon validated and flooded: touches no
     // Model state, so it may run in a background thread.
     struct EditedRun {
-        Trace trace;       // trace.polygon: the edited polygon, its T-junctions recorded
-        Diagnostic input;  // the validator's verdict on it
-        CheckResult check; // the exact checker on a completed run (checked: it ran)
+        Trace trace;        // trace.polygon: the edited polygon, its T-junctions recorded
+        Diagnostic input;   // the validator's verdict on it
+        CheckResult check;  // the exact checker on a completed run (checked: it ran)
         bool checked = false;
     };
     static EditedRun floodEdit(Polygon polygon, const std::string& name);
@@ -446,7 +459,7 @@ private:
     void startInvariants();
     InvariantScan scan_;
     uint32_t forbiddenStep_ = 0;
-    uint32_t landedStep_ = 0;     // where open() put the step
+    uint32_t landedStep_ = 0;      // where open() put the step
     bool landingPending_ = false;  // the scan's result has not been looked at yet
     std::vector<PredicateRow> inspection_;
     uint64_t inspectedFor_ = ~0ull;  // generation and step of inspection_
@@ -465,7 +478,7 @@ private:
     std::vector<VerdictLine> verdictLines_;
     Culprits error_;
     uint32_t firstErrorStep_ = kNone;
-    std::unique_ptr<Trace> trace_;    // owned here, at a stable address for Replay
+    std::unique_ptr<Trace> trace_;  // owned here, at a stable address for Replay
     std::unique_ptr<Replay> replay_;
     std::string path_;
     Diagnostic input_;
@@ -479,8 +492,8 @@ private:
     uint32_t step_ = 0;
     double playClock_ = 0;
     uint64_t generation_ = 0;
-    mutable StateTable stateTable_;               // cache of stateTable()
-    mutable uint64_t stateTableFor_ = ~0ull;      // the generation it was built for
+    mutable StateTable stateTable_;           // cache of stateTable()
+    mutable uint64_t stateTableFor_ = ~0ull;  // the generation it was built for
 };
 
 // Where to look for polygons: FLOOD_SOURCE_DIR/polygons unless overridden.

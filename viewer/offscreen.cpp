@@ -26,7 +26,8 @@ bool Offscreen::bind(int width, int height, std::string* error) {
         if (width <= 0 || height <= 0 || width > maxSize || height > maxSize) {
             if (error)
                 *error = "cannot render " + std::to_string(width) + "x" + std::to_string(height) +
-                         " offscreen: this OpenGL allows at most " + std::to_string(maxSize) + " pixels a side";
+                         " offscreen: this OpenGL allows at most " + std::to_string(maxSize) +
+                         " pixels a side";
             return false;
         }
         glGenFramebuffers(1, &fbo_);
@@ -39,7 +40,8 @@ bool Offscreen::bind(int width, int height, std::string* error) {
         glBindRenderbuffer(GL_RENDERBUFFER, 0);
         glBindFramebuffer(GL_FRAMEBUFFER, fbo_);
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, colour_);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER, depthStencil_);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                  depthStencil_);
         GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
         glBindFramebuffer(GL_FRAMEBUFFER, 0);
         if (status != GL_FRAMEBUFFER_COMPLETE || glGetError() != GL_NO_ERROR) {

@@ -43,20 +43,20 @@ constexpr Colours kLight{
     {20, 130, 40, 255},   {185, 95, 0, 255}};
 
 inline Rgba kBackground = kDark.background;
-inline Rgba kPolygonFill = kDark.polygonFill;    // dry land: the not yet flooded interior
-inline Rgba kTriangle = kDark.triangle;          // a triangle already cut (seen through water)
-inline Rgba kWater = kDark.water;                // flooded triangles (opaque so tests can probe)
-inline Rgba kCurrent = kDark.current;            // triangles cut by the current event
+inline Rgba kPolygonFill = kDark.polygonFill;  // dry land: the not yet flooded interior
+inline Rgba kTriangle = kDark.triangle;        // a triangle already cut (seen through water)
+inline Rgba kWater = kDark.water;              // flooded triangles (opaque so tests can probe)
+inline Rgba kCurrent = kDark.current;          // triangles cut by the current event
 inline Rgba kTriangleEdge = kDark.triangleEdge;
 inline Rgba kBoundary = kDark.boundary;
 inline Rgba kWaterLevel = kDark.waterLevel;
 inline Rgba kChain = kDark.chain;
-inline Rgba kLeft = kDark.left;                  // the Left end of the active chain
-inline Rgba kRight = kDark.right;                // the Right end
-inline Rgba kNextLeft = kDark.nextLeft;          // finger markers: lighter shades of L / R
+inline Rgba kLeft = kDark.left;          // the Left end of the active chain
+inline Rgba kRight = kDark.right;        // the Right end
+inline Rgba kNextLeft = kDark.nextLeft;  // finger markers: lighter shades of L / R
 inline Rgba kNextRight = kDark.nextRight;
 inline Rgba kJump = kDark.jump;
-inline Rgba kBridge = kDark.bridge;              // teal: far from the just-cut yellow
+inline Rgba kBridge = kDark.bridge;  // teal: far from the just-cut yellow
 inline Rgba kDormant = kDark.dormant;
 inline Rgba kCulprit = kDark.culprit;
 inline Rgba kHover = kDark.hover;
@@ -69,7 +69,7 @@ inline Rgba kSag = kDark.sag;
 inline Rgba kTop = kDark.top;
 inline Rgba kCeiling = kDark.ceiling;
 
-inline Rgba kOk = kDark.ok;  // a passed check in the verdict and the invariant lane
+inline Rgba kOk = kDark.ok;              // a passed check in the verdict and the invariant lane
 inline Rgba kTreePath = kDark.treePath;  // the current event's path in the Fig. 9 tree
 
 namespace detail {
@@ -83,19 +83,34 @@ inline void setTheme(Theme t) {
         Rgba* colour;
         Rgba Colours::*field;
     };
-    const Slot slots[] = {
-        {&kBackground, &Colours::background}, {&kPolygonFill, &Colours::polygonFill},
-        {&kTriangle, &Colours::triangle}, {&kWater, &Colours::water},
-        {&kCurrent, &Colours::current}, {&kTriangleEdge, &Colours::triangleEdge},
-        {&kBoundary, &Colours::boundary}, {&kWaterLevel, &Colours::waterLevel},
-        {&kChain, &Colours::chain}, {&kLeft, &Colours::left}, {&kRight, &Colours::right},
-        {&kNextLeft, &Colours::nextLeft}, {&kNextRight, &Colours::nextRight},
-        {&kJump, &Colours::jump}, {&kBridge, &Colours::bridge}, {&kDormant, &Colours::dormant},
-        {&kCulprit, &Colours::culprit}, {&kHover, &Colours::hover},
-        {&kVertexNumber, &Colours::vertexNumber}, {&kRegular, &Colours::regular},
-        {&kBottom, &Colours::bottom}, {&kSag, &Colours::sag}, {&kTop, &Colours::top},
-        {&kCeiling, &Colours::ceiling}, {&kOk, &Colours::ok}, {&kTreePath, &Colours::treePath}};
-    static_assert(sizeof(Colours) == sizeof(slots) / sizeof(slots[0]) * sizeof(Rgba), "a colour without a slot");
+    const Slot slots[] = {{&kBackground, &Colours::background},
+                          {&kPolygonFill, &Colours::polygonFill},
+                          {&kTriangle, &Colours::triangle},
+                          {&kWater, &Colours::water},
+                          {&kCurrent, &Colours::current},
+                          {&kTriangleEdge, &Colours::triangleEdge},
+                          {&kBoundary, &Colours::boundary},
+                          {&kWaterLevel, &Colours::waterLevel},
+                          {&kChain, &Colours::chain},
+                          {&kLeft, &Colours::left},
+                          {&kRight, &Colours::right},
+                          {&kNextLeft, &Colours::nextLeft},
+                          {&kNextRight, &Colours::nextRight},
+                          {&kJump, &Colours::jump},
+                          {&kBridge, &Colours::bridge},
+                          {&kDormant, &Colours::dormant},
+                          {&kCulprit, &Colours::culprit},
+                          {&kHover, &Colours::hover},
+                          {&kVertexNumber, &Colours::vertexNumber},
+                          {&kRegular, &Colours::regular},
+                          {&kBottom, &Colours::bottom},
+                          {&kSag, &Colours::sag},
+                          {&kTop, &Colours::top},
+                          {&kCeiling, &Colours::ceiling},
+                          {&kOk, &Colours::ok},
+                          {&kTreePath, &Colours::treePath}};
+    static_assert(sizeof(Colours) == sizeof(slots) / sizeof(slots[0]) * sizeof(Rgba),
+                  "a colour without a slot");
     for (const Slot& s : slots) *s.colour = c.*s.field;
     detail::g_theme = t;
 }

@@ -43,13 +43,15 @@ void drawBreakpoints(Ui& ui) {
     if (ImGui::CollapsingHeader("Legend", ImGuiTreeNodeFlags_DefaultOpen)) {
         swatch(palette::kBottom, "bottom"), ImGui::SameLine(), swatch(palette::kSag, "sag");
         ImGui::SameLine(), swatch(palette::kTop, "top"), ImGui::SameLine();
-        swatch(palette::kCeiling, "ceiling"), ImGui::SameLine(), swatch(palette::kRegular, "regular");
+        swatch(palette::kCeiling, "ceiling"), ImGui::SameLine(),
+            swatch(palette::kRegular, "regular");
         swatch(palette::kLeft, "Left"), ImGui::SameLine(), swatch(palette::kRight, "Right");
         ImGui::SameLine(), swatch(palette::kNextLeft, "NextLeft"), ImGui::SameLine();
         swatch(palette::kNextRight, "NextRight");
         swatch(palette::kChain, "active chain"), ImGui::SameLine();
         swatch(palette::kWaterLevel, "water level");
-        swatch(palette::kWater, "flooded"), ImGui::SameLine(), swatch(palette::kCurrent, "just cut");
+        swatch(palette::kWater, "flooded"), ImGui::SameLine(),
+            swatch(palette::kCurrent, "just cut");
         ImGui::SameLine(), swatch(palette::kBridge, "bridge");
         swatch(palette::kJump, "jump pointer"), ImGui::SameLine();
         swatch(palette::kDormant, "pending/held gorge"), ImGui::SameLine();

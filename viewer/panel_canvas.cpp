@@ -40,8 +40,9 @@ void canvasInput(Ui& ui) {
     // ---- end of live editing
 
     CanvasState& cs = ui.canvas;
-    std::array<double, 6> key{mouse.x, mouse.y, m.camera.center().x, m.camera.center().y,
-                              m.camera.scale(), double(m.step())};
+    std::array<double, 6> key{
+        mouse.x,          mouse.y,         m.camera.center().x, m.camera.center().y,
+        m.camera.scale(), double(m.step())};
     if (key != cs.pickKey) {
         cs.pickKey = key;
         cs.pickedVertex = m.pickVertex(mouse, 7 * ui.scale);
@@ -116,7 +117,7 @@ void syncBuffers(Ui& ui) {
     // Markers thinned to one per cell of a screen grid: redone when the camera moves.
     const Camera& cam = m.camera;
     const Rect& r = cam.viewport();
-    std::array<double, 8> key{cam.center().x, cam.center().y, cam.scale(), r.w, r.h, r.x, r.y,
+    std::array<double, 8> key{cam.center().x,  cam.center().y, cam.scale(), r.w, r.h, r.x, r.y,
                               double(m.step())};
     if (key != cs.thinKey) {
         cs.thinKey = key;
@@ -156,11 +157,12 @@ void vertexLabels(Ui& ui, ImDrawList* dl) {
     const float s = ui.scale;
     const double room = 44 * s;
     char text[16];
-    for (uint32_t i : visibleLabels(ui.canvas.vertexGrid, cam, uint32_t(m.polygon().vertices.size()),
-                                    room * room)) {
+    for (uint32_t i : visibleLabels(ui.canvas.vertexGrid, cam,
+                                    uint32_t(m.polygon().vertices.size()), room * room)) {
         Vec2 c = cam.toScreen(m.polygon().vertices[i]);
         std::snprintf(text, sizeof text, "%u", i);
-        dl->AddText(ImVec2(float(c.x + 5 * s), float(c.y - 16 * s)), toImU32(palette::kVertexNumber), text);
+        dl->AddText(ImVec2(float(c.x + 5 * s), float(c.y - 16 * s)),
+                    toImU32(palette::kVertexNumber), text);
     }
 }
 
@@ -171,8 +173,11 @@ void gorgeFocus(Ui& ui) {
     const Rect& area = ui.layout.canvas;
     CanvasState& cs = ui.canvas;
     const Camera& cam = m.camera;
-    std::array<double, 8> key{cam.center().x, cam.center().y, cam.scale(), area.x, area.y, area.w, area.h,
-                              double(m.step()) + double(m.generation()) * 4294967296.0};
+    std::array<double, 8> key{
+        cam.center().x, cam.center().y,
+        cam.scale(),    area.x,
+        area.y,         area.w,
+        area.h,         double(m.step()) + double(m.generation()) * 4294967296.0};
     if (key != cs.focusKey) {
         cs.focusKey = key;
         std::vector<Vec2> outline;
@@ -182,8 +187,10 @@ void gorgeFocus(Ui& ui) {
     Rgba dim = palette::kBackground;
     dim.a = 200;
     for (const Rect& r : cs.focusDim) {
-        ui.renderer.addTriangle(Layer::Lines, {r.x, r.y}, {r.x + r.w, r.y}, {r.x + r.w, r.y + r.h}, dim);
-        ui.renderer.addTriangle(Layer::Lines, {r.x, r.y}, {r.x + r.w, r.y + r.h}, {r.x, r.y + r.h}, dim);
+        ui.renderer.addTriangle(Layer::Lines, {r.x, r.y}, {r.x + r.w, r.y}, {r.x + r.w, r.y + r.h},
+                                dim);
+        ui.renderer.addTriangle(Layer::Lines, {r.x, r.y}, {r.x + r.w, r.y + r.h}, {r.x, r.y + r.h},
+                                dim);
     }
 }
 
@@ -209,12 +216,13 @@ void errorOverlay(Ui& ui, ImDrawList* dl) {
     };
     for (Index v : c.edges)
         if (v < P.vertices.size())
-            r.addLine(Layer::Lines, cam.toScreen(P.vertices[v]), cam.toScreen(P.vertices[edgeEnd(v)]),
-                      6 * s, palette::kCulprit);
+            r.addLine(Layer::Lines, cam.toScreen(P.vertices[v]),
+                      cam.toScreen(P.vertices[edgeEnd(v)]), 6 * s, palette::kCulprit);
     for (uint32_t t : c.triangles)
         if (t < m.trace().triangles.size()) {
             const Triangle& tri = m.trace().triangles[t];
-            if (tri[0] < P.vertices.size() && tri[1] < P.vertices.size() && tri[2] < P.vertices.size())
+            if (tri[0] < P.vertices.size() && tri[1] < P.vertices.size() &&
+                tri[2] < P.vertices.size())
                 for (int k = 0; k < 3; ++k)
                     r.addLine(Layer::Lines, cam.toScreen(P.vertices[tri[k]]),
                               cam.toScreen(P.vertices[tri[(k + 1) % 3]]), 4 * s, palette::kCulprit);
@@ -228,11 +236,13 @@ void errorOverlay(Ui& ui, ImDrawList* dl) {
             const Ring& g = P.rings[ring];
             for (Index i = 0; i < g.count && budget; ++i, --budget)
                 r.addLine(Layer::Lines, cam.toScreen(P.vertices[g.first + i]),
-                          cam.toScreen(P.vertices[g.first + (i + 1) % g.count]), 3 * s, palette::kCulprit);
+                          cam.toScreen(P.vertices[g.first + (i + 1) % g.count]), 3 * s,
+                          palette::kCulprit);
         }
     }
     Point x;
-    if (m.errorPoint(x)) r.addCircle(Layer::Markers, cam.toScreen(x), 12 * s, 3 * s, palette::kCulprit);
+    if (m.errorPoint(x))
+        r.addCircle(Layer::Markers, cam.toScreen(x), 12 * s, 3 * s, palette::kCulprit);
     for (Index v : c.vertices) {
         if (v >= P.vertices.size()) continue;
         Vec2 p = cam.toScreen(P.vertices[v]);
@@ -241,7 +251,8 @@ void errorOverlay(Ui& ui, ImDrawList* dl) {
         Index ring = P.ringOf(v);
         char text[64];
         std::snprintf(text, sizeof text, "v%u (ring %u #%u)", v, ring, v - P.rings[ring].first);
-        dl->AddText(ImVec2(float(p.x + 8 * s), float(p.y - 16 * s)), toImU32(palette::kCulprit), text);
+        dl->AddText(ImVec2(float(p.x + 8 * s), float(p.y - 16 * s)), toImU32(palette::kCulprit),
+                    text);
     }
 }
 
@@ -269,7 +280,8 @@ void canvasBar(Ui& ui) {
         ui.message = f.message;
         ui.findFailed = !f.ok;
     }
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("Ctrl+F: v<vertex>, t<triangle>, s<step>, r<ring>");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Ctrl+F: v<vertex>, t<triangle>, s<step>, r<ring>");
     if (m.failed()) {
         ImGui::SameLine();
         bool go = ImGui::Button(m.errorView ? "Hide error (E)" : "Show error (E)");
@@ -313,7 +325,8 @@ void paintCanvas(Ui& ui, ImDrawList* dl) {
     const Camera& cam = m.camera;
     const float s = ui.scale;
     const SceneOptions& o = ui.sceneOptions;
-    const uint32_t n = std::min<uint32_t>(m.state().triangleCount, uint32_t(m.trace().triangles.size()));
+    const uint32_t n =
+        std::min<uint32_t>(m.state().triangleCount, uint32_t(m.trace().triangles.size()));
     const Event* ev = m.currentEvent();
     WorldView& w = cs.view;
     w.center = {cam.center().x - cs.origin.x, cam.center().y - cs.origin.y};
@@ -370,7 +383,8 @@ void paintCanvas(Ui& ui, ImDrawList* dl) {
     for (size_t i = 0; i < ui.highlight.size(); ++i) {
         if (ui.highlight[i] >= m.polygon().vertices.size()) continue;
         Vec2 c = cam.toScreen(m.polygon().vertices[ui.highlight[i]]);
-        dl->AddCircle(ImVec2(float(c.x), float(c.y)), 9 * s, IM_COL32(80, 220, 255, 255), 0, 2.5f * s);
+        dl->AddCircle(ImVec2(float(c.x), float(c.y)), 9 * s, IM_COL32(80, 220, 255, 255), 0,
+                      2.5f * s);
         dl->AddText(ImVec2(float(c.x + 10 * s), float(c.y - 18 * s)), IM_COL32(80, 220, 255, 255),
                     std::to_string(i + 1).c_str());
     }

@@ -10,14 +10,15 @@ namespace flood::view {
 void handlePresenterKeys(Ui& ui) {
     ImGuiIO& io = ImGui::GetIO();
     if (ImGui::IsKeyPressed(platform::kKeyF11, false)) platform::toggleFullscreen();
-    auto pressed = [](const int (&keys)[2]) {
+    auto pressed = [](const int(&keys)[2]) {
         return ImGui::IsKeyPressed(keys[0]) || ImGui::IsKeyPressed(keys[1]);
     };
     bool zoomed = false;
     if (io.KeyCtrl && pressed(platform::kKeyPlus)) zoomed = ui.uiScale.zoomIn();
     if (io.KeyCtrl && pressed(platform::kKeyMinus)) zoomed = ui.uiScale.zoomOut();
     if (io.KeyCtrl && pressed(platform::kKeyZero)) zoomed = ui.uiScale.resetZoom();
-    if (zoomed) ui.message = "UI scale " + std::to_string(int(ui.uiScale.zoom() * 100 + 0.5f)) + "%";
+    if (zoomed)
+        ui.message = "UI scale " + std::to_string(int(ui.uiScale.zoom() * 100 + 0.5f)) + "%";
     // A text field keeps its Tab. The camera keeps its centre and zoom, so Tab twice gives
     // back the same view (F fits the polygon to the larger canvas).
     if (!io.WantTextInput && !io.KeyCtrl && ImGui::IsKeyPressed(platform::kKeyTab, false))

@@ -30,7 +30,8 @@ void clickable(Ui& ui, const char* text, char kind) {
     ImGui::TextUnformatted(text);
     if (text[0] == '-' || !ImGui::IsItemHovered()) return;
     ImGui::SetTooltip("click: find %c%s", kind, text);
-    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left)) ui.message = ui.model.find(kind + std::string(text)).message;
+    if (ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+        ui.message = ui.model.find(kind + std::string(text)).message;
 }
 
 void sameLineOrWrap(float width) {

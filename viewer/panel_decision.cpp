@@ -19,10 +19,12 @@ namespace {
 
 using Kind = DecisionNode::Kind;
 
-constexpr Rgba kNodeFill{50, 54, 62, 255}, kNodeBorder{100, 104, 112, 255}, kNodeText{140, 144, 150, 255};
+constexpr Rgba kNodeFill{50, 54, 62, 255}, kNodeBorder{100, 104, 112, 255},
+    kNodeText{140, 144, 150, 255};
 constexpr Rgba kStopFill{105, 28, 28, 255};
 constexpr Rgba kEdge{78, 82, 90, 255};
-constexpr Rgba kYes{140, 220, 140, 255}, kNo{150, 180, 230, 255};  // answers; "no" is not the forbidden red
+constexpr Rgba kYes{140, 220, 140, 255},
+    kNo{150, 180, 230, 255};  // answers; "no" is not the forbidden red
 
 Rgba dim(Rgba c) { return {uint8_t(c.r / 2), uint8_t(c.g / 2), uint8_t(c.b / 2), 255}; }
 
@@ -40,7 +42,9 @@ void tooltip(const DecisionNode& n, uint64_t count) {
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30);
     ImGui::TextUnformatted(n.label);
     if (n.kind == Kind::Stop) {
-        for (Forbidden f : n.reasons) ImGui::TextColored(toImVec4(palette::kCulprit), "%s: %s", forbiddenName(f), forbiddenText(f));
+        for (Forbidden f : n.reasons)
+            ImGui::TextColored(toImVec4(palette::kCulprit), "%s: %s", forbiddenName(f),
+                               forbiddenText(f));
     } else {
         ImGui::TextDisabled("%s", n.detail);
     }
@@ -57,7 +61,8 @@ void seekLeaf(Ui& ui, int leaf) {
     size_t i = nextEventEndingAt(events, leaf, m.step());  // events[step] is the next event
     if (i == events.size()) i = nextEventEndingAt(events, leaf, 0);
     if (i == events.size()) {
-        ui.message = std::string("no step of this run ends in ") + decisionTree().nodes[size_t(leaf)].label;
+        ui.message =
+            std::string("no step of this run ends in ") + decisionTree().nodes[size_t(leaf)].label;
         return;
     }
     m.seek(uint32_t(i + 1));
@@ -108,7 +113,9 @@ void drawTree(Ui& ui, ImVec2 size, const DecisionPath& path, bool countBars) {
                 ImVec2 pts[4] = {{a.x + bw / 2, a.y}, {mx, a.y}, {mx, b.y}, {b.x - bw / 2, b.y}};
                 if (litEdge) dl->AddPolyline(pts, 4, toImU32(palette::kTreePath), 0, thick);
                 if (answers || !litEdge)
-                    dl->AddPolyline(pts, 4, toImU32(answers ? (litEdge ? answer : dim(answer)) : kEdge), 0, line);
+                    dl->AddPolyline(pts, 4,
+                                    toImU32(answers ? (litEdge ? answer : dim(answer)) : kEdge), 0,
+                                    line);
             }
         }
     // Boxes.
@@ -121,24 +128,31 @@ void drawTree(Ui& ui, ImVec2 size, const DecisionPath& path, bool countBars) {
         const bool reached = s && s->ran;  // a test on the path that did not run stays grey
         Rgba fill = kNodeFill, border = kNodeBorder, text = kNodeText;
         if (n.kind == Kind::Stop) fill = reached ? palette::kCulprit : kStopFill;
-        else if (n.kind == Kind::Action) fill = reached ? palette::action(n.action) : dim(palette::action(n.action));
+        else if (n.kind == Kind::Action)
+            fill = reached ? palette::action(n.action) : dim(palette::action(n.action));
         else if (reached) fill = {90, 86, 52, 255};
-        if (reached) border = palette::kTreePath, text = n.kind == Kind::Action ? Rgba{20, 20, 20, 255} : Rgba{250, 250, 250, 255};
+        if (reached)
+            border = palette::kTreePath,
+            text = n.kind == Kind::Action ? Rgba{20, 20, 20, 255} : Rgba{250, 250, 250, 255};
         else if (n.kind == Kind::Stop || n.kind == Kind::Action) text = {220, 220, 220, 255};
         const float r = 3 * ui.scale;
         dl->AddRectFilled(p0, p1, toImU32(fill), r);
         dl->AddRect(p0, p1, toImU32(border), r, 0, reached ? thick : line);
         if (countBars && count[i]) {
-            const float share = float(double(count[i]) / double(std::max<size_t>(1, ui.model.steps())));
+            const float share =
+                float(double(count[i]) / double(std::max<size_t>(1, ui.model.steps())));
             const float foot = std::max(2.0f, bh * 0.12f);
-            dl->AddRectFilled(ImVec2(p0.x + 2, p1.y - foot - 1), ImVec2(p0.x + 2 + (bw - 4) * share, p1.y - 1),
+            dl->AddRectFilled(ImVec2(p0.x + 2, p1.y - foot - 1),
+                              ImVec2(p0.x + 2 + (bw - 4) * share, p1.y - 1),
                               toImU32(palette::kTreePath));
         }
         if (const float f = labelSize(n.label); f >= legible) {
             ImVec2 ts = fontFace->CalcTextSizeA(f, 1e9f, 0, n.label);
-            dl->AddText(fontFace, f, ImVec2(c.x - ts.x / 2, c.y - ts.y / 2), toImU32(text), n.label);
+            dl->AddText(fontFace, f, ImVec2(c.x - ts.x / 2, c.y - ts.y / 2), toImU32(text),
+                        n.label);
         }
-        if (hovered && mouse.x >= p0.x && mouse.x < p1.x && mouse.y >= p0.y && mouse.y < p1.y) hoveredNode = int(i);
+        if (hovered && mouse.x >= p0.x && mouse.x < p1.x && mouse.y >= p0.y && mouse.y < p1.y)
+            hoveredNode = int(i);
     }
     if (hoveredNode < 0) return;
     tooltip(t.nodes[size_t(hoveredNode)], count[size_t(hoveredNode)]);
@@ -223,13 +237,15 @@ void drawDecision(Ui& ui) {
 
     if (!ui.showDecisionTree) return;
     if (!beginFloating(ui, "Decision tree (Fig. 9)", &ui.showDecisionTree, 680, 460, 0, 40)) return;
-    ImGui::TextDisabled("%s", e ? (std::string("step ") + std::to_string(m.step()) + ": " +
-                                   actionName(e->action) + (e->side == Side::Left ? ", C is Left" : ", C is Right"))
-                                      .c_str()
-                                : "step 0: nothing decided yet");
+    ImGui::TextDisabled(
+        "%s", e ? (std::string("step ") + std::to_string(m.step()) + ": " + actionName(e->action) +
+                   (e->side == Side::Left ? ", C is Left" : ", C is Right"))
+                      .c_str()
+                : "step 0: nothing decided yet");
     ImGui::SameLine();
-    ImGui::TextDisabled("  edges: green yes, blue no; bars: share of the run's events through a box; "
-                        "hover: what it tests; click a leaf: seek");
+    ImGui::TextDisabled(
+        "  edges: green yes, blue no; bars: share of the run's events through a box; "
+        "hover: what it tests; click a leaf: seek");
     drawTree(ui, ImGui::GetContentRegionAvail(), path, true);
     ImGui::End();
 }

@@ -21,7 +21,8 @@ void drawDirection(Ui& ui) {
     ImGui::TextDisabled("degrees counter-clockwise from +x; 90 is +y");
     ImGui::SetNextItemWidth(-1);
     // Re-floods while dragging: a run of a few thousand vertices takes milliseconds.
-    if (ImGui::SliderFloat("##angle", &degrees, 0, 360, "%.1f°") && std::fabs(degrees - upDegrees(up)) > 1e-4)
+    if (ImGui::SliderFloat("##angle", &degrees, 0, 360, "%.1f°") &&
+        std::fabs(degrees - upDegrees(up)) > 1e-4)
         m.setUp(upFromDegrees(double(degrees)));
     const struct {
         const char* label;
@@ -38,7 +39,8 @@ void drawDirection(Ui& ui) {
         ImGui::TextWrapped("Turn the dial: the table compares each run with the one before.");
     }
     const FloodSummary& before = m.hasPreviousSummary() ? m.previousSummary() : now;
-    if (ImGui::BeginTable("changes", 3, ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
+    if (ImGui::BeginTable("changes", 3,
+                          ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp)) {
         ImGui::TableSetupColumn("");
         ImGui::TableSetupColumn("before");
         ImGui::TableSetupColumn("now");
@@ -51,10 +53,10 @@ void drawDirection(Ui& ui) {
             ImGui::Text("%lld", static_cast<long long>(c.before));
             ImGui::TableNextColumn();
             if (c.changed())
-                ImGui::TextColored(toImVec4(palette::kCurrent), "%lld (%+lld)", static_cast<long long>(c.after),
+                ImGui::TextColored(toImVec4(palette::kCurrent), "%lld (%+lld)",
+                                   static_cast<long long>(c.after),
                                    static_cast<long long>(c.after - c.before));
-            else
-                ImGui::Text("%lld", static_cast<long long>(c.after));
+            else ImGui::Text("%lld", static_cast<long long>(c.after));
         }
         ImGui::EndTable();
     }

@@ -62,7 +62,7 @@ void say(Ui& ui, bool ok) {
 void editFrame(Ui& ui) {
     EditUi& e = ui.edit;
     e.editor.poll();
-    e.hoverVertex = e.hoverEdge = kNone;  // found again by editCanvasInput when over the canvas
+    e.hoverVertex = e.hoverEdge = kNone;    // found again by editCanvasInput when over the canvas
     const Polygon& p = e.editor.polygon();  // follows an open: drop a drag of what is gone
     if (e.dragVertex >= p.vertices.size()) e.dragVertex = kNone;
     if (e.dragRing >= p.rings.size()) e.dragRing = kNone;
@@ -111,7 +111,8 @@ bool editCanvasInput(Ui& ui, Vec2 mouse) {
     const bool shift = ImGui::GetIO().KeyShift;
     if (e.hoverVertex != kNone || e.hoverEdge != kNone) {
         ImGui::BeginTooltip();
-        if (e.hoverVertex != kNone) ImGui::Text("vertex %u: drag to move, Delete removes it", e.hoverVertex);
+        if (e.hoverVertex != kNone)
+            ImGui::Text("vertex %u: drag to move, Delete removes it", e.hoverVertex);
         else ImGui::Text("edge from vertex %u: double-click inserts a vertex", e.hoverEdge);
         ImGui::TextDisabled("Shift+drag: move the whole ring");
         ImGui::EndTooltip();
@@ -157,7 +158,8 @@ void editOverlay(Ui& ui, ImDrawList* dl) {
         size_t budget = 20000;
         for (const Ring& g : p.rings)
             for (Index i = 0; i < g.count && budget; ++i, --budget)
-                dl->AddLine(at(p.vertices[g.first + i]), at(p.vertices[g.first + (i + 1) % g.count]), handle, 1.5f * s);
+                dl->AddLine(at(p.vertices[g.first + i]),
+                            at(p.vertices[g.first + (i + 1) % g.count]), handle, 1.5f * s);
     }
     if (e.hoverEdge != kNone && e.hoverEdge < p.vertices.size()) {
         const Ring& g = p.rings[p.ringOf(e.hoverEdge)];
@@ -168,15 +170,18 @@ void editOverlay(Ui& ui, ImDrawList* dl) {
     for (Index v : {e.hoverVertex, e.selected, e.dragVertex})
         if (v < p.vertices.size()) {
             ImVec2 c = at(p.vertices[v]);
-            dl->AddRect(ImVec2(c.x - 5 * s, c.y - 5 * s), ImVec2(c.x + 5 * s, c.y + 5 * s), handle, 0, 0, 2 * s);
+            dl->AddRect(ImVec2(c.x - 5 * s, c.y - 5 * s), ImVec2(c.x + 5 * s, c.y + 5 * s), handle,
+                        0, 0, 2 * s);
         }
     // The ring being drawn, with a rubber band to the mouse.
     if (e.ringTool) {
         const auto& c = ed.corners;
-        for (size_t i = 0; i + 1 < c.size(); ++i) dl->AddLine(at(c[i]), at(c[i + 1]), handle, 2 * s);
+        for (size_t i = 0; i + 1 < c.size(); ++i)
+            dl->AddLine(at(c[i]), at(c[i + 1]), handle, 2 * s);
         ImVec2 mouse = ImGui::GetIO().MousePos;
         if (!c.empty()) dl->AddLine(at(c.back()), mouse, handle, 1 * s);
-        for (size_t i = 0; i < c.size(); ++i) dl->AddCircleFilled(at(c[i]), (i == 0 ? 6 : 4) * s, handle);
+        for (size_t i = 0; i < c.size(); ++i)
+            dl->AddCircleFilled(at(c[i]), (i == 0 ? 6 : 4) * s, handle);
     }
     // An invalid edit: the validator's culprits marked where they are, and its sentence.
     if (!m.inputDiagnostic().ok() && !ed.pending() && !m.errorView) {
@@ -185,7 +190,9 @@ void editOverlay(Ui& ui, ImDrawList* dl) {
         for (Index v : k.edges)
             if (v < P.vertices.size()) {
                 const Ring& g = P.rings[P.ringOf(v)];
-                dl->AddLine(at(P.vertices[v]), at(P.vertices[v + 1 == g.first + g.count ? g.first : v + 1]), culprit, 4 * s);
+                dl->AddLine(at(P.vertices[v]),
+                            at(P.vertices[v + 1 == g.first + g.count ? g.first : v + 1]), culprit,
+                            4 * s);
             }
         for (Index v : k.vertices)
             if (v < P.vertices.size()) dl->AddCircleFilled(at(P.vertices[v]), 5 * s, culprit);
@@ -198,7 +205,8 @@ void editOverlay(Ui& ui, ImDrawList* dl) {
     if (p.vertices.empty() && ed.corners.empty()) {
         const Rect& area = ui.layout.canvas;
         dl->AddText(ImVec2(float(area.x + 20 * s), float(area.y + 44 * s)), handle,
-                    "draw your own: click the corners of the outer ring; Enter or a click on the first corner closes it");
+                    "draw your own: click the corners of the outer ring; Enter or a click on the "
+                    "first corner closes it");
     }
 }
 
@@ -207,19 +215,23 @@ void editBar(Ui& ui) {
     Editor& ed = e.editor;
     const Rect& area = ui.layout.canvas;
     const float s = ui.scale;
-    ImGui::SetNextWindowPos(ImVec2(float(area.x + area.w - 8 * s), float(area.y + 8 * s)), ImGuiCond_Always,
-                            ImVec2(1, 0));
+    ImGui::SetNextWindowPos(ImVec2(float(area.x + area.w - 8 * s), float(area.y + 8 * s)),
+                            ImGuiCond_Always, ImVec2(1, 0));
     ImGui::SetNextWindowBgAlpha(0.75f);
     ImGui::Begin("##editbar", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                     ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing);
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing);
     if (ImGui::Checkbox("Edit (M)", &e.on) && !e.on) e.ringTool = false;
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("drag a vertex, double-click an edge, Delete, Shift+drag a ring");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("drag a vertex, double-click an edge, Delete, Shift+drag a ring");
     if (e.on) {
         ImGui::SameLine();
         if (ImGui::Checkbox("New ring (H)", &e.ringTool)) ed.corners.clear();
         if (ImGui::IsItemHovered())
-            ImGui::SetTooltip("click corners; Enter or the first corner closes: a hole inside, a new part outside");
+            ImGui::SetTooltip(
+                "click corners; Enter or the first corner closes: a hole inside, a new part "
+                "outside");
         ImGui::SameLine();
         ImGui::BeginDisabled(!ed.canUndo());
         if (ImGui::Button("Undo")) say(ui, ed.undo());
@@ -246,7 +258,8 @@ void editBar(Ui& ui) {
     if (!e.showSave) return;
     if (!beginFloating(ui, "Save polygon", &e.showSave, 460, 130, 60, 60)) return;
     ImGui::SetNextItemWidth(-80 * s);
-    bool go = ImGui::InputText("##savepath", e.savePath, sizeof e.savePath, ImGuiInputTextFlags_EnterReturnsTrue);
+    bool go = ImGui::InputText("##savepath", e.savePath, sizeof e.savePath,
+                               ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     go |= ImGui::Button("Save");
     std::error_code ec;
@@ -261,7 +274,8 @@ void editBar(Ui& ui) {
             if (d.ok()) ui.message = e.saveNote;
         }
     }
-    ImGui::TextWrapped("%s", e.saveNote.empty() ? "GeoJSON, written atomically" : e.saveNote.c_str());
+    ImGui::TextWrapped("%s",
+                       e.saveNote.empty() ? "GeoJSON, written atomically" : e.saveNote.c_str());
     ImGui::End();
 }
 
@@ -294,7 +308,8 @@ void editShortcuts(Ui& ui) {
         say(ui, ok);
         if (ok) e.ringTool = false;
     }
-    if (e.ringTool && pressed(ImGui::GetKeyIndex(ImGuiKey_Backspace)) && !ed.corners.empty()) ed.corners.pop_back();
+    if (e.ringTool && pressed(ImGui::GetKeyIndex(ImGuiKey_Backspace)) && !ed.corners.empty())
+        ed.corners.pop_back();
     if (pressed(ImGui::GetKeyIndex(ImGuiKey_Escape))) {
         ed.corners.clear();
         e.ringTool = false;

@@ -52,7 +52,8 @@ void drawEvents(Ui& ui) {
                 char label[32];
                 snprintf(label, sizeof label, "%d", i + 1);
                 if (ImGui::Selectable(label, uint32_t(i + 1) == m.step(),
-                                      ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowItemOverlap)) {
+                                      ImGuiSelectableFlags_SpanAllColumns |
+                                          ImGuiSelectableFlags_AllowItemOverlap)) {
                     m.seek(uint32_t(i + 1));
                     ui.eventsScrolledTo = m.step();  // the user scrolled here: do not jump
                 }

@@ -76,9 +76,11 @@ void drawExport(Ui& ui) {
     ImGui::Checkbox("caption (step, action, narration)", &s.caption);
     if (!ui.exportPath[0])
         std::snprintf(ui.exportPath, sizeof ui.exportPath, "%s", suggestedPath(m, format).c_str());
-    ImGui::InputText(format == PngSequence ? "directory" : "file", ui.exportPath, sizeof ui.exportPath);
+    ImGui::InputText(format == PngSequence ? "directory" : "file", ui.exportPath,
+                     sizeof ui.exportPath);
 #ifndef FLOOD_GIF
-    if (format == Gif) ImGui::TextColored(toImVec4(palette::kCulprit), "built without giflib (FLOOD_GIF)");
+    if (format == Gif)
+        ImGui::TextColored(toImVec4(palette::kCulprit), "built without giflib (FLOOD_GIF)");
 #endif
     bool go = ImGui::Button("Export");
     ImGui::EndDisabled();
@@ -87,7 +89,10 @@ void drawExport(Ui& ui) {
         ExportSettings job = s;
         job.png = job.svg = job.gif = job.pngDir = "";
         std::string path = ui.exportPath;
-        (format == CanvasPng ? job.png : format == CanvasSvg ? job.svg : format == Gif ? job.gif : job.pngDir) = path;
+        (format == CanvasPng   ? job.png
+         : format == CanvasSvg ? job.svg
+         : format == Gif       ? job.gif
+                               : job.pngDir) = path;
         ui.exportNote.clear();
         ui.exportJob = std::make_shared<ExportJob>(ui, job);
     }

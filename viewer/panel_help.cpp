@@ -25,8 +25,7 @@ void handleShortcuts(Ui& ui) {
     }
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Home), false)) m.first();
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_End), false)) m.last();
-    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageDown)))
-        m.seekAction(ui.seekKind, +1);
+    if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageDown))) m.seekAction(ui.seekKind, +1);
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageUp))) m.seekAction(ui.seekKind, -1);
     if (ImGui::IsKeyPressed(platform::kKeyF, false) && !io.KeyCtrl) m.needsFit = true;
     if (ImGui::IsKeyPressed(platform::kKeyF1, false)) ui.showHelp = !ui.showHelp;
@@ -62,9 +61,13 @@ void drawHelp(Ui& ui) {
         {"Tab", "presenter view: only the canvas and a large caption (again: back)"},
         {"F11", "fullscreen on the window's monitor (again: back)"},
         {"Ctrl + / Ctrl - / Ctrl+0", "larger / smaller UI and fonts / back to 100%"},
-        {"M", "edit mode: drag a vertex, double-click an edge to insert one, Delete removes the hovered one"},
+        {"M",
+         "edit mode: drag a vertex, double-click an edge to insert one, Delete removes the hovered "
+         "one"},
         {"Shift+drag (edit mode)", "move the whole ring"},
-        {"H (edit mode)", "new ring: click corners, Enter or the first corner closes (a hole inside, a part outside)"},
+        {"H (edit mode)",
+         "new ring: click corners, Enter or the first corner closes (a hole inside, a part "
+         "outside)"},
         {"Ctrl+Z / Ctrl+Shift+Z, Ctrl+Y", "undo / redo an edit"},
         {"Ctrl+S", "save the edited polygon as GeoJSON"},
         {"Ctrl+N", "new empty canvas: draw your own outer ring"},

@@ -33,28 +33,37 @@ void drawOpen(Ui& ui) {
     };
     if (m.generation() != ui.featuresGeneration) {
         ui.featuresGeneration = m.generation();
-        std::string file = m.feature() == Model::kNoFeature ? m.path() : m.path().substr(0, m.path().rfind('#'));
+        std::string file =
+            m.feature() == Model::kNoFeature ? m.path() : m.path().substr(0, m.path().rfind('#'));
         if (polygonDocument(file) && ui.features.path() != file) ui.features.start(file);
     }
     size_t openFeature = Model::kNoFeature;
     const FeatureScan& scan = ui.features;
     if (!scan.path().empty() && (!scan.done() || !scan.features().empty()) &&
-        ImGui::CollapsingHeader(("Features of " + scan.path()).c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
+        ImGui::CollapsingHeader(("Features of " + scan.path()).c_str(),
+                                ImGuiTreeNodeFlags_DefaultOpen)) {
         if (!scan.done()) {
-            std::string label = std::to_string(scan.progress()) + " / " + std::to_string(scan.total());
-            ImGui::ProgressBar(float(double(scan.progress()) / double(std::max<size_t>(1, scan.total()))),
-                               ImVec2(-1, 0), label.c_str());
+            std::string label =
+                std::to_string(scan.progress()) + " / " + std::to_string(scan.total());
+            ImGui::ProgressBar(
+                float(double(scan.progress()) / double(std::max<size_t>(1, scan.total()))),
+                ImVec2(-1, 0), label.c_str());
         } else {
-            static const char* const kVerdict[] = {"ok", "note", "malformed", "invalid", "forbidden", "rejected", "internal"};
-            const bool thisFile = m.feature() != Model::kNoFeature && m.path().rfind(scan.path() + "#", 0) == 0;
+            static const char* const kVerdict[] = {"ok",        "note",     "malformed", "invalid",
+                                                   "forbidden", "rejected", "internal"};
+            const bool thisFile =
+                m.feature() != Model::kNoFeature && m.path().rfind(scan.path() + "#", 0) == 0;
             for (const FeatureVerdict& f : scan.features()) {
-                std::string label = "#" + std::to_string(f.index) + " " + (f.name.empty() ? f.id : f.name) + "  " +
-                                    std::to_string(f.vertices) + " v  " + kVerdict[size_t(f.kind)] + "##feature" +
-                                    std::to_string(f.index);
+                std::string label = "#" + std::to_string(f.index) + " " +
+                                    (f.name.empty() ? f.id : f.name) + "  " +
+                                    std::to_string(f.vertices) + " v  " + kVerdict[size_t(f.kind)] +
+                                    "##feature" + std::to_string(f.index);
                 if (f.failure()) ImGui::PushStyleColor(ImGuiCol_Text, toImVec4(palette::kCulprit));
-                if (ImGui::Selectable(label.c_str(), thisFile && m.feature() == f.index)) openFeature = f.index;
+                if (ImGui::Selectable(label.c_str(), thisFile && m.feature() == f.index))
+                    openFeature = f.index;
                 if (f.failure()) ImGui::PopStyleColor();
-                if (!f.reason.empty() && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f.reason.c_str());
+                if (!f.reason.empty() && ImGui::IsItemHovered())
+                    ImGui::SetTooltip("%s", f.reason.c_str());
             }
         }
     }
@@ -64,7 +73,8 @@ void drawOpen(Ui& ui) {
         ui.message = ui.openFailed ? m.openDiagnostic().message : "opened " + m.path();
     }
 
-    if (!m.recentFiles().empty() && ImGui::CollapsingHeader("Recent", ImGuiTreeNodeFlags_DefaultOpen))
+    if (!m.recentFiles().empty() &&
+        ImGui::CollapsingHeader("Recent", ImGuiTreeNodeFlags_DefaultOpen))
         for (const auto& f : m.recentFiles())
             if (ImGui::Selectable(f.c_str(), f == m.path())) chosen = f;
 
@@ -76,7 +86,8 @@ void drawOpen(Ui& ui) {
         ImGui::PushTextWrapPos(0);
         for (size_t i = 0; i < gallery.size(); ++i) {
             const GalleryEntry& g = gallery[i];
-            std::string label = std::to_string(i + 1) + ". " + g.title + "##gallery" + std::to_string(i);
+            std::string label =
+                std::to_string(i + 1) + ". " + g.title + "##gallery" + std::to_string(i);
             if (ImGui::Selectable(label.c_str(), g.file == m.path())) chosen = g.file;
             if (!g.description.empty()) {
                 ImGui::Indent();
@@ -107,7 +118,8 @@ void drawOpen(Ui& ui) {
             std::string name = e.path().filename().string();
             std::string ext = e.path().extension().string();
             if (e.is_directory(ec)) dirs.push_back(name);
-            else if (ext == ".json" || ext == ".wkt" || ext == ".jsonl" || ext == ".geojson") files.push_back(name);
+            else if (ext == ".json" || ext == ".wkt" || ext == ".jsonl" || ext == ".geojson")
+                files.push_back(name);
 #ifdef FLOOD_GDAL
             else if (gdal::gisFile(name)) files.push_back(name);  // opened through GDAL
 #endif

@@ -38,7 +38,9 @@ void drawPredicates(Ui& ui) {
     if (rows.empty()) ImGui::TextDisabled("no decision at this step (Start, or no active chain)");
     const Polygon& p = m.polygon();
     if (!rows.empty() &&
-        ImGui::BeginTable("predicates", 6, ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_Resizable | ImGuiTableFlags_ScrollY)) {
+        ImGui::BeginTable("predicates", 6,
+                          ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders |
+                              ImGuiTableFlags_Resizable | ImGuiTableFlags_ScrollY)) {
         ImGui::TableSetupScrollFreeze(0, 1);
         for (const char* h : {"test", "predicate", "arguments", "float value", "exact", "stage"})
             ImGui::TableSetupColumn(h);
@@ -72,8 +74,9 @@ void drawPredicates(Ui& ui) {
             else ImGui::TextDisabled("-");
             ImGui::TableNextColumn();
             bool mismatch = r.hasRecorded && r.recorded != r.result;
-            ImVec4 colour = mismatch ? toImVec4(palette::kCulprit)
-                                     : r.result ? ImVec4(0.5f, 0.95f, 0.5f, 1) : ImVec4(1, 0.55f, 0.45f, 1);
+            ImVec4 colour = mismatch   ? toImVec4(palette::kCulprit)
+                            : r.result ? ImVec4(0.5f, 0.95f, 0.5f, 1)
+                                       : ImVec4(1, 0.55f, 0.45f, 1);
             if (r.hasValue) ImGui::TextColored(colour, "%+d: %s", r.sign, r.result ? "yes" : "no");
             else ImGui::TextColored(colour, "%s", r.result ? "yes" : "no");
             if (mismatch) ImGui::TextColored(colour, "recorded %s", r.recorded ? "yes" : "no");

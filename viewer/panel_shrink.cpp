@@ -59,10 +59,12 @@ void drawShrink(Ui& ui) {
             } else {
                 const size_t was = m.polygon().vertices.size();
                 m.openShrunk(r);
-                std::strncpy(ui.savePath, reproPath(m.originName()).c_str(), sizeof ui.savePath - 1);
-                ui.shrinkNote = "shrunk " + std::to_string(was) + " -> " + std::to_string(r.polygon.vertices.size()) +
-                             " vertices in " + std::to_string(r.tries) + " tries" +
-                             (r.cancelled ? " (cancelled)" : "") + ": " + r.failure.message;
+                std::strncpy(ui.savePath, reproPath(m.originName()).c_str(),
+                             sizeof ui.savePath - 1);
+                ui.shrinkNote = "shrunk " + std::to_string(was) + " -> " +
+                                std::to_string(r.polygon.vertices.size()) + " vertices in " +
+                                std::to_string(r.tries) + " tries" +
+                                (r.cancelled ? " (cancelled)" : "") + ": " + r.failure.message;
             }
         }
     } else if (m.failed() && ImGui::Button("Shrink")) {

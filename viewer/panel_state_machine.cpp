@@ -29,7 +29,8 @@ void arrow(ImDrawList* dl, ImVec2 a, ImVec2 b, float inset, ImU32 col, float thi
     float ux = dx / len, uy = dy / len;
     // Offset sideways so A->B and B->A do not overlap.
     float ox = -uy * 4, oy = ux * 4;
-    ImVec2 s(a.x + ux * inset + ox, a.y + uy * inset + oy), e(b.x - ux * inset + ox, b.y - uy * inset + oy);
+    ImVec2 s(a.x + ux * inset + ox, a.y + uy * inset + oy),
+        e(b.x - ux * inset + ox, b.y - uy * inset + oy);
     dl->AddLine(s, e, col, thick);
     float hs = 4 + thick * 2;
     dl->AddTriangleFilled(e, ImVec2(e.x - ux * hs - uy * hs / 2, e.y - uy * hs + ux * hs / 2),
@@ -111,7 +112,8 @@ void drawStateMachine(Ui& ui) {
         dl->AddText(mid, IM_COL32(150, 150, 160, 255), std::to_string(n).c_str());
     }
     if (from >= 0 && to >= 0 && from != to)
-        arrow(dl, pos[from], pos[to], nodeR, ImGui::GetColorU32(ImGuiCol_Text), 3);  // the theme's ink
+        arrow(dl, pos[from], pos[to], nodeR, ImGui::GetColorU32(ImGuiCol_Text),
+              3);  // the theme's ink
     for (int i = 0; i < kNodeCount; ++i) {
         Rgba color = palette::action(kNodes[i]);
         bool active = i == to;

@@ -31,13 +31,13 @@ void drawStateTable(Ui& ui) {
     Model& m = ui.model;
     if (!beginFloating(ui, "State table (Fig. 10)", &ui.showStateTable, 520, 320, 40, 40)) return;
     const StateTable& table = m.stateTable();  // one scan of the log per opened trace
-    const StateCell* cur = m.step() == 0 || m.step() > table.cellOf.size() ? nullptr
-                                                                           : &table.cellOf[m.step() - 1];
+    const StateCell* cur =
+        m.step() == 0 || m.step() > table.cellOf.size() ? nullptr : &table.cellOf[m.step() - 1];
     ImGui::TextDisabled("C: the end of the chain that acts; Next: its finger; rows the run met");
     constexpr int kLead = 3;
     if (ImGui::BeginTable("fig10", kLead + StateTable::kColumns,
-                          ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders | ImGuiTableFlags_ScrollY |
-                              ImGuiTableFlags_SizingFixedFit)) {
+                          ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders |
+                              ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit)) {
         ImGui::TableSetupScrollFreeze(0, 1);
         ImGui::TableSetupColumn("C");
         ImGui::TableSetupColumn("Next");

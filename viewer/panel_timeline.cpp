@@ -57,18 +57,22 @@ void strip(Ui& ui) {
     const auto& ev = m.trace().events;
     ImDrawList* dl = ImGui::GetWindowDrawList();
     ImVec2 p0 = ImGui::GetCursorScreenPos();
-    float w = std::max(ImGui::GetContentRegionAvail().x, 1.f), h = 26 * ui.scale, lane = 8 * ui.scale;
+    float w = std::max(ImGui::GetContentRegionAvail().x, 1.f), h = 26 * ui.scale,
+          lane = 8 * ui.scale;
     ImGui::InvisibleButton("##timeline", ImVec2(w, h + lane),
                            ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight |
                                ImGuiButtonFlags_MouseButtonMiddle);
     dl->AddRectFilled(p0, ImVec2(p0.x + w, p0.y + h), IM_COL32(20, 20, 24, 255));
-    dl->AddRectFilled(ImVec2(p0.x, p0.y + h), ImVec2(p0.x + w, p0.y + h + lane), IM_COL32(34, 30, 40, 255));
+    dl->AddRectFilled(ImVec2(p0.x, p0.y + h), ImVec2(p0.x + w, p0.y + h + lane),
+                      IM_COL32(34, 30, 40, 255));
     uint32_t n = uint32_t(ev.size());
     if (n == 0) return;
     ImGuiIO& io = ImGui::GetIO();
     float mx = io.MousePos.x - p0.x;
-    if (ImGui::IsItemHovered() && io.MouseWheel != 0) tv.zoomAt(mx, w, std::pow(1.25, io.MouseWheel), n);
-    if (ImGui::IsItemActive() && (ImGui::IsMouseDragging(ImGuiMouseButton_Right) || ImGui::IsMouseDragging(ImGuiMouseButton_Middle)))
+    if (ImGui::IsItemHovered() && io.MouseWheel != 0)
+        tv.zoomAt(mx, w, std::pow(1.25, io.MouseWheel), n);
+    if (ImGui::IsItemActive() && (ImGui::IsMouseDragging(ImGuiMouseButton_Right) ||
+                                  ImGui::IsMouseDragging(ImGuiMouseButton_Middle)))
         tv.pan(io.MouseDelta.x, w, n);
     dl->PushClipRect(p0, ImVec2(p0.x + w, p0.y + h + lane), true);
     const double perEvent = tv.perEvent(w, n);
@@ -87,11 +91,12 @@ void strip(Ui& ui) {
         static double foldedFirst = -1, foldedSpan = -1;
         static std::vector<Action> folded;
         int buckets = int(w / minMark);
-        if (foldedFor != m.generation() || folded.size() != size_t(buckets) || foldedFirst != tv.first ||
-            foldedSpan != tv.span) {
+        if (foldedFor != m.generation() || folded.size() != size_t(buckets) ||
+            foldedFirst != tv.first || foldedSpan != tv.span) {
             folded.assign(size_t(buckets), Action::Start);
             for (int b = 0; b < buckets; ++b) {
-                uint32_t b0 = tv.eventAt(b * minMark, w, n), b1 = tv.eventAt((b + 1) * minMark, w, n);
+                uint32_t b0 = tv.eventAt(b * minMark, w, n),
+                         b1 = tv.eventAt((b + 1) * minMark, w, n);
                 Action best = ev[b0].action;
                 for (uint32_t i = b0; i < b1; ++i)
                     if (weight(ev[i].action) > weight(best)) best = ev[i].action;
@@ -111,7 +116,8 @@ void strip(Ui& ui) {
         float x = xOf(step);  // a step sits at the right edge of its event's mark
         dl->AddLine(ImVec2(x, y0), ImVec2(x, y1), colour, width);
     };
-    for (uint32_t s : breakpointSteps(m)) tick(s, p0.y, p0.y + 6 * ui.scale, IM_COL32(255, 220, 60, 255), 2);
+    for (uint32_t s : breakpointSteps(m))
+        tick(s, p0.y, p0.y + 6 * ui.scale, IM_COL32(255, 220, 60, 255), 2);
     for (const Violation& v : m.violations())
         tick(v.step, p0.y + h, p0.y + h + lane, IM_COL32(255, 120, 40, 255), 2);
     // The first error: the forbidden event, a triangle the checker rejects, or where an invalid
@@ -120,7 +126,8 @@ void strip(Ui& ui) {
         tick(m.firstErrorStep(), p0.y, p0.y + h + lane, toImU32(palette::kCulprit), 3 * ui.scale);
     tick(m.step(), p0.y, p0.y + h, IM_COL32(255, 255, 255, 255), 2 * ui.scale);
     dl->PopClipRect();
-    if (ImGui::IsItemActive() && ImGui::IsMouseDown(ImGuiMouseButton_Left)) {  // click or drag scrubs
+    if (ImGui::IsItemActive() &&
+        ImGui::IsMouseDown(ImGuiMouseButton_Left)) {  // click or drag scrubs
         m.playing = false;
         m.seek(tv.stepAt(mx, w, n));
     }
@@ -133,7 +140,8 @@ void strip(Ui& ui) {
 // The invariant lane's status: progress while the background scan runs, then what it found.
 void invariantStatus(Ui& ui) {
     Model& m = ui.model;
-    if (m.landOnFirstViolation()) ui.message = "moved to the first broken invariant (the machine stops later)";
+    if (m.landOnFirstViolation())
+        ui.message = "moved to the first broken invariant (the machine stops later)";
     if (!m.invariantsDone()) {
         ImGui::TextDisabled("invariants: checking step %u of %u", m.invariantProgress(), m.steps());
         ImGui::SameLine();
@@ -149,8 +157,9 @@ void invariantStatus(Ui& ui) {
         ImGui::TextColored(toImVec4(palette::kOk), "invariants: none broken");
         return;
     }
-    ImGui::TextColored(ImVec4(1, 0.55f, 0.2f, 1), "invariants: %zu steps break one; first at step %u: %s (%s)",
-                       v.size(), v.front().step, invariantName(v.front().which), v.front().detail.c_str());
+    ImGui::TextColored(ImVec4(1, 0.55f, 0.2f, 1),
+                       "invariants: %zu steps break one; first at step %u: %s (%s)", v.size(),
+                       v.front().step, invariantName(v.front().which), v.front().detail.c_str());
     ImGui::SameLine();
     if (ImGui::SmallButton("Go##invariant")) m.seek(v.front().step);
     if (m.forbiddenStep()) {
@@ -221,7 +230,8 @@ void drawTimeline(Ui& ui) {
     if (ImGui::Button("SVG")) exportSvg(ui);
     const char* themeButton = ui.theme == Theme::Light ? "Dark theme" : "Light theme";
     sameLineOrWrap(buttonWidth(themeButton));
-    if (ImGui::Button(themeButton)) ui.theme = ui.theme == Theme::Light ? Theme::Dark : Theme::Light;
+    if (ImGui::Button(themeButton))
+        ui.theme = ui.theme == Theme::Light ? Theme::Dark : Theme::Light;
     sameLineOrWrap(buttonWidth("Present (Tab)"));
     if (ImGui::Button("Present (Tab)")) ui.presenter = true;
     sameLineOrWrap(buttonWidth("Export..."));
@@ -251,8 +261,9 @@ void drawTimeline(Ui& ui) {
     for (const VerdictLine& line : m.verdictLines()) {
         if (line.kind == VerdictKind::Note) ImGui::TextDisabled("%s", line.text.c_str());
         else
-            ImGui::TextColored(line.failure() ? toImVec4(palette::kCulprit) : toImVec4(palette::kOk),
-                               "%s", line.text.c_str());
+            ImGui::TextColored(
+                line.failure() ? toImVec4(palette::kCulprit) : toImVec4(palette::kOk), "%s",
+                line.text.c_str());
     }
     for (const auto& w : m.warnings()) ImGui::TextDisabled("warning: %s", w.c_str());
     if (!ui.message.empty()) ImGui::TextDisabled("%s", ui.message.c_str());

@@ -20,7 +20,8 @@ void drawChosen(Ui& ui, const Gorge& g) {
     const auto& v = m.polygon().vertices;
     const Rect& area = ui.layout.canvas;
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
-    dl->PushClipRect(ImVec2(float(area.x), float(area.y)), ImVec2(float(area.x + area.w), float(area.y + area.h)), true);
+    dl->PushClipRect(ImVec2(float(area.x), float(area.y)),
+                     ImVec2(float(area.x + area.w), float(area.y + area.h)), true);
     const float s = ui.scale;
     const ImU32 colour = toImU32(g.held ? palette::kJump : palette::kDormant);
     std::vector<ImVec2> pts;
@@ -53,7 +54,8 @@ void bringIntoView(Ui& ui, const Gorge& g) {
     if (!(x0 <= x1)) return;
     const Rect& vp = m.camera.viewport();
     const double scale = m.camera.scale();
-    if ((x1 - x0) * scale > vp.w * 0.9 || (y1 - y0) * scale > vp.h * 0.9) m.camera.fitBox(x0, y0, x1, y1, vp);
+    if ((x1 - x0) * scale > vp.w * 0.9 || (y1 - y0) * scale > vp.h * 0.9)
+        m.camera.fitBox(x0, y0, x1, y1, vp);
     else m.camera.centerOn({(x0 + x1) / 2, (y0 + y1) / 2});
     m.needsFit = false;
 }
@@ -89,10 +91,13 @@ void row(Ui& ui, const ReplayState& st, const TodoEntry& t, int position, bool h
     ImGui::PopID();
 }
 
-bool table(Ui& ui, const char* id, const ReplayState& st, const std::vector<TodoEntry>& list, bool held) {
+bool table(Ui& ui, const char* id, const ReplayState& st, const std::vector<TodoEntry>& list,
+           bool held) {
     if (list.empty()) return false;
     const int columns = held ? 6 : 4;
-    if (!ImGui::BeginTable(id, columns, ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit))
+    if (!ImGui::BeginTable(
+            id, columns,
+            ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit))
         return false;
     for (const char* h : {"gorge", "Left", "Right", "chain"}) ImGui::TableSetupColumn(h);
     if (held) ImGui::TableSetupColumn("top"), ImGui::TableSetupColumn("jump to");
@@ -100,7 +105,8 @@ bool table(Ui& ui, const char* id, const ReplayState& st, const std::vector<Todo
     ImGuiListClipper clip;  // thousands of gorges may wait at once
     clip.Begin(int(list.size()));
     while (clip.Step())
-        for (int i = clip.DisplayStart; i < clip.DisplayEnd; ++i) row(ui, st, list[size_t(i)], i + 1, held);
+        for (int i = clip.DisplayStart; i < clip.DisplayEnd; ++i)
+            row(ui, st, list[size_t(i)], i + 1, held);
     ImGui::EndTable();
     return true;
 }

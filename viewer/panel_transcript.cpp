@@ -41,11 +41,14 @@ void drawTranscript(Ui& ui) {
         laidFor = m.generation(), laidWidth = right;
     }
     const float lineH = ImGui::GetTextLineHeightWithSpacing();
-    auto current = std::upper_bound(items.begin(), items.end(), curEvent,
-                                    [](uint32_t e, const TranscriptItem& it) { return e < it.firstEvent; });
+    auto current =
+        std::upper_bound(items.begin(), items.end(), curEvent,
+                         [](uint32_t e, const TranscriptItem& it) { return e < it.firstEvent; });
     if (current != items.begin() && ui.transcriptScrolledTo != m.step()) {
         size_t item = size_t(current - items.begin()) - 1;
-        size_t line = size_t(std::upper_bound(lineStart.begin(), lineStart.end(), item) - lineStart.begin()) - 1;
+        size_t line =
+            size_t(std::upper_bound(lineStart.begin(), lineStart.end(), item) - lineStart.begin()) -
+            1;
         ImGui::SetScrollY(std::max(0.f, line * lineH - ImGui::GetWindowHeight() / 2));
         ui.transcriptScrolledTo = m.step();
     }
@@ -60,7 +63,8 @@ void drawTranscript(Ui& ui) {
                 ImGui::PushID(int(i));
                 const Event& first = m.trace().events[it.firstEvent];
                 ImGui::PushStyleColor(ImGuiCol_Text, toImVec4(palette::action(first.action)));
-                if (ImGui::Selectable(it.text.c_str(), cur, 0, ImGui::CalcTextSize(it.text.c_str())))
+                if (ImGui::Selectable(it.text.c_str(), cur, 0,
+                                      ImGui::CalcTextSize(it.text.c_str())))
                     m.seek(it.lastEvent + 1);
                 ImGui::PopStyleColor();
                 if (ImGui::IsItemHovered())

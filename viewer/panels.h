@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "canvas_geometry.h"
-#include "export.h"
 #include "edit.h"
+#include "export.h"
 #include "model.h"
 #include "presenter.h"
 #include "renderer.h"
@@ -34,13 +34,13 @@ struct CanvasState {
     uint32_t overlayStep = ~0u;
     SceneOptions overlayOptions;
     Point origin;
-    float bbox[4] = {0, 0, 0, 0};  // of the polygon, minus the origin
-    TriangleGrid grid;  // triangle labels by cell
-    TriangleGrid vertexGrid;  // vertex labels by cell
+    float bbox[4] = {0, 0, 0, 0};             // of the polygon, minus the origin
+    TriangleGrid grid;                        // triangle labels by cell
+    TriangleGrid vertexGrid;                  // vertex labels by cell
     std::vector<MarkerVertex> vertexMarkers;  // classes first, then regular: thinned per camera
     std::array<double, 8> thinKey{};  // camera centre x, y, scale, viewport w, h, x, y, step
     CanvasOverlay overlay;
-    WorldView view;     // what Renderer::render draws this frame
+    WorldView view;  // what Renderer::render draws this frame
     // Hover picking is a scan of the polygon: redo it only when something moved.
     std::array<double, 6> pickKey{};  // mouse x, y, camera centre x, y, scale, step
     Index pickedVertex = kNone;
@@ -55,16 +55,16 @@ struct CanvasState {
 struct EditUi {
     explicit EditUi(Model& m);
     Editor editor;
-    bool on = false;              // edit mode (M, or the canvas's Edit button)
-    bool ringTool = false;        // "new ring" tool: clicks place corners (H)
-    Index dragVertex = kNone;     // the vertex being dragged
-    Index dragRing = kNone;       // the ring being dragged (Shift+drag)
-    Point dragStart;              // where the ring drag began (world)
-    Index selected = kNone;       // the last vertex clicked: what Delete removes when none is hovered
+    bool on = false;           // edit mode (M, or the canvas's Edit button)
+    bool ringTool = false;     // "new ring" tool: clicks place corners (H)
+    Index dragVertex = kNone;  // the vertex being dragged
+    Index dragRing = kNone;    // the ring being dragged (Shift+drag)
+    Point dragStart;           // where the ring drag began (world)
+    Index selected = kNone;    // the last vertex clicked: what Delete removes when none is hovered
     Index hoverVertex = kNone, hoverEdge = kNone;
-    Point onEdge;                 // the hovered edge's point nearest the mouse
+    Point onEdge;  // the hovered edge's point nearest the mouse
     bool showSave = false;
-    bool overwrite = false;       // the save panel's "overwrite it" confirmation
+    bool overwrite = false;  // the save panel's "overwrite it" confirmation
     char savePath[1024] = "";
     std::string saveNote;
 };
@@ -73,7 +73,7 @@ struct Ui {
     Ui(Model& m, Renderer& r) : model(m), renderer(r) {}
     Model& model;
     Renderer& renderer;
-    float scale = 1;   // UI scale from the monitor's content scale
+    float scale = 1;  // UI scale from the monitor's content scale
     Layout layout;
     SceneOptions sceneOptions;
     CanvasState canvas;
@@ -87,66 +87,66 @@ struct Ui {
     std::string pngRequest;            // non-empty: main writes this PNG after rendering
     uint32_t eventsScrolledTo = ~0u;   // events list follows the step when it changes
     uint32_t transcriptScrolledTo = ~0u;
-    char findText[64] = "";            // the canvas's find box (Ctrl+F)
+    char findText[64] = "";  // the canvas's find box (Ctrl+F)
     bool focusFind = false;
-    bool findFailed = false;           // ui.message is the find box's "why not"
-    std::string browseDir;             // the Open panel's folder browser
-    bool openFailed = false;           // the last open from the Open panel failed
-    FeatureScan features;              // the Open panel's verdicts of a collection's features
+    bool findFailed = false;              // ui.message is the find box's "why not"
+    std::string browseDir;                // the Open panel's folder browser
+    bool openFailed = false;              // the last open from the Open panel failed
+    FeatureScan features;                 // the Open panel's verdicts of a collection's features
     uint64_t featuresGeneration = ~0ull;  // Model::generation() the scan was chosen for
-    ShrinkJob shrink;                  // the Shrink panel's background shrink
-    uint64_t shrinkGeneration = 0;     // Model::generation() the running shrink started from
-    char savePath[1024] = "";          // where the Shrink panel saves the repro
-    std::string shrinkNote;            // the Shrink panel's last outcome
+    ShrinkJob shrink;                     // the Shrink panel's background shrink
+    uint64_t shrinkGeneration = 0;        // Model::generation() the running shrink started from
+    char savePath[1024] = "";             // where the Shrink panel saves the repro
+    std::string shrinkNote;               // the Shrink panel's last outcome
     // Presenter mode (panel_caption.cpp, style.cpp). `scale` is uiScale.value() each frame.
     UiScale uiScale;
-    Theme theme = Theme::Dark;         // wanted; main applies a change between frames
-    bool presenter = false;            // Tab: the canvas and the caption only
-    double bottomWanted = 0;           // height the timeline needed last frame (wrapped toolbar)
-    double captionHeight = 0;          // height the caption needed last frame
-    ImFont* captionFont = nullptr;     // the caption's larger font, rebuilt with the scale
-    Rect toolbarEnd, captionRect;      // where the last toolbar button and the caption were
-    bool showExport = false;           // the Export panel (panel_export.cpp)
-    ExportSettings exportSettings;     // what it exports; its format and path below
-    int exportFormat = 0;              // ExportFormat
+    Theme theme = Theme::Dark;      // wanted; main applies a change between frames
+    bool presenter = false;         // Tab: the canvas and the caption only
+    double bottomWanted = 0;        // height the timeline needed last frame (wrapped toolbar)
+    double captionHeight = 0;       // height the caption needed last frame
+    ImFont* captionFont = nullptr;  // the caption's larger font, rebuilt with the scale
+    Rect toolbarEnd, captionRect;   // where the last toolbar button and the caption were
+    bool showExport = false;        // the Export panel (panel_export.cpp)
+    ExportSettings exportSettings;  // what it exports; its format and path below
+    int exportFormat = 0;           // ExportFormat
     char exportPath[1024] = "";
-    std::shared_ptr<ExportJob> exportJob;  // running, advanced by main after each frame
-    std::string exportNote;            // the last export's outcome
-    bool showDecisionTree = false;     // the Fig. 9 tree in a window of its own
-    std::vector<uint64_t> treeCounts;  // events through each node of the tree, over the trace
+    std::shared_ptr<ExportJob> exportJob;   // running, advanced by main after each frame
+    std::string exportNote;                 // the last export's outcome
+    bool showDecisionTree = false;          // the Fig. 9 tree in a window of its own
+    std::vector<uint64_t> treeCounts;       // events through each node of the tree, over the trace
     uint64_t treeCountsGeneration = ~0ull;  // Model::generation() they were counted for
     bool showTodo = false;
-    uint32_t todoGorge = kNone;        // the to-do list's chosen gorge, drawn on the canvas
-    TodoList todo;                     // the to-do list of the step below (panel_todo.cpp)
+    uint32_t todoGorge = kNone;  // the to-do list's chosen gorge, drawn on the canvas
+    TodoList todo;               // the to-do list of the step below (panel_todo.cpp)
     std::array<uint64_t, 2> todoFor{~0ull, ~0ull};  // Model::generation() and step it was read at
-    EditUi edit{model};                // live editing (panel_edit.cpp)
-    bool showDirection = false;        // the flood direction dial (panel_direction.cpp)
+    EditUi edit{model};                             // live editing (panel_edit.cpp)
+    bool showDirection = false;  // the flood direction dial (panel_direction.cpp)
 };
 
-void drawCanvas(Ui& ui);         // panel_canvas.cpp: geometry to the renderer, labels, input
+void drawCanvas(Ui& ui);  // panel_canvas.cpp: geometry to the renderer, labels, input
 // What drawCanvas paints, without its input and find box: the world to the renderer (as
 // Renderer::render draws it next), labels and overlays to `dl`, at ui.layout.canvas through
 // model.camera. Exports call it with their own camera, rectangle and draw list.
 void paintCanvas(Ui& ui, ImDrawList* dl);
-void drawTimeline(Ui& ui);       // panel_timeline.cpp: strip, transport, go-to, play
-void drawStateMachine(Ui& ui);   // panel_state_machine.cpp: the six states of §4
-void drawDecision(Ui& ui);       // panel_decision.cpp: the Fig. 9 tree, the current path lit
-void drawPredicates(Ui& ui);     // panel_predicates.cpp: those tests' predicates, values, stages
-void drawStateTable(Ui& ui);     // panel_state_table.cpp: Fig. 10, combinations against states
-void drawBreakpoints(Ui& ui);    // panel_breakpoints.cpp: breakpoints, legend, display options
-void drawEvents(Ui& ui);         // panel_events.cpp: every event, clipped
-void drawTranscript(Ui& ui);     // panel_transcript.cpp: the paper-style transcript
-void drawOpen(Ui& ui);           // panel_open.cpp: polygons/ and recent files
-void drawShrink(Ui& ui);         // panel_shrink.cpp: shrink a failure, open and save the repro
-void drawHelp(Ui& ui);           // panel_help.cpp: keys and glossary
-void drawExport(Ui& ui);         // panel_export.cpp: canvas PNG/SVG, GIF, PNG sequence
-void handleShortcuts(Ui& ui);    // panel_help.cpp: the keys the help window lists
-void drawCaption(Ui& ui);        // panel_caption.cpp: presenter view's step, action, sentence
+void drawTimeline(Ui& ui);         // panel_timeline.cpp: strip, transport, go-to, play
+void drawStateMachine(Ui& ui);     // panel_state_machine.cpp: the six states of §4
+void drawDecision(Ui& ui);         // panel_decision.cpp: the Fig. 9 tree, the current path lit
+void drawPredicates(Ui& ui);       // panel_predicates.cpp: those tests' predicates, values, stages
+void drawStateTable(Ui& ui);       // panel_state_table.cpp: Fig. 10, combinations against states
+void drawBreakpoints(Ui& ui);      // panel_breakpoints.cpp: breakpoints, legend, display options
+void drawEvents(Ui& ui);           // panel_events.cpp: every event, clipped
+void drawTranscript(Ui& ui);       // panel_transcript.cpp: the paper-style transcript
+void drawOpen(Ui& ui);             // panel_open.cpp: polygons/ and recent files
+void drawShrink(Ui& ui);           // panel_shrink.cpp: shrink a failure, open and save the repro
+void drawHelp(Ui& ui);             // panel_help.cpp: keys and glossary
+void drawExport(Ui& ui);           // panel_export.cpp: canvas PNG/SVG, GIF, PNG sequence
+void handleShortcuts(Ui& ui);      // panel_help.cpp: the keys the help window lists
+void drawCaption(Ui& ui);          // panel_caption.cpp: presenter view's step, action, sentence
 void handlePresenterKeys(Ui& ui);  // panel_caption.cpp: Tab, F11, Ctrl +/-/0
 // style.cpp: ImGui's fonts rasterised at ui.uiScale and its colours for the current theme;
 // between frames only (the font texture is uploaded again).
 void applyStyle(Ui& ui);
-void drawTodo(Ui& ui);           // panel_todo.cpp: pending and held gorges, shown when clicked
+void drawTodo(Ui& ui);  // panel_todo.cpp: pending and held gorges, shown when clicked
 // panel_edit.cpp: live editing. editFrame every frame before the canvas (adopts a finished
 // flood, carries a drag on); editCanvasInput with the mouse over the canvas, true when it took
 // the left button; editOverlay draws handles, pending corners and the live diagnostic;
@@ -156,7 +156,7 @@ bool editCanvasInput(Ui& ui, Vec2 mouse);
 void editOverlay(Ui& ui, ImDrawList* dl);
 void editBar(Ui& ui);
 void editShortcuts(Ui& ui);
-void drawDirection(Ui& ui);      // panel_direction.cpp: the flood direction dial and its changes
+void drawDirection(Ui& ui);  // panel_direction.cpp: the flood direction dial and its changes
 
 // Helpers shared by panels (panel_common.cpp).
 void placeWindow(const Rect& r);  // tiles a panel at a layout rectangle

@@ -33,9 +33,9 @@ void newFrame();                         // ImGui's platform half of a frame
 void swapBuffers();
 double time();
 
-Vec2 windowSize();                 // logical pixels (ImGui's units)
+Vec2 windowSize();  // logical pixels (ImGui's units)
 void framebufferSize(int* w, int* h);
-float contentScale();              // 1 on a 96-dpi screen, 2 on most hi-DPI ones
+float contentScale();  // 1 on a 96-dpi screen, 2 on most hi-DPI ones
 void setTitle(const std::string& title);
 std::vector<std::string> takeDroppedPaths();  // files dropped on the window since last call
 // Key presses and repeats since the last call, every one in order (model.h's KeyQueue).

@@ -12,8 +12,8 @@ namespace flood::view {
 
 namespace {
 // From 50% to 300%; index 5 is 100%.
-constexpr float kZooms[] = {0.5f, 0.67f, 0.75f, 0.8f, 0.9f, 1.f, 1.1f, 1.25f,
-                            1.5f, 1.75f, 2.f,   2.5f,  3.f};
+constexpr float kZooms[] = {0.5f,  0.67f, 0.75f, 0.8f, 0.9f, 1.f, 1.1f,
+                            1.25f, 1.5f,  1.75f, 2.f,  2.5f, 3.f};
 constexpr int kOne = 5;
 static_assert(kOne + UiScale::kMinZoomStep == 0 &&
               kOne + UiScale::kMaxZoomStep + 1 == int(sizeof kZooms / sizeof kZooms[0]));
@@ -53,7 +53,8 @@ ViewerSettings loadSettings(const std::string& file) {
         } else if (key == "zoom") {
             char* end = nullptr;
             long z = std::strtol(value.c_str(), &end, 10);
-            if (*end == 0) s.zoomStep = int(std::clamp<long>(z, UiScale::kMinZoomStep, UiScale::kMaxZoomStep));
+            if (*end == 0)
+                s.zoomStep = int(std::clamp<long>(z, UiScale::kMinZoomStep, UiScale::kMaxZoomStep));
         }
     }
     return s;
@@ -89,7 +90,8 @@ Caption captionAt(const Model& m, uint32_t step) {
         c.action = e.action;
         c.sentence = narrate(m.polygon(), e);
     } else if (m.polygon().vertices.empty()) {
-        c.sentence = m.inputDiagnostic().ok() ? "No polygon: open one." : m.inputDiagnostic().message;
+        c.sentence =
+            m.inputDiagnostic().ok() ? "No polygon: open one." : m.inputDiagnostic().message;
     } else {
         c.sentence = "The polygon is dry: the water has not started to rise.";
     }

@@ -25,7 +25,7 @@ public:
     bool resetZoom() { return setZoomStep(0); }        // false when already at 100%
     bool setZoomStep(int step);                        // clamped; false when unchanged
     int zoomStep() const { return step_; }
-    float zoom() const;                                // 1 at step 0
+    float zoom() const;  // 1 at step 0
     float value() const { return content_ * zoom(); }
     // The font size for this scale, whole pixels so glyphs are rasterised sharp at it.
     float fontPixels(float basePixels = 13) const;
@@ -57,7 +57,7 @@ struct Caption {
     std::string heading;     // "Step 12 of 40"
     bool hasAction = false;  // false at step 0 (no event yet)
     Action action = Action::Start;
-    std::string sentence;    // core/narrate's sentence, or what step 0 shows
+    std::string sentence;  // core/narrate's sentence, or what step 0 shows
 };
 Caption captionAt(const Model& model, uint32_t step);
 Caption buildCaption(const Model& model);  // at the current step

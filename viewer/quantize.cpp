@@ -25,7 +25,8 @@ std::vector<Rgb> medianCut(std::vector<Entry> colours, size_t boxes) {
         int best = -1;
         for (int k = 0; k < 3; ++k) {
             uint8_t lo = 255, hi = 0;
-            for (size_t i = b.begin; i < b.end; ++i) lo = std::min(lo, colours[i].c[k]), hi = std::max(hi, colours[i].c[k]);
+            for (size_t i = b.begin; i < b.end; ++i)
+                lo = std::min(lo, colours[i].c[k]), hi = std::max(hi, colours[i].c[k]);
             if (hi - lo > best) best = hi - lo, channel = k;
         }
         return best;
@@ -65,7 +66,9 @@ std::vector<Rgb> medianCut(std::vector<Entry> colours, size_t boxes) {
             for (int k = 0; k < 3; ++k) sum[k] += double(colours[j].c[k]) * double(colours[j].n);
             n += double(colours[j].n);
         }
-        if (n > 0) palette.push_back({uint8_t(sum[0] / n + 0.5), uint8_t(sum[1] / n + 0.5), uint8_t(sum[2] / n + 0.5)});
+        if (n > 0)
+            palette.push_back(
+                {uint8_t(sum[0] / n + 0.5), uint8_t(sum[1] / n + 0.5), uint8_t(sum[2] / n + 0.5)});
     }
     return palette;
 }
@@ -90,9 +93,8 @@ std::vector<Rgb> PaletteBuilder::build(size_t size) const {
     all.reserve(counts_.size());
     for (auto [c, n] : counts_) all.push_back({unpack(c), n});
     // Most frequent first, ties by colour: the same frames always give the same palette.
-    std::sort(all.begin(), all.end(), [](const Entry& a, const Entry& b) {
-        return a.n != b.n ? a.n > b.n : a.c < b.c;
-    });
+    std::sort(all.begin(), all.end(),
+              [](const Entry& a, const Entry& b) { return a.n != b.n ? a.n > b.n : a.c < b.c; });
     std::vector<Rgb> palette;
     if (all.size() <= size) {
         for (const Entry& e : all) palette.push_back(e.c);
@@ -100,7 +102,8 @@ std::vector<Rgb> PaletteBuilder::build(size_t size) const {
     }
     const size_t exact = size / 2;
     for (size_t i = 0; i < exact; ++i) palette.push_back(all[i].c);
-    std::vector<Rgb> rest = medianCut(std::vector<Entry>(all.begin() + long(exact), all.end()), size - exact);
+    std::vector<Rgb> rest =
+        medianCut(std::vector<Entry>(all.begin() + long(exact), all.end()), size - exact);
     palette.insert(palette.end(), rest.begin(), rest.end());
     return palette;
 }
@@ -115,7 +118,8 @@ uint8_t PaletteMap::nearest(uint32_t rgb) const {
     int bestD = 1 << 30;
     for (size_t i = 0; i < palette_.size(); ++i) {
         int d = 0;
-        for (int k = 0; k < 3; ++k) d += (int(c[k]) - palette_[i][k]) * (int(c[k]) - palette_[i][k]);
+        for (int k = 0; k < 3; ++k)
+            d += (int(c[k]) - palette_[i][k]) * (int(c[k]) - palette_[i][k]);
         if (d < bestD) bestD = d, best = i;
     }
     return uint8_t(best);

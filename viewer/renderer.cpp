@@ -1,7 +1,7 @@
 #include "renderer.h"
 
-#include <glad/gl.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <glad/gl.h>
 #include <imgui.h>
 #include <stb_image_write.h>  // implementation lives in Debian's libstb, not here
 
@@ -80,24 +80,31 @@ void setColor(int location, Rgba c) {
 void segmentAttributes() {
     const GLsizei stride = sizeof(SegmentVertex);
     glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(SegmentVertex, ax)));
+    glVertexAttribPointer(0, 4, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<void*>(offsetof(SegmentVertex, ax)));
     glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride, reinterpret_cast<void*>(offsetof(SegmentVertex, color)));
+    glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                          reinterpret_cast<void*>(offsetof(SegmentVertex, color)));
     glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(SegmentVertex, width)));
+    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<void*>(offsetof(SegmentVertex, width)));
     for (GLuint a : {0u, 1u, 2u}) glVertexAttribDivisor(a, 1);
 }
 
 void markerAttributes() {
     const GLsizei stride = sizeof(MarkerVertex);
     glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(MarkerVertex, x)));
+    glVertexAttribPointer(0, 2, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<void*>(offsetof(MarkerVertex, x)));
     glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride, reinterpret_cast<void*>(offsetof(MarkerVertex, color)));
+    glVertexAttribPointer(1, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride,
+                          reinterpret_cast<void*>(offsetof(MarkerVertex, color)));
     glEnableVertexAttribArray(2);
-    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(MarkerVertex, radius)));
+    glVertexAttribPointer(2, 1, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<void*>(offsetof(MarkerVertex, radius)));
     glEnableVertexAttribArray(3);
-    glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride, reinterpret_cast<void*>(offsetof(MarkerVertex, shape)));
+    glVertexAttribPointer(3, 1, GL_FLOAT, GL_FALSE, stride,
+                          reinterpret_cast<void*>(offsetof(MarkerVertex, shape)));
 }
 
 }  // namespace
@@ -113,9 +120,10 @@ Renderer::~Renderer() {
 }
 
 bool Renderer::init(std::string* error) {
-    screen_.id = link(compile(GL_VERTEX_SHADER, {kShader_canvas_vert}, "shaders/canvas.vert", error),
-                      compile(GL_FRAGMENT_SHADER, {kShader_canvas_frag}, "shaders/canvas.frag", error),
-                      "canvas", error);
+    screen_.id =
+        link(compile(GL_VERTEX_SHADER, {kShader_canvas_vert}, "shaders/canvas.vert", error),
+             compile(GL_FRAGMENT_SHADER, {kShader_canvas_frag}, "shaders/canvas.frag", error),
+             "canvas", error);
     world_.id = worldProgram(kShader_world_vert, kShader_solid_frag, "world + solid", error);
     segment_.id = worldProgram(kShader_segment_vert, kShader_canvas_frag, "segment", error);
     marker_.id = worldProgram(kShader_marker_vert, kShader_marker_frag, "marker", error);
@@ -179,7 +187,8 @@ void Renderer::setGeometry(const CanvasGeometry& g) {
     put(Edges, GL_ELEMENT_ARRAY_BUFFER, g.edges, g.edges.size());
     put(Fans, GL_ELEMENT_ARRAY_BUFFER, g.fans, g.fans.size());
     const float* b = g.bbox;
-    std::vector<float> cover{b[0], b[1], b[2], b[1], b[2], b[3], b[0], b[1], b[2], b[3], b[0], b[3]};
+    std::vector<float> cover{b[0], b[1], b[2], b[1], b[2], b[3],
+                             b[0], b[1], b[2], b[3], b[0], b[3]};
     put(Cover, GL_ARRAY_BUFFER, cover, g.fans.empty() ? 0 : 6);
     put(Boundary, GL_ARRAY_BUFFER, g.boundary, g.boundary.size());
     put(Bridges, GL_ARRAY_BUFFER, g.bridges, g.bridges.size());
@@ -191,7 +200,8 @@ void Renderer::setGeometry(const CanvasGeometry& g) {
 
 void Renderer::setOverlay(const CanvasOverlay& o) {
     if (!screen_.id) return;
-    upload(GL_ARRAY_BUFFER, buf_[OverlayLines], o.lines.data(), o.lines.size() * sizeof(o.lines[0]));
+    upload(GL_ARRAY_BUFFER, buf_[OverlayLines], o.lines.data(),
+           o.lines.size() * sizeof(o.lines[0]));
     count_[OverlayLines] = o.lines.size();
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
@@ -201,7 +211,8 @@ void Renderer::setMarkers(const std::vector<MarkerVertex>& vertices,
     if (!screen_.id) return;
     upload(GL_ARRAY_BUFFER, buf_[Classes], vertices.data(), vertices.size() * sizeof(vertices[0]));
     count_[Classes] = vertices.size();
-    upload(GL_ARRAY_BUFFER, buf_[OverlayMarkers], overlay.data(), overlay.size() * sizeof(overlay[0]));
+    upload(GL_ARRAY_BUFFER, buf_[OverlayMarkers], overlay.data(),
+           overlay.size() * sizeof(overlay[0]));
     count_[OverlayMarkers] = overlay.size();
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }

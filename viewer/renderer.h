@@ -47,7 +47,8 @@ public:
     void setGeometry(const CanvasGeometry& g);
     void setOverlay(const CanvasOverlay& o);  // its lines; the markers come from setMarkers
     // The markers thinned for the current camera (thinMarkers): the vertices' and the overlay's.
-    void setMarkers(const std::vector<MarkerVertex>& vertices, const std::vector<MarkerVertex>& overlay);
+    void setMarkers(const std::vector<MarkerVertex>& vertices,
+                    const std::vector<MarkerVertex>& overlay);
 
     void clear();  // empties every screen-space layer; call once per frame before adding
     void addTriangle(Layer layer, Vec2 a, Vec2 b, Vec2 c, Rgba color);
@@ -77,8 +78,21 @@ private:
             pixelRatio = -1;
     };
     // World buffers; each VAO binds one buffer (and its element buffer) for one kind of draw.
-    enum Buffer { Positions, Triangles, Edges, Fans, Cover, Boundary, BoundaryEdges, Bridges,
-                  Classes, Regular, OverlayLines, OverlayMarkers, BufferCount };
+    enum Buffer {
+        Positions,
+        Triangles,
+        Edges,
+        Fans,
+        Cover,
+        Boundary,
+        BoundaryEdges,
+        Bridges,
+        Classes,
+        Regular,
+        OverlayLines,
+        OverlayMarkers,
+        BufferCount
+    };
     void push(Layer layer, Vec2 p, Rgba c);
     void drawWorld(const WorldView& view, Vec2 windowSize, float pixelRatio);
     void useWorld(const Program& p, const WorldView& view, Vec2 windowSize);

@@ -15,7 +15,6 @@ double area(Point a, Point b, Point c) {
     return std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2;
 }
 
-
 // The water level along a direction off +y: the same segment in the frame of the direction
 // (heights along it, positions across it), for drawing only.
 bool tiltedWaterLevel(const Polygon& poly, const ReplayState& s, Up up, Point& a, Point& b) {
@@ -104,14 +103,16 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
         if (!valid(poly, tri[0]) || !valid(poly, tri[1]) || !valid(poly, tri[2])) continue;
         Point a = v[tri[0]], b = v[tri[1]], c = v[tri[2]];
         bool cur = t >= curFirst && t < curEnd;
-        (cur ? sc.current : sc.water).push_back({a, b, c, cur ? palette::kCurrent : palette::kWater});
+        (cur ? sc.current : sc.water)
+            .push_back({a, b, c, cur ? palette::kCurrent : palette::kWater});
         if (o.triangleEdges) {
             sc.lines.push_back({a, b, palette::kTriangleEdge, 1});
             sc.lines.push_back({b, c, palette::kTriangleEdge, 1});
             sc.lines.push_back({c, a, palette::kTriangleEdge, 1});
         }
         if (o.triangleNumbers) {
-            Scene::Label l{{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3}, std::to_string(t),
+            Scene::Label l{{(a.x + b.x + c.x) / 3, (a.y + b.y + c.y) / 3},
+                           std::to_string(t),
                            cur ? Rgba{0, 0, 0, 255} : Rgba{230, 240, 255, 255}};
             l.minArea = 700;  // about four times a label's own footprint
             l.worldArea = area(a, b, c);
@@ -158,8 +159,9 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
     if (o.vertexClasses && all)
         for (Index i = 0; i < v.size() && i < model.classes().size(); ++i) {
             VertexClass c = model.classes()[i];
-            sc.markers.push_back({v[i], vertexClassColor(c), c == VertexClass::Regular ? 2.5f : 4.5f,
-                                  Scene::Shape::Disc, true});
+            sc.markers.push_back({v[i], vertexClassColor(c),
+                                  c == VertexClass::Regular ? 2.5f : 4.5f, Scene::Shape::Disc,
+                                  true});
         }
 
     for (Index i : model.offenders()) {
@@ -235,8 +237,8 @@ void writeSceneSvg(std::ostream& out, const Scene& sc, const Camera& cam, int wi
         return std::string(buf);
     };
     const Rect& area = cam.viewport();
-    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\""
-        << height << "\" viewBox=\"0 0 " << width << " " << height << "\">\n";
+    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
+        << "\" viewBox=\"0 0 " << width << " " << height << "\">\n";
     // The canvas's rectangle clips the scene as the canvas does; a caption lies below it.
     out << "<clipPath id=\"canvas\"><rect x=\"" << area.x << "\" y=\"" << area.y << "\" width=\""
         << area.w << "\" height=\"" << area.h << "\"/></clipPath>\n";
@@ -251,13 +253,13 @@ void writeSceneSvg(std::ostream& out, const Scene& sc, const Camera& cam, int wi
     // One element per triangle, classed as the canvas colours it (water, or cut just now).
     for (const auto* tris : {&sc.water, &sc.current})
         for (const auto& t : *tris)
-            out << "<polygon class=\"" << (tris == &sc.water ? "water" : "current") << "\" points=\""
-                << P(t.a) << " " << P(t.b) << " " << P(t.c) << "\" fill=\"" << svgColor(t.color) << "\"/>\n";
+            out << "<polygon class=\"" << (tris == &sc.water ? "water" : "current")
+                << "\" points=\"" << P(t.a) << " " << P(t.b) << " " << P(t.c) << "\" fill=\""
+                << svgColor(t.color) << "\"/>\n";
     for (const auto& l : sc.lines)
         out << "<line x1=\"" << cam.toScreen(l.a).x << "\" y1=\"" << cam.toScreen(l.a).y
             << "\" x2=\"" << cam.toScreen(l.b).x << "\" y2=\"" << cam.toScreen(l.b).y
-            << "\" stroke=\"" << svgColor(l.color) << "\" stroke-width=\"" << l.width
-            << "\"/>\n";
+            << "\" stroke=\"" << svgColor(l.color) << "\" stroke-width=\"" << l.width << "\"/>\n";
     for (const auto& m : sc.markers) {
         Vec2 c = cam.toScreen(m.p);
         bool ring = m.shape == Scene::Shape::Ring;

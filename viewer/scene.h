@@ -32,10 +32,10 @@ struct Scene {
         Point p;
         std::string text;
         Rgba color;
-        float dx = 0, dy = 0;    // screen offset (before UI scale)
-        double minArea = 0;      // hide when the owner's screen area (px²) is below this
-        double worldArea = 0;    // area of the owning triangle in world units², 0 = always
-        bool folds = false;      // one of many alike (gorge labels): hidden when crowded
+        float dx = 0, dy = 0;  // screen offset (before UI scale)
+        double minArea = 0;    // hide when the owner's screen area (px²) is below this
+        double worldArea = 0;  // area of the owning triangle in world units², 0 = always
+        bool folds = false;    // one of many alike (gorge labels): hidden when crowded
     };
     std::vector<std::vector<Point>> rings;  // filled even-odd: holes stay open
     std::vector<Tri> water;                 // flooded triangles
@@ -43,7 +43,7 @@ struct Scene {
     std::vector<Line> lines;                // edges, chain, water level, bridges, jumps
     std::vector<Marker> markers;            // vertex classes, fingers, culprits
     std::vector<Label> labels;
-    Point waterA, waterB;                   // the water level across the gorge
+    Point waterA, waterB;  // the water level across the gorge
     bool hasWater = false;
 };
 
@@ -73,7 +73,7 @@ struct CaptionLine {  // export.h's captionOf: "Step N  Action" and the narratio
     std::string head, text;
     Rgba headColor;
 };
-void writeSceneSvg(std::ostream& out, const Scene& scene, const Camera& camera, int width, int height,
-                   const CaptionLine* caption = nullptr);
+void writeSceneSvg(std::ostream& out, const Scene& scene, const Camera& camera, int width,
+                   int height, const CaptionLine* caption = nullptr);
 
 }  // namespace flood::view

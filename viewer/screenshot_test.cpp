@@ -62,8 +62,8 @@ int fail(const char* what, Vec2 p, Rgba want, Rgba seen) {
 }
 
 // Runs flood-viewer headless at `steps` (one or more --step options) into `out`, loads it.
-bool shoot(const std::string& input, const std::string& steps, const std::string& out, int W,
-           int H, Image& img, int wantExit = 0) {
+bool shoot(const std::string& input, const std::string& steps, const std::string& out, int W, int H,
+           Image& img, int wantExit = 0) {
     std::remove(out.c_str());
     std::string cmd = std::string("'") + FLOOD_VIEWER + "' '" + input + "' " + steps +
                       " --screenshot '" + out + "' --size " + std::to_string(W) + "x" +
@@ -92,7 +92,8 @@ bool probeTriangle(const Model& model, uint32_t t, const Image& img, Rgba want, 
     const Triangle& tri = model.trace().triangles[t];
     Point a = v[tri[0]], b = v[tri[1]], c = v[tri[2]];
     for (auto [wa, wb, wc] : {std::tuple{0.6, 0.2, 0.2}, {0.2, 0.6, 0.2}, {0.2, 0.2, 0.6}}) {
-        probe = model.camera.toScreen({wa * a.x + wb * b.x + wc * c.x, wa * a.y + wb * b.y + wc * c.y});
+        probe =
+            model.camera.toScreen({wa * a.x + wb * b.x + wc * c.x, wa * a.y + wb * b.y + wc * c.y});
         if (near(img, probe, want, 1, &seen)) return true;
     }
     return false;
@@ -107,7 +108,8 @@ int checkShot(const Model& model, const Layout& layout, const Image& img, bool b
     int failures = 0;
     Vec2 bg{layout.canvas.x + 0.02 * layout.canvas.w, layout.canvas.y + layout.canvas.h / 2};
     if (!near(img, bg, palette::kBackground, 0, &seen))
-        failures += fail((std::string("background") + shot).c_str(), bg, palette::kBackground, seen);
+        failures +=
+            fail((std::string("background") + shot).c_str(), bg, palette::kBackground, seen);
 
     // Water: inside an earlier (not emphasised) flooded triangle.
     const Event* e = model.currentEvent();
@@ -149,7 +151,8 @@ int checkShot(const Model& model, const Layout& layout, const Image& img, bool b
 // vertex-class dots (unthinned, they paved it). Samples on a pixel grid, classified by radius.
 int checkDenseFace(const std::string& dir, int W, int H, const Layout& layout) {
     std::string input = dir + "/screenshot-test-dense.json";
-    std::string gen = std::string("'") + FLOOD_CLI + "' generate circle-jagged 100000 -o '" + input + "'";
+    std::string gen =
+        std::string("'") + FLOOD_CLI + "' generate circle-jagged 100000 -o '" + input + "'";
     if (std::system(gen.c_str()) != 0) {
         std::fprintf(stderr, "FAIL: %s\n", gen.c_str());
         return 1;
@@ -159,7 +162,8 @@ int checkDenseFace(const std::string& dir, int W, int H, const Layout& layout) {
     model.camera.fit(model.polygon(), layout.canvas);
     Image img;
     if (!shoot(input, "--step 0", dir + "/screenshot-test-dense.png", W, H, img)) return 1;
-    const Rgba dots[] = {palette::kRegular, palette::kBottom, palette::kSag, palette::kTop, palette::kCeiling};
+    const Rgba dots[] = {palette::kRegular, palette::kBottom, palette::kSag, palette::kTop,
+                         palette::kCeiling};
     int inner = 0, innerLand = 0, band = 0, bandDots = 0, outer = 0, outerBackground = 0;
     const Rect& c = layout.canvas;
     for (double y = c.y + 60; y < c.y + c.h - 4; y += 3)  // below the find box
@@ -195,7 +199,6 @@ int checkDenseFace(const std::string& dir, int W, int H, const Layout& layout) {
     return failures;
 }
 
-
 // ---- presenter mode: --scale, --presenter, --theme and --print-layout ----------------------
 
 // Runs flood-viewer with `args` into `out` at W x H and loads it (a picture of any size when
@@ -204,8 +207,8 @@ bool shootPrinted(const std::string& input, const std::string& args, const std::
                   int H, Image& img, std::map<std::string, Rect>& layout, bool exact = true) {
     std::remove(out.c_str());
     std::string cmd = std::string("'") + FLOOD_VIEWER + "' '" + input + "' " + args +
-                      " --print-layout --screenshot '" + out + "' --size " + std::to_string(W) + "x" +
-                      std::to_string(H);
+                      " --print-layout --screenshot '" + out + "' --size " + std::to_string(W) +
+                      "x" + std::to_string(H);
     std::printf("%s\n", cmd.c_str());
     std::fflush(stdout);
     FILE* pipe = popen(cmd.c_str(), "r");
@@ -215,7 +218,8 @@ bool shootPrinted(const std::string& input, const std::string& args, const std::
         std::fputs(line, stdout);
         char name[64];
         Rect r;
-        if (std::sscanf(line, "flood-viewer: layout %63s %lf %lf %lf %lf", name, &r.x, &r.y, &r.w, &r.h) == 5)
+        if (std::sscanf(line, "flood-viewer: layout %63s %lf %lf %lf %lf", name, &r.x, &r.y, &r.w,
+                        &r.h) == 5)
             layout[name] = r;
     }
     int rc = pclose(pipe);
@@ -232,14 +236,17 @@ bool shootPrinted(const std::string& input, const std::string& args, const std::
     return true;
 }
 
-bool inside(const Rect& r, int W, int H) { return r.w > 0 && r.h > 0 && r.x >= 0 && r.y >= 0 && r.x + r.w <= W && r.y + r.h <= H; }
+bool inside(const Rect& r, int W, int H) {
+    return r.w > 0 && r.h > 0 && r.x >= 0 && r.y >= 0 && r.x + r.w <= W && r.y + r.h <= H;
+}
 
 // Pixels of `r` (clipped to the image) for which `is` holds.
 template <class F>
 int count(const Image& img, const Rect& r, F is) {
     int n = 0;
     for (int y = std::max(0, int(r.y)); y < std::min(img.h, int(r.y + r.h)); ++y)
-        for (int x = std::max(0, int(r.x)); x < std::min(img.w, int(r.x + r.w)); ++x) n += is(img.at(x, y));
+        for (int x = std::max(0, int(r.x)); x < std::min(img.w, int(r.x + r.w)); ++x)
+            n += is(img.at(x, y));
     return n;
 }
 
@@ -268,11 +275,13 @@ int checkPresenter(const std::string& dir, const std::string& input, Model& mode
     // Text is the style's white; the lowest text row must stay clear of the bottom edge.
     int lowest = -1;
     for (int y = int(caption.y); y < int(caption.y + caption.h) && y < H; ++y)
-        if (count(img, {caption.x, double(y), caption.w, 1}, [](Rgba c) { return luminance(c) > 200; }) > 0)
+        if (count(img, {caption.x, double(y), caption.w, 1},
+                  [](Rgba c) { return luminance(c) > 200; }) > 0)
             lowest = y;
     if (lowest < 0 || lowest > caption.y + caption.h - 8)
-        failures += failWith("the caption's text is missing or runs into its bottom edge (lowest row " +
-                             std::to_string(lowest) + ")");
+        failures +=
+            failWith("the caption's text is missing or runs into its bottom edge (lowest row " +
+                     std::to_string(lowest) + ")");
     model.seek(step);
     Rgba actionColour = palette::action(model.currentEvent()->action);
     int named = count(img, caption, [&](Rgba c) { return close(c, actionColour, 8); });
@@ -282,10 +291,12 @@ int checkPresenter(const std::string& dir, const std::string& input, Model& mode
     model.camera.fit(model.polygon(), presenterLayout(W, H, caption.h).canvas);
     Rgba seen;
     Vec2 left = model.camera.toScreen(model.polygon().vertices[model.state().fingers.left]);
-    if (!near(img, left, palette::kLeft, 2, &seen)) failures += fail("presenter Left marker", left, palette::kLeft, seen);
+    if (!near(img, left, palette::kLeft, 2, &seen))
+        failures += fail("presenter Left marker", left, palette::kLeft, seen);
     Vec2 corner{W - 3.0, 3.0};  // where the Events panel is in the normal view
     if (!near(img, corner, palette::kBackground, 0, &seen))
-        failures += fail("canvas background where a panel would be", corner, palette::kBackground, seen);
+        failures +=
+            fail("canvas background where a panel would be", corner, palette::kBackground, seen);
     stbi_image_free(img.px);
     return failures;
 }
@@ -296,7 +307,8 @@ int checkToolbarAtScale2(const std::string& dir, const std::string& input) {
     const int W = 1024, H = 768;
     Image img;
     std::map<std::string, Rect> layout;
-    if (!shootPrinted(input, "--scale 2", dir + "/screenshot-test-scale2.png", W, H, img, layout)) return 1;
+    if (!shootPrinted(input, "--scale 2", dir + "/screenshot-test-scale2.png", W, H, img, layout))
+        return 1;
     int failures = 0;
     const Rect b = layout["toolbar-end"];
     if (!inside(b, W, H)) {
@@ -307,8 +319,9 @@ int checkToolbarAtScale2(const std::string& dir, const std::string& input) {
         int blue = count(img, b, [](Rgba c) { return c.b > c.r + 40; });
         int text = count(img, b, [](Rgba c) { return luminance(c) > 200; });
         if (blue < area / 2 || text < 20)
-            failures += failWith("no button drawn at the toolbar's end (" + std::to_string(blue) + " blue, " +
-                                 std::to_string(text) + " text pixels of " + std::to_string(area) + ")");
+            failures += failWith("no button drawn at the toolbar's end (" + std::to_string(blue) +
+                                 " blue, " + std::to_string(text) + " text pixels of " +
+                                 std::to_string(area) + ")");
     }
     stbi_image_free(img.px);
     return failures;
@@ -330,11 +343,13 @@ int checkKeys(const std::string& dir, const std::string& input) {
     int blue = count(img, b, [](Rgba c) { return c.b > c.r + 40; });
     int text = count(img, b, [](Rgba c) { return luminance(c) > 200; });
     if (!inside(b, W, H) || b.h < 25 || blue < area / 2 || text < 20)
-        failures += failWith("after Ctrl+plus x3 the last button is not a 150% button (h " + std::to_string(b.h) +
-                             ", " + std::to_string(blue) + " blue, " + std::to_string(text) + " text pixels)");
+        failures += failWith("after Ctrl+plus x3 the last button is not a 150% button (h " +
+                             std::to_string(b.h) + ", " + std::to_string(blue) + " blue, " +
+                             std::to_string(text) + " text pixels)");
     stbi_image_free(img.px);
     Image full;
-    if (!shootPrinted(input, "--press f11", dir + "/screenshot-test-f11.png", 800, 600, full, layout, false))
+    if (!shootPrinted(input, "--press f11", dir + "/screenshot-test-f11.png", 800, 600, full,
+                      layout, false))
         return failures + 1;
     if (full.w == 800 && full.h == 600) failures += failWith("F11 left the window at its size");
     stbi_image_free(full.px);
@@ -356,7 +371,8 @@ int checkLightTheme(const std::string& dir, const std::string& input, Model& mod
     model.seek(step);
     model.camera.fit(model.polygon(), layout.canvas);
     failures += checkShot(model, layout, img, false);
-    if (luminance(palette::kBackground) < 200) failures += failWith("the light background is not light");
+    if (luminance(palette::kBackground) < 200)
+        failures += failWith("the light background is not light");
     Rgba seen;
     // The outer ring's first edge, halfway: the boundary line.
     const auto& v = model.polygon().vertices;
@@ -365,7 +381,8 @@ int checkLightTheme(const std::string& dir, const std::string& input, Model& mod
         failures += fail("dark boundary line", mid, palette::kBoundary, seen);
     Rect panel{layout.right.x + 4, layout.right.y + layout.right.h * 0.7, layout.right.w - 8, 20};
     int light = count(img, panel, [](Rgba c) { return luminance(c) > 180; });
-    if (light < panel.w * panel.h * 0.6) failures += failWith("the panels are not light in the light theme");
+    if (light < panel.w * panel.h * 0.6)
+        failures += failWith("the panels are not light in the light theme");
     stbi_image_free(img.px);
     palette::setTheme(Theme::Dark);
     return failures;
@@ -384,8 +401,10 @@ int checkPresenterUsage() {
         std::string option = std::string(bad).substr(0, std::string(bad).find(' '));
         std::string value = std::string(bad).substr(option.size() + 1);
         if (rc == -1 || !WIFEXITED(rc) || WEXITSTATUS(rc) != 2 ||
-            said.find(option) == std::string::npos || said.find("'" + value + "'") == std::string::npos)
-            failures += failWith(std::string("flood-viewer ") + bad + ": want exit 2 naming it, got: " + said);
+            said.find(option) == std::string::npos ||
+            said.find("'" + value + "'") == std::string::npos)
+            failures += failWith(std::string("flood-viewer ") + bad +
+                                 ": want exit 2 naming it, got: " + said);
     }
     return failures;
 }
@@ -405,18 +424,22 @@ int checkInspector(const std::string& input, Model& model, const Layout& layout,
     for (uint32_t s = 1; s <= model.steps() && !step; ++s) {
         model.seek(s);
         const auto& rows = model.inspection();
-        if (rows.empty() || rows[0].args.empty() || rows[0].args[0] >= model.polygon().vertices.size()) continue;
+        if (rows.empty() || rows[0].args.empty() ||
+            rows[0].args[0] >= model.polygon().vertices.size())
+            continue;
         Vec2 p = model.camera.toScreen(model.polygon().vertices[rows[0].args[0]]);
         if (!win.contains(p) && c.contains(p)) step = s, arg = rows[0].args[0];
     }
     if (!step) {
-        std::fprintf(stderr, "FAIL: inspector: no step whose first predicate names a visible vertex\n");
+        std::fprintf(stderr,
+                     "FAIL: inspector: no step whose first predicate names a visible vertex\n");
         return 1;
     }
     model.seek(step);
     Vec2 mouse{win.x + 60, win.y + 19 + 8 + 17 + 6};
     char opts[160];
-    std::snprintf(opts, sizeof opts, "--step %u --step %u --predicates --mouse %.0f,%.0f", step, step, mouse.x, mouse.y);
+    std::snprintf(opts, sizeof opts, "--step %u --step %u --predicates --mouse %.0f,%.0f", step,
+                  step, mouse.x, mouse.y);
     Image img;
     if (!shoot(input, opts, dir + "/screenshot-test-inspector.png", W, H, img)) return 1;
     int failures = 0;
@@ -438,11 +461,13 @@ int checkInspector(const std::string& input, Model& model, const Layout& layout,
         onRing += near(img, {v.x + dx, v.y + dy}, ring, 2, nullptr);
     if (onRing < 3) {
         Rgba seen = img.at(int(v.x + 9), int(v.y));
-        failures += fail("inspector: the hovered row's argument ringed on the canvas", {v.x + 9, v.y}, ring, seen);
+        failures += fail("inspector: the hovered row's argument ringed on the canvas",
+                         {v.x + 9, v.y}, ring, seen);
     }
     stbi_image_free(img.px);
-    std::printf("inspector: step %u, vertex %u ringed (%d of 4 probes), %d bright pixels in its rows\n",
-                step, arg, onRing, bright);
+    std::printf(
+        "inspector: step %u, vertex %u ringed (%d of 4 probes), %d bright pixels in its rows\n",
+        step, arg, onRing, bright);
     return failures;
 }
 
@@ -450,18 +475,22 @@ int checkInspector(const std::string& input, Model& model, const Layout& layout,
 // finds, where the timeline puts that step, and none elsewhere. The strip's place is found on
 // the picture (the lane's own colour), so a scrollbar in the timeline does not matter.
 int checkInvariantLane(const std::string& dir, int W, int H, const Layout& layout) {
-    std::string input = std::string(FLOOD_SOURCE_DIR) + "/polygons/invalid/hole-crossing-outer.json";
+    std::string input =
+        std::string(FLOOD_SOURCE_DIR) + "/polygons/invalid/hole-crossing-outer.json";
     Model model;
     model.open(input);
     model.waitForInvariants();
     const std::vector<Violation>& found = model.violations();
-    if (found.empty() || model.forbiddenStep() == 0 || found.front().step >= model.forbiddenStep()) {
-        std::fprintf(stderr, "FAIL: lane: %s should break an invariant before its forbidden step\n", input.c_str());
+    if (found.empty() || model.forbiddenStep() == 0 ||
+        found.front().step >= model.forbiddenStep()) {
+        std::fprintf(stderr, "FAIL: lane: %s should break an invariant before its forbidden step\n",
+                     input.c_str());
         return 1;
     }
     Image img;
     std::string step = "--step " + std::to_string(model.forbiddenStep());
-    if (!shoot(input, step, dir + "/screenshot-test-lane.png", W, H, img, model.exitCode())) return 1;
+    if (!shoot(input, step, dir + "/screenshot-test-lane.png", W, H, img, model.exitCode()))
+        return 1;
     // The tick's orange (255, 120, 40), also where anti-aliasing blends it half into the lane;
     // not the first error's red (its green stays low).
     const Rgba laneColour{34, 30, 40, 255};
@@ -482,7 +511,8 @@ int checkInvariantLane(const std::string& dir, int W, int H, const Layout& layou
     std::vector<int> ticks;
     for (int x = 0; x < W && laneY >= 0; ++x) {
         Rgba px = img.at(x, laneY);
-        bool lane = close(px, laneColour, 2), tick = orange(px), error = close(px, palette::kCulprit, 6);
+        bool lane = close(px, laneColour, 2), tick = orange(px),
+             error = close(px, palette::kCulprit, 6);
         if (lane || tick || error) x0 = std::min(x0, x), x1 = std::max(x1, x);
         if (tick) ticks.push_back(x);
     }
@@ -499,7 +529,8 @@ int checkInvariantLane(const std::string& dir, int W, int H, const Layout& layou
         bool seen = false;
         for (int t : ticks) seen |= std::abs(t - xOf(v.step)) <= 2;
         if (!seen) {
-            std::fprintf(stderr, "FAIL: lane: no tick for the violation at step %u (x %.1f)\n", v.step, xOf(v.step));
+            std::fprintf(stderr, "FAIL: lane: no tick for the violation at step %u (x %.1f)\n",
+                         v.step, xOf(v.step));
             ++failures;
         }
     }
@@ -512,8 +543,10 @@ int checkInvariantLane(const std::string& dir, int W, int H, const Layout& layou
             break;
         }
     }
-    std::printf("lane: row %d, x %d..%d, %zu violations (first at step %u, forbidden at %u), %zu tick pixels\n",
-                laneY, x0, x1, found.size(), found.front().step, model.forbiddenStep(), ticks.size());
+    std::printf(
+        "lane: row %d, x %d..%d, %zu violations (first at step %u, forbidden at %u), %zu tick "
+        "pixels\n",
+        laneY, x0, x1, found.size(), found.front().step, model.forbiddenStep(), ticks.size());
     stbi_image_free(img.px);
     return failures;
 }
@@ -529,7 +562,8 @@ int main() {
     std::string input = dir + "/screenshot-test-square-hole.json";
     std::ofstream(input) << R"({"type": "Polygon", "coordinates": [
         [[0, 0], [10, 1], [11, 9], [1, 10], [0, 0]],
-        [[4, 4], [4, 6], [6, 6.5], [6.5, 4], [4, 4]]]})" "\n";
+        [[4, 4], [4, 6], [6, 6.5], [6.5, 4], [4, 4]]]})"
+                            "\n";
 
     Model model;
     model.open(input);
@@ -574,29 +608,36 @@ int main() {
     // them, the rest dimmed.
     std::string bad = dir + "/screenshot-test-crossing.json";
     std::ofstream(bad) << R"({"type": "Polygon", "coordinates": [
-        [[0, 0], [10, 0], [0, 10], [10, 10], [0, 0]]]})" "\n";
+        [[0, 0], [10, 0], [0, 10], [10, 10], [0, 0]]]})"
+                          "\n";
     Model crossing;
     crossing.open(bad);
     crossing.camera.setViewport(layout.canvas);
     Point x;
     if (!crossing.showError() || !crossing.errorPoint(x)) {
-        std::fprintf(stderr, "FAIL: no error view for %s: %s\n", bad.c_str(), crossing.verdict().c_str());
+        std::fprintf(stderr, "FAIL: no error view for %s: %s\n", bad.c_str(),
+                     crossing.verdict().c_str());
         return 1;
     }
     Image img;
     if (!shoot(bad, "--show-error", dir + "/screenshot-test-error.png", W, H, img, 4)) return 1;
     Rgba seen;
     Vec2 at = crossing.camera.toScreen(x);
-    if (!near(img, at, palette::kCulprit, 1, &seen)) failures += fail("crossing point", at, palette::kCulprit, seen);
+    if (!near(img, at, palette::kCulprit, 1, &seen))
+        failures += fail("crossing point", at, palette::kCulprit, seen);
     Vec2 along = crossing.camera.toScreen({7.5, 2.5});  // on edge (10,0)-(0,10)
-    if (!near(img, along, palette::kCulprit, 1, &seen)) failures += fail("culprit edge", along, palette::kCulprit, seen);
+    if (!near(img, along, palette::kCulprit, 1, &seen))
+        failures += fail("culprit edge", along, palette::kCulprit, seen);
     Vec2 inside = crossing.camera.toScreen({5, 8.5});  // inside the upper lobe, dimmed
-    if (near(img, inside, palette::kCulprit, 2, &seen) || near(img, inside, palette::kPolygonFill, 0, &seen))
-        failures += fail("dimmed interior (not fill, not culprit)", inside, palette::kBackground, seen);
+    if (near(img, inside, palette::kCulprit, 2, &seen) ||
+        near(img, inside, palette::kPolygonFill, 0, &seen))
+        failures +=
+            fail("dimmed interior (not fill, not culprit)", inside, palette::kBackground, seen);
     stbi_image_free(img.px);
     // Unreadable input: the window (with the reason) is still pictured, the exit code is 3.
     Image none;
-    if (!shoot(dir + "/no-such-polygon.json", "", dir + "/screenshot-test-unreadable.png", W, H, none, 3))
+    if (!shoot(dir + "/no-such-polygon.json", "", dir + "/screenshot-test-unreadable.png", W, H,
+               none, 3))
         return 1;
     stbi_image_free(none.px);
     if (failures) return 1;
@@ -608,11 +649,15 @@ int main() {
     failures += checkInspector(input, model, layout, W, H, dir);
     failures += checkInvariantLane(dir, W, H, layout);
     if (failures) return 1;
-    std::printf("ok: step %u, background, water, dry land and Left marker where expected, also "
-                "after stepping back from the end; error view: crossing and culprit edge in the error colour; "
-                "a 10^5-vertex face reads as a shape; Tab's presenter view at 2x with its caption whole; the toolbar's "
-                "last button inside 1024x768 at 2x; Ctrl+plus rebuilds the fonts; F11 fills the screen; "
-                "the light theme's ground, lines and panels; the predicate inspector's rows and hover; the "
-                "invariant lane's ticks\n", step);
+    std::printf(
+        "ok: step %u, background, water, dry land and Left marker where expected, also "
+        "after stepping back from the end; error view: crossing and culprit edge in the error "
+        "colour; "
+        "a 10^5-vertex face reads as a shape; Tab's presenter view at 2x with its caption whole; "
+        "the toolbar's "
+        "last button inside 1024x768 at 2x; Ctrl+plus rebuilds the fonts; F11 fills the screen; "
+        "the light theme's ground, lines and panels; the predicate inspector's rows and hover; the "
+        "invariant lane's ticks\n",
+        step);
     return 0;
 }

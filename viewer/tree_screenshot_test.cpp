@@ -20,11 +20,12 @@ namespace {
 
 // Pixels of `want` (within a small tolerance) in the rectangle `r` of the picture `png`
 // that `flood-viewer INPUT ARGS` writes; -1 if it could not be made.
-long countColour(const std::string& input, const std::string& args, const std::string& png, int W, int H,
-                 const Rect& r, Rgba want) {
+long countColour(const std::string& input, const std::string& args, const std::string& png, int W,
+                 int H, const Rect& r, Rgba want) {
     std::remove(png.c_str());
-    std::string cmd = std::string("'") + FLOOD_VIEWER + "' '" + input + "' " + args + " --screenshot '" + png +
-                      "' --size " + std::to_string(W) + "x" + std::to_string(H);
+    std::string cmd = std::string("'") + FLOOD_VIEWER + "' '" + input + "' " + args +
+                      " --screenshot '" + png + "' --size " + std::to_string(W) + "x" +
+                      std::to_string(H);
     std::printf("%s\n", cmd.c_str());
     std::fflush(stdout);
     int rc = std::system(cmd.c_str());
@@ -42,7 +43,8 @@ long countColour(const std::string& input, const std::string& args, const std::s
     for (int y = int(r.y); y < int(r.y + r.h); ++y)
         for (int x = int(r.x); x < int(r.x + r.w); ++x) {
             const unsigned char* p = px + (size_t(y) * w + x) * 4;
-            n += std::abs(p[0] - want.r) <= 6 && std::abs(p[1] - want.g) <= 6 && std::abs(p[2] - want.b) <= 6;
+            n += std::abs(p[0] - want.r) <= 6 && std::abs(p[1] - want.g) <= 6 &&
+                 std::abs(p[2] - want.b) <= 6;
         }
     stbi_image_free(px);
     return n;
@@ -58,10 +60,13 @@ int main() {
     // The Decision panel's rectangle, as panel_decision.cpp places it (UI scale 1 in shots).
     const Rect col = computeLayout(W, H, 1).left;
     const Rect panel{col.x, col.y + col.h * 0.38, col.w, col.h * 0.27};
-    long lit = countColour(input, "--step 5", dir + "/tree-screenshot-step5.png", W, H, panel, palette::kTreePath);
-    long none = countColour(input, "--step 0", dir + "/tree-screenshot-step0.png", W, H, panel, palette::kTreePath);
+    long lit = countColour(input, "--step 5", dir + "/tree-screenshot-step5.png", W, H, panel,
+                           palette::kTreePath);
+    long none = countColour(input, "--step 0", dir + "/tree-screenshot-step0.png", W, H, panel,
+                            palette::kTreePath);
     if (lit < 0 || none < 0) return 1;
-    std::printf("path colour in the Decision panel: %ld pixels at step 5, %ld at step 0\n", lit, none);
+    std::printf("path colour in the Decision panel: %ld pixels at step 5, %ld at step 0\n", lit,
+                none);
     if (lit < 40) {
         std::fprintf(stderr, "FAIL: the current path is not lit in the decision tree\n");
         return 1;
@@ -70,6 +75,7 @@ int main() {
         std::fprintf(stderr, "FAIL: something is lit in the decision tree before any event\n");
         return 1;
     }
-    std::printf("ok: the decision tree is drawn with the path of step 5 lit, nothing lit at step 0\n");
+    std::printf(
+        "ok: the decision tree is drawn with the path of step 5 lit, nothing lit at step 0\n");
     return 0;
 }

@@ -65,7 +65,8 @@ double nsPerCall(Call& call) {
     for (int round = 0; round < 15; ++round) {
         auto t0 = clock::now();
         for (size_t i = 0; i < batch; ++i) sink += call();
-        best = std::min(best, std::chrono::duration<double, std::nano>(clock::now() - t0).count() / double(batch));
+        best = std::min(best, std::chrono::duration<double, std::nano>(clock::now() - t0).count() /
+                                  double(batch));
     }
     if (sink == 0) std::fprintf(stderr, "no triangles\n");
     return best;
@@ -90,7 +91,8 @@ int main(int argc, char** argv) {
             Polygon p;
             if (!load(argv[i], p)) return 3;
             Call flood{p, false, p, {}}, both{p, true, p, {}};
-            std::printf("%s\t%zu\t%.1f\t%.1f\n", argv[i], p.vertices.size(), nsPerCall(flood), nsPerCall(both));
+            std::printf("%s\t%zu\t%.1f\t%.1f\n", argv[i], p.vertices.size(), nsPerCall(flood),
+                        nsPerCall(both));
         }
         return 0;
     }

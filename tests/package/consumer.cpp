@@ -1,8 +1,8 @@
 // A program that uses the installed Flood as a user would: triangulate a square with a hole
 // and a MultiPolygon, refuse a bow-tie with its diagnostic, replay a recorded trace. Built by
 // scripts/package-test.sh against a temporary prefix, once with CMake and once with pkg-config.
-#include <cstdio>
 #include <flood/flood_api.h>
+#include <cstdio>
 
 namespace {
 int failures = 0;
@@ -13,12 +13,14 @@ void expect(bool ok, const char* what) {
 
 int main() {
     using flood::Rings;
-    const Rings squareWithHole = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{3, 3}, {3, 7}, {7, 7}, {7, 3}}};
+    const Rings squareWithHole = {{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
+                                  {{3, 3}, {3, 7}, {7, 7}, {7, 3}}};
     flood::Triangulation t = flood::triangulateParts({squareWithHole});
     expect(t.ok(), "a square with a square hole triangulates");
     expect(t.triangles.size() == 8, "n + 2h - 2 = 8 triangles");  // §1 of the paper
     for (const flood::Triangle& tri : t.triangles)
-        for (flood::Index v : tri) expect(v < t.polygon.vertices.size(), "indices name input vertices");
+        for (flood::Index v : tri)
+            expect(v < t.polygon.vertices.size(), "indices name input vertices");
 
     const Rings a = {{{0, 0}, {1, 0}, {1, 1}, {0, 1}}}, b = {{{5, 0}, {6, 0}, {6, 1}, {5, 1}}};
     expect(flood::triangulateParts({a, b}).triangles.size() == 4, "two squares: 4 triangles");

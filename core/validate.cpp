@@ -1,7 +1,9 @@
 // Validity of an input polygon, checked exactly before flooding (docs/ERRORS.md).
 //
-// Checks, in this order; the first failing check is reported, and within a check the problem
-// with the lowest vertex (or edge) index, so the message does not depend on grid sizes:
+// Checks, in this order; the first failing check is reported, and within a check its first
+// problem in a fixed order — by ring and vertex index (checks 1-3 and 6), the lowest along the
+// sweep, where it stops (4), touching points by their coordinates (5) — so the message depends
+// on the polygon alone, not on how coincident points are hashed:
 //   1. every coordinate is finite;
 //   2. every ring has at least 3 distinct points and no zero-length edge — except a hole of
 //      exactly one point, a Steiner point the triangulation must use;

@@ -490,7 +490,7 @@ int run(int argc, char** argv) {
         ->check(CLI::Range(1u, 3600u));
     shr->add_flag("--slipping", slipping,
                   "Shrink an invalid polygon that the unvalidated verification (verify "
-                  "--no-validate) passes, keeping it so (docs/ALGORITHM.md §6)");
+                  "--no-validate) passes, keeping it so (docs/ALGORITHM.md §7)");
     addUp(shr, up);
 
     cli::CheckOptions checkOptions;

@@ -41,7 +41,7 @@ TEST(Conjecture, InvalidFamiliesAreDeterministic) {
     }
 }
 
-// What catches each kind (docs/ALGORITHM.md §6 explains why).
+// What catches each kind (docs/ALGORITHM.md §7 explains why).
 TEST(Conjecture, WhatCatchesEachKind) {
     EXPECT_EQ(unvalidated(generateInvalid("bowtie-star", 1, 300)).caught(), Caught::Polygon);
     EXPECT_EQ(unvalidated(generateInvalid("hole-outside", 1, 300)).caught(), Caught::Polygon);

@@ -50,7 +50,7 @@ TEST(Errors, MachineExamplesAreCaughtByValidationFirst) {
     }
 }
 
-// Every forbidden reason of FLOOD_FORBIDDEN has an example row, except the two that no input
+// Every forbidden reason of FLOOD_FORBIDDEN has an example row, except the one that no input
 // reaches (documented in docs/ERRORS.md): NoProgress (the step budget and walk guards, a
 // safety net; tests/regress_test.cpp holds fuzzer inputs that end there).
 TEST(Errors, CatalogueCoversEveryForbiddenReason) {

@@ -16,7 +16,7 @@
 namespace flood::view {
 
 EditUi::EditUi(Model& m) : editor(m) {
-    // A few thousand vertices flood in tens of milliseconds (README): off the UI thread.
+    // A few thousand vertices flood in tens of milliseconds (docs/BENCHMARKS.md): off the UI thread.
     editor.background = true;
     editor.onReady = platform::wake;
 }

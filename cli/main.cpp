@@ -8,7 +8,7 @@
 //   read (warnings to stderr; Malformed -> exit 3) -> validate (Invalid -> exit 4, nothing
 //   written) -> flood (Forbidden -> exit 5) -> exact check of our own output (failure -> exit 6)
 //   -> write. Exit codes are flood::Status values. "-" means stdin for input, stdout for output.
-// Outputs are written whole or not at all (cli/output.h; a failed write exits 8).
+// Outputs are written whole or not at all (core/output.h; a failed write exits 8).
 #include <malloc.h>
 
 #include <CLI/CLI.hpp>
@@ -41,7 +41,6 @@
 namespace {
 
 using namespace flood;
-using cli::Output;
 
 int code(Status s) { return int(s); }
 
@@ -383,7 +382,7 @@ int cmdBench(const std::string& in, int repeat, const std::string& up) {
         sink += triangulate(polygon, &rec, o).triangles.size();
     });
     double n = double(std::max<size_t>(1, polygon.vertices.size()));
-    // Formatted into std::cout, which keeps the reason of a failed write (cli/output.h).
+    // Formatted into std::cout, which keeps the reason of a failed write (core/output.h).
     auto line = [](const char* format, auto... values) {
         char text[256];
         std::snprintf(text, sizeof text, format, values...);
@@ -403,7 +402,7 @@ int cmdBench(const std::string& in, int repeat, const std::string& up) {
 }  // namespace
 
 int run(int argc, char** argv) {
-    cli::takeOverStdout();
+    takeOverStdout();
     // Large blocks always come from (and go back to) the system: glibc otherwise raises this
     // threshold after the first large free, and what each step of the pipeline (read,
     // validate, flood, check) frees stays resident under the next one's peak.
@@ -568,8 +567,7 @@ int run(int argc, char** argv) {
     }
 #endif
     // -o naming the input (shrink IN -o IN) would replace the very file being read.
-    if ((tri->parsed() || trace->parsed() || shr->parsed()) && out != "-" &&
-        cli::sameFile(in, out)) {
+    if ((tri->parsed() || trace->parsed() || shr->parsed()) && out != "-" && sameFile(in, out)) {
         std::cerr << "error: -o " << out << " is the input file " << (in == "-" ? "<stdin>" : in)
                   << ": refusing to overwrite the input; write the output elsewhere\n";
         return code(Status::Usage);
@@ -595,4 +593,4 @@ int run(int argc, char** argv) {
     return code(Status::Usage);
 }
 
-int main(int argc, char** argv) { return flood::cli::finishStdout(run(argc, argv)); }
+int main(int argc, char** argv) { return flood::finishStdout(run(argc, argv)); }

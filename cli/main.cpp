@@ -432,39 +432,38 @@ int run(int argc, char** argv) {
     };
     int repeat = 5;
 
+    // The options every flooding command shares: IN, --up and --no-validate, and the exact
+    // check where the command writes triangles or events.
+    auto flooding = [&](CLI::App* cmd, const char* inHelp, bool exactCheck) {
+        cmd->add_option("IN", in, inHelp)->required();
+        addUp(cmd, up);
+        addNoValidate(cmd);
+        if (exactCheck) addNoExactCheck(cmd);
+    };
+    const char* const polygonIn = "Input polygon (- for stdin)";
+
     auto* tri = app.add_subcommand("triangulate", "Triangulate a polygon and write the result");
-    tri->add_option("IN", in, "Input polygon (GeoJSON, ring array or WKT; - for stdin)")
-        ->required();
+    flooding(tri, "Input polygon (GeoJSON, ring array or WKT; - for stdin)", true);
     tri->add_option("-o,--output", out, "Output file (- for stdout, the default)");
     tri->add_option(
            "--format", format,
            "json, svg, obj, or with GDAL gpkg (GeoPackage) or fgb (FlatGeobuf): a layer of "
            "triangle polygons (default: from the output extension, else json)")
         ->check(CLI::IsMember({"json", "svg", "obj", "gpkg", "fgb"}));
-    addUp(tri, up);
-    addNoValidate(tri);
-    addNoExactCheck(tri);
 
     auto* trace = app.add_subcommand("trace", "Flood and write the event trace (JSON Lines)");
-    trace->add_option("IN", in, "Input polygon (- for stdin)")->required();
+    flooding(trace, polygonIn, true);
     trace->add_option("-o,--output", out, "Output trace file (- for stdout, the default)");
-    addUp(trace, up);
-    addNoValidate(trace);
-    addNoExactCheck(trace);
 
     auto* tr = app.add_subcommand("transcript", "Print the paper-style transcript (Fig. 7)");
-    tr->add_option("IN", in, "Input polygon (- for stdin)")->required();
+    flooding(tr, polygonIn, false);
     tr->add_flag("--narrate", narrate, "One numbered sentence per event: what happened and why");
-    addUp(tr, up);
-    addNoValidate(tr);
 
     auto* ver = app.add_subcommand("verify", "Triangulate and check the result exactly");
-    ver->add_option("IN", in, "Input polygon (- for stdin)")->required();
-    addUp(ver, up);
-    addNoValidate(ver);
+    flooding(ver, polygonIn, false);
 
     auto* bench = app.add_subcommand("bench", "Median in-process triangulation time");
-    bench->add_option("IN", in, "Input polygon (- for stdin)")->required();
+    bench->add_option("IN", in, polygonIn)->required();
     bench->add_option("--repeat", repeat, "Number of timed runs (default 5)")
         ->check(CLI::Range(1, 1000000));
     addUp(bench, up);
@@ -482,7 +481,7 @@ int run(int argc, char** argv) {
 
     auto* shr = app.add_subcommand(
         "shrink", "Shrink a failing polygon to a small one that fails the same way");
-    shr->add_option("IN", in, "Input polygon (- for stdin)")->required();
+    shr->add_option("IN", in, polygonIn)->required();
     shr->add_option("-o,--output", out,
                     "Output file for the minimal polygon (- for stdout, the default)");
     shr->add_option("--timeout", timeout, "Seconds before a run counts as a hang (default 10)")

@@ -8,7 +8,7 @@
 //   read (warnings to stderr; Malformed -> exit 3) -> validate (Invalid -> exit 4, nothing
 //   written) -> flood (Forbidden -> exit 5) -> exact check of our own output (failure -> exit 6)
 //   -> write. Exit codes are flood::Status values. "-" means stdin for input, stdout for output.
-// Outputs are written whole or not at all (cli/output.h; a failed write exits 8).
+// Outputs are written whole or not at all (core/output.h; a failed write exits 8).
 #include <malloc.h>
 
 #include <CLI/CLI.hpp>
@@ -41,7 +41,6 @@
 namespace {
 
 using namespace flood;
-using cli::Output;
 
 int code(Status s) { return int(s); }
 
@@ -383,7 +382,7 @@ int cmdBench(const std::string& in, int repeat, const std::string& up) {
         sink += triangulate(polygon, &rec, o).triangles.size();
     });
     double n = double(std::max<size_t>(1, polygon.vertices.size()));
-    // Formatted into std::cout, which keeps the reason of a failed write (cli/output.h).
+    // Formatted into std::cout, which keeps the reason of a failed write (core/output.h).
     auto line = [](const char* format, auto... values) {
         char text[256];
         std::snprintf(text, sizeof text, format, values...);
@@ -403,7 +402,7 @@ int cmdBench(const std::string& in, int repeat, const std::string& up) {
 }  // namespace
 
 int run(int argc, char** argv) {
-    cli::takeOverStdout();
+    takeOverStdout();
     // Large blocks always come from (and go back to) the system: glibc otherwise raises this
     // threshold after the first large free, and what each step of the pipeline (read,
     // validate, flood, check) frees stays resident under the next one's peak.
@@ -433,39 +432,38 @@ int run(int argc, char** argv) {
     };
     int repeat = 5;
 
+    // The options every flooding command shares: IN, --up and --no-validate, and the exact
+    // check where the command writes triangles or events.
+    auto flooding = [&](CLI::App* cmd, const char* inHelp, bool exactCheck) {
+        cmd->add_option("IN", in, inHelp)->required();
+        addUp(cmd, up);
+        addNoValidate(cmd);
+        if (exactCheck) addNoExactCheck(cmd);
+    };
+    const char* const polygonIn = "Input polygon (- for stdin)";
+
     auto* tri = app.add_subcommand("triangulate", "Triangulate a polygon and write the result");
-    tri->add_option("IN", in, "Input polygon (GeoJSON, ring array or WKT; - for stdin)")
-        ->required();
+    flooding(tri, "Input polygon (GeoJSON, ring array or WKT; - for stdin)", true);
     tri->add_option("-o,--output", out, "Output file (- for stdout, the default)");
     tri->add_option(
            "--format", format,
            "json, svg, obj, or with GDAL gpkg (GeoPackage) or fgb (FlatGeobuf): a layer of "
            "triangle polygons (default: from the output extension, else json)")
         ->check(CLI::IsMember({"json", "svg", "obj", "gpkg", "fgb"}));
-    addUp(tri, up);
-    addNoValidate(tri);
-    addNoExactCheck(tri);
 
     auto* trace = app.add_subcommand("trace", "Flood and write the event trace (JSON Lines)");
-    trace->add_option("IN", in, "Input polygon (- for stdin)")->required();
+    flooding(trace, polygonIn, true);
     trace->add_option("-o,--output", out, "Output trace file (- for stdout, the default)");
-    addUp(trace, up);
-    addNoValidate(trace);
-    addNoExactCheck(trace);
 
     auto* tr = app.add_subcommand("transcript", "Print the paper-style transcript (Fig. 7)");
-    tr->add_option("IN", in, "Input polygon (- for stdin)")->required();
+    flooding(tr, polygonIn, false);
     tr->add_flag("--narrate", narrate, "One numbered sentence per event: what happened and why");
-    addUp(tr, up);
-    addNoValidate(tr);
 
     auto* ver = app.add_subcommand("verify", "Triangulate and check the result exactly");
-    ver->add_option("IN", in, "Input polygon (- for stdin)")->required();
-    addUp(ver, up);
-    addNoValidate(ver);
+    flooding(ver, polygonIn, false);
 
     auto* bench = app.add_subcommand("bench", "Median in-process triangulation time");
-    bench->add_option("IN", in, "Input polygon (- for stdin)")->required();
+    bench->add_option("IN", in, polygonIn)->required();
     bench->add_option("--repeat", repeat, "Number of timed runs (default 5)")
         ->check(CLI::Range(1, 1000000));
     addUp(bench, up);
@@ -483,7 +481,7 @@ int run(int argc, char** argv) {
 
     auto* shr = app.add_subcommand(
         "shrink", "Shrink a failing polygon to a small one that fails the same way");
-    shr->add_option("IN", in, "Input polygon (- for stdin)")->required();
+    shr->add_option("IN", in, polygonIn)->required();
     shr->add_option("-o,--output", out,
                     "Output file for the minimal polygon (- for stdout, the default)");
     shr->add_option("--timeout", timeout, "Seconds before a run counts as a hang (default 10)")
@@ -568,8 +566,7 @@ int run(int argc, char** argv) {
     }
 #endif
     // -o naming the input (shrink IN -o IN) would replace the very file being read.
-    if ((tri->parsed() || trace->parsed() || shr->parsed()) && out != "-" &&
-        cli::sameFile(in, out)) {
+    if ((tri->parsed() || trace->parsed() || shr->parsed()) && out != "-" && sameFile(in, out)) {
         std::cerr << "error: -o " << out << " is the input file " << (in == "-" ? "<stdin>" : in)
                   << ": refusing to overwrite the input; write the output elsewhere\n";
         return code(Status::Usage);
@@ -595,4 +592,4 @@ int run(int argc, char** argv) {
     return code(Status::Usage);
 }
 
-int main(int argc, char** argv) { return flood::cli::finishStdout(run(argc, argv)); }
+int main(int argc, char** argv) { return flood::finishStdout(run(argc, argv)); }

@@ -105,6 +105,13 @@ Pts radialRing(Point c, size_t n, Radius radius, double phase = 0) {
     return keepStarShaped(ring, c);
 }
 
+// The polygon bounded by `ring` alone.
+Polygon outerRing(const Pts& ring) {
+    Polygon p;
+    p.addRing(ring, true);
+    return p;
+}
+
 // x-monotone orthogonal polygon, the union of columns [xs[j], xs[j+1]] x [bottom[j], top[j]];
 // neighbouring columns must overlap vertically. Counter-clockwise.
 Pts columnsRing(const std::vector<int>& xs, const std::vector<int>& bottom,
@@ -159,26 +166,20 @@ Polygon star(Rng& rng, size_t size) {
     }
     ring = keepStarShaped(ring, {0, 0});
     if (ring.size() < 3) ring = {{-R, -R}, {R, -R}, {0, R}};
-    Polygon p;
-    p.addRing(ring, true);
-    return p;
+    return outerRing(ring);
 }
 
 Polygon circleSmooth(Rng& rng, size_t size) {
     Pts ring = radialRing({0, 0}, std::max<size_t>(3, size),
                           [&](size_t) { return 1.0 + 0.01 * rng.unit(); });
-    Polygon p;
-    p.addRing(ring, true);
-    return p;
+    return outerRing(ring);
 }
 
 Polygon circleJagged(Rng& rng, size_t size) {
     Pts ring = radialRing({0, 0}, std::max<size_t>(4, size), [&](size_t i) {
         return (i & 1) ? 0.2 + 0.5 * rng.unit() : 0.8 + 0.2 * rng.unit();
     });
-    Polygon p;
-    p.addRing(ring, true);
-    return p;
+    return outerRing(ring);
 }
 
 // Circle with K circular holes, one per grid cell well inside the circle.
@@ -251,38 +252,39 @@ Polygon comb(Rng& rng, size_t size, int heightRange) {
     const int H = 4;
     for (int i = 2 * m; i >= 0; --i)
         r.push_back(pt(i, (i & 1) ? H + rng.range(1, heightRange) : H - rng.range(0, 1)));
-    Polygon p;
-    p.addRing(r, true);
-    return p;
+    return outerRing(r);
+}
+
+// m random columns 1..maxWidth wide; heights(j) gives column j's {bottom, top} (drawn after
+// its width, so each family's random sequence is what it always was).
+template <class Heights>
+Polygon randomColumns(Rng& rng, int m, int maxWidth, Heights&& heights) {
+    std::vector<int> xs{0}, bottom, top;
+    for (int j = 0; j < m; ++j) {
+        xs.push_back(xs.back() + rng.range(1, maxWidth));
+        auto [b, t] = heights(j);
+        bottom.push_back(b);
+        top.push_back(t);
+    }
+    return outerRing(columnsRing(xs, bottom, top));
 }
 
 // Orthogonal comb: rectangular teeth up and down with many equal heights.
 Polygon combRect(Rng& rng, size_t size) {
-    int m = std::max(2, int(size / 3));
-    std::vector<int> xs{0}, bottom, top;
-    for (int j = 0; j < m; ++j) {
-        xs.push_back(xs.back() + rng.range(1, 3));
+    return randomColumns(rng, std::max(2, int(size / 3)), 3, [&rng](int j) {
         bool tooth = j & 1;
-        bottom.push_back(tooth && rng.range(0, 1) ? -rng.range(1, 4) * 2 : 0);
-        top.push_back(tooth && rng.range(0, 1) ? 10 + rng.range(1, 4) * 2 : 10);
-    }
-    Polygon p;
-    p.addRing(columnsRing(xs, bottom, top), true);
-    return p;
+        int bottom = tooth && rng.range(0, 1) ? -rng.range(1, 4) * 2 : 0;
+        int top = tooth && rng.range(0, 1) ? 10 + rng.range(1, 4) * 2 : 10;
+        return std::pair{bottom, top};
+    });
 }
 
 // Random orthogonal x-monotone polygon: columns with random tops and bottoms.
 Polygon orthoHistogram(Rng& rng, size_t size) {
-    int m = std::max(1, int(size / 4));
-    std::vector<int> xs{0}, bottom, top;
-    for (int j = 0; j < m; ++j) {
-        xs.push_back(xs.back() + rng.range(1, 4));
-        bottom.push_back(-rng.range(0, 10));
-        top.push_back(rng.range(1, 10));
-    }
-    Polygon p;
-    p.addRing(columnsRing(xs, bottom, top), true);
-    return p;
+    return randomColumns(rng, std::max(1, int(size / 4)), 4, [&rng](int) {
+        int bottom = -rng.range(0, 10);
+        return std::pair{bottom, rng.range(1, 10)};
+    });
 }
 
 // Monotone staircase: random step widths and heights.
@@ -299,9 +301,7 @@ Polygon staircase(Rng& rng, size_t size) {
         x -= w[k];
         r.push_back({x, y});
     }
-    Polygon p;
-    p.addRing(r, true);
-    return p;
+    return outerRing(r);
 }
 
 // Corridor of half-width 1 around a square spiral centreline with spacing 4.
@@ -324,9 +324,7 @@ Polygon orthoSpiral(Rng&, size_t size) {
     }
     Pts r = left;
     r.insert(r.end(), right.rbegin(), right.rend());
-    Polygon p;
-    p.addRing(r, true);
-    return p;
+    return outerRing(r);
 }
 
 // Smooth Archimedean spiral band, double coordinates.
@@ -347,9 +345,7 @@ Polygon spiral(Rng& rng, size_t size) {
     }
     Pts ring = outer;
     ring.insert(ring.end(), inner.rbegin(), inner.rend());
-    Polygon p;
-    p.addRing(ring, true);
-    return p;
+    return outerRing(ring);
 }
 
 // Zigzag on the integer grid with heights from a tiny set: many equal heights.
@@ -358,9 +354,7 @@ Polygon equalHeights(Rng& rng, size_t size) {
     Pts r;
     for (int i = 0; i < m; ++i) r.push_back(pt(i, rng.range(0, 2)));
     for (int i = m - 1; i >= 0; --i) r.push_back(pt(i, rng.range(3, 5)));
-    Polygon p;
-    p.addRing(r, true);
-    return p;
+    return outerRing(r);
 }
 
 // A histogram or a star with extra vertices inserted on its edges, and a collinear hole.
@@ -368,9 +362,7 @@ Polygon collinear(Rng& rng, size_t size) {
     Polygon base = rng.range(0, 1) ? orthoHistogram(rng, std::max<size_t>(4, size / 3))
                                    : star(rng, std::max<size_t>(3, size / 3));
     Pts ring(base.vertices.begin(), base.vertices.end());
-    Polygon p;
-    p.addRing(addCollinear(ring, rng, 3), true);
-    return p;
+    return outerRing(addCollinear(ring, rng, 3));
 }
 
 // Rectangle whose bottom and top edges carry vertices every 4 units; triangular holes touch

@@ -9,10 +9,9 @@
 
 #include "io.h"
 #include "io_util.h"
+#include "svg.h"
 
 namespace flood {
-
-using io_detail::formatDouble;
 
 namespace {
 
@@ -111,42 +110,31 @@ void writeSvg(std::ostream& out, const Polygon& p, const std::vector<Triangle>& 
     }
     auto S = [shift](double v) { return std::ldexp(v, shift); };
     auto flip = [](double y) { return y == 0 ? 0.0 : -y; };  // no "-0"
-    auto X = [&](double x) { return formatDouble(S(x)); };
-    auto Y = [&](double y) { return formatDouble(flip(S(y))); };
     const double x0 = S(minx), y1 = S(maxy), w = S(maxx) - x0, h = y1 - S(miny);
     double size = std::max(w, h);
     if (!(size > 0)) size = 1;
     const double margin = size * 0.02, stroke = size * 0.002;
     const double boxW = w + 2 * margin, boxH = h + 2 * margin, longer = std::max(boxW, boxH);
     auto pixels = [longer](double side) {
-        return std::max(1L, std::lround(800 * (side / longer)));
+        return double(std::max(1L, std::lround(800 * (side / longer))));
     };
-    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" << formatDouble(x0 - margin)
-        << " " << formatDouble(flip(y1 + margin)) << " " << formatDouble(boxW) << " "
-        << formatDouble(boxH) << "\" width=\"" << pixels(boxW) << "\" height=\"" << pixels(boxH)
-        << "\">\n";
+    svg::Document doc(out, {x0 - margin, flip(y1 + margin), boxW, boxH}, pixels(boxW), pixels(boxH),
+                      [&](Point v) {
+                          return Point{S(v.x), flip(S(v.y))};
+                      });
     // The polygon: one path, rings as subpaths, even-odd fill makes holes empty.
-    out << "<path fill=\"#cde\" fill-rule=\"evenodd\" stroke=\"#024\" stroke-width=\""
-        << formatDouble(stroke * 2) << "\" d=\"";
-    for (const Ring& r : p.rings) {
-        for (Index i = 0; i < r.count; ++i) {
-            const Point& v = p.vertices[r.first + i];
-            out << (i ? "L" : "M") << X(v.x) << " " << Y(v.y) << " ";
-        }
-        out << "Z ";
-    }
-    out << "\"/>\n<g fill=\"none\" stroke=\"#a33\" stroke-width=\"" << formatDouble(stroke)
-        << "\" stroke-linejoin=\"round\">\n";
-    for (const Triangle& tr : t) {
-        out << "<path d=\"";
-        for (int k = 0; k < 3; ++k) {
-            Index i = tr[k];
-            if (i >= p.vertices.size()) continue;
-            out << (k ? "L" : "M") << X(p.vertices[i].x) << " " << Y(p.vertices[i].y) << " ";
-        }
-        out << "Z\"/>\n";
-    }
-    out << "</g>\n</svg>\n";
+    svg::Style land;
+    land.fill = "#cde", land.evenOdd = true, land.stroke = "#024", land.strokeWidth = stroke * 2;
+    std::vector<svg::RingView> rings;
+    for (const Ring& r : p.rings) rings.push_back({p.vertices.data() + r.first, r.count});
+    doc.rings(land, rings);
+    svg::Style edges;
+    edges.fill = "none", edges.stroke = "#a33", edges.strokeWidth = stroke, edges.roundJoins = true;
+    doc.beginGroup(edges);
+    const size_t n = p.vertices.size();
+    for (const Triangle& tr : t)
+        if (tr[0] < n && tr[1] < n && tr[2] < n)
+            doc.triangle({}, p.vertices[tr[0]], p.vertices[tr[1]], p.vertices[tr[2]]);
 }
 
 }  // namespace flood

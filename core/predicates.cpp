@@ -23,6 +23,7 @@
 
 #include <gmp.h>
 
+#include <array>
 #include <cassert>
 #include <cmath>
 
@@ -71,10 +72,34 @@ inline int growExpansion(double* h, int len, double b) {
     return j;
 }
 
-// The exact sign of the sum of N products f[i][0] * f[i][1]: each product is split into two
-// doubles (twoProduct) and summed as an expansion, whose largest component has the sign.
+// A predicate's value written as a sum of N products f[i][0] * f[i][1] of its (negated)
+// coordinates: the exact stages read only these terms, so each predicate states them once.
 template <size_t N>
-int productSumSign(const double (&f)[N][2]) {
+using Products = std::array<std::array<double, 2>, N>;
+
+// Stage 1 on a determinant `det` whose error is below kCcwErrBoundA * `sum`: +1 or -1 when it
+// decides, 0 when it cannot.
+inline int filterSign(double det, double sum) {
+    if (std::isfinite(det) && std::isfinite(sum) && sum >= kFilterMin) {
+        double bound = kCcwErrBoundA * sum;
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+    }
+    return 0;
+}
+
+// Stage 2 applies when every factor is in the safe exponent range, stage 3 otherwise.
+template <size_t N>
+Stage exactStage(const Products<N>& f) {
+    for (const auto& pr : f)
+        if (!safe(pr[0]) || !safe(pr[1])) return Stage::Rationals;
+    return Stage::Expansion;
+}
+
+// Stage 2: each product is split into two doubles (twoProduct) and summed as an expansion,
+// whose largest component has the sign.
+template <size_t N>
+int expansionSign(const Products<N>& f) {
     double h[2 * N + 1];
     int len = 0;
     for (const auto& pr : f) {
@@ -85,12 +110,6 @@ int productSumSign(const double (&f)[N][2]) {
     }
     if (len == 0) return 0;
     return h[len - 1] > 0 ? 1 : -1;
-}
-
-int orientExpansion(Point a, Point b, Point c) {
-    const double f[6][2] = {{a.x, b.y},  {-a.y, b.x}, {b.x, c.y},
-                            {-b.y, c.x}, {c.x, a.y},  {-c.y, a.x}};
-    return productSumSign(f);
 }
 
 struct Mpq {
@@ -114,34 +133,32 @@ void mpqAddProduct(mpq_t q, double a, double b) {
     mpq_add(q, q, x.q);
 }
 
-int orientGmp(Point a, Point b, Point c) {
+// Stage 3: the sum in GMP rationals.
+template <size_t N>
+int rationalSign(const Products<N>& f) {
     Mpq sum;
-    mpqAddProduct(sum.q, a.x, b.y);
-    mpqAddProduct(sum.q, -a.y, b.x);
-    mpqAddProduct(sum.q, b.x, c.y);
-    mpqAddProduct(sum.q, -b.y, c.x);
-    mpqAddProduct(sum.q, c.x, a.y);
-    mpqAddProduct(sum.q, -c.y, a.x);
+    for (const auto& pr : f) mpqAddProduct(sum.q, pr[0], pr[1]);
     return mpq_sgn(sum.q);
 }
 
-// Stage 1, the filter: +1 or -1 when it decides, 0 when it cannot; `det` gets its value.
+// Stages 2 and 3: the exact sign of the sum, and the stage that decided it.
+template <size_t N>
+int exactSign(const Products<N>& f, Stage& stage) {
+    stage = exactStage(f);
+    return stage == Stage::Expansion ? expansionSign(f) : rationalSign(f);
+}
+
+// orient's doubled area, ax*by - ay*bx + bx*cy - by*cx + cx*ay - cy*ax, as its six products.
+Products<6> orientProducts(Point a, Point b, Point c) {
+    return {{{a.x, b.y}, {-a.y, b.x}, {b.x, c.y}, {-b.y, c.x}, {c.x, a.y}, {-c.y, a.x}}};
+}
+
+// Stage 1 for orient: `det` gets the filter's value.
 inline int orientFilter(Point a, Point b, Point c, double& det) {
     double detLeft = (a.x - c.x) * (b.y - c.y);
     double detRight = (a.y - c.y) * (b.x - c.x);
     det = detLeft - detRight;
-    double detSum = std::fabs(detLeft) + std::fabs(detRight);
-    if (std::isfinite(det) && std::isfinite(detSum) && detSum >= kFilterMin) {
-        double bound = kCcwErrBoundA * detSum;
-        if (det > bound) return 1;
-        if (-det > bound) return -1;
-    }
-    return 0;
-}
-
-// Stage 2 applies when every coordinate is in the safe exponent range.
-inline bool expansionExact(Point a, Point b, Point c) {
-    return safe(a.x) && safe(a.y) && safe(b.x) && safe(b.y) && safe(c.x) && safe(c.y);
+    return filterSign(det, std::fabs(detLeft) + std::fabs(detRight));
 }
 
 }  // namespace
@@ -153,53 +170,31 @@ int orient(Point a, Point b, Point c) {
     ++work().orientCalls;
     double det;
     if (int s = orientFilter(a, b, c, det)) return s;
-    if (expansionExact(a, b, c)) return orientExpansion(a, b, c);
-    return orientGmp(a, b, c);
+    Stage stage;
+    return exactSign(orientProducts(a, b, c), stage);
 }
 
 namespace {
-// d·(b − a) by the filter: +1 or -1 when it decides, 0 when it cannot. Each term is a product
-// of an exact component and one rounded difference, so orient's error bound covers it.
+// d·(b − a) by the filter. Each term is a product of an exact component and one rounded
+// difference, so orient's error bound covers it.
 inline int heightFilter(Up d, Point a, Point b) {
     double p = d.x * (b.x - a.x), q = d.y * (b.y - a.y);
-    double s = p + q, sum = std::fabs(p) + std::fabs(q);
-    if (std::isfinite(s) && std::isfinite(sum) && sum >= kFilterMin) {
-        double bound = kCcwErrBoundA * sum;
-        if (s > bound) return 1;
-        if (-s > bound) return -1;
-    }
-    return 0;
-}
-
-int heightExpansion(Up d, Point a, Point b) {
-    const double f[4][2] = {{d.x, b.x}, {-d.x, a.x}, {d.y, b.y}, {-d.y, a.y}};
-    return productSumSign(f);
-}
-
-int heightGmp(Up d, Point a, Point b) {
-    Mpq sum;
-    mpqAddProduct(sum.q, d.x, b.x);
-    mpqAddProduct(sum.q, -d.x, a.x);
-    mpqAddProduct(sum.q, d.y, b.y);
-    mpqAddProduct(sum.q, -d.y, a.y);
-    return mpq_sgn(sum.q);
+    return filterSign(p + q, std::fabs(p) + std::fabs(q));
 }
 }  // namespace
 
 int heightSign(Up d, Point a, Point b) {
     ++work().heightCalls;
     if (int s = heightFilter(d, a, b)) return s;
-    if (safe(d.x) && safe(d.y) && safe(a.x) && safe(a.y) && safe(b.x) && safe(b.y))
-        return heightExpansion(d, a, b);
-    return heightGmp(d, a, b);
+    Stage stage;  // d·(b − a) = dx*bx - dx*ax + dy*by - dy*ay
+    return exactSign(Products<4>{{{d.x, b.x}, {-d.x, a.x}, {d.y, b.y}, {-d.y, a.y}}}, stage);
 }
 
 // The same stages as orient(), saying which decided; not counted as the machine's work.
 OrientReport orientExplained(Point a, Point b, Point c) {
     OrientReport r;
     if ((r.sign = orientFilter(a, b, c, r.det))) return r;
-    r.stage = expansionExact(a, b, c) ? Stage::Expansion : Stage::Rationals;
-    r.sign = r.stage == Stage::Expansion ? orientExpansion(a, b, c) : orientGmp(a, b, c);
+    r.sign = exactSign(orientProducts(a, b, c), r.stage);
     return r;
 }
 
@@ -279,12 +274,15 @@ ExactSum::Big& ExactSum::ownBig() {
     return *big_;
 }
 
+namespace {
+// q += the expansion's terms, exactly.
+void mpqAddTerms(mpq_t q, const std::vector<double>& terms) {
+    for (double t : terms) mpqAddProduct(q, t, 1);
+}
+}  // namespace
+
 void ExactSum::toBig() {
-    Big& b = ownBig();
-    for (double t : terms_) {
-        Mpq x(t);
-        mpq_add(b.q, b.q, x.q);
-    }
+    mpqAddTerms(ownBig().q, terms_);
     terms_.clear();
     compressedSize_ = 0;
 }
@@ -292,8 +290,7 @@ void ExactSum::toBig() {
 void ExactSum::growTerm(double b) {
     if (b == 0) return;
     if (!(std::fabs(b) <= kTermMax)) {
-        Mpq x(b);
-        mpq_add(ownBig().q, ownBig().q, x.q);
+        mpqAddProduct(ownBig().q, b, 1);
         return;
     }
     double q = b;
@@ -384,23 +381,15 @@ void ExactSum::add(const ExactSum& other, int sign) {
 
 int ExactSum::sign() const {
     if (!big_) return terms_.empty() ? 0 : (terms_.back() > 0 ? 1 : -1);
-    Mpq total;
-    mpq_set(total.q, big_->q);
-    for (double t : terms_) {
-        Mpq x(t);
-        mpq_add(total.q, total.q, x.q);
-    }
+    Big total(*big_);
+    mpqAddTerms(total.q, terms_);
     return mpq_sgn(total.q);
 }
 
 double ExactSum::approx() const {
     if (big_) {
-        Mpq total;
-        mpq_set(total.q, big_->q);
-        for (double t : terms_) {
-            Mpq x(t);
-            mpq_add(total.q, total.q, x.q);
-        }
+        Big total(*big_);
+        mpqAddTerms(total.q, terms_);
         return mpq_get_d(total.q);
     }
     double s = 0;

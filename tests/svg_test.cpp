@@ -58,12 +58,14 @@ void expectSaneSvg(const std::vector<Point>& pts, const std::string& what) {
          it != std::sregex_iterator(); ++it, ++strokes)
         EXPECT_GT(number((*it)[1], "stroke-width"), 0);
     EXPECT_EQ(strokes, 2);
-    // Every point drawn (M or L, x then y) lies in the viewBox.
-    std::regex point("[ML](\\S+) (\\S+)");
+    // Every point drawn (M or L of the rings' path, x then y; "x,y" of a triangle's
+    // polygon) lies in the viewBox.
+    std::regex point("[ML](\\S+) (\\S+)|([^\\s,\"]+),([^\\s,\"]+)");
     size_t drawn = 0;
     for (auto it = std::sregex_iterator(svg.begin(), svg.end(), point);
          it != std::sregex_iterator(); ++it, ++drawn) {
-        double x = number((*it)[1], "path x"), y = number((*it)[2], "path y");
+        const int at = (*it)[1].matched ? 1 : 3;
+        double x = number((*it)[at], "point x"), y = number((*it)[at + 1], "point y");
         EXPECT_TRUE(box[0] <= x && x <= box[0] + box[2]) << x << " outside the viewBox";
         EXPECT_TRUE(box[1] <= y && y <= box[1] + box[3]) << y << " outside the viewBox";
     }

@@ -10,7 +10,7 @@
 #include <optional>
 
 #include "offscreen.h"
-#include "output.h"  // cli/: atomic files
+#include "output.h"  // atomic files
 #include "quantize.h"
 #ifdef FLOOD_GIF
 #include "gif_writer.h"
@@ -63,7 +63,7 @@ struct ExportJob::Impl {
     // the head column as wide as the widest head, the band as tall as the tallest narration.
     float fontSize = 13, headWidth = 0, pad = 6;
 #ifdef FLOOD_GIF
-    std::unique_ptr<cli::Output> gifFile;
+    std::unique_ptr<Output> gifFile;
     std::unique_ptr<GifWriter> gif;
     std::unique_ptr<PaletteMap> map;
     std::vector<uint8_t> indices;
@@ -155,7 +155,7 @@ struct ExportJob::Impl {
     void still() {
         if (!s.png.empty() && render(startStep) && png(s.png)) written.push_back(s.png);
         if (!s.svg.empty() && status == Status::Ok) {
-            cli::Output out(s.svg);
+            Output out(s.svg);
             std::optional<CaptionLine> c;
             if (s.caption) c = captionOf(ui.model, startStep);
             writeSceneSvg(out.stream(), buildScene(ui.model, ui.sceneOptions), camera, s.width,
@@ -186,7 +186,7 @@ struct ExportJob::Impl {
     void encodeFrame() {
 #ifdef FLOOD_GIF
         if (!gif) {
-            gifFile = std::make_unique<cli::Output>(s.gif);
+            gifFile = std::make_unique<Output>(s.gif);
             map = std::make_unique<PaletteMap>(colours.build(256));
             int delay = std::max(2, int(std::lround(100 / std::clamp(s.fps, kMinFps, kMaxFps))));
             gif = std::make_unique<GifWriter>(gifFile->stream(), s.width, s.height, map->palette(),

@@ -5,6 +5,8 @@
 #pragma once
 #include <cstdint>
 #include <cstring>
+#include <iterator>
+#include <utility>
 
 #include "events.h"
 
@@ -23,24 +25,44 @@ struct Colours {
         chain, left, right, nextLeft, nextRight, jump, bridge, dormant, culprit, hover,
         vertexNumber, regular, bottom, sag, top, ceiling, ok, treePath;
 };
-constexpr Colours kDark{
-    {30, 32, 38, 255},    {72, 78, 70, 255},    {120, 126, 110, 255}, {40, 110, 190, 255},
-    {250, 200, 60, 255},  {20, 50, 90, 255},    {235, 235, 235, 255}, {120, 210, 255, 255},
-    {255, 120, 40, 255},  {255, 60, 200, 255},  {60, 230, 90, 255},   {255, 150, 230, 255},
-    {160, 255, 170, 255}, {200, 160, 255, 255}, {0, 215, 175, 255},   {255, 255, 255, 255},
-    {255, 40, 40, 255},   {255, 255, 255, 255}, {200, 200, 200, 255}, {170, 170, 170, 255},
-    {60, 200, 255, 255},  {40, 120, 255, 255},  {255, 170, 40, 255},  {255, 90, 60, 255},
-    {153, 230, 153, 255}, {255, 244, 140, 255}};
-// Light: paper-white ground, sand for dry land, mid-blue water, and every line, marker and
-// label dark enough to read on white (and on a washed-out projector).
-constexpr Colours kLight{
-    {250, 250, 246, 255}, {226, 218, 196, 255}, {196, 190, 168, 255}, {110, 170, 230, 255},
-    {245, 185, 30, 255},  {30, 60, 110, 255},   {25, 25, 30, 255},    {0, 80, 190, 255},
-    {215, 85, 0, 255},    {190, 0, 140, 255},   {0, 140, 45, 255},    {225, 90, 190, 255},
-    {40, 180, 80, 255},   {110, 50, 200, 255},  {0, 140, 120, 255},   {40, 40, 40, 255},
-    {215, 0, 0, 255},     {0, 0, 0, 255},       {60, 60, 60, 255},    {110, 110, 110, 255},
-    {0, 130, 200, 255},   {20, 70, 200, 255},   {200, 115, 0, 255},   {200, 45, 25, 255},
-    {20, 130, 40, 255},   {185, 95, 0, 255}};
+// Both themes in one table, a row per Colours field in its order: {dark, light}. Light:
+// paper-white ground, sand for dry land, mid-blue water, and every line, marker and label
+// dark enough to read on white (and on a washed-out projector).
+constexpr Rgba kThemes[][2] = {
+    {{30, 32, 38}, {250, 250, 246}},     // background
+    {{72, 78, 70}, {226, 218, 196}},     // polygonFill
+    {{120, 126, 110}, {196, 190, 168}},  // triangle
+    {{40, 110, 190}, {110, 170, 230}},   // water
+    {{250, 200, 60}, {245, 185, 30}},    // current
+    {{20, 50, 90}, {30, 60, 110}},       // triangleEdge
+    {{235, 235, 235}, {25, 25, 30}},     // boundary
+    {{120, 210, 255}, {0, 80, 190}},     // waterLevel
+    {{255, 120, 40}, {215, 85, 0}},      // chain
+    {{255, 60, 200}, {190, 0, 140}},     // left
+    {{60, 230, 90}, {0, 140, 45}},       // right
+    {{255, 150, 230}, {225, 90, 190}},   // nextLeft
+    {{160, 255, 170}, {40, 180, 80}},    // nextRight
+    {{200, 160, 255}, {110, 50, 200}},   // jump
+    {{0, 215, 175}, {0, 140, 120}},      // bridge
+    {{255, 255, 255}, {40, 40, 40}},     // dormant
+    {{255, 40, 40}, {215, 0, 0}},        // culprit
+    {{255, 255, 255}, {0, 0, 0}},        // hover
+    {{200, 200, 200}, {60, 60, 60}},     // vertexNumber
+    {{170, 170, 170}, {110, 110, 110}},  // regular
+    {{60, 200, 255}, {0, 130, 200}},     // bottom
+    {{40, 120, 255}, {20, 70, 200}},     // sag
+    {{255, 170, 40}, {200, 115, 0}},     // top
+    {{255, 90, 60}, {200, 45, 25}},      // ceiling
+    {{153, 230, 153}, {20, 130, 40}},    // ok
+    {{255, 244, 140}, {185, 95, 0}},     // treePath
+};
+static_assert(sizeof(Colours) == sizeof(kThemes) / 2, "a colour without its row");
+template <size_t... Field>
+constexpr Colours themeColumn(int theme, std::index_sequence<Field...>) {
+    return Colours{kThemes[Field][theme]...};
+}
+constexpr Colours kDark = themeColumn(0, std::make_index_sequence<std::size(kThemes)>{});
+constexpr Colours kLight = themeColumn(1, std::make_index_sequence<std::size(kThemes)>{});
 
 inline Rgba kBackground = kDark.background;
 inline Rgba kPolygonFill = kDark.polygonFill;  // dry land: the not yet flooded interior

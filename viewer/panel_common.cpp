@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "output.h"  // cli/
+#include "output.h"  // atomic files
 #include "panels.h"
 
 namespace flood::view {
@@ -74,7 +74,7 @@ std::string exportSvg(Ui& ui) {
     // Next to the input would write into the source tree; use the working directory.
     if (slash != std::string::npos) base = base.substr(slash + 1);
     std::string out = base + "-step" + std::to_string(ui.model.step()) + ".svg";
-    cli::Output f(out);  // atomic, as every export (export_job.h)
+    Output f(out);  // atomic, as every export (export_job.h)
     writeSceneSvg(f.stream(), buildScene(ui.model, ui.sceneOptions), ui.model.polygon(), 1000);
     std::string error;
     ui.message = f.commit(&error) == Status::Ok ? "wrote " + out : error;

@@ -9,7 +9,7 @@
 #include <cmath>
 #include <initializer_list>
 
-#include "output.h"   // cli/: atomic files
+#include "output.h"   // atomic files
 #include "shaders.h"  // generated from shaders/ by embed_shaders.cmake
 
 namespace flood::view {
@@ -403,7 +403,7 @@ bool writePng(const std::string& path, int width, int height, const std::vector<
         return false;
     }
     // Through the CLI's atomic output: a failed write leaves no half a PNG behind.
-    cli::Output out(path);
+    Output out(path);
     auto write = [](void* context, void* data, int size) {
         static_cast<std::ostream*>(context)->write(static_cast<const char*>(data), size);
     };

@@ -2,8 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <ostream>
+
+#include "svg.h"
 
 namespace flood::view {
 
@@ -190,27 +191,10 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
 }
 
 // ----------------------------------------------------------------------------------------
-static std::string svgColor(Rgba c) {
-    char buf[8];
-    std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
-    return buf;
-}
+static std::string svgColor(Rgba c) { return svg::hex(c.r, c.g, c.b); }
 
-// Text for an SVG element: the five characters XML reserves, escaped.
-static std::string xmlText(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-            case '<': out += "&lt;"; break;
-            case '>': out += "&gt;"; break;
-            case '&': out += "&amp;"; break;
-            case '"': out += "&quot;"; break;
-            case '\'': out += "&apos;"; break;
-            default: out += c;
-        }
-    }
-    return out;
-}
+// Picture coordinates to a hundredth of a pixel: short numbers, no visible difference.
+static double hundredths(double v) { return std::round(v * 100) / 100; }
 
 void writeSceneSvg(std::ostream& out, const Scene& sc, const Polygon& polygon, int width) {
     // Same fit as the canvas, onto a page whose aspect follows the polygon.
@@ -230,58 +214,50 @@ void writeSceneSvg(std::ostream& out, const Scene& sc, const Polygon& polygon, i
 
 void writeSceneSvg(std::ostream& out, const Scene& sc, const Camera& cam, int width, int height,
                    const CaptionLine* caption) {
-    auto P = [&](Point p) {
+    auto place = [&cam](Point p) {
         Vec2 s = cam.toScreen(p);
-        char buf[64];
-        std::snprintf(buf, sizeof buf, "%.2f,%.2f", s.x, s.y);
-        return std::string(buf);
+        return Point{hundredths(s.x), hundredths(s.y)};
     };
-    const Rect& area = cam.viewport();
-    out << "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"" << width << "\" height=\"" << height
-        << "\" viewBox=\"0 0 " << width << " " << height << "\">\n";
+    svg::Document doc(out, {0, 0, double(width), double(height)}, width, height, place);
     // The canvas's rectangle clips the scene as the canvas does; a caption lies below it.
-    out << "<clipPath id=\"canvas\"><rect x=\"" << area.x << "\" y=\"" << area.y << "\" width=\""
-        << area.w << "\" height=\"" << area.h << "\"/></clipPath>\n";
-    out << "<rect width=\"100%\" height=\"100%\" fill=\"" << svgColor(palette::kBackground)
-        << "\"/>\n<g clip-path=\"url(#canvas)\">\n<path fill-rule=\"evenodd\" fill=\""
-        << svgColor(palette::kPolygonFill) << "\" d=\"";
-    for (const auto& ring : sc.rings) {
-        for (size_t i = 0; i < ring.size(); ++i) out << (i ? " L" : "M") << P(ring[i]);
-        out << " Z ";
-    }
-    out << "\"/>\n";
+    const Rect& area = cam.viewport();
+    doc.clip("canvas", {area.x, area.y, area.w, area.h});
+    doc.background(svgColor(palette::kBackground));
+    doc.beginGroup({}, "canvas");
+    svg::Style land;
+    land.fill = svgColor(palette::kPolygonFill), land.evenOdd = true;
+    std::vector<svg::RingView> rings;
+    for (const auto& ring : sc.rings) rings.push_back({ring.data(), ring.size()});
+    doc.rings(land, rings);
     // One element per triangle, classed as the canvas colours it (water, or cut just now).
     for (const auto* tris : {&sc.water, &sc.current})
-        for (const auto& t : *tris)
-            out << "<polygon class=\"" << (tris == &sc.water ? "water" : "current")
-                << "\" points=\"" << P(t.a) << " " << P(t.b) << " " << P(t.c) << "\" fill=\""
-                << svgColor(t.color) << "\"/>\n";
-    for (const auto& l : sc.lines)
-        out << "<line x1=\"" << cam.toScreen(l.a).x << "\" y1=\"" << cam.toScreen(l.a).y
-            << "\" x2=\"" << cam.toScreen(l.b).x << "\" y2=\"" << cam.toScreen(l.b).y
-            << "\" stroke=\"" << svgColor(l.color) << "\" stroke-width=\"" << l.width << "\"/>\n";
+        for (const auto& t : *tris) {
+            svg::Style s;
+            s.className = tris == &sc.water ? "water" : "current", s.fill = svgColor(t.color);
+            doc.triangle(s, t.a, t.b, t.c);
+        }
+    for (const auto& l : sc.lines) {
+        svg::Style s;
+        s.stroke = svgColor(l.color), s.strokeWidth = hundredths(l.width);
+        doc.line(s, l.a, l.b);
+    }
     for (const auto& m : sc.markers) {
-        Vec2 c = cam.toScreen(m.p);
-        bool ring = m.shape == Scene::Shape::Ring;
-        out << "<circle cx=\"" << c.x << "\" cy=\"" << c.y << "\" r=\"" << m.radius << "\" "
-            << (ring ? "fill=\"none\" stroke=\"" : "fill=\"") << svgColor(m.color) << "\"/>\n";
+        svg::Style s;
+        if (m.shape == Scene::Shape::Ring) s.fill = "none", s.stroke = svgColor(m.color);
+        else s.fill = svgColor(m.color);
+        doc.circle(s, m.p, hundredths(m.radius));
     }
     for (const auto& l : sc.labels) {
-        Vec2 c = cam.toScreen(l.p);
         if (l.worldArea > 0 && l.worldArea * cam.scale() * cam.scale() < l.minArea) continue;
-        out << "<text x=\"" << c.x + l.dx << "\" y=\"" << c.y + l.dy + 10
-            << "\" font-family=\"sans-serif\" font-size=\"11\" fill=\"" << svgColor(l.color)
-            << "\">" << xmlText(l.text) << "</text>\n";
+        Point c = doc.place(l.p);
+        doc.text({hundredths(c.x + l.dx), hundredths(c.y + l.dy + 10)}, 11,
+                 {{l.text, svgColor(l.color)}});
     }
-    out << "</g>\n";
-    if (caption) {
-        double y = area.y + area.h + 18;
-        out << "<text x=\"8\" y=\"" << y << "\" font-family=\"sans-serif\" font-size=\"13\">"
-            << "<tspan font-weight=\"bold\" fill=\"" << svgColor(caption->headColor) << "\">"
-            << xmlText(caption->head) << "</tspan><tspan fill=\"" << svgColor(palette::kBoundary)
-            << "\"> " << xmlText(caption->text) << "</tspan></text>\n";
-    }
-    out << "</svg>\n";
+    doc.endGroup();
+    if (caption)
+        doc.text({8, area.y + area.h + 18}, 13,
+                 {{caption->head, svgColor(caption->headColor), true},
+                  {" " + caption->text, svgColor(palette::kBoundary)}});
 }
 
 }  // namespace flood::view

@@ -13,7 +13,7 @@
 #include <streambuf>
 #include <vector>
 
-namespace flood::cli {
+namespace flood {
 namespace {
 
 // A stream buffer over a file descriptor that remembers the errno of the first failed write;
@@ -170,4 +170,4 @@ int finishStdout(int code) {
     return code != 0 ? code : int(Status::WriteFailed);
 }
 
-}  // namespace flood::cli
+}  // namespace flood

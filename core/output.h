@@ -7,7 +7,7 @@
 
 #include "status.h"
 
-namespace flood::cli {
+namespace flood {
 
 // One output of a command: `path`, or stdout for "-". A regular file (existing or new) is
 // written to a temporary file beside it (same directory, so the rename cannot cross file
@@ -43,4 +43,4 @@ void takeOverStdout();
 // write standard output: REASON" and returns `code`, or WriteFailed when `code` was 0.
 int finishStdout(int code);
 
-}  // namespace flood::cli
+}  // namespace flood

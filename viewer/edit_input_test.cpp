@@ -37,9 +37,8 @@ protected:
             makePolygon({{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{4, 4}, {4, 6}, {6, 6}, {6, 4}}}});
         model.openPolygon(p, "square.json", validate(p, "square.json"));
         ui.layout.canvas = {100, 0, 1000, 1000};
-        model.camera.fit(model.polygon(),
-                         ui.layout.canvas);  // 88 px per unit: clicks round to 0.01
-        ui.edit.editor.onReady = nullptr;    // no event loop to wake
+        model.fitCamera(ui.layout.canvas);  // 88 px per unit: clicks round to 0.01
+        ui.edit.editor.onReady = nullptr;   // no event loop to wake
         ui.edit.on = true;
     }
     void TearDown() override {
@@ -51,7 +50,7 @@ protected:
     void frame(Point world, bool down, std::initializer_list<int> keys = {}, bool shift = false,
                bool ctrl = false) {
         ImGuiIO& io = ImGui::GetIO();
-        Vec2 s = model.camera.toScreen(world);
+        Vec2 s = model.camera().toScreen(world);
         io.MousePos = ImVec2(float(s.x), float(s.y));
         io.MouseDown[0] = down;
         io.KeyShift = shift;

@@ -512,7 +512,7 @@ int main(int argc, char** argv) {
     uint64_t titled = model.generation();
     double lastTime = platform::time();
     for (int frame = 0; !platform::shouldClose(); ++frame) {
-        if (shot || model.playing) platform::pollEvents();
+        if (shot || model.playing()) platform::pollEvents();
         else platform::waitEvents(0.25);  // idle: wake on input, or 4 times a second
         for (const auto& path : platform::takeDroppedPaths()) {
             model.open(path);
@@ -561,9 +561,9 @@ int main(int argc, char** argv) {
         const Rect& c = ui.layout.canvas;
         bool moved =
             c.x != canvasWas.x || c.y != canvasWas.y || c.w != canvasWas.w || c.h != canvasWas.h;
-        if (frame > 0 && frame < 3 && moved && !model.errorView) model.needsFit = true;
+        if (frame > 0 && frame < 3 && moved && !model.errorView()) model.requestFit();
         if (frame == 0 && args.showError) {
-            model.camera.setViewport(ui.layout.canvas);
+            model.setViewport(ui.layout.canvas);
             model.showError();
             if (!args.steps.empty()) model.seek(args.steps.front());
         }
@@ -573,7 +573,7 @@ int main(int argc, char** argv) {
         const int benchPhase = frame < 3 ? 0 : (frame - 3) / BenchStats::kFrames + 1;
         if (shot && size_t(frame) < args.steps.size()) model.seek(args.steps[size_t(frame)]);
         if (args.bench && benchPhase == 1) model.seek(bench.nextStep());
-        if (args.bench && benchPhase == 2) model.camera.pan(frame % 2 ? 1 : -1, 0);
+        if (args.bench && benchPhase == 2) model.pan(frame % 2 ? 1 : -1, 0);
         if (!shot) handleShortcuts(ui);
         if (!shot || !args.presses.empty()) handlePresenterKeys(ui);
         drawCanvas(ui);

@@ -1,7 +1,8 @@
 // The viewer's panels, one file each (panel_*.cpp). They read the Model, change it only through
 // its methods, and share the small UI state below. ImGui lives here, never in the model.
-// A new panel: write panel_<name>.cpp with draw<Name>(Ui&), declare it below, call it from the
-// frame in main.cpp, and give it a rectangle of computeLayout() (model.cpp) or let it float.
+// A new panel: write panel_<name>.cpp with draw<Name>(Ui&), declare it below, call it from
+// drawFrame in main.cpp, and tile it at a rectangle of computeLayout() (model.cpp) with
+// beginTiled, or let it float (beginFloating). What it keeps between frames lives in Ui.
 #pragma once
 #include <array>
 #include <memory>

@@ -7,6 +7,7 @@
 #include "flood_api.h"
 #include "generate.h"
 #include "panels.h"
+#include "windowless_imgui.h"
 
 using namespace flood;
 using namespace flood::view;
@@ -16,14 +17,7 @@ namespace {
 class PanelState : public ::testing::Test {
 protected:
     void SetUp() override {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(1200, 800);
-        io.DeltaTime = 1.f / 60;
-        unsigned char* pixels;
-        int w, h;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // the atlas NewFrame needs
+        createWindowlessImGui(1200, 800);
         big.openPolygon(generate("circle-holes", 7, 1500), "circle-holes", {});
         Polygon p = makePolygon({{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}}});
         small.openPolygon(p, "square", validate(p, "square"));

@@ -223,13 +223,13 @@ TEST(ViewerEdit, FloodedAgainAtTheSameStepClampedToTheNewTrace) {
     Editor e(m);
     const uint32_t mid = m.steps() / 2;
     m.seek(mid);
-    m.camera.centerOn({123, 456});
+    m.centerOn({123, 456});
     const Point v0 = m.polygon().vertices[0];
     ASSERT_TRUE(e.moveVertex(0, {v0.x, v0.y}));  // the same polygon, flooded again
     EXPECT_EQ(m.step(), mid);
     EXPECT_EQ(m.state().step, mid);
-    EXPECT_FALSE(m.needsFit) << "the camera stays";
-    EXPECT_EQ(m.camera.center().x, 123);
+    EXPECT_FALSE(m.fitPending()) << "the camera stays";
+    EXPECT_EQ(m.camera().center().x, 123);
 
     // A shorter trace: the step is clamped to its end.
     m.last();

@@ -51,7 +51,7 @@ TEST(GorgeFocus, OutsideOfIsTheAreaMinusTheOutline) {
 TEST(GorgeFocus, TheOutlineRunsNextLeftLeftChainRightNextRight) {
     Model m;
     m.openPolygon(generate("circle-holes", 7, 1500), "circle-holes", {});
-    m.camera.fit(m.polygon(), {0, 0, 800, 600});
+    m.fitCamera({0, 0, 800, 600});
     size_t notBoxes = 0, checked = 0;
     for (uint32_t s = 1; s <= m.steps(); s += 7) {
         m.seek(s);
@@ -75,7 +75,7 @@ TEST(GorgeFocus, TheOutlineRunsNextLeftLeftChainRightNextRight) {
         // Somewhere in the outline's box but outside the outline is dimmed (a box focus would
         // leave it lit), and the outline's inside is not.
         std::vector<Vec2> screen;
-        for (Point p : outline) screen.push_back(m.camera.toScreen(p));
+        for (Point p : outline) screen.push_back(m.camera().toScreen(p));
         Rect area{0, 0, 800, 600};
         std::vector<Rect> dim = outsideOf(screen, area);
         double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;

@@ -14,6 +14,7 @@
 #include "generate.h"
 #include "gorge_focus.h"
 #include "io.h"
+#include "key_queue.h"
 #include "model.h"
 #include "scene.h"
 #include "test_support.h"
@@ -114,8 +115,9 @@ TEST(ViewerModel, BreakpointsStopAtTheFirstMatchingEvent) {
         m.open(f);
         const auto& ev = m.trace().events;
         for (int a = 1; a < int(Action::Count); ++a) {
-            m.breakpoints = {};
-            m.breakpoints.actions[size_t(a)] = true;
+            Breakpoints b;
+            b.actions[size_t(a)] = true;
+            m.setBreakpoints(b);
             m.first();
             uint32_t expected = 0;
             for (uint32_t i = 0; i < ev.size() && !expected; ++i)
@@ -134,8 +136,9 @@ TEST(ViewerModel, BreakpointsStopAtTheFirstMatchingEvent) {
         // A triangle breakpoint stops where that triangle is cut.
         if (!m.trace().triangles.empty()) {
             uint32_t t = uint32_t(m.trace().triangles.size() / 2);
-            m.breakpoints = {};
-            m.breakpoints.triangle = t;
+            Breakpoints b;
+            b.triangle = t;
+            m.setBreakpoints(b);
             m.first();
             ASSERT_TRUE(m.runToBreakpoint(+1)) << f;
             EXPECT_EQ(m.step(), m.triangleStep(t)) << f;
@@ -147,8 +150,9 @@ TEST(ViewerModel, BreakpointsStopAtTheFirstMatchingEvent) {
         if (m.steps() > 1) {
             Index v = ev.back().before.left;
             if (v != kNone) {
-                m.breakpoints = {};
-                m.breakpoints.vertex = v;
+                Breakpoints b;
+                b.vertex = v;
+                m.setBreakpoints(b);
                 m.first();
                 ASSERT_TRUE(m.runToBreakpoint(+1)) << f;
                 const Fingers& after = m.currentEvent()->after;
@@ -207,17 +211,19 @@ TEST(ViewerModel, PlaybackStopsAtBreakpointAndEnd) {
     Model m;
     m.openPolygon(generate("comb", 3, 60), "comb", {});
     m.first();
-    m.speed = 1000;
+    m.setSpeed(1000);
     m.togglePlay();
     m.advance(10);  // far more than enough steps
-    EXPECT_FALSE(m.playing);
+    EXPECT_FALSE(m.playing());
     EXPECT_EQ(m.step(), m.steps());
 
-    m.breakpoints.actions[size_t(Action::Bridge)] = true;
+    Breakpoints bridges;
+    bridges.actions[size_t(Action::Bridge)] = true;
+    m.setBreakpoints(bridges);
     m.first();
     m.togglePlay();
     m.advance(10);
-    EXPECT_FALSE(m.playing);
+    EXPECT_FALSE(m.playing());
     ASSERT_NE(m.currentEvent(), nullptr);
     EXPECT_EQ(m.currentEvent()->action, Action::Bridge) << "comb has sags: it must bridge";
 }
@@ -482,7 +488,7 @@ TEST(ViewerVerdict, CheckerRejectionIsShownAndBlamesTheTriangle) {
     EXPECT_NE(unchecked.verdict().find("triangle-count"), std::string::npos) << unchecked.verdict();
     EXPECT_EQ(unchecked.errorCulprits().rings, std::vector<uint32_t>{0});
     EXPECT_EQ(unchecked.exitCode(), 6);
-    unchecked.camera.setViewport({0, 0, 800, 600});
+    unchecked.setViewport({0, 0, 800, 600});
     EXPECT_TRUE(unchecked.showError());
 }
 
@@ -518,11 +524,11 @@ TEST(ViewerCulprits, ValidationBlamesWhatItsMessageNames) {
         EXPECT_EQ(m.offenders().empty(), false);
         for (uint32_t v : c.vertices)
             EXPECT_TRUE(std::binary_search(m.offenders().begin(), m.offenders().end(), v));
-        m.camera.setViewport({0, 0, 800, 600});
+        m.setViewport({0, 0, 800, 600});
         EXPECT_TRUE(m.showError()) << f;
-        EXPECT_TRUE(m.errorView);
+        EXPECT_TRUE(m.errorView());
         for (uint32_t v : c.vertices)
-            EXPECT_TRUE(m.camera.viewport().contains(m.camera.toScreen(P.vertices[v]))) << f;
+            EXPECT_TRUE(m.camera().viewport().contains(m.camera().toScreen(P.vertices[v]))) << f;
     }
 }
 
@@ -570,11 +576,11 @@ TEST(ViewerCulprits, CrossingEdgesGiveTheCrossingPoint) {
 TEST(ViewerFind, EachQueryKindCentresAndSeeks) {
     Model m;
     m.open(std::string(FLOOD_SOURCE_DIR) + "/polygons/paper-figure-7.json");
-    m.camera.fit(m.polygon(), {0, 0, 800, 600});
+    m.fitCamera({0, 0, 800, 600});
     const Polygon& P = m.polygon();
     Vec2 mid{400, 300};
     auto near = [&](Point p) {
-        Vec2 s = m.camera.toScreen(p);
+        Vec2 s = m.camera().toScreen(p);
         return std::abs(s.x - mid.x) < 1e-6 && std::abs(s.y - mid.y) < 1e-6;
     };
     FindTarget f = m.find("v5");
@@ -603,7 +609,7 @@ TEST(ViewerFind, EachQueryKindCentresAndSeeks) {
     EXPECT_EQ(m.step(), 7u) << "a ring does not seek";
     for (Index i = 0; i < P.rings[0].count; ++i)
         EXPECT_TRUE(
-            m.camera.viewport().contains(m.camera.toScreen(P.vertices[P.rings[0].first + i])));
+            m.camera().viewport().contains(m.camera().toScreen(P.vertices[P.rings[0].first + i])));
 }
 
 TEST(ViewerFind, BadQueriesSayWhy) {
@@ -1265,6 +1271,86 @@ TEST(ViewerDirection, SummaryCountsTheRun) {
     EXPECT_EQ(s.actions[size_t(Action::Bridge)], 1u);
     EXPECT_EQ(s.actions[size_t(Action::Start)], 1u);
     EXPECT_EQ(s.triangles, 8u);
+}
+
+// The timeline's breakpoint ticks are the model's: found again when the breakpoints change
+// and when another trace is opened, never left over from the previous one.
+TEST(ViewerModel, BreakpointStepsFollowTheBreakpointsAndTheTrace) {
+    auto stepsOf = [](const Model& m, Action a) {
+        std::vector<uint32_t> steps;
+        for (const Event& e : m.trace().events)
+            if (e.action == a) steps.push_back(e.step + 1);
+        return steps;
+    };
+    Model m;
+    m.openPolygon(generate("comb", 3, 60), "comb", {});
+    EXPECT_TRUE(m.breakpointSteps().empty()) << "no breakpoint enabled";
+    Breakpoints b;
+    b.actions[size_t(Action::Bridge)] = true;
+    m.setBreakpoints(b);
+    ASSERT_FALSE(stepsOf(m, Action::Bridge).empty()) << "comb has sags: it must bridge";
+    EXPECT_EQ(m.breakpointSteps(), stepsOf(m, Action::Bridge));
+    m.openPolygon(generate("circle-holes", 3, 40), "circle-holes", {});
+    EXPECT_TRUE(m.breakpoints().actions[size_t(Action::Bridge)]) << "breakpoints outlive an open";
+    EXPECT_EQ(m.breakpointSteps(), stepsOf(m, Action::Bridge)) << "the new trace's steps";
+    m.setBreakpoints({});
+    EXPECT_TRUE(m.breakpointSteps().empty());
+}
+
+// The state machine's edges: how often each action follows each other, counted per open.
+TEST(ViewerModel, TransitionsCountConsecutiveEvents) {
+    Model m;
+    m.openPolygon(generate("comb", 3, 60), "comb", {});
+    const auto& ev = m.trace().events;
+    ASSERT_GT(ev.size(), 2u);
+    uint64_t total = 0;
+    for (const auto& row : m.transitions())
+        for (uint32_t n : row) total += n;
+    EXPECT_EQ(total, ev.size() - 1);
+    uint32_t raiseThenBridge = 0;
+    for (size_t i = 1; i < ev.size(); ++i)
+        raiseThenBridge += ev[i - 1].action == Action::Raise && ev[i].action == Action::Bridge;
+    EXPECT_EQ(m.transitions()[size_t(Action::Raise)][size_t(Action::Bridge)], raiseThenBridge);
+
+    m.openPolygon(squareWithHole(false, false), "square", {});
+    total = 0;
+    for (const auto& row : m.transitions())
+        for (uint32_t n : row) total += n;
+    EXPECT_EQ(total, m.trace().events.size() - 1) << "counted again for the new trace";
+}
+
+// The camera moves only through the model's commands: an open leaves a fit pending, the fit
+// clears it and ends the error view, the Fit button asks again.
+TEST(ViewerModel, CameraFitIsACommand) {
+    Model m;
+    m.openPolygon(generate("comb", 3, 60), "comb", {});
+    EXPECT_TRUE(m.fitPending());
+    const Rect canvas{0, 0, 800, 600};
+    m.fitCamera(canvas);
+    EXPECT_FALSE(m.fitPending());
+    for (Point p : m.polygon().vertices) EXPECT_TRUE(canvas.contains(m.camera().toScreen(p)));
+    const Point c = m.camera().center();
+    m.pan(10, 0);
+    EXPECT_LT(m.camera().center().x, c.x) << "dragging right shows what is left of the centre";
+    m.requestFit();
+    EXPECT_TRUE(m.fitPending());
+}
+
+// Playing from the end starts again from step 0; pausing keeps the step.
+TEST(ViewerModel, SetPlayingRewindsAtTheEnd) {
+    Model m;
+    m.openPolygon(generate("comb", 3, 60), "comb", {});
+    m.last();
+    m.setPlaying(true);
+    EXPECT_TRUE(m.playing());
+    EXPECT_EQ(m.step(), 0u);
+    m.setSpeed(2);
+    m.advance(1.0);
+    EXPECT_EQ(m.step(), 2u);
+    m.setPlaying(false);
+    m.advance(1.0);
+    EXPECT_EQ(m.step(), 2u);
+    EXPECT_FALSE(m.playing());
 }
 
 #endif

@@ -2,7 +2,8 @@
 // Two parts with different lifetimes:
 // - CanvasGeometry, built once per opened trace: every vertex, every triangle in flood order
 //   (the triangles cut by step s are the prefix [0, triangleCount)), ring fans for the fill,
-//   boundary edges, every bridge in event order (again a prefix per step), vertex classes.
+//   boundary edges, every bridge in event order (again a prefix per step), vertex classes
+//   (its layout, which the renderer reads: canvas_vertices.h).
 // - CanvasOverlay, rebuilt only when the step (or a display option) changes: what buildScene
 //   draws for that step alone (chain, dormant gorges, jumps, water level, fingers, culprits).
 // Positions are world coordinates minus `origin`, in float: the camera is a shader uniform,
@@ -11,40 +12,13 @@
 #include <cstdint>
 #include <vector>
 
+#include "canvas_vertices.h"
 #include "model.h"
 #include "palette.h"
 #include "scene.h"
 
 namespace flood::view {
 
-struct SegmentVertex {  // one instance of the thick-line shader
-    float ax, ay, bx, by;
-    Rgba color;
-    float width;  // screen pixels before UI scale
-};
-
-struct MarkerVertex {  // one point sprite
-    float x, y;
-    Rgba color;
-    float radius;  // screen pixels before UI scale
-    float shape;   // Scene::Shape
-};
-
-struct CanvasGeometry {
-    Point origin;                     // subtracted from every position
-    std::vector<float> positions;     // x, y per polygon vertex
-    std::vector<uint32_t> triangles;  // 3 indices per triangle, flood order
-    std::vector<uint32_t> edges;      // 6 per triangle: its edges as GL_LINES
-    std::vector<uint32_t> fans;       // 3 per fan triangle of each ring (even-odd fill)
-    float bbox[4] = {0, 0, 0, 0};     // x0, y0, x1, y1 of the rings
-    std::vector<SegmentVertex> boundary;
-    std::vector<uint32_t> boundaryEdges;  // 2 per edge: the boundary as thin GL_LINES
-    std::vector<SegmentVertex> bridges;   // every Bridge, in event order
-    std::vector<MarkerVertex> classes;    // bottoms, sags, tops and ceilings
-    std::vector<MarkerVertex> regular;    // the other vertices (most of a big polygon)
-    bool dryIsUncut = false;              // the triangles tile the polygon: the untriangulated rest
-                                          // is their suffix, no stencil fill needed
-};
 CanvasGeometry buildCanvasGeometry(const Model& model);
 
 struct CanvasOverlay {

@@ -58,7 +58,7 @@ void Model::adoptEdit(EditedRun run, bool deferScan) {
     // What adopt() resets for an open stays as the user left it.
     feature_ = feature;
     origin_ = origin, originName_ = originName, originFeature_ = originFeature;
-    needsFit = false;
+    needsFit_ = false;
     seek(at);
     if (tl.span == 0 || steps() == oldSteps) timeline = tl;
     landingPending_ = false;
@@ -498,7 +498,7 @@ Index Editor::pickVertex(Vec2 screen, double radiusPx) {
     Index best = kNone;
     double bestD = radiusPx * radiusPx;
     for (Index i = 0; i < polygon_.vertices.size(); ++i) {
-        Vec2 s = model_.camera.toScreen(polygon_.vertices[i]);
+        Vec2 s = model_.camera().toScreen(polygon_.vertices[i]);
         double d = (s.x - screen.x) * (s.x - screen.x) + (s.y - screen.y) * (s.y - screen.y);
         if (d <= bestD) bestD = d, best = i;
     }
@@ -512,8 +512,8 @@ Index Editor::pickEdge(Vec2 screen, double radiusPx, Point* onEdge) {
     for (const Ring& g : polygon_.rings) {
         if (g.count < 2) continue;
         for (Index i = 0; i < g.count; ++i) {
-            Vec2 a = model_.camera.toScreen(polygon_.vertices[g.first + i]);
-            Vec2 b = model_.camera.toScreen(polygon_.vertices[g.first + (i + 1) % g.count]);
+            Vec2 a = model_.camera().toScreen(polygon_.vertices[g.first + i]);
+            Vec2 b = model_.camera().toScreen(polygon_.vertices[g.first + (i + 1) % g.count]);
             double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
             double t = len2 > 0 ? std::clamp(((screen.x - a.x) * dx + (screen.y - a.y) * dy) / len2,
                                              0.0, 1.0)

@@ -9,6 +9,7 @@
 
 #include "flood_api.h"
 #include "panels.h"
+#include "windowless_imgui.h"
 
 using namespace flood;
 using namespace flood::view;
@@ -21,25 +22,17 @@ constexpr int kDelete = 261, kEnter = 257, kEscape = 256;
 class EditInput : public ::testing::Test {
 protected:
     void SetUp() override {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.IniFilename = nullptr;
-        io.DisplaySize = ImVec2(1200, 1000);
-        io.DeltaTime = 1.f / 60;
+        ImGuiIO& io = createWindowlessImGui(1200, 1000);
         io.KeyMap[ImGuiKey_Delete] = kDelete;
         io.KeyMap[ImGuiKey_Enter] = kEnter;
         io.KeyMap[ImGuiKey_Escape] = kEscape;
         io.KeyMap[ImGuiKey_Backspace] = 259;
-        unsigned char* pixels;
-        int w, h;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &w, &h);  // the atlas NewFrame needs
         Polygon p =
             makePolygon({{{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{4, 4}, {4, 6}, {6, 6}, {6, 4}}}});
         model.openPolygon(p, "square.json", validate(p, "square.json"));
         ui.layout.canvas = {100, 0, 1000, 1000};
-        model.camera.fit(model.polygon(),
-                         ui.layout.canvas);  // 88 px per unit: clicks round to 0.01
-        ui.edit.editor.onReady = nullptr;    // no event loop to wake
+        model.fitCamera(ui.layout.canvas);  // 88 px per unit: clicks round to 0.01
+        ui.edit.editor.onReady = nullptr;   // no event loop to wake
         ui.edit.on = true;
     }
     void TearDown() override {
@@ -51,7 +44,7 @@ protected:
     void frame(Point world, bool down, std::initializer_list<int> keys = {}, bool shift = false,
                bool ctrl = false) {
         ImGuiIO& io = ImGui::GetIO();
-        Vec2 s = model.camera.toScreen(world);
+        Vec2 s = model.camera().toScreen(world);
         io.MousePos = ImVec2(float(s.x), float(s.y));
         io.MouseDown[0] = down;
         io.KeyShift = shift;

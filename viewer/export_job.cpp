@@ -75,7 +75,7 @@ struct ExportJob::Impl {
         if (s.animated()) steps = exportSteps(s.first, s.last, s.every, m.steps());
         area = {0, 0, double(s.width), double(s.height)};
         if (s.caption) layoutCaption();
-        camera = exportCamera(m.camera, area);
+        camera = exportCamera(m.camera(), area);
     }
 
     ImFont* font() const { return ImGui::GetIO().Fonts->Fonts[0]; }
@@ -110,9 +110,9 @@ struct ExportJob::Impl {
     bool render(uint32_t step) {
         Model& m = ui.model;
         if (m.step() != step) m.seek(step);
-        Camera keep = m.camera;
+        Camera keep = m.camera();
         Rect keepCanvas = ui.layout.canvas;
-        m.camera = camera;
+        m.setCamera(camera);
         ui.layout.canvas = area;
         ImDrawList dl(ImGui::GetDrawListSharedData());
         dl._ResetForNewFrame();
@@ -126,7 +126,7 @@ struct ExportJob::Impl {
             dl.AddText(font(), fontSize, ImVec2(textX(), y), toImU32(palette::kBoundary),
                        c.text.c_str(), nullptr, wrapWidth());
         }
-        m.camera = keep;
+        m.setCamera(keep);
         ui.layout.canvas = keepCanvas;
         ui.canvas.thinKey = {};  // the markers were thinned for the export's camera
         std::string error;

@@ -108,8 +108,8 @@ size_t panelPixels(const Image& img) {
 // The model as the exporting viewer sees it: the hidden 1280x800 window's canvas, fitted.
 Camera exportView(Model& m, const Rect& area) {
     Layout layout = computeLayout(1280, 800, 1);
-    m.camera.fit(m.polygon(), layout.canvas);
-    return exportCamera(m.camera, area);
+    m.fitCamera(layout.canvas);
+    return exportCamera(m.camera(), area);
 }
 
 // A step with earlier (not emphasised) flooded triangles.

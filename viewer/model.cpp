@@ -356,7 +356,7 @@ const std::vector<PredicateRow>& Model::inspection() {
 }
 
 // ========================================================================================
-// [SECTION] Timeline and keys
+// [SECTION] Timeline
 uint32_t TimelineView::eventAt(double x, double width, uint32_t events) const {
     if (events == 0) return 0;
     double i = std::floor(first + x / perEvent(width, events));  // the mark x falls in
@@ -381,16 +381,6 @@ void TimelineView::pan(double dx, double width, uint32_t events) {
 void TimelineView::clamp(uint32_t events) {
     if (span >= double(events)) span = 0;  // all of it: follow the log's length
     first = std::clamp(first, 0.0, std::max(0.0, double(events) - visible(events)));
-}
-
-void KeyQueue::push(int key, int action, bool shift, bool ctrl) {
-    if (action == 1 || action == 2) presses_.push_back({key, shift, ctrl, action == 2});
-}
-
-std::vector<KeyPress> KeyQueue::take() {
-    std::vector<KeyPress> out;
-    out.swap(presses_);
-    return out;
 }
 
 // ========================================================================================
@@ -471,7 +461,7 @@ void Model::remember(const std::string& path) {
 }
 
 void Model::openTrace(Trace trace, const std::string& name) {
-    playing = false;
+    playing_ = false;
     ++generation_;
     path_ = name;
     openDiag_ = {};
@@ -485,7 +475,7 @@ void Model::openTrace(Trace trace, const std::string& name) {
 
 void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic input,
                         std::vector<std::string> warnings) {
-    playing = false;
+    playing_ = false;
     ++generation_;
     path_ = name;
     openDiag_ = input.status == Status::Malformed ? input : Diagnostic{};
@@ -505,7 +495,7 @@ void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic inp
 }
 
 void Model::adopt(std::unique_ptr<Trace> trace) {
-    errorView = false;
+    errorView_ = false;
     feature_ = kNoFeature;  // openFeature / openShrunk set these again after adopting
     origin_.clear();
     // The replay points into the trace: replace both together, replay first.
@@ -522,10 +512,12 @@ void Model::adopt(std::unique_ptr<Trace> trace) {
     computeVerdictLines();  // runs the exact checker: once, not every frame
     computeOffenders();
     verdict_ = computeVerdict();
-    needsFit = true;
+    needsFit_ = true;
     step_ = 0;
     replay_->seek(0);
     timeline = {};
+    findBreakpointSteps();
+    countTransitions();
     forbiddenStep_ = 0;
     // Land where the trouble is: the forbidden event, so its state is on screen.
     for (const Event& e : trace_->events)
@@ -743,11 +735,11 @@ bool Model::showError() {
     if (!(x0 <= x1)) return false;
     // A single point is shown with a neighbourhood of 1/50 of the polygon.
     Camera whole;
-    whole.fit(trace_->polygon, camera.viewport());
-    double side = 0.02 * std::min(camera.viewport().w, camera.viewport().h) / whole.scale();
-    camera.fitBox(x0, y0, x1, y1, camera.viewport(), side);
-    errorView = true;
-    needsFit = false;
+    whole.fit(trace_->polygon, camera_.viewport());
+    double side = 0.02 * std::min(camera_.viewport().w, camera_.viewport().h) / whole.scale();
+    camera_.fitBox(x0, y0, x1, y1, camera_.viewport(), side);
+    errorView_ = true;
+    needsFit_ = false;
     if (firstErrorStep_ != kNone) seek(firstErrorStep_);
     return true;
 }
@@ -855,9 +847,9 @@ FindTarget Model::find(const std::string& query) {
     if (!f.ok) return f;
     if (f.seekTo != kNone) seek(f.seekTo);
     if (f.kind == 'r' && (f.x1 > f.x0 || f.y1 > f.y0))
-        camera.fitBox(f.x0, f.y0, f.x1, f.y1, camera.viewport());
-    else if (f.hasCenter) camera.centerOn(f.center);
-    if (f.hasCenter) needsFit = false;
+        camera_.fitBox(f.x0, f.y0, f.x1, f.y1, camera_.viewport());
+    else if (f.hasCenter) camera_.centerOn(f.center);
+    if (f.hasCenter) needsFit_ = false;
     return f;
 }
 
@@ -886,35 +878,61 @@ bool Model::runToBreakpoint(int direction) {
     const auto& ev = trace_->events;
     if (direction > 0) {
         for (uint32_t s = step_ + 1; s <= ev.size(); ++s)
-            if (hits(breakpoints, ev[s - 1])) return seek(s), true;
+            if (hits(breakpoints_, ev[s - 1])) return seek(s), true;
         last();
     } else {
         for (uint32_t s = step_; s-- > 1;)
-            if (hits(breakpoints, ev[s - 1])) return seek(s), true;
+            if (hits(breakpoints_, ev[s - 1])) return seek(s), true;
         first();
     }
     return false;
 }
 
-void Model::togglePlay() {
-    playing = !playing;
+void Model::setPlaying(bool on) {
+    if (on == playing_) return;
+    playing_ = on;
     playClock_ = 0;
-    if (playing && step_ >= steps()) seek(0);  // play again from the start
+    if (playing_ && step_ >= steps()) seek(0);  // play again from the start
 }
 
 void Model::advance(double seconds) {
-    if (!playing) return;
-    playClock_ += seconds * std::max(speed, 0.01);
-    while (playClock_ >= 1 && playing) {
+    if (!playing_) return;
+    playClock_ += seconds * std::max(speed_, 0.01);
+    while (playClock_ >= 1 && playing_) {
         playClock_ -= 1;
         if (step_ >= steps()) {
-            playing = false;
+            playing_ = false;
             break;
         }
         stepForward();
-        if (breakpoints.any() && hits(breakpoints, *currentEvent())) playing = false;
+        if (breakpoints_.any() && hits(breakpoints_, *currentEvent())) playing_ = false;
     }
-    if (step_ >= steps()) playing = false;
+    if (step_ >= steps()) playing_ = false;
+}
+
+void Model::setBreakpoints(const Breakpoints& b) {
+    breakpoints_ = b;
+    findBreakpointSteps();
+}
+
+void Model::findBreakpointSteps() {
+    breakpointSteps_.clear();
+    if (breakpoints_.any())
+        for (const Event& e : trace_->events)
+            if (hits(breakpoints_, e)) breakpointSteps_.push_back(e.step + 1);
+}
+
+void Model::countTransitions() {
+    transitions_ = {};
+    const auto& ev = trace_->events;
+    for (size_t i = 1; i < ev.size(); ++i)
+        ++transitions_[size_t(ev[i - 1].action)][size_t(ev[i].action)];
+}
+
+void Model::fitCamera(const Rect& viewport) {
+    camera_.fit(trace_->polygon, viewport);
+    needsFit_ = false;
+    errorView_ = false;
 }
 
 void Model::loadRecent(const std::string& file) {
@@ -939,7 +957,7 @@ Index Model::pickVertex(Vec2 screen, double radiusPx) const {
     double bestD = radiusPx * radiusPx;
     const auto& v = trace_->polygon.vertices;
     for (Index i = 0; i < v.size(); ++i) {
-        Vec2 s = camera.toScreen(v[i]);
+        Vec2 s = camera_.toScreen(v[i]);
         double d = (s.x - screen.x) * (s.x - screen.x) + (s.y - screen.y) * (s.y - screen.y);
         if (d <= bestD) bestD = d, best = i;
     }
@@ -947,7 +965,7 @@ Index Model::pickVertex(Vec2 screen, double radiusPx) const {
 }
 
 int64_t Model::pickTriangle(Vec2 screen) const {
-    Point p = camera.toWorld(screen);
+    Point p = camera_.toWorld(screen);
     const auto& v = trace_->polygon.vertices;
     uint32_t n = std::min<uint32_t>(state().triangleCount, uint32_t(trace_->triangles.size()));
     // Display-only hit test: plain doubles are fine here, exactness lives in the core.
@@ -1290,11 +1308,11 @@ bool Model::setUp(Up up) {
     std::vector<std::string> warnings = warnings_;
     const size_t feature = feature_, originFeature = originFeature_;
     const std::string origin = origin_, originName = originName_;
-    const bool fit = needsFit;  // the polygon does not move: fit only if not yet fitted
+    const bool fit = needsFit_;  // the polygon does not move: fit only if not yet fitted
     openPolygon(trace_->polygon, name, std::move(input), std::move(warnings));
     feature_ = feature, originFeature_ = originFeature;
     origin_ = origin, originName_ = originName;
-    needsFit = fit;
+    needsFit_ = fit;
     seek(at);
     return true;
 }

@@ -17,6 +17,7 @@
 #include "checker.h"
 #include "events.h"
 #include "flood.h"
+#include "geometry.h"  // Vec2, Rect
 #include "invariants.h"
 #include "io.h"
 #include "polygon.h"
@@ -36,16 +37,6 @@ using flood::VertexClass;
 using flood::vertexClassName;
 
 // ----------------------------------------------------------------------------------------
-// Screen geometry. Screen coordinates are ImGui's logical pixels: origin top-left, y down.
-struct Vec2 {
-    double x = 0, y = 0;
-};
-
-struct Rect {
-    double x = 0, y = 0, w = 0, h = 0;
-    bool contains(Vec2 p) const { return p.x >= x && p.y >= y && p.x < x + w && p.y < y + h; }
-};
-
 // The tiled window layout: panels on the left and right, timeline at the bottom, canvas in
 // the middle. Shared with the screenshot test so it can find a vertex on the PNG.
 struct Layout {
@@ -180,22 +171,6 @@ struct TimelineView {
 
 private:
     void clamp(uint32_t events);
-};
-
-// Key presses in the order the platform reported them. ImGui folds a frame's presses of a
-// key into one, so a slow frame lost taps; the platform queues each press here instead and
-// the shortcuts apply every one.
-struct KeyPress {
-    int key = 0;  // the platform's key code
-    bool shift = false, ctrl = false, repeat = false;
-};
-class KeyQueue {
-public:
-    // A platform key event: action 0 release, 1 press, 2 auto-repeat (GLFW's numbering).
-    void push(int key, int action, bool shift, bool ctrl);
-    std::vector<KeyPress> take();  // every press since the last call, oldest first
-private:
-    std::vector<KeyPress> presses_;
 };
 
 // ----------------------------------------------------------------------------------------
@@ -361,9 +336,10 @@ public:
     uint32_t firstErrorStep() const { return firstErrorStep_; }
     bool errorPoint(Point& p) const;
     // The error view: zooms to the culprits, seeks to the first error's step; the canvas
-    // draws the culprits thick and dims the rest while `errorView` is set.
+    // draws the culprits thick and dims the rest while errorView() holds. A fit ends it.
     bool showError();
-    bool errorView = false;
+    bool errorView() const { return errorView_; }
+    void hideError() { errorView_ = false; }
 
     // Find (see findTarget): centres the camera on the target and seeks where it says.
     FindTarget find(const std::string& query);
@@ -385,21 +361,39 @@ public:
     // Runs to the next/previous step whose event hits a breakpoint; false (and stops at the
     // end of the log) if none does.
     bool runToBreakpoint(int direction);
-    Breakpoints breakpoints;
+    const Breakpoints& breakpoints() const { return breakpoints_; }
+    void setBreakpoints(const Breakpoints& b);
+    // The steps whose event hits an enabled breakpoint (the timeline's ticks), found again
+    // when the breakpoints or the trace change.
+    const std::vector<uint32_t>& breakpointSteps() const { return breakpointSteps_; }
     TimelineView timeline;  // reset by every open
 
-    // Playback: `speed` steps per second; advance() is fed the frame time.
-    bool playing = false;
-    double speed = 8;
-    void togglePlay();
+    // Playback: speed() steps per second; advance() is fed the frame time.
+    bool playing() const { return playing_; }
+    void setPlaying(bool on);  // starting at the end plays again from the start
+    void togglePlay() { setPlaying(!playing_); }
+    double speed() const { return speed_; }
+    void setSpeed(double stepsPerSecond) { speed_ = stepsPerSecond; }
     void advance(double seconds);
 
     // Triangles: the step whose event cut triangle t (its event index + 1).
     uint32_t triangleStep(uint32_t t) const;
 
-    // Camera and picking (screen coordinates).
-    Camera camera;
-    bool needsFit = true;  // set on open; the canvas fits once it knows its viewport
+    // Camera and picking (screen coordinates). An open (or requestFit) leaves a fit pending:
+    // the canvas fits once it knows its viewport.
+    const Camera& camera() const { return camera_; }
+    bool fitPending() const { return needsFit_; }
+    void requestFit() { needsFit_ = true; }
+    void fitCamera(const Rect& viewport);   // the whole polygon; ends the error view
+    void keepView() { needsFit_ = false; }  // the view chosen stays: no pending fit
+    void setViewport(const Rect& viewport) { camera_.setViewport(viewport); }
+    void pan(double dx, double dy) { camera_.pan(dx, dy); }  // screen pixels
+    void zoomAt(Vec2 screen, double factor) { camera_.zoomAt(screen, factor); }
+    void centerOn(Point p) { camera_.centerOn(p); }
+    void fitBox(double x0, double y0, double x1, double y1) {
+        camera_.fitBox(x0, y0, x1, y1, camera_.viewport());
+    }
+    void setCamera(const Camera& camera) { camera_ = camera; }  // an export's, for its frames
     Index pickVertex(Vec2 screen, double radiusPx) const;
     int64_t pickTriangle(Vec2 screen) const;  // among the triangles cut so far, -1 if none
 
@@ -408,6 +402,11 @@ public:
 
     // The first Forbidden step (its event index + 1), 0 when the run has none.
     uint32_t forbiddenStep() const { return forbiddenStep_; }
+    // How often event `to` follows event `from` in the trace (the state machine's edges),
+    // counted once per open.
+    using Transitions =
+        std::array<std::array<uint32_t, size_t(Action::Count)>, size_t(Action::Count)>;
+    const Transitions& transitions() const { return transitions_; }
 
     // Invariant lane: core/invariants.h run over the trace in a background thread, started
     // by every open. Results are readable once done; progress counts the steps checked.
@@ -447,6 +446,16 @@ public:
     bool hasPreviousSummary() const { return hasPrevious_; }
 
 private:
+    Camera camera_;
+    bool needsFit_ = true;
+    bool errorView_ = false;
+    Breakpoints breakpoints_;
+    std::vector<uint32_t> breakpointSteps_;
+    void findBreakpointSteps();
+    bool playing_ = false;
+    double speed_ = 8;
+    Transitions transitions_{};
+    void countTransitions();
     Up up_ = Up::PlusY;  // the direction opens flood along
     FloodSummary previousSummary_;
     bool hasPrevious_ = false;

@@ -17,28 +17,30 @@ void swatch(Rgba c, const char* text) {
 void drawBreakpoints(Ui& ui) {
     Model& m = ui.model;
     const Rect& col = ui.layout.left;
-    placeWindow({col.x, col.y + col.h * 0.65, col.w, col.h * 0.35});
-    ImGui::Begin("Breakpoints & legend", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
-    Breakpoints& b = m.breakpoints;
+    beginTiled("Breakpoints & legend", {col.x, col.y + col.h * 0.65, col.w, col.h * 0.35});
+    // Edited as a copy, given back to the model when a widget changed it.
+    Breakpoints b = m.breakpoints();
+    bool changed = false;
     if (ImGui::Button("<< run back")) m.runToBreakpoint(-1);
     ImGui::SameLine();
     if (ImGui::Button("run >>")) {
         if (!m.runToBreakpoint(+1)) ui.message = "no breakpoint hit: stopped at the end";
     }
     ImGui::SameLine();
-    if (ImGui::Button("clear")) b = Breakpoints{};
+    if (ImGui::Button("clear")) b = Breakpoints{}, changed = true;
     for (int a = 1; a < int(Action::Count); ++a) {  // Start happens once per part: not useful
-        ImGui::Checkbox(actionName(Action(a)), &b.actions[size_t(a)]);
+        changed |= ImGui::Checkbox(actionName(Action(a)), &b.actions[size_t(a)]);
         if (a % 3 != 0) ImGui::SameLine();
     }
-    ImGui::Checkbox("any forbidden state", &b.forbidden);
+    changed |= ImGui::Checkbox("any forbidden state", &b.forbidden);
     int v = b.vertex == kNone ? -1 : int(b.vertex);
     ImGui::SetNextItemWidth(90 * ui.scale);
-    if (ImGui::InputInt("vertex becomes L/R/Next", &v)) b.vertex = v < 0 ? kNone : Index(v);
+    if (ImGui::InputInt("vertex becomes L/R/Next", &v))
+        b.vertex = v < 0 ? kNone : Index(v), changed = true;
     int t = int(b.triangle);
     ImGui::SetNextItemWidth(90 * ui.scale);
-    if (ImGui::InputInt("triangle is cut", &t)) b.triangle = t < 0 ? -1 : t;
+    if (ImGui::InputInt("triangle is cut", &t)) b.triangle = t < 0 ? -1 : t, changed = true;
+    if (changed) m.setBreakpoints(b);
 
     if (ImGui::CollapsingHeader("Legend", ImGuiTreeNodeFlags_DefaultOpen)) {
         swatch(palette::kBottom, "bottom"), ImGui::SameLine(), swatch(palette::kSag, "sag");

@@ -34,15 +34,15 @@ void canvasInput(Ui& ui) {
     const bool leftTaken = editing && editCanvasInput(ui, mouse);
     if ((ImGui::IsMouseDragging(ImGuiMouseButton_Left, 0) && !leftTaken) ||
         ImGui::IsMouseDragging(ImGuiMouseButton_Middle, 0))
-        m.camera.pan(io.MouseDelta.x, io.MouseDelta.y);
-    if (io.MouseWheel != 0) m.camera.zoomAt(mouse, std::pow(1.15, double(io.MouseWheel)));
+        m.pan(io.MouseDelta.x, io.MouseDelta.y);
+    if (io.MouseWheel != 0) m.zoomAt(mouse, std::pow(1.15, double(io.MouseWheel)));
     if (editing) return;
     // ---- end of live editing
 
     CanvasState& cs = ui.canvas;
     std::array<double, 6> key{
-        mouse.x,          mouse.y,         m.camera.center().x, m.camera.center().y,
-        m.camera.scale(), double(m.step())};
+        mouse.x,         mouse.y, m.camera().center().x, m.camera().center().y, m.camera().scale(),
+        double(m.step())};
     if (key != cs.pickKey) {
         cs.pickKey = key;
         cs.pickedVertex = m.pickVertex(mouse, 7 * ui.scale);
@@ -68,7 +68,9 @@ void canvasInput(Ui& ui) {
         ImGui::TextDisabled("right-click: break when it becomes Left/Right/Next");
         ImGui::EndTooltip();
         if (ImGui::IsMouseClicked(ImGuiMouseButton_Right)) {
-            m.breakpoints.vertex = v;
+            Breakpoints b = m.breakpoints();
+            b.vertex = v;
+            m.setBreakpoints(b);
             ui.message = "breakpoint on vertex " + std::to_string(v);
         }
     } else if (t >= 0) {
@@ -109,13 +111,13 @@ void syncBuffers(Ui& ui) {
     const SceneOptions& was = cs.overlayOptions;
     if (cs.overlayStep != m.step() || o.dormant != was.dormant || o.jumps != was.jumps) {
         cs.overlay = buildCanvasOverlay(m, o, cs.origin);
-        ui.renderer.setOverlay(cs.overlay);
+        ui.renderer.setOverlay(cs.overlay.lines);
         cs.overlayStep = m.step();
         cs.overlayOptions = o;
         cs.thinKey = {};
     }
     // Markers thinned to one per cell of a screen grid: redone when the camera moves.
-    const Camera& cam = m.camera;
+    const Camera& cam = m.camera();
     const Rect& r = cam.viewport();
     std::array<double, 8> key{cam.center().x,  cam.center().y, cam.scale(), r.w, r.h, r.x, r.y,
                               double(m.step())};
@@ -133,7 +135,7 @@ void syncBuffers(Ui& ui) {
 // Triangle numbers, only when few enough are on screen to read (visibleLabels).
 void triangleLabels(Ui& ui, ImDrawList* dl) {
     const Model& m = ui.model;
-    const Camera& cam = m.camera;
+    const Camera& cam = m.camera();
     const float s = ui.scale;
     uint32_t n = std::min<uint32_t>(m.state().triangleCount, uint32_t(m.trace().triangles.size()));
     const Event* ev = m.currentEvent();
@@ -153,7 +155,7 @@ void triangleLabels(Ui& ui, ImDrawList* dl) {
 // distance to its nearest neighbour, which must be longer on screen than a six-digit label.
 void vertexLabels(Ui& ui, ImDrawList* dl) {
     const Model& m = ui.model;
-    const Camera& cam = m.camera;
+    const Camera& cam = m.camera();
     const float s = ui.scale;
     const double room = 44 * s;
     char text[16];
@@ -172,7 +174,7 @@ void gorgeFocus(Ui& ui) {
     const Model& m = ui.model;
     const Rect& area = ui.layout.canvas;
     CanvasState& cs = ui.canvas;
-    const Camera& cam = m.camera;
+    const Camera& cam = m.camera();
     std::array<double, 8> key{
         cam.center().x, cam.center().y,
         cam.scale(),    area.x,
@@ -198,7 +200,7 @@ void gorgeFocus(Ui& ui) {
 // each culprit vertex labelled "ring R #i" (Model::showError zoomed to them).
 void errorOverlay(Ui& ui, ImDrawList* dl) {
     const Model& m = ui.model;
-    const Camera& cam = m.camera;
+    const Camera& cam = m.camera();
     const Rect& area = ui.layout.canvas;
     const Polygon& P = m.polygon();
     const Culprits& c = m.errorCulprits();
@@ -284,10 +286,10 @@ void canvasBar(Ui& ui) {
         ImGui::SetTooltip("Ctrl+F: v<vertex>, t<triangle>, s<step>, r<ring>");
     if (m.failed()) {
         ImGui::SameLine();
-        bool go = ImGui::Button(m.errorView ? "Hide error (E)" : "Show error (E)");
+        bool go = ImGui::Button(m.errorView() ? "Hide error (E)" : "Show error (E)");
         go |= keys && !io.KeyCtrl && ImGui::IsKeyPressed('E', false);
         if (go) {
-            if (m.errorView) m.errorView = false;
+            if (m.errorView()) m.hideError();
             else if (!m.showError()) ui.message = "no culprit to show";
         }
     }
@@ -301,12 +303,8 @@ void canvasBar(Ui& ui) {
 void drawCanvas(Ui& ui) {
     Model& m = ui.model;
     const Rect& area = ui.layout.canvas;
-    if (m.needsFit) {
-        m.camera.fit(m.polygon(), area);
-        m.needsFit = false;
-        m.errorView = false;
-    }
-    m.camera.setViewport(area);
+    if (m.fitPending()) m.fitCamera(area);
+    m.setViewport(area);
     editFrame(ui);  // live editing: a finished flood adopted, a drag carried on
     canvasInput(ui);
     paintCanvas(ui, ImGui::GetBackgroundDrawList());
@@ -322,7 +320,7 @@ void paintCanvas(Ui& ui, ImDrawList* dl) {
     syncBuffers(ui);
 
     CanvasState& cs = ui.canvas;
-    const Camera& cam = m.camera;
+    const Camera& cam = m.camera();
     const float s = ui.scale;
     const SceneOptions& o = ui.sceneOptions;
     const uint32_t n =
@@ -366,16 +364,16 @@ void paintCanvas(Ui& ui, ImDrawList* dl) {
 
     dl->PushClipRect(ImVec2(float(area.x), float(area.y)),
                      ImVec2(float(area.x + area.w), float(area.y + area.h)), true);
-    if (m.errorView) errorOverlay(ui, dl);
+    if (m.errorView()) errorOverlay(ui, dl);
     else if (o.gorgeFocus) gorgeFocus(ui);
-    if (o.triangleNumbers && !m.errorView) triangleLabels(ui, dl);
-    if (o.vertexNumbers && !m.errorView) vertexLabels(ui, dl);
+    if (o.triangleNumbers && !m.errorView()) triangleLabels(ui, dl);
+    if (o.vertexNumbers && !m.errorView()) vertexLabels(ui, dl);
     // Gorge labels fold away when hundreds are on screen; finger labels always show.
     size_t crowd = 0;
     for (const auto& l : cs.overlay.labels) crowd += l.folds && area.contains(cam.toScreen(l.p));
     for (const auto& l : cs.overlay.labels) {
         Vec2 c = cam.toScreen(l.p);
-        if (!area.contains(c) || (l.folds && crowd > 200) || m.errorView) continue;
+        if (!area.contains(c) || (l.folds && crowd > 200) || m.errorView()) continue;
         dl->AddText(ImVec2(float(c.x + l.dx * s), float(c.y + l.dy * s)), toImU32(l.color),
                     l.text.c_str());
     }

@@ -27,13 +27,10 @@ void handlePresenterKeys(Ui& ui) {
 
 void drawCaption(Ui& ui) {
     const Rect& r = ui.layout.bottom;
-    ImGui::SetNextWindowPos(ImVec2(float(r.x), float(r.y)), ImGuiCond_Always);
-    ImGui::SetNextWindowSize(ImVec2(float(r.w), float(std::max(r.h, 1.0))), ImGuiCond_Always);
     // A caption taller than half the window (a long sentence at a large zoom) scrolls.
-    ImGui::Begin("##caption", nullptr,
-                 ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoMove |
-                     ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoFocusOnAppearing);
+    beginTiled("##caption", {r.x, r.y, r.w, std::max(r.h, 1.0)},
+               ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoSavedSettings |
+                   ImGuiWindowFlags_NoFocusOnAppearing);
     const Caption c = buildCaption(ui.model);
     if (ui.captionFont) ImGui::PushFont(ui.captionFont);
     ImGui::TextUnformatted(c.heading.c_str());

@@ -8,9 +8,12 @@
 
 namespace flood::view {
 
-void placeWindow(const Rect& r) {
+void beginTiled(const char* title, const Rect& r, int flags) {
     ImGui::SetNextWindowPos(ImVec2(float(r.x), float(r.y)), ImGuiCond_Always);
     ImGui::SetNextWindowSize(ImVec2(float(r.w), float(r.h)), ImGuiCond_Always);
+    ImGui::Begin(
+        title, nullptr,
+        flags | ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
 }
 
 bool beginFloating(Ui& ui, const char* title, bool* open, float w, float h, float dx, float dy) {

@@ -206,9 +206,7 @@ void eventNumbers(Ui& ui, const Event& e) {
 void drawDecision(Ui& ui) {
     Model& m = ui.model;
     const Rect& col = ui.layout.left;
-    placeWindow({col.x, col.y + col.h * 0.38, col.w, col.h * 0.27});
-    ImGui::Begin("Decision", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    beginTiled("Decision", {col.x, col.y + col.h * 0.38, col.w, col.h * 0.27});
     const Event* e = m.currentEvent();
     const DecisionPath path = e ? decisionPath(*e) : DecisionPath{};
     if (ImGui::SmallButton("Tree...")) ui.showDecisionTree = true;

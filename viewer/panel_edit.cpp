@@ -70,7 +70,7 @@ void editFrame(Ui& ui) {
     if (e.dragVertex == kNone && e.dragRing == kNone) return;
     // A drag goes on outside the canvas and ends wherever the button is let go.
     ImGuiIO& io = ImGui::GetIO();
-    const Camera& cam = ui.model.camera;
+    const Camera& cam = ui.model.camera();
     Vec2 mouse{io.MousePos.x, io.MousePos.y};
     if (io.MouseDelta.x != 0 || io.MouseDelta.y != 0) {
         Point at = cam.toWorld(mouse);
@@ -86,7 +86,7 @@ void editFrame(Ui& ui) {
 bool editCanvasInput(Ui& ui, Vec2 mouse) {
     EditUi& e = ui.edit;
     Editor& ed = e.editor;
-    const Camera& cam = ui.model.camera;
+    const Camera& cam = ui.model.camera();
     const float s = ui.scale;
     if (e.dragVertex != kNone || e.dragRing != kNone) return true;
     const Point world = cam.toWorld(mouse);
@@ -145,7 +145,7 @@ void editOverlay(Ui& ui, ImDrawList* dl) {
     if (!e.on) return;
     Editor& ed = e.editor;
     const Model& m = ui.model;
-    const Camera& cam = m.camera;
+    const Camera& cam = m.camera();
     const float s = ui.scale;
     const Polygon& p = ed.polygon();
     const ImU32 handle = toImU32(palette::kHover), culprit = toImU32(palette::kCulprit);
@@ -184,7 +184,7 @@ void editOverlay(Ui& ui, ImDrawList* dl) {
             dl->AddCircleFilled(at(c[i]), (i == 0 ? 6 : 4) * s, handle);
     }
     // An invalid edit: the validator's culprits marked where they are, and its sentence.
-    if (!m.inputDiagnostic().ok() && !ed.pending() && !m.errorView) {
+    if (!m.inputDiagnostic().ok() && !ed.pending() && !m.errorView()) {
         const Culprits& k = m.errorCulprits();
         const Polygon& P = m.polygon();
         for (Index v : k.edges)

@@ -17,9 +17,7 @@ const char* vname(Index v, char* buf, size_t n) {
 void drawEvents(Ui& ui) {
     Model& m = ui.model;
     const Rect& col = ui.layout.right;
-    placeWindow({col.x, col.y, col.w, col.h * 0.6});
-    ImGui::Begin("Events", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    beginTiled("Events", {col.x, col.y, col.w, col.h * 0.6});
     const auto& ev = m.trace().events;
     const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg |
                                   ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_SizingFixedFit;

@@ -19,7 +19,7 @@ void handleShortcuts(Ui& ui) {
     for (const KeyPress& k : presses) {
         if (k.key != platform::kKeyLeft && k.key != platform::kKeyRight) continue;
         int direction = k.key == platform::kKeyRight ? +1 : -1;
-        m.playing = false;
+        m.setPlaying(false);
         if (k.shift) m.runToBreakpoint(direction);
         else direction > 0 ? m.stepForward() : m.stepBack();
     }
@@ -27,7 +27,7 @@ void handleShortcuts(Ui& ui) {
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_End), false)) m.last();
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageDown))) m.seekAction(ui.seekKind, +1);
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageUp))) m.seekAction(ui.seekKind, -1);
-    if (ImGui::IsKeyPressed(platform::kKeyF, false) && !io.KeyCtrl) m.needsFit = true;
+    if (ImGui::IsKeyPressed(platform::kKeyF, false) && !io.KeyCtrl) m.requestFit();
     if (ImGui::IsKeyPressed(platform::kKeyF1, false)) ui.showHelp = !ui.showHelp;
     if (io.KeyCtrl && ImGui::IsKeyPressed('O', false)) ui.showOpen = true;
     for (ImWchar c : io.InputQueueCharacters)

@@ -19,8 +19,9 @@ void drawOpen(Ui& ui) {
     if (!ui.showOpen) return;
     Model& m = ui.model;
     if (!beginFloating(ui, "Open polygon", &ui.showOpen, 460, 420, 20, 20)) return;
-    static char path[1024] = "";
-    bool go = ImGui::InputText("path", path, sizeof path, ImGuiInputTextFlags_EnterReturnsTrue);
+    char* path = ui.openPanel.path;
+    bool go = ImGui::InputText("path", path, sizeof ui.openPanel.path,
+                               ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     go |= ImGui::Button("Open");
     std::string chosen = go ? std::string(path) : std::string();
@@ -80,8 +81,10 @@ void drawOpen(Ui& ui) {
 
     std::string dir = polygonsDir();
     // The teaching gallery first (polygons/gallery.json, docs/TUTORIAL.md), in teaching order,
-    // each with its one-line description. Read once: it changes with the sources only.
-    static const std::vector<GalleryEntry> gallery = readGallery(dir);
+    // each with its one-line description.
+    if (!ui.openPanel.galleryRead)
+        ui.openPanel.gallery = readGallery(dir), ui.openPanel.galleryRead = true;
+    const std::vector<GalleryEntry>& gallery = ui.openPanel.gallery;
     if (!gallery.empty() && ImGui::CollapsingHeader("Gallery", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::PushTextWrapPos(0);
         for (size_t i = 0; i < gallery.size(); ++i) {

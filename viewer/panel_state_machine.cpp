@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <cstdio>
-#include <map>
 
 #include "panels.h"
 
@@ -72,24 +71,10 @@ void where(Ui& ui, const Event& e) {
 void drawStateMachine(Ui& ui) {
     Model& m = ui.model;
     const Rect& col = ui.layout.left;
-    placeWindow({col.x, col.y, col.w, col.h * 0.38});
-    ImGui::Begin("State machine", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    beginTiled("State machine", {col.x, col.y, col.w, col.h * 0.38});
     const auto& ev = m.trace().events;
     const Event* cur = m.currentEvent();
 
-    // Transition counts over the whole run, keyed (from, to) by node index: a scan of the
-    // log, so once per opened trace.
-    static uint64_t countedFor = ~0ull;
-    static std::map<std::pair<int, int>, int> counts;
-    if (countedFor != m.generation()) {
-        counts.clear();
-        for (size_t i = 1; i < ev.size(); ++i) {
-            int a = nodeOf(ev[i - 1].action), b = nodeOf(ev[i].action);
-            if (a >= 0 && b >= 0 && a != b) counts[{a, b}]++;
-        }
-        countedFor = m.generation();
-    }
     int from = -1, to = cur ? nodeOf(cur->action) : -1;
     if (m.step() >= 2) from = nodeOf(ev[m.step() - 2].action);
 
@@ -105,12 +90,16 @@ void drawStateMachine(Ui& ui) {
         float a = float(-M_PI / 2 + 2 * M_PI * i / kNodeCount);
         pos[i] = ImVec2(c.x + R * std::cos(a), c.y + R * std::sin(a));
     }
-    for (auto& [k, n] : counts) {
-        arrow(dl, pos[k.first], pos[k.second], nodeR, IM_COL32(120, 120, 130, 140), 1);
-        ImVec2 mid((pos[k.first].x * 0.6f + pos[k.second].x * 0.4f),
-                   (pos[k.first].y * 0.6f + pos[k.second].y * 0.4f));
-        dl->AddText(mid, IM_COL32(150, 150, 160, 255), std::to_string(n).c_str());
-    }
+    // Every transition between two states that occurs in the run, with its count.
+    const Model::Transitions& counts = m.transitions();
+    for (int a = 0; a < kNodeCount; ++a)
+        for (int b = 0; b < kNodeCount; ++b) {
+            const uint32_t n = counts[size_t(kNodes[a])][size_t(kNodes[b])];
+            if (a == b || n == 0) continue;
+            arrow(dl, pos[a], pos[b], nodeR, IM_COL32(120, 120, 130, 140), 1);
+            ImVec2 mid((pos[a].x * 0.6f + pos[b].x * 0.4f), (pos[a].y * 0.6f + pos[b].y * 0.4f));
+            dl->AddText(mid, IM_COL32(150, 150, 160, 255), std::to_string(n).c_str());
+        }
     if (from >= 0 && to >= 0 && from != to)
         arrow(dl, pos[from], pos[to], nodeR, ImGui::GetColorU32(ImGuiCol_Text),
               3);  // the theme's ink

@@ -28,27 +28,6 @@ int weight(Action a) {
     }
 }
 
-// Steps whose event hits an enabled breakpoint: a scan of the log, redone only when the trace
-// or the breakpoints change.
-const std::vector<uint32_t>& breakpointSteps(const Model& m) {
-    static uint64_t forGeneration = ~0ull;
-    static Breakpoints forBreakpoints;
-    static std::vector<uint32_t> steps;
-    const Breakpoints& b = m.breakpoints;
-    bool same = forGeneration == m.generation() && b.actions == forBreakpoints.actions &&
-                b.forbidden == forBreakpoints.forbidden && b.vertex == forBreakpoints.vertex &&
-                b.triangle == forBreakpoints.triangle;
-    if (!same) {
-        steps.clear();
-        if (b.any())
-            for (const Event& e : m.trace().events)
-                if (hits(b, e)) steps.push_back(e.step + 1);
-        forGeneration = m.generation();
-        forBreakpoints = b;
-    }
-    return steps;
-}
-
 // The strip shows m.timeline's window of the log: wheel zooms at the cursor, right or middle
 // drag pans, a left click or drag scrubs to the step the tooltip names.
 void strip(Ui& ui) {
@@ -87,12 +66,11 @@ void strip(Ui& ui) {
         }
     } else {
         // Folding scans the visible events: redo it only when the trace or the window changes.
-        static uint64_t foldedFor = ~0ull;
-        static double foldedFirst = -1, foldedSpan = -1;
-        static std::vector<Action> folded;
+        TimelineFold& fold = ui.timelineFold;
+        std::vector<Action>& folded = fold.buckets;
         int buckets = int(w / minMark);
-        if (foldedFor != m.generation() || folded.size() != size_t(buckets) ||
-            foldedFirst != tv.first || foldedSpan != tv.span) {
+        if (fold.generation != m.generation() || folded.size() != size_t(buckets) ||
+            fold.first != tv.first || fold.span != tv.span) {
             folded.assign(size_t(buckets), Action::Start);
             for (int b = 0; b < buckets; ++b) {
                 uint32_t b0 = tv.eventAt(b * minMark, w, n),
@@ -102,7 +80,7 @@ void strip(Ui& ui) {
                     if (weight(ev[i].action) > weight(best)) best = ev[i].action;
                 folded[size_t(b)] = best;
             }
-            foldedFor = m.generation(), foldedFirst = tv.first, foldedSpan = tv.span;
+            fold.generation = m.generation(), fold.first = tv.first, fold.span = tv.span;
         }
         for (int b = 0; b < buckets; ++b) {
             float x0 = p0.x + b * minMark;
@@ -116,7 +94,7 @@ void strip(Ui& ui) {
         float x = xOf(step);  // a step sits at the right edge of its event's mark
         dl->AddLine(ImVec2(x, y0), ImVec2(x, y1), colour, width);
     };
-    for (uint32_t s : breakpointSteps(m))
+    for (uint32_t s : m.breakpointSteps())
         tick(s, p0.y, p0.y + 6 * ui.scale, IM_COL32(255, 220, 60, 255), 2);
     for (const Violation& v : m.violations())
         tick(v.step, p0.y + h, p0.y + h + lane, IM_COL32(255, 120, 40, 255), 2);
@@ -128,7 +106,7 @@ void strip(Ui& ui) {
     dl->PopClipRect();
     if (ImGui::IsItemActive() &&
         ImGui::IsMouseDown(ImGuiMouseButton_Left)) {  // click or drag scrubs
-        m.playing = false;
+        m.setPlaying(false);
         m.seek(tv.stepAt(mx, w, n));
     }
     if (ImGui::IsItemHovered()) {
@@ -172,10 +150,7 @@ void invariantStatus(Ui& ui) {
 
 void drawTimeline(Ui& ui) {
     Model& m = ui.model;
-    placeWindow(ui.layout.bottom);
-    ImGui::Begin("Timeline", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
-                     ImGuiWindowFlags_NoTitleBar);
+    beginTiled("Timeline", ui.layout.bottom, ImGuiWindowFlags_NoTitleBar);
     // The toolbar wraps onto more lines when the window is narrow or the scale large.
     const ImGuiStyle& style = ImGui::GetStyle();
     auto labelled = [&](float width, const char* label) {
@@ -186,7 +161,7 @@ void drawTimeline(Ui& ui) {
     ImGui::PushButtonRepeat(true);
     if (ImGui::Button("<")) m.stepBack();
     sameLineOrWrap(buttonWidth("Pause"));
-    if (ImGui::Button(m.playing ? "Pause" : "Play ")) m.togglePlay();
+    if (ImGui::Button(m.playing() ? "Pause" : "Play ")) m.togglePlay();
     sameLineOrWrap(buttonWidth(">"));
     if (ImGui::Button(">")) m.stepForward();
     ImGui::PopButtonRepeat();
@@ -201,10 +176,10 @@ void drawTimeline(Ui& ui) {
     sameLineOrWrap(ImGui::CalcTextSize(total.c_str()).x);
     ImGui::TextUnformatted(total.c_str());
     sameLineOrWrap(labelled(120 * ui.scale, "steps/s"));
-    float speed = float(m.speed);
+    float speed = float(m.speed());
     ImGui::SetNextItemWidth(120 * ui.scale);
     if (ImGui::SliderFloat("steps/s", &speed, 0.5f, 200.f, "%.1f", ImGuiSliderFlags_Logarithmic))
-        m.speed = speed;
+        m.setSpeed(speed);
     sameLineOrWrap(100 * ui.scale);
     ImGui::SetNextItemWidth(100 * ui.scale);
     if (ImGui::BeginCombo("##kind", actionName(ui.seekKind))) {
@@ -220,7 +195,7 @@ void drawTimeline(Ui& ui) {
     sameLineOrWrap(buttonWidth("Open..."));
     if (ImGui::Button("Open...")) ui.showOpen = true;
     sameLineOrWrap(buttonWidth("Fit"));
-    if (ImGui::Button("Fit")) m.needsFit = true;
+    if (ImGui::Button("Fit")) m.requestFit();
     sameLineOrWrap(buttonWidth("Save PNG"));
     if (ImGui::Button("Save PNG")) {
         std::string name = "flood-step" + std::to_string(m.step()) + ".png";

@@ -27,13 +27,13 @@ void drawChosen(Ui& ui, const Gorge& g) {
     std::vector<ImVec2> pts;
     for (Index i : g.chain) {
         if (i >= v.size()) continue;
-        Vec2 p = m.camera.toScreen(v[i]);
+        Vec2 p = m.camera().toScreen(v[i]);
         pts.emplace_back(float(p.x), float(p.y));
     }
     if (pts.size() > 1) dl->AddPolyline(pts.data(), int(pts.size()), colour, 0, 4 * s);
     for (const ImVec2& p : pts) dl->AddCircleFilled(p, 3.5f * s, colour);
     if (g.top < v.size()) {
-        Vec2 p = m.camera.toScreen(v[g.top]);
+        Vec2 p = m.camera().toScreen(v[g.top]);
         dl->AddCircle(ImVec2(float(p.x), float(p.y)), 11 * s, colour, 0, 3 * s);
     }
     dl->PopClipRect();
@@ -52,12 +52,11 @@ void bringIntoView(Ui& ui, const Gorge& g) {
     for (Index i : g.chain) add(i);
     add(g.top);
     if (!(x0 <= x1)) return;
-    const Rect& vp = m.camera.viewport();
-    const double scale = m.camera.scale();
-    if ((x1 - x0) * scale > vp.w * 0.9 || (y1 - y0) * scale > vp.h * 0.9)
-        m.camera.fitBox(x0, y0, x1, y1, vp);
-    else m.camera.centerOn({(x0 + x1) / 2, (y0 + y1) / 2});
-    m.needsFit = false;
+    const Rect& vp = m.camera().viewport();
+    const double scale = m.camera().scale();
+    if ((x1 - x0) * scale > vp.w * 0.9 || (y1 - y0) * scale > vp.h * 0.9) m.fitBox(x0, y0, x1, y1);
+    else m.centerOn({(x0 + x1) / 2, (y0 + y1) / 2});
+    m.keepView();
 }
 
 // One row: the gorge, its chain's ends and (held) its top and jump pointer; the vertex numbers

@@ -14,9 +14,7 @@ namespace flood::view {
 void drawTranscript(Ui& ui) {
     Model& m = ui.model;
     const Rect& col = ui.layout.right;
-    placeWindow({col.x, col.y + col.h * 0.6, col.w, col.h * 0.4});
-    ImGui::Begin("Transcript", nullptr,
-                 ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+    beginTiled("Transcript", {col.x, col.y + col.h * 0.6, col.w, col.h * 0.4});
     const auto& items = m.transcript();
     if (ImGui::SmallButton("Copy")) ImGui::SetClipboardText(transcript(m.trace().events).c_str());
     ImGui::SameLine();
@@ -26,10 +24,9 @@ void drawTranscript(Ui& ui) {
     float right = ImGui::GetContentRegionAvail().x;
     // The text flows into lines; lay them out once per trace and width, then submit only the
     // visible lines, so a million-event transcript scrolls like a short one.
-    static uint64_t laidFor = ~0ull;
-    static float laidWidth = -1;
-    static std::vector<uint32_t> lineStart;  // first item of each line, then items.size()
-    if (laidFor != m.generation() || laidWidth != right) {
+    TranscriptLines& laid = ui.transcriptLines;
+    std::vector<uint32_t>& lineStart = laid.start;
+    if (laid.generation != m.generation() || laid.width != right) {
         lineStart.clear();
         float x = 0;
         for (size_t i = 0; i < items.size(); ++i) {
@@ -38,7 +35,7 @@ void drawTranscript(Ui& ui) {
             x += w;  // the separator carries the space: items touch, like text
         }
         lineStart.push_back(uint32_t(items.size()));
-        laidFor = m.generation(), laidWidth = right;
+        laid.generation = m.generation(), laid.width = right;
     }
     const float lineH = ImGui::GetTextLineHeightWithSpacing();
     auto current =

@@ -1,7 +1,8 @@
 // The viewer's panels, one file each (panel_*.cpp). They read the Model, change it only through
 // its methods, and share the small UI state below. ImGui lives here, never in the model.
-// A new panel: write panel_<name>.cpp with draw<Name>(Ui&), declare it below, call it from the
-// frame in main.cpp, and give it a rectangle of computeLayout() (model.cpp) or let it float.
+// A new panel: write panel_<name>.cpp with draw<Name>(Ui&), declare it below, call it from
+// drawFrame in main.cpp, and tile it at a rectangle of computeLayout() (model.cpp) with
+// beginTiled, or let it float (beginFloating). What it keeps between frames lives in Ui.
 #pragma once
 #include <array>
 #include <memory>
@@ -69,6 +70,28 @@ struct EditUi {
     std::string saveNote;
 };
 
+// The timeline strip's marks folded into 3-pixel buckets (panel_timeline.cpp), and the trace
+// and window they were folded for.
+struct TimelineFold {
+    uint64_t generation = ~0ull;   // Model::generation()
+    double first = -1, span = -1;  // TimelineView's
+    std::vector<Action> buckets;   // the most telling action in each
+};
+
+// The transcript's text flowed into lines (panel_transcript.cpp), for a trace and a width.
+struct TranscriptLines {
+    uint64_t generation = ~0ull;  // Model::generation()
+    float width = -1;
+    std::vector<uint32_t> start;  // first item of each line, then the item count
+};
+
+// The Open panel's path box and teaching gallery (panel_open.cpp).
+struct OpenUi {
+    char path[1024] = "";
+    bool galleryRead = false;  // read the first time the panel shows: it changes with the sources
+    std::vector<GalleryEntry> gallery;
+};
+
 struct Ui {
     Ui(Model& m, Renderer& r) : model(m), renderer(r) {}
     Model& model;
@@ -121,12 +144,15 @@ struct Ui {
     std::array<uint64_t, 2> todoFor{~0ull, ~0ull};  // Model::generation() and step it was read at
     EditUi edit{model};                             // live editing (panel_edit.cpp)
     bool showDirection = false;  // the flood direction dial (panel_direction.cpp)
+    TimelineFold timelineFold;
+    TranscriptLines transcriptLines;
+    OpenUi openPanel;
 };
 
 void drawCanvas(Ui& ui);  // panel_canvas.cpp: geometry to the renderer, labels, input
 // What drawCanvas paints, without its input and find box: the world to the renderer (as
 // Renderer::render draws it next), labels and overlays to `dl`, at ui.layout.canvas through
-// model.camera. Exports call it with their own camera, rectangle and draw list.
+// model.camera(). Exports call it with their own camera, rectangle and draw list.
 void paintCanvas(Ui& ui, ImDrawList* dl);
 void drawTimeline(Ui& ui);         // panel_timeline.cpp: strip, transport, go-to, play
 void drawStateMachine(Ui& ui);     // panel_state_machine.cpp: the six states of §4
@@ -159,7 +185,10 @@ void editShortcuts(Ui& ui);
 void drawDirection(Ui& ui);  // panel_direction.cpp: the flood direction dial and its changes
 
 // Helpers shared by panels (panel_common.cpp).
-void placeWindow(const Rect& r);  // tiles a panel at a layout rectangle
+// Begins a panel's window tiled at a layout rectangle: placed and sized every frame, never
+// moved, resized or collapsed by hand; `flags` (ImGuiWindowFlags) adds to that. End it with
+// ImGui::End().
+void beginTiled(const char* title, const Rect& r, int flags = 0);
 // Begins a floating window of `w` x `h` (scaled) placed at (dx, dy) from the canvas corner
 // the first time it is shown. False when it is collapsed: the window is already ended then.
 bool beginFloating(Ui& ui, const char* title, bool* open, float w, float h, float dx, float dy);

@@ -4,7 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "model.h"  // Vec2
+#include "geometry.h"   // Vec2
+#include "key_queue.h"  // KeyPress
 
 namespace flood::view::platform {
 
@@ -38,7 +39,7 @@ void framebufferSize(int* w, int* h);
 float contentScale();  // 1 on a 96-dpi screen, 2 on most hi-DPI ones
 void setTitle(const std::string& title);
 std::vector<std::string> takeDroppedPaths();  // files dropped on the window since last call
-// Key presses and repeats since the last call, every one in order (model.h's KeyQueue).
+// Key presses and repeats since the last call, every one in order (key_queue.h).
 std::vector<KeyPress> takeKeyPresses();
 
 // Wakes waitEvents() from any thread (a background flood is ready: viewer/edit.h).

@@ -198,11 +198,10 @@ void Renderer::setGeometry(const CanvasGeometry& g) {
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 
-void Renderer::setOverlay(const CanvasOverlay& o) {
+void Renderer::setOverlay(const std::vector<SegmentVertex>& lines) {
     if (!screen_.id) return;
-    upload(GL_ARRAY_BUFFER, buf_[OverlayLines], o.lines.data(),
-           o.lines.size() * sizeof(o.lines[0]));
-    count_[OverlayLines] = o.lines.size();
+    upload(GL_ARRAY_BUFFER, buf_[OverlayLines], lines.data(), lines.size() * sizeof(lines[0]));
+    count_[OverlayLines] = lines.size();
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 }
 

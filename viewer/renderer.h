@@ -1,5 +1,5 @@
 // The only file pair with OpenGL calls. Two kinds of geometry, both drawn under ImGui:
-// - world space (canvas_geometry.h): the polygon, its triangles, edges and markers live in
+// - world space (canvas_vertices.h, built by canvas_geometry.h): the polygon, its triangles, edges and markers live in
 //   buffers uploaded once per trace, the per-step overlay in buffers uploaded when the step
 //   changes, and the camera is a uniform, so a frame issues a dozen draw calls and uploads
 //   nothing. A step's triangles are a prefix of the flood-order buffer: one draw call.
@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "canvas_geometry.h"
-#include "model.h"
+#include "canvas_vertices.h"
+#include "geometry.h"
 #include "palette.h"
 
 namespace flood::view {
@@ -45,7 +45,8 @@ public:
 
     // World-space buffers: the trace's once when it is opened, the overlay when the step changes.
     void setGeometry(const CanvasGeometry& g);
-    void setOverlay(const CanvasOverlay& o);  // its lines; the markers come from setMarkers
+    // The overlay's lines (CanvasOverlay::lines); its markers come from setMarkers.
+    void setOverlay(const std::vector<SegmentVertex>& lines);
     // The markers thinned for the current camera (thinMarkers): the vertices' and the overlay's.
     void setMarkers(const std::vector<MarkerVertex>& vertices,
                     const std::vector<MarkerVertex>& overlay);

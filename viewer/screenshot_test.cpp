@@ -92,8 +92,8 @@ bool probeTriangle(const Model& model, uint32_t t, const Image& img, Rgba want, 
     const Triangle& tri = model.trace().triangles[t];
     Point a = v[tri[0]], b = v[tri[1]], c = v[tri[2]];
     for (auto [wa, wb, wc] : {std::tuple{0.6, 0.2, 0.2}, {0.2, 0.6, 0.2}, {0.2, 0.2, 0.6}}) {
-        probe =
-            model.camera.toScreen({wa * a.x + wb * b.x + wc * c.x, wa * a.y + wb * b.y + wc * c.y});
+        probe = model.camera().toScreen(
+            {wa * a.x + wb * b.x + wc * c.x, wa * a.y + wb * b.y + wc * c.y});
         if (near(img, probe, want, 1, &seen)) return true;
     }
     return false;
@@ -101,7 +101,7 @@ bool probeTriangle(const Model& model, uint32_t t, const Image& img, Rgba want, 
 
 // The model is at the step shown; `back` shots also check that later triangles are dry.
 int checkShot(const Model& model, const Layout& layout, const Image& img, bool back) {
-    const Camera& cam = model.camera;
+    const Camera& cam = model.camera();
     const char* shot = back ? " (after stepping back)" : "";
     Rgba seen;
     Vec2 probe;
@@ -159,7 +159,7 @@ int checkDenseFace(const std::string& dir, int W, int H, const Layout& layout) {
     }
     Model model;
     model.open(input);
-    model.camera.fit(model.polygon(), layout.canvas);
+    model.fitCamera(layout.canvas);
     Image img;
     if (!shoot(input, "--step 0", dir + "/screenshot-test-dense.png", W, H, img)) return 1;
     const Rgba dots[] = {palette::kRegular, palette::kBottom, palette::kSag, palette::kTop,
@@ -168,7 +168,7 @@ int checkDenseFace(const std::string& dir, int W, int H, const Layout& layout) {
     const Rect& c = layout.canvas;
     for (double y = c.y + 60; y < c.y + c.h - 4; y += 3)  // below the find box
         for (double x = c.x + 4; x < c.x + c.w - 4; x += 3) {
-            Point w = model.camera.toWorld({x, y});
+            Point w = model.camera().toWorld({x, y});
             double r = std::hypot(w.x, w.y);
             Rgba px = img.at(int(x), int(y));
             if (r < 0.15) {
@@ -288,9 +288,9 @@ int checkPresenter(const std::string& dir, const std::string& input, Model& mode
     if (named < 40)
         failures += failWith("the action's name is not drawn in its colour in the caption (" +
                              std::to_string(named) + " pixels)");
-    model.camera.fit(model.polygon(), presenterLayout(W, H, caption.h).canvas);
+    model.fitCamera(presenterLayout(W, H, caption.h).canvas);
     Rgba seen;
-    Vec2 left = model.camera.toScreen(model.polygon().vertices[model.state().fingers.left]);
+    Vec2 left = model.camera().toScreen(model.polygon().vertices[model.state().fingers.left]);
     if (!near(img, left, palette::kLeft, 2, &seen))
         failures += fail("presenter Left marker", left, palette::kLeft, seen);
     Vec2 corner{W - 3.0, 3.0};  // where the Events panel is in the normal view
@@ -369,14 +369,14 @@ int checkLightTheme(const std::string& dir, const std::string& input, Model& mod
                       int(layout.bottom.y + layout.bottom.h), img, printed))
         return 1;
     model.seek(step);
-    model.camera.fit(model.polygon(), layout.canvas);
+    model.fitCamera(layout.canvas);
     failures += checkShot(model, layout, img, false);
     if (luminance(palette::kBackground) < 200)
         failures += failWith("the light background is not light");
     Rgba seen;
     // The outer ring's first edge, halfway: the boundary line.
     const auto& v = model.polygon().vertices;
-    Vec2 mid = model.camera.toScreen({(v[0].x + v[1].x) / 2, (v[0].y + v[1].y) / 2});
+    Vec2 mid = model.camera().toScreen({(v[0].x + v[1].x) / 2, (v[0].y + v[1].y) / 2});
     if (!near(img, mid, palette::kBoundary, 1, &seen) || luminance(palette::kBoundary) > 60)
         failures += fail("dark boundary line", mid, palette::kBoundary, seen);
     Rect panel{layout.right.x + 4, layout.right.y + layout.right.h * 0.7, layout.right.w - 8, 20};
@@ -427,7 +427,7 @@ int checkInspector(const std::string& input, Model& model, const Layout& layout,
         if (rows.empty() || rows[0].args.empty() ||
             rows[0].args[0] >= model.polygon().vertices.size())
             continue;
-        Vec2 p = model.camera.toScreen(model.polygon().vertices[rows[0].args[0]]);
+        Vec2 p = model.camera().toScreen(model.polygon().vertices[rows[0].args[0]]);
         if (!win.contains(p) && c.contains(p)) step = s, arg = rows[0].args[0];
     }
     if (!step) {
@@ -455,7 +455,7 @@ int checkInspector(const std::string& input, Model& model, const Layout& layout,
         ++failures;
     }
     // The hovered row's argument: a ring of radius 9 around the vertex.
-    Vec2 v = model.camera.toScreen(model.polygon().vertices[arg]);
+    Vec2 v = model.camera().toScreen(model.polygon().vertices[arg]);
     int onRing = 0;
     for (auto [dx, dy] : {std::pair{9.0, 0.0}, {-9.0, 0.0}, {0.0, 9.0}, {0.0, -9.0}})
         onRing += near(img, {v.x + dx, v.y + dy}, ring, 2, nullptr);
@@ -590,7 +590,7 @@ int main() {
     const int W = 1000, H = 700;
     // Screenshots are rendered at UI scale 1 (see main.cpp), so logical pixels are pixels.
     Layout layout = computeLayout(W, H, 1);
-    model.camera.fit(model.polygon(), layout.canvas);
+    model.fitCamera(layout.canvas);
     int failures = 0;
     for (bool back : {false, true}) {
         std::string out = dir + (back ? "/screenshot-test-back.png" : "/screenshot-test.png");
@@ -612,7 +612,7 @@ int main() {
                           "\n";
     Model crossing;
     crossing.open(bad);
-    crossing.camera.setViewport(layout.canvas);
+    crossing.setViewport(layout.canvas);
     Point x;
     if (!crossing.showError() || !crossing.errorPoint(x)) {
         std::fprintf(stderr, "FAIL: no error view for %s: %s\n", bad.c_str(),
@@ -622,13 +622,13 @@ int main() {
     Image img;
     if (!shoot(bad, "--show-error", dir + "/screenshot-test-error.png", W, H, img, 4)) return 1;
     Rgba seen;
-    Vec2 at = crossing.camera.toScreen(x);
+    Vec2 at = crossing.camera().toScreen(x);
     if (!near(img, at, palette::kCulprit, 1, &seen))
         failures += fail("crossing point", at, palette::kCulprit, seen);
-    Vec2 along = crossing.camera.toScreen({7.5, 2.5});  // on edge (10,0)-(0,10)
+    Vec2 along = crossing.camera().toScreen({7.5, 2.5});  // on edge (10,0)-(0,10)
     if (!near(img, along, palette::kCulprit, 1, &seen))
         failures += fail("culprit edge", along, palette::kCulprit, seen);
-    Vec2 inside = crossing.camera.toScreen({5, 8.5});  // inside the upper lobe, dimmed
+    Vec2 inside = crossing.camera().toScreen({5, 8.5});  // inside the upper lobe, dimmed
     if (near(img, inside, palette::kCulprit, 2, &seen) ||
         near(img, inside, palette::kPolygonFill, 0, &seen))
         failures +=

@@ -133,7 +133,7 @@ void strip(Ui& ui) {
     }
     if (ImGui::IsItemHovered()) {
         uint32_t i = tv.eventAt(mx, w, n);
-        ImGui::SetTooltip("step %u: %s", i + 1, describeEvent(m.trace(), ev[i]).c_str());
+        ImGui::SetTooltip("step %u: %s", i + 1, describeEvent(m.trace().polygon, ev[i]).c_str());
     }
 }
 
@@ -253,7 +253,7 @@ void drawTimeline(Ui& ui) {
     ImGui::SameLine();
     if (e) {
         ImGui::TextColored(toImVec4(palette::action(e->action)), "step %u: %s", m.step(),
-                           describeEvent(m.trace(), *e).c_str());
+                           describeEvent(m.trace().polygon, *e).c_str());
     } else {
         ImGui::TextDisabled("step 0: before the first event");
     }

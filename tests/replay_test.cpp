@@ -70,3 +70,37 @@ TEST(Replay, ForbiddenRunEndsOnTheForbiddenStep) {
 }
 
 }  // namespace
+
+// The replay state's operator== (core/replay.h) sees a change in any one field, a dormant
+// gorge's included.
+TEST(Replay, StatesDifferingInAnyFieldAreUnequal) {
+    Trace t = record(generate("staircase", 1, 60));
+    Replay replay(t);
+    ReplayState base;
+    for (uint32_t s = 0; s <= replay.size() && base.dormant.empty(); ++s) base = replay.seek(s);
+    ASSERT_FALSE(base.dormant.empty()) << "a step with a gorge waiting";
+    ASSERT_FALSE(base.chain.empty());
+    EXPECT_TRUE(base == ReplayState(base));
+    std::vector<void (*)(ReplayState&)> changes{
+        [](ReplayState& s) { ++s.step; },
+        [](ReplayState& s) { ++s.part; },
+        [](ReplayState& s) { ++s.fingers.nextRight; },
+        [](ReplayState& s) { ++s.water; },
+        [](ReplayState& s) { ++s.triangleCount; },
+        [](ReplayState& s) { s.chain.pop_back(); },
+        [](ReplayState& s) { s.dormant.pop_back(); },
+        [](ReplayState& s) { ++s.dormant[0].id; },
+        [](ReplayState& s) { s.dormant[0].held = !s.dormant[0].held; },
+        [](ReplayState& s) { ++s.dormant[0].top; },
+        [](ReplayState& s) { s.dormant[0].chain.push_back(0); },
+        [](ReplayState& s) { s.jumps.emplace_back(1, 2); },
+        [](ReplayState& s) { s.bridges.emplace_back(1, 2); },
+        [](ReplayState& s) { s.forbidden = !s.forbidden; },
+    };
+    for (size_t i = 0; i < changes.size(); ++i) {
+        ReplayState changed = base;
+        changes[i](changed);
+        EXPECT_FALSE(changed == base) << "change " << i;
+        EXPECT_TRUE(changed != base) << "change " << i;
+    }
+}

@@ -160,7 +160,7 @@ void invariantStatus(Ui& ui) {
     ImGui::TextColored(ImVec4(1, 0.55f, 0.2f, 1),
                        "invariants: %zu steps break one; first at step %u: %s (%s)", v.size(),
                        v.front().step, invariantName(v.front().which), v.front().detail.c_str());
-    if (ImGui::IsItemHovered())  // what the invariant says, for a reader who has not the paper
+    if (ImGui::IsItemHovered())  // the rule itself, beside the line saying how it broke
         ImGui::SetTooltip("%s: %s", invariantName(v.front().which), invariantText(v.front().which));
     ImGui::SameLine();
     if (ImGui::SmallButton("Go##invariant")) m.seek(v.front().step);

@@ -302,4 +302,17 @@ uint64_t Replay::apply(const Event& e) {
     return moved;
 }
 
+bool operator==(const Gorge& a, const Gorge& b) {
+    return a.id == b.id && a.held == b.held && a.top == b.top && a.chain == b.chain;
+}
+
+bool operator==(const ReplayState& a, const ReplayState& b) {
+    return a.step == b.step && a.part == b.part && a.fingers == b.fingers && a.water == b.water &&
+           a.triangleCount == b.triangleCount && a.chain == b.chain && a.dormant == b.dormant &&
+           a.jumps == b.jumps && a.bridges == b.bridges && a.forbidden == b.forbidden;
+}
+// A field added to Gorge or ReplayState must be compared above: the sizes say when one was.
+static_assert(sizeof(Gorge) == 40 && sizeof(ReplayState) == 136,
+              "Gorge or ReplayState changed: compare the new field in operator==");
+
 }  // namespace flood

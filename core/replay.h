@@ -47,6 +47,12 @@ struct ReplayState {
     bool forbidden = false;                        // the last applied event was Forbidden
 };
 
+// Equal in every field, dormant gorges in order: what a seek must reproduce, however it got
+// there (stepping, a keyframe, backwards).
+bool operator==(const Gorge& a, const Gorge& b);
+bool operator==(const ReplayState& a, const ReplayState& b);
+inline bool operator!=(const ReplayState& a, const ReplayState& b) { return !(a == b); }
+
 class Replay {
 public:
     // `keyframeInterval`: replay work (in events) between keyframes at least. A keyframe

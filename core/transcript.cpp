@@ -8,33 +8,42 @@ std::string triangleRange(uint32_t first, uint32_t count) {
     return std::to_string(first) + "-" + std::to_string(first + count - 1);
 }
 
-std::string transcript(const std::vector<Event>& events) {
-    std::string out, sep;
-    auto item = [&](Action a, uint32_t first, uint32_t count) {
-        out += sep;
-        out += actionName(a);
-        std::string range = triangleRange(first, count);
-        if (!range.empty()) out += " " + range;
-        bool endsGroup = a == Action::Spill || a == Action::Jump || a == Action::Fill;
-        sep = endsGroup ? "; " : ", ";
-    };
-    for (size_t i = 0; i < events.size();) {
+std::vector<TranscriptItem> transcriptItems(const std::vector<Event>& events) {
+    std::vector<TranscriptItem> items;
+    for (uint32_t i = 0; i < events.size();) {
         const Event& e = events[i];
         if (e.action == Action::Start) {
             ++i;
             continue;
         }
-        if (e.action != Action::Raise) {
-            item(e.action, e.firstTriangle, e.triangleCount);
-            ++i;
-            continue;
-        }
-        uint32_t first = e.firstTriangle, count = 0;
-        for (; i < events.size() && events[i].action == Action::Raise; ++i)
-            count += events[i].triangleCount;
-        item(Action::Raise, first, count);
+        // Triangles are cut in order, so a run of raises cut one contiguous range.
+        uint32_t last = i, count = e.triangleCount;
+        if (e.action == Action::Raise)
+            while (last + 1 < events.size() && events[last + 1].action == Action::Raise)
+                count += events[++last].triangleCount;
+        TranscriptItem item;
+        item.firstEvent = i;
+        item.lastEvent = last;
+        item.text = actionName(e.action);
+        std::string range = triangleRange(e.firstTriangle, count);
+        if (!range.empty()) item.text += " " + range;
+        item.endsGroup =
+            e.action == Action::Spill || e.action == Action::Jump || e.action == Action::Fill;
+        if (!items.empty()) items.back().separator = items.back().endsGroup ? "; " : ", ";
+        items.push_back(std::move(item));
+        i = last + 1;
     }
+    return items;
+}
+
+std::string transcript(const std::vector<TranscriptItem>& items) {
+    std::string out;
+    for (const TranscriptItem& item : items) out += item.text + item.separator;
     return out;
+}
+
+std::string transcript(const std::vector<Event>& events) {
+    return transcript(transcriptItems(events));
 }
 
 }  // namespace flood

@@ -10,19 +10,6 @@ using namespace flood::testing;
 
 namespace {
 
-bool sameState(const ReplayState& a, const ReplayState& b) {
-    if (a.step != b.step || !(a.fingers == b.fingers) || a.water != b.water ||
-        a.triangleCount != b.triangleCount || a.chain != b.chain || a.jumps != b.jumps ||
-        a.bridges != b.bridges || a.dormant.size() != b.dormant.size() ||
-        a.forbidden != b.forbidden)
-        return false;
-    for (size_t i = 0; i < a.dormant.size(); ++i)
-        if (a.dormant[i].id != b.dormant[i].id || a.dormant[i].chain != b.dormant[i].chain ||
-            a.dormant[i].held != b.dormant[i].held)
-            return false;
-    return true;
-}
-
 std::vector<Trace> sampleTraces() {
     std::vector<Trace> traces;
     for (const std::string& family : familyNames())
@@ -61,10 +48,10 @@ TEST(Replay, SeekEqualsSteppingForwardAndBackward) {
         std::vector<ReplayState> forward;
         for (uint32_t k = 0; k <= stepper.size(); ++k) forward.push_back(stepper.seek(k));
         for (uint32_t k = seeker.size() + 1; k-- > 0;)
-            ASSERT_TRUE(sameState(seeker.seek(k), forward[k])) << "backward seek to " << k;
+            ASSERT_TRUE(seeker.seek(k) == forward[k]) << "backward seek to " << k;
         for (uint32_t k : {7u, 3u, 40u, 0u, 99u, 12u}) {
             if (k <= seeker.size()) {
-                ASSERT_TRUE(sameState(seeker.seek(k), forward[k])) << "seek " << k;
+                ASSERT_TRUE(seeker.seek(k) == forward[k]) << "seek " << k;
             }
         }
     }
@@ -83,3 +70,37 @@ TEST(Replay, ForbiddenRunEndsOnTheForbiddenStep) {
 }
 
 }  // namespace
+
+// The replay state's operator== (core/replay.h) sees a change in any one field, a dormant
+// gorge's included.
+TEST(Replay, StatesDifferingInAnyFieldAreUnequal) {
+    Trace t = record(generate("staircase", 1, 60));
+    Replay replay(t);
+    ReplayState base;
+    for (uint32_t s = 0; s <= replay.size() && base.dormant.empty(); ++s) base = replay.seek(s);
+    ASSERT_FALSE(base.dormant.empty()) << "a step with a gorge waiting";
+    ASSERT_FALSE(base.chain.empty());
+    EXPECT_TRUE(base == ReplayState(base));
+    std::vector<void (*)(ReplayState&)> changes{
+        [](ReplayState& s) { ++s.step; },
+        [](ReplayState& s) { ++s.part; },
+        [](ReplayState& s) { ++s.fingers.nextRight; },
+        [](ReplayState& s) { ++s.water; },
+        [](ReplayState& s) { ++s.triangleCount; },
+        [](ReplayState& s) { s.chain.pop_back(); },
+        [](ReplayState& s) { s.dormant.pop_back(); },
+        [](ReplayState& s) { ++s.dormant[0].id; },
+        [](ReplayState& s) { s.dormant[0].held = !s.dormant[0].held; },
+        [](ReplayState& s) { ++s.dormant[0].top; },
+        [](ReplayState& s) { s.dormant[0].chain.push_back(0); },
+        [](ReplayState& s) { s.jumps.emplace_back(1, 2); },
+        [](ReplayState& s) { s.bridges.emplace_back(1, 2); },
+        [](ReplayState& s) { s.forbidden = !s.forbidden; },
+    };
+    for (size_t i = 0; i < changes.size(); ++i) {
+        ReplayState changed = base;
+        changes[i](changed);
+        EXPECT_FALSE(changed == base) << "change " << i;
+        EXPECT_TRUE(changed != base) << "change " << i;
+    }
+}

@@ -318,6 +318,7 @@ void runInteractive(Ui& ui, const Args& args, Styled& styled) {
         // The Export panel's export: a slice of it each frame, so the window stays live.
         if (ui.exportJob && !ui.exportJob->advance(1.0 / 30)) {
             ui.exportNote = ui.exportJob->message();
+            ui.exportFailed = ui.exportJob->status() != Status::Ok;
             ui.message = ui.exportNote;
             ui.exportJob.reset();
         }

@@ -20,7 +20,6 @@
 #include "io.h"
 #include "predicates.h"
 #include "trace_io.h"
-#include "transcript.h"
 #ifdef FLOOD_GDAL
 #include "gdal_io.h"
 #endif
@@ -126,82 +125,7 @@ bool hits(const Breakpoints& b, const Event& e) {
     return false;
 }
 
-// ========================================================================================
-// [SECTION] text views
-static std::string vertexName(Index v) { return v == kNone ? "-" : std::to_string(v); }
-
-std::string describeEvent(const Trace& trace, const Event& e) {
-    std::ostringstream s;
-    s << actionName(e.action);
-    const char* c = e.side == Side::Left ? "Left" : "Right";
-    switch (e.action) {
-        case Action::Start:
-            s << " at bottom " << vertexName(e.bottom) << " (part " << e.part << ")";
-            break;
-        case Action::Raise:
-            s << " " << c << ": Next" << c << " "
-              << vertexName(e.side == Side::Left ? e.before.nextLeft : e.before.nextRight)
-              << " joins the chain";
-            break;
-        case Action::Bridge:
-            s << " sag " << vertexName(e.sag) << " to " << vertexName(e.bridgeTo);
-            if (e.gorgePushed != kNone) s << ", gorge " << e.gorgePushed << " pending";
-            break;
-        case Action::Spill:
-            s << " over top " << vertexName(e.top) << " (jump -> " << vertexName(e.jumpTarget)
-              << "), new gorge at " << vertexName(e.bottom);
-            break;
-        case Action::Jump:
-            s << " from top " << vertexName(e.top) << " to " << vertexName(e.jumpTarget);
-            break;
-        case Action::Fill:
-            s << " at " << vertexName(e.before.nextLeft);
-            if (e.gorgePopped != kNone) s << ", resume gorge " << e.gorgePopped;
-            break;
-        case Action::Forbidden: s << ": " << describeForbidden(trace.polygon, e); break;
-        default: break;
-    }
-    if (e.triangleCount == 1) s << "; triangle " << e.firstTriangle;
-    if (e.triangleCount > 1)
-        s << "; triangles " << e.firstTriangle << "-" << e.firstTriangle + e.triangleCount - 1;
-    return s.str();
-}
-
-std::vector<TranscriptItem> buildTranscript(const Trace& trace) {
-    // Same grouping as flood::transcript() (core/transcript.h), with the events of each item
-    // kept so the panel can jump to them.
-    std::vector<TranscriptItem> items;
-    const auto& ev = trace.events;
-    for (uint32_t i = 0; i < ev.size();) {
-        if (ev[i].action == Action::Start) {
-            ++i;
-            continue;
-        }
-        TranscriptItem it;
-        it.firstEvent = i;
-        uint32_t first = kNone, last = 0, j = i;
-        do {
-            if (ev[j].triangleCount) {
-                if (first == kNone) first = ev[j].firstTriangle;
-                last = ev[j].firstTriangle + ev[j].triangleCount;
-            }
-            ++j;
-        } while (ev[i].action == Action::Raise && j < ev.size() && ev[j].action == Action::Raise);
-        it.lastEvent = j - 1;
-        it.text = actionName(ev[i].action);
-        std::string range = first == kNone ? "" : triangleRange(first, last - first);
-        if (!range.empty()) it.text += " " + range;
-        // The paper's punctuation: a Spill, Jump or Fill ends a group.
-        if (!items.empty()) {
-            Action a = ev[items.back().firstEvent].action;
-            items.back().separator =
-                a == Action::Spill || a == Action::Jump || a == Action::Fill ? "; " : ", ";
-        }
-        items.push_back(std::move(it));
-        i = j;
-    }
-    return items;
-}
+// [SECTION] text views: core/describe.cpp (an event in one line), core/transcript.cpp (items)
 
 // ========================================================================================
 // [SECTION] Predicate inspector
@@ -503,7 +427,7 @@ void Model::adopt(std::unique_ptr<Trace> trace) {
     trace_ = std::move(trace);
     replay_ = std::make_unique<Replay>(*trace_);
     classes_ = classifyVertices(trace_->polygon, trace_->up);
-    transcript_ = buildTranscript(*trace_);
+    transcript_ = transcriptItems(trace_->events);
     triangleStep_.assign(trace_->triangles.size(), 0);
     for (const Event& e : trace_->events)
         for (uint32_t t = e.firstTriangle;

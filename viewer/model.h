@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "checker.h"
+#include "describe.h"
 #include "events.h"
 #include "flood.h"
 #include "geometry.h"  // Vec2, Rect
@@ -25,6 +26,7 @@
 #include "shrink.h"
 #include "state_table.h"
 #include "status.h"
+#include "transcript.h"
 #include "vertex_class.h"
 
 #include <thread>
@@ -81,16 +83,8 @@ struct Breakpoints {
 bool hits(const Breakpoints& b, const Event& e);
 
 // ----------------------------------------------------------------------------------------
-// Text views of the log.
-std::string describeEvent(const Trace& trace, const Event& e);  // one line per event
-// The items of flood::transcript() (Fig. 7 caption: runs of Raise merge into "Raise 0-7"),
-// each with the events it covers.
-struct TranscriptItem {
-    uint32_t firstEvent = 0, lastEvent = 0;  // inclusive event indices
-    std::string text;
-    std::string separator;  // what follows it in the transcript: ", ", "; " or "" (the last)
-};
-std::vector<TranscriptItem> buildTranscript(const Trace& trace);
+// Text views of the log: an event in one line (core/describe.h), the transcript's items
+// (core/transcript.h).
 
 // ----------------------------------------------------------------------------------------
 // The verdict, one line per finding. Ok only when the exact checker passed on valid input;

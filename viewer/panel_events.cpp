@@ -56,7 +56,7 @@ void drawEvents(Ui& ui) {
                     ui.eventsScrolledTo = m.step();  // the user scrolled here: do not jump
                 }
                 if (ImGui::IsItemHovered())
-                    ImGui::SetTooltip("%s", describeEvent(m.trace(), e).c_str());
+                    ImGui::SetTooltip("%s", describeEvent(m.trace().polygon, e).c_str());
                 ImGui::TableNextColumn();
                 ImGui::TextColored(toImVec4(palette::action(e.action)), "%s", actionName(e.action));
                 ImGui::TableNextColumn();

@@ -102,8 +102,8 @@ void drawExport(Ui& ui) {
     }
     if (!ui.exportNote.empty()) {
         ImGui::PushTextWrapPos(0);
-        bool failed = ui.exportNote.rfind("error", 0) == 0;
-        if (failed) ImGui::TextColored(toImVec4(palette::kCulprit), "%s", ui.exportNote.c_str());
+        if (ui.exportFailed)
+            ImGui::TextColored(toImVec4(palette::kCulprit), "%s", ui.exportNote.c_str());
         else ImGui::TextDisabled("%s", ui.exportNote.c_str());
         ImGui::PopTextWrapPos();
     }

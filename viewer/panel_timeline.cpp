@@ -111,7 +111,7 @@ void strip(Ui& ui) {
     }
     if (ImGui::IsItemHovered()) {
         uint32_t i = tv.eventAt(mx, w, n);
-        ImGui::SetTooltip("step %u: %s", i + 1, describeEvent(m.trace(), ev[i]).c_str());
+        ImGui::SetTooltip("step %u: %s", i + 1, describeEvent(m.trace().polygon, ev[i]).c_str());
     }
 }
 
@@ -138,6 +138,8 @@ void invariantStatus(Ui& ui) {
     ImGui::TextColored(ImVec4(1, 0.55f, 0.2f, 1),
                        "invariants: %zu steps break one; first at step %u: %s (%s)", v.size(),
                        v.front().step, invariantName(v.front().which), v.front().detail.c_str());
+    if (ImGui::IsItemHovered())  // the rule itself, beside the line saying how it broke
+        ImGui::SetTooltip("%s: %s", invariantName(v.front().which), invariantText(v.front().which));
     ImGui::SameLine();
     if (ImGui::SmallButton("Go##invariant")) m.seek(v.front().step);
     if (m.forbiddenStep()) {
@@ -228,7 +230,7 @@ void drawTimeline(Ui& ui) {
     ImGui::SameLine();
     if (e) {
         ImGui::TextColored(toImVec4(palette::action(e->action)), "step %u: %s", m.step(),
-                           describeEvent(m.trace(), *e).c_str());
+                           describeEvent(m.trace().polygon, *e).c_str());
     } else {
         ImGui::TextDisabled("step 0: before the first event");
     }

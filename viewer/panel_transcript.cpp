@@ -1,6 +1,6 @@
 // The run told like the caption of the paper's Fig. 7 ("Raise 0-7, Spill; ..."), flowing
-// like text with the paper's ", " and "; " between items; the item holding the current step
-// is highlighted, and clicking an item goes there.
+// like text with the paper's ", " and "; " between items (the core's, core/transcript.h); the
+// item holding the current step is highlighted, and clicking an item goes there.
 #include <imgui.h>
 
 #include <algorithm>
@@ -16,7 +16,7 @@ void drawTranscript(Ui& ui) {
     const Rect& col = ui.layout.right;
     beginTiled("Transcript", {col.x, col.y + col.h * 0.6, col.w, col.h * 0.4});
     const auto& items = m.transcript();
-    if (ImGui::SmallButton("Copy")) ImGui::SetClipboardText(transcript(m.trace().events).c_str());
+    if (ImGui::SmallButton("Copy")) ImGui::SetClipboardText(transcript(items).c_str());
     ImGui::SameLine();
     ImGui::TextDisabled("(%zu items, %u events)", items.size(), m.steps());
     ImGui::BeginChild("text");

@@ -135,6 +135,7 @@ struct Ui {
     char exportPath[1024] = "";
     std::shared_ptr<ExportJob> exportJob;   // running, advanced by main after each frame
     std::string exportNote;                 // the last export's outcome
+    bool exportFailed = false;              // ... and whether it failed (drawn red)
     bool showDecisionTree = false;          // the Fig. 9 tree in a window of its own
     std::vector<uint64_t> treeCounts;       // events through each node of the tree, over the trace
     uint64_t treeCountsGeneration = ~0ull;  // Model::generation() they were counted for

@@ -55,7 +55,7 @@ int printSummary(const std::string& why, Model& model, const Args& args) {
     std::printf("  transcript: %s\n", transcript(model.trace().events).c_str());
     std::printf(
         "For more without a display:\n"
-        "  flood transcript %s      every event, one per line\n"
+        "  flood transcript --narrate %s  every event, one per line\n"
         "  flood trace %s           the recorded trace\n"
         "  xvfb-run -a flood-viewer %s --step N --screenshot out.png\n",
         model.path().c_str(), model.path().c_str(), model.path().c_str());

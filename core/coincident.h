@@ -1,7 +1,7 @@
 // Points that repeat, where rings touch at a shared vertex: the one search for them, used by
-// the flood machine (merging touching loops), validation (check 5's touching points), the
-// triangle count (Polygon::expectedTriangles) and the unvalidated T-junction search
-// (touches.cpp). The exact checker keeps its own (an oracle).
+// the flood machine (merging touching loops), the triangle count (Polygon::expectedTriangles)
+// and the unvalidated T-junction search (touches.cpp). Validation needs none: its sweep's
+// sorted events put coincident vertices side by side. The exact checker keeps its own (an oracle).
 // Internal to core/, not a public API.
 #pragma once
 #include <cstddef>

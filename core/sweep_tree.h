@@ -12,12 +12,20 @@
 
 namespace flood {
 
+// The tree's links, indexed by edge: kept by a caller that sweeps often, so that a warm sweep
+// allocates nothing.
+struct SweepTreeLinks {
+    std::vector<Index> left, right, up;
+};
+
 // Less(a, b): a before b; a strict total order on the edges present whenever one is inserted.
 template <typename Less>
 class SweepTree {
 public:
-    SweepTree(size_t edges, Less less)
-        : less_(less), left_(edges, kNone), right_(edges, kNone), up_(edges, kNone) {}
+    SweepTree(size_t edges, Less less, SweepTreeLinks& links)
+        : less_(less), left_(links.left), right_(links.right), up_(links.up) {
+        left_.assign(edges, kNone), right_.assign(edges, kNone), up_.assign(edges, kNone);
+    }
 
     const Less& less() const { return less_; }
     Index first() const {
@@ -51,6 +59,27 @@ public:
         if (p == kNone) root_ = kNone;
         else (left_[p] == e ? left_ : right_)[p] = kNone;
         up_[e] = kNone;
+    }
+
+    // Puts f (not present) in the place of e (present, then removed), without a comparison:
+    // for an f that the order puts between e's neighbours, the same tree as erase(e) then
+    // insert(f). A treap with distinct priorities has one shape per order, so rotations that
+    // restore the heap order of f's priority make it.
+    void replace(Index e, Index f) {
+        Index p = up_[e];
+        left_[f] = left_[e], right_[f] = right_[e], up_[f] = p;
+        if (left_[f] != kNone) up_[left_[f]] = f;
+        if (right_[f] != kNone) up_[right_[f]] = f;
+        if (p == kNone) root_ = f;
+        else (left_[p] == e ? left_ : right_)[p] = f;
+        left_[e] = right_[e] = up_[e] = kNone;
+        while (up_[f] != kNone && priority(f) > priority(up_[f])) rotateUp(f);
+        for (;;) {
+            Index l = left_[f], r = right_[f];
+            Index top = r == kNone || (l != kNone && priority(l) > priority(r)) ? l : r;
+            if (top == kNone || priority(top) < priority(f)) break;
+            rotateUp(top);
+        }
     }
 
     // The neighbours of e (present) in the order, or kNone.
@@ -97,7 +126,7 @@ private:
     }
 
     Less less_;
-    std::vector<Index> left_, right_, up_;
+    std::vector<Index>&left_, &right_, &up_;
     Index root_ = kNone;
 };
 

@@ -27,22 +27,24 @@
 // of parts is detected.
 //
 // All decisions use the exact flood::orient() and coordinate comparisons; no floating-point
-// arithmetic decides anything. Cost: O(n log n) — a sort of the vertices for the sweep, a
-// hash search for coincident vertices (coincident.h) and a sort of those, a treap sweep
-// (sweep_tree.h) with O(1) tests per event, and at a point shared by k rings a sort of their
-// 2k rays and O(log k) per ring to find a crossing (validatorSteps in core/work.h counts the
-// work, tests/validate_growth_test.cpp bounds it).
+// arithmetic decides anything. Cost: O(n log n) — a sort of the vertices for the sweep (which
+// puts coincident vertices side by side, so no search finds them) and a sort of those, a treap
+// sweep (sweep_tree.h) with O(1) tests per event, and at a point shared by k rings a sort of
+// their 2k rays and O(log k) per ring to find a crossing (validatorSteps in core/work.h counts
+// the work, tests/validate_growth_test.cpp bounds it). A small single ring is checked by testing
+// its pairs of edges instead of sweeping (pairsClear()), with the sweep's verdicts
+// (tests/validate_paths_test.cpp).
 #include <algorithm>
 #include <cmath>
 #include <optional>
 #include <string>
 
-#include "coincident.h"
 #include "io.h"
 #include "io_util.h"
 #include "predicates.h"
 #include "ring_area.h"
 #include "sweep_tree.h"
+#include "validate_paths.h"
 #include "work.h"
 
 namespace flood {
@@ -50,19 +52,76 @@ namespace {
 
 using io_detail::formatPoint;
 
+// An edge as the sweep sees it: its lower and upper vertex (both the vertex of a point hole).
+// Vertex indices, not points: 8 bytes an edge.
+struct Segment {
+    Index lo, hi;
+};
+
+// A vertex as a sweep event: its point and index, so that sorting reads no other array.
+struct EventKey {
+    Point p;
+    Index v;
+};
+
+// Where rings touch (check 5): every ring passing through one point, as the wedge of its
+// two rays there. A vertex occurrence has owner = its vertex; a T-junction's edge has
+// owner = n + its index in `junctions`. Each point's list is sorted by owner.
+struct Occurrence {
+    Index owner, ring;
+    Point from, to;  // the ring arrives from `from` and leaves towards `to`
+};
+
+// Every array validation works in, kept between calls on one thread (validate() below) so that
+// validating a small polygon allocates nothing once warm: on a 15-vertex polygon the dozens of
+// allocations were most of the cost. Each user resets what it uses.
+struct Scratch {
+    std::vector<EdgeSplit> junctions, splits;
+    std::vector<Index> ringOfV, partOfRing, enclosing, groupOf;
+    std::vector<int> ringSign;
+    std::vector<Point> ringPoints;  // check 2's distinct-point count
+    std::vector<Segment> segs;
+    std::vector<EventKey> keys;
+    std::vector<Index> events, ending, starting, points, newRings, leftmostOf;
+    std::vector<char> ringSeen;
+    std::vector<std::pair<Index, Index>> leftmost, copies;
+    SweepTreeLinks links;
+    std::vector<std::vector<Occurrence>> touchPoints;
+};
+
 struct Validator {
     const Polygon& P;
     const std::string& name;
-    std::vector<EdgeSplit> junctions;  // vertex strictly inside another ring's edge (check 4)
-    std::vector<EdgeSplit> splits;     // the junctions within one part, for the machine
-    std::optional<Index> zeroArea;     // first vertex of the first ring of zero area (check 3)
-    bool edgesCrossed = false;         // check 4's problem is a crossing of two edges
+    Scratch& s;
+    std::vector<EdgeSplit>& junctions;  // vertex strictly inside another ring's edge (check 4)
+    std::vector<EdgeSplit>& splits;     // the junctions within one part, for the machine
+    std::optional<Index> zeroArea;      // first vertex of the first ring of zero area (check 3)
+    bool edgesCrossed = false;          // check 4's problem is a crossing of two edges
+    bool pairsFirst = true;             // small single rings: pairsClear() before any sweep
     size_t n = 0;
-    std::vector<Index> ringOfV;  // ring of each vertex
-    std::vector<int> ringSign;   // orientation of each ring: +1 counter-clockwise, -1 clockwise
-    std::vector<Index> partOfRing;
+    std::vector<Index>& ringOfV;  // ring of each vertex
+    std::vector<int>& ringSign;   // orientation of each ring: +1 counter-clockwise, -1 clockwise
+    std::vector<Index>& partOfRing;
+    // Vertices at one point, (the lowest one there, a later one), in the sweep's order: equal
+    // points are neighbours in its sorted events, so no search is needed for them.
+    std::vector<std::pair<Index, Index>>& copies;
 
-    Validator(const Polygon& p, const std::string& nm) : P(p), name(nm), n(p.vertices.size()) {}
+    Validator(const Polygon& p, const std::string& nm, Scratch& scratch)
+        : P(p),
+          name(nm),
+          s(scratch),
+          junctions(scratch.junctions),
+          splits(scratch.splits),
+          n(p.vertices.size()),
+          ringOfV(scratch.ringOfV),
+          ringSign(scratch.ringSign),
+          partOfRing(scratch.partOfRing),
+          copies(scratch.copies),
+          groupOf(scratch.groupOf),
+          enclosing(scratch.enclosing),
+          touchPoints(scratch.touchPoints) {
+        junctions.clear(), splits.clear(), copies.clear(), touchPoints.clear();
+    }
 
     Index next(Index v) const {
         const Ring& r = P.rings[ringOfV[v]];
@@ -125,6 +184,7 @@ struct Validator {
     Diagnostic checkRings();
     Diagnostic checkEdges();  // sweepEdges(), then orderJunctions()
     void sweepEdges();
+    bool pairsClear();
     void classifyMeeting(Index e, Index f);
     void touchOnEdge(Index vertex, Index edge);
     void orderJunctions();
@@ -134,17 +194,9 @@ struct Validator {
     Diagnostic checkTouchTopology();
     Diagnostic checkHoles();
 
-    std::vector<Index> groupOf;    // touch point (index into touchPoints) of each vertex, or kNone
-    std::vector<Index> enclosing;  // innermost ring whose interior contains each ring
-
-    // Where rings touch (check 5): every ring passing through one point, as the wedge of its
-    // two rays there. A vertex occurrence has owner = its vertex; a T-junction's edge has
-    // owner = n + its index in `junctions`. Each point's list is sorted by owner.
-    struct Occurrence {
-        Index owner, ring;
-        Point from, to;  // the ring arrives from `from` and leaves towards `to`
-    };
-    std::vector<std::vector<Occurrence>> touchPoints;
+    std::vector<Index>& groupOf;    // touch point (index into touchPoints) of each vertex, or kNone
+    std::vector<Index>& enclosing;  // innermost ring whose interior contains each ring
+    std::vector<std::vector<Occurrence>>& touchPoints;  // see Occurrence
     void collectTouchPoints();
     std::string occurrenceText(const Occurrence& o) const {
         return o.owner < n ? at(o.owner) : "edge " + edgeText(junctions[o.owner - n].edge);
@@ -158,6 +210,28 @@ struct Validator {
 
 // --- exact geometric helpers -------------------------------------------------------------
 
+// orient(), answered at once where the three points lie on one vertical or horizontal line:
+// collinear exactly, a case the filter cannot decide (its determinant is zero), so orient()
+// would go on to expansions. Orthogonal polygons make most of the validator's collinear triples.
+int orientAxisFirst(Point a, Point b, Point c) {
+    if ((a.x == b.x && b.x == c.x) || (a.y == b.y && b.y == c.y)) return 0;
+    return orient(a, b, c);
+}
+
+// insideSegment(a, b, c) for a c known to be collinear with a and b: the comparisons alone.
+bool betweenOnLine(Point a, Point b, Point c) {
+    if (c == a || c == b) return false;
+    if (a.x != b.x) return (a.x < c.x && c.x < b.x) || (b.x < c.x && c.x < a.x);
+    return (a.y < c.y && c.y < b.y) || (b.y < c.y && c.y < a.y);
+}
+
+// The closed bounding boxes of segments ab and cd do not meet: the segments cannot cross,
+// overlap or touch. Comparisons only.
+bool boxesApart(Point a, Point b, Point c, Point d) {
+    return std::max(a.x, b.x) < std::min(c.x, d.x) || std::max(c.x, d.x) < std::min(a.x, b.x) ||
+           std::max(a.y, b.y) < std::min(c.y, d.y) || std::max(c.y, d.y) < std::min(a.y, b.y);
+}
+
 // Half of the plane around p in which direction p->a lies: 0 for angles [0, pi), 1 for
 // [pi, 2 pi). Exact: only comparisons.
 int half(Point p, Point a) { return (a.y > p.y || (a.y == p.y && a.x > p.x)) ? 0 : 1; }
@@ -167,29 +241,22 @@ bool angleLess(Point p, Point a, Point b) {
     ++work().validatorSteps;
     int ha = half(p, a), hb = half(p, b);
     if (ha != hb) return ha < hb;
-    return orient(p, a, b) > 0;
-}
-bool sameDirection(Point p, Point a, Point b) {
-    return half(p, a) == half(p, b) && orient(p, a, b) == 0;
+    return orientAxisFirst(p, a, b) > 0;
 }
 
-// The vertices in the order of `less` on their points, ties by index. Sorted as (point,
-// index) records, so no comparison reaches into the vertex array: at 10^6 vertices a sort of
-// bare indices spent most of its time waiting for memory.
+// The vertices in the order of `less` on their points, ties by index, into `order`. Sorted as
+// (point, index) records, so no comparison reaches into the vertex array: at 10^6 vertices a
+// sort of bare indices spent most of its time waiting for memory.
 template <typename Less>
-std::vector<Index> sortedVertices(const std::vector<Point>& V, Less less) {
-    struct Key {
-        Point p;
-        Index v;
-    };
-    std::vector<Key> keys(V.size());
+void sortVertices(const std::vector<Point>& V, Less less, std::vector<EventKey>& keys,
+                  std::vector<Index>& order) {
+    keys.resize(V.size());
     for (Index v = 0; v < V.size(); ++v) keys[v] = {V[v], v};
-    std::sort(keys.begin(), keys.end(), [&](const Key& a, const Key& b) {
+    std::sort(keys.begin(), keys.end(), [&](const EventKey& a, const EventKey& b) {
         return less(a.p, b.p) || (a.p == b.p && a.v < b.v);
     });
-    std::vector<Index> order(V.size());
+    order.resize(V.size());
     for (size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].v;
-    return order;
 }
 
 // --- checks 1 to 3: coordinates and rings ------------------------------------------------
@@ -198,7 +265,7 @@ Diagnostic Validator::checkRings() {
     for (Index v = 0; v < n; ++v)
         if (!std::isfinite(pt(v).x) || !std::isfinite(pt(v).y))
             return fail(v, "coordinate is not a finite number");
-    std::vector<Point> tmp;
+    std::vector<Point>& tmp = s.ringPoints;
     for (Index r = 0; r < P.rings.size(); ++r) {
         const Ring& ring = P.rings[r];
         if (ring.count == 0) {
@@ -250,12 +317,6 @@ Diagnostic Validator::checkRings() {
 // order. The same sweep records, for each ring, the ring whose interior immediately encloses
 // it (the edge just left of the ring's lowest vertex tells), used by check 6.
 
-// An edge as the sweep sees it: its lower and upper vertex (both the vertex of a point hole).
-// Vertex indices, not points: 8 bytes an edge.
-struct Segment {
-    Index lo, hi;
-};
-
 struct SweepOrder {
     const std::vector<Segment>* segs;
     const Point* at;  // the polygon's vertices
@@ -265,12 +326,12 @@ struct SweepOrder {
         const Point alo = at[(*segs)[ia].lo], ahi = at[(*segs)[ia].hi];
         const Point blo = at[(*segs)[ib].lo], bhi = at[(*segs)[ib].hi];
         if (!below(alo, blo)) {  // a starts at or after b: place a.lo against b
-            int o = orient(blo, bhi, alo);
-            if (o == 0) o = orient(blo, bhi, ahi);
+            int o = orientAxisFirst(blo, bhi, alo);
+            if (o == 0) o = orientAxisFirst(blo, bhi, ahi);
             if (o != 0) return o > 0;
         } else {
-            int o = orient(alo, ahi, blo);
-            if (o == 0) o = orient(alo, ahi, bhi);
+            int o = orientAxisFirst(alo, ahi, blo);
+            if (o == 0) o = orientAxisFirst(alo, ahi, bhi);
             if (o != 0) return o < 0;
         }
         return ia < ib;  // collinear: an overlap, reported when they are tested
@@ -286,7 +347,7 @@ void Validator::classifyMeeting(Index e, Index f) {
     if (isPoint(f)) std::swap(e, f);
     Point a = pt(e), b = pt(next(e)), c = pt(f), d = pt(next(f));
     if (isPoint(e)) {  // a point against an edge (or another point: met in check 5)
-        if (!isPoint(f) && insideSegment(c, d, a)) touchOnEdge(e, f);
+        if (!isPoint(f) && !boxesApart(a, a, c, d) && insideSegment(c, d, a)) touchOnEdge(e, f);
         return;
     }
     // Adjacent edges of one ring meet at their shared vertex; only a spike is wrong.
@@ -296,15 +357,23 @@ void Validator::classifyMeeting(Index e, Index f) {
         if (next(e1) != e2) continue;
         adjacent = true;
         Point p = pt(e1), q = pt(e2), s = pt(next(e2));
-        if (orient(p, q, s) == 0 && sameDirection(q, p, s)) {
+        // Collinear, and p and s in one direction from q (orient(q, p, s) is minus this one).
+        if (orientAxisFirst(p, q, s) == 0 && half(q, p) == half(q, s)) {
             problemCulprits = atPoint(e2, {e1, e2});
             problem.emplace(e2, "the ring folds back on itself here (spike): edge " + edgeText(e1) +
                                     " overlaps the next edge");
             return;
         }
     }
-    if (adjacent) return;
-    int o1 = orient(a, b, c), o2 = orient(a, b, d), o3 = orient(c, d, a), o4 = orient(c, d, b);
+    if (adjacent || boxesApart(a, b, c, d)) return;
+    // With c and d strictly on one side of line ab nothing can happen: no crossing, no overlap,
+    // and neither a nor b strictly inside cd (orient(a, b, ·) is affine along cd, so at a point
+    // of cd on the line ab its values at c and d have opposite signs or are zero). Likewise
+    // with a and b strictly on one side of line cd.
+    int o1 = orientAxisFirst(a, b, c), o2 = orientAxisFirst(a, b, d);
+    if (o1 * o2 > 0) return;
+    int o3 = orientAxisFirst(c, d, a), o4 = orientAxisFirst(c, d, b);
+    if (o3 * o4 > 0) return;
     Index lo = std::min(e, f), hi = std::max(e, f);
     if (o1 * o2 < 0 && o3 * o4 < 0) {
         edgesCrossed = true;
@@ -324,10 +393,10 @@ void Validator::classifyMeeting(Index e, Index f) {
                             "edge " + edgeText(lo) + " overlaps collinear edge " + edgeText(hi));
         return;
     }
-    if (o1 == 0 && insideSegment(a, b, c)) touchOnEdge(f, e);
-    else if (o2 == 0 && insideSegment(a, b, d)) touchOnEdge(next(f), e);
-    else if (o3 == 0 && insideSegment(c, d, a)) touchOnEdge(e, f);
-    else if (o4 == 0 && insideSegment(c, d, b)) touchOnEdge(next(e), f);
+    if (o1 == 0 && betweenOnLine(a, b, c)) touchOnEdge(f, e);
+    else if (o2 == 0 && betweenOnLine(a, b, d)) touchOnEdge(next(f), e);
+    else if (o3 == 0 && betweenOnLine(c, d, a)) touchOnEdge(e, f);
+    else if (o4 == 0 && betweenOnLine(c, d, b)) touchOnEdge(next(e), f);
 }
 
 // `vertex` lies strictly inside `edge`: a touch between rings (a junction, checked in check 5),
@@ -347,20 +416,25 @@ void Validator::touchOnEdge(Index vertex, Index edge) {
 // The sweep: every pair of edges that become neighbours along the sweep line goes to
 // classifyMeeting(); it stops at the first problem. Also fills enclosing[].
 void Validator::sweepEdges() {
-    std::vector<Segment> segs(n);
+    std::vector<Segment>& segs = s.segs;
+    segs.resize(n);
     for (Index v = 0; v < n; ++v) {
         Index w = next(v);
         segs[v] = below(pt(v), pt(w)) ? Segment{v, w} : Segment{w, v};
     }
     // The ring runs from lo to hi along edge e (false for a point hole).
     auto up = [&](Index e) { return segs[e].lo == e && segs[e].hi != e; };
-    const std::vector<Index> events =
-        sortedVertices(P.vertices, [](Point a, Point b) { return below(a, b); });
-    SweepTree<SweepOrder> active(n, SweepOrder{&segs, P.vertices.data()});
+    std::vector<Index>& events = s.events;
+    sortVertices(
+        P.vertices, [](Point a, Point b) { return below(a, b); }, s.keys, events);
+    SweepTree<SweepOrder> active(n, SweepOrder{&segs, P.vertices.data()}, s.links);
     enclosing.assign(P.rings.size(), kNone);
-    std::vector<char> ringSeen(P.rings.size(), 0);
-    std::vector<Index> ending, starting, points, newRings;
-    std::vector<Index> leftmostOf(P.rings.size(), kNone);  // of each ring starting at the event
+    std::vector<char>& ringSeen = s.ringSeen;
+    ringSeen.assign(P.rings.size(), 0);
+    std::vector<Index>&ending = s.ending, &starting = s.starting, &points = s.points,
+    &newRings = s.newRings;
+    std::vector<Index>& leftmostOf = s.leftmostOf;  // of each ring starting at the event
+    leftmostOf.assign(P.rings.size(), kNone);
     // The ring whose interior holds what is just right of the active edge before `e`.
     auto enclosingAt = [&](Index e) {
         Index left = active.prev(e);
@@ -375,6 +449,7 @@ void Validator::sweepEdges() {
         ending.clear(), starting.clear(), points.clear(), newRings.clear();
         for (; j < n && pt(events[j]) == p; ++j) {
             Index v = events[j];
+            if (j > i) copies.emplace_back(events[i], v);
             Index r = ringOfV[v];
             if (isPoint(v)) {
                 points.push_back(v);
@@ -384,14 +459,25 @@ void Validator::sweepEdges() {
             if (!ringSeen[r]) ringSeen[r] = 1, newRings.push_back(r);  // 2 once placed
         }
         i = j;
+        bool handedOver = false;
         for (Index e : ending) {
             Index before = active.prev(e), after = active.next(e);
             if (before != kNone) classifyMeeting(e, before);
             if (after != kNone) classifyMeeting(e, after);
-            active.erase(e);
+            // Where the boundary passes on, the last edge to end hands its place to the first
+            // to start when that one lies between the same neighbours: two comparisons instead
+            // of a search, the same tree, and the same tests in the same order.
+            Index f = e == ending.back() && !starting.empty() ? starting[0] : kNone;
+            handedOver = f != kNone && (before == kNone || active.less()(before, f)) &&
+                         (after == kNone || active.less()(f, after));
+            if (handedOver) active.replace(e, f);
+            else active.erase(e);
             if (before != kNone && after != kNone) classifyMeeting(before, after);
+            if (handedOver && before != kNone) classifyMeeting(f, before);
+            if (handedOver && after != kNone) classifyMeeting(f, after);
         }
-        for (Index e : starting) {
+        for (size_t k = handedOver ? 1 : 0; k < starting.size(); ++k) {
+            Index e = starting[k];
             active.insert(e);
             if (Index before = active.prev(e); before != kNone) classifyMeeting(e, before);
             if (Index after = active.next(e); after != kNone) classifyMeeting(e, after);
@@ -414,7 +500,8 @@ void Validator::sweepEdges() {
             Index r = ringOfV[e], &best = leftmostOf[r];
             if (ringSeen[r] == 1 && (best == kNone || active.less()(e, best))) best = e;
         }
-        std::vector<std::pair<Index, Index>> leftmost;  // (leftmost edge, ring)
+        std::vector<std::pair<Index, Index>>& leftmost = s.leftmost;  // (leftmost edge, ring)
+        leftmost.clear();
         for (Index r : newRings) leftmost.emplace_back(leftmostOf[r], r), ringSeen[r] = 2;
         std::sort(leftmost.begin(), leftmost.end(),
                   [&](auto a, auto b) { return active.less()(a.first, b.first); });
@@ -440,7 +527,36 @@ void Validator::orderJunctions() {
                     junctions.end());
 }
 
+// Check 4 on a small single ring: every pair of edges whose boxes meet goes to
+// classifyMeeting(), with no sort and no tree. When no pair shows anything (no problem, no
+// vertex on another edge, no point twice), the sweep would find nothing either — its tests are
+// these on fewer pairs — and a single ring encloses nothing and lies in nothing. Whatever a pair
+// shows is forgotten and left to the sweep, whose order decides which problem is reported.
+// Below kPairsUpTo vertices this costs fewer instructions than the sweep (docs/BENCHMARKS.md,
+// "Validation cost").
+constexpr size_t kPairsUpTo = 96;
+
+bool Validator::pairsClear() {
+    const Point* V = P.vertices.data();
+    for (Index e = 0; e < n; ++e) {
+        Point a = V[e], b = V[e + 1 == n ? 0 : e + 1];
+        for (Index f = e + 1; f < n; ++f) {
+            Point c = V[f], d = V[f + 1 == n ? 0 : f + 1];
+            if (boxesApart(a, b, c, d)) continue;
+            if (a == c) return false;  // a point twice: the rings (here one) touch there
+            classifyMeeting(e, f);
+            if (problem || !junctions.empty()) return false;
+        }
+    }
+    return true;
+}
+
 Diagnostic Validator::checkEdges() {
+    if (pairsFirst && P.rings.size() == 1 && n <= kPairsUpTo && pairsClear()) {
+        enclosing.assign(1, kNone);
+        return {};
+    }
+    problem.reset(), problemCulprits = {}, edgesCrossed = false, junctions.clear();
     sweepEdges();
     if (problem) return fail(problem->first, problem->second, problemCulprits);
     orderJunctions();
@@ -453,10 +569,8 @@ Diagnostic Validator::checkEdges() {
 // of every T-junction, which passes straight through its vertex's point. Then picks the
 // machine's splits: a junction whose edge's part has a vertex at the point (the lowest one).
 void Validator::collectTouchPoints() {
-    // The repeated points (most inputs have none), in coordinate order (x, then y), each
-    // point's vertices by index: (first vertex there, a later one) sorted so.
-    std::vector<std::pair<Index, Index>> copies =
-        repeatedPoints(n, [&](size_t v) { return pt(Index(v)); });
+    // The repeated points (most inputs have none) in coordinate order (x, then y), each
+    // point's vertices by index.
     std::sort(copies.begin(), copies.end(),
               [&](std::pair<Index, Index> a, std::pair<Index, Index> b) {
                   Point p = pt(a.first), q = pt(b.first);
@@ -539,6 +653,7 @@ std::pair<Index, Index> lowestCrossingChords(const std::vector<Index>& chordAt) 
 }
 
 Diagnostic Validator::checkSharedVertices() {
+    if (copies.empty() && junctions.empty()) return {};  // no rings meet: nothing to check
     collectTouchPoints();
     // Around each touching point, every passage contributes a wedge of two rays (to where it
     // comes from and goes to). The rings cross there exactly when two wedges interleave.
@@ -723,14 +838,28 @@ Diagnostic Validator::run() {
     return d;
 }
 
-}  // namespace
-
-Diagnostic validate(Polygon& polygon, const std::string& name) {
-    Validator v(polygon, name);
+// Small polygons reuse this thread's scratch; a large one gets its own, freed on return, so
+// that no thread keeps a large polygon's arrays (flooding comes next and needs the memory).
+Diagnostic validateIn(Polygon& polygon, const std::string& name, bool pairsFirst) {
+    constexpr size_t kReusedUpTo = 1 << 14;  // vertices: at most a few MB kept per thread
+    thread_local Scratch reused;
+    Scratch fresh;
+    Validator v(polygon, name, polygon.vertices.size() <= kReusedUpTo ? reused : fresh);
+    v.pairsFirst = pairsFirst;
     Diagnostic d = v.run();
-    polygon.splits = d.ok() ? std::move(v.splits) : std::vector<EdgeSplit>{};
+    polygon.splits.assign(d.ok() ? v.splits.begin() : v.splits.end(), v.splits.end());
     polygon.pointsDistinct = d.ok() && v.touchPoints.empty();  // check 5 grouped every shared point
     return d;
+}
+
+}  // namespace
+
+Diagnostic validateBySweep(Polygon& polygon, const std::string& name) {
+    return validateIn(polygon, name, false);
+}
+
+Diagnostic validate(Polygon& polygon, const std::string& name) {
+    return validateIn(polygon, name, true);
 }
 
 }  // namespace flood

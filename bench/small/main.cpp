@@ -3,6 +3,8 @@
 //   flood-small-bench calls FILE N [--validate]   N calls in a loop, for callgrind: the
 //                                                 difference of two runs over the difference of
 //                                                 their N is the instructions per call
+//   flood-small-bench validate FILE N             N calls of validate() alone, for callgrind
+//                                                 (the same difference, per call)
 //   flood-small-bench time FILE...                per file: ns per triangulate() call, and per
 //                                                 validate() + triangulate(), as TSV
 //
@@ -85,6 +87,15 @@ int main(int argc, char** argv) {
         std::printf("%zu triangles in %ld calls\n", sink, n);
         return 0;
     }
+    if (argc >= 4 && std::strcmp(argv[1], "validate") == 0) {
+        Polygon p;
+        if (!load(argv[2], p)) return 3;
+        long n = std::atol(argv[3]);
+        size_t sink = 0;
+        for (long i = 0; i < n; ++i) sink += validate(p, "bench").ok();
+        std::printf("%zu valid in %ld calls\n", sink, n);
+        return 0;
+    }
     if (argc >= 3 && std::strcmp(argv[1], "time") == 0) {
         std::printf("file\tvertices\ttriangulate_ns\tvalidate_triangulate_ns\n");
         for (int i = 2; i < argc; ++i) {
@@ -96,6 +107,8 @@ int main(int argc, char** argv) {
         }
         return 0;
     }
-    std::fprintf(stderr, "usage: flood-small-bench calls FILE N [--validate] | time FILE...\n");
+    std::fprintf(
+        stderr,
+        "usage: flood-small-bench calls FILE N [--validate] | validate FILE N | time FILE...\n");
     return 2;
 }

@@ -158,7 +158,9 @@ TEST(ViewerModel, LongRunsReplayAcrossKeyframes) {
     }
     while (m.step() > 0) {
         m.stepBack();
-        if (m.step() % 97 == 0) EXPECT_TRUE(m.state() == forward[m.step()]) << "back";
+        if (m.step() % 97 == 0) {
+            EXPECT_TRUE(m.state() == forward[m.step()]) << "back";
+        }
     }
 }
 

@@ -3,6 +3,8 @@
 // tests/replay_memory_test.cpp).
 #include <gtest/gtest.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "generate.h"
@@ -30,3 +32,22 @@ TEST(TraceMemory, LogAtMost100BytesPerEventOnEveryFamily) {
 }
 
 }  // namespace
+
+// The table of docs/BENCHMARKS.md ("Memory"), not run by default: per family, events per
+// vertex, the log's and the keyframes' bytes per event at FLOOD_TABLE_SIZE vertices (10^5).
+TEST(TraceMemory, DISABLED_TablePerFamily) {
+    const char* size = std::getenv("FLOOD_TABLE_SIZE");
+    const size_t n = size ? std::strtoul(size, nullptr, 10) : 100000;
+    std::printf("| family | vertices | events/vertex | log B/event | keyframes B/event |\n");
+    std::printf("|---|---:|---:|---:|---:|\n");
+    for (const std::string& family : familyNames()) {
+        Trace t = record(generate(family, 1, n));
+        ASSERT_TRUE(t.diagnostic.ok()) << family << ": " << t.diagnostic.message;
+        Replay replay(t);
+        const double events = double(t.events.size());
+        std::printf("| %s | %zu | %.2f | %.1f | %.1f |\n", family.c_str(),
+                    t.polygon.vertices.size(), events / double(t.polygon.vertices.size()),
+                    double(t.events.capacity() * sizeof(Event)) / events,
+                    double(replay.keyframeBytes()) / events);
+    }
+}

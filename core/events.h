@@ -9,7 +9,8 @@
 
 namespace flood {
 
-constexpr int kTraceFormatVersion = 1;
+// 2: an event leaves out the fields its action does not use and those at their initial value.
+constexpr int kTraceFormatVersion = 2;
 
 // X(name, word in transcripts, one-line meaning)
 #define FLOOD_ACTIONS(X)                                                                 \
@@ -87,45 +88,86 @@ inline bool operator==(const Fingers& a, const Fingers& b) {
 // Every field of an event, declared once: X(kind, type, name, initial value). The list
 // generates the members, operator== and the trace writer and reader (core/trace_io.cpp), where
 // the kind says how the field is written: a name, a list of test names, a vertex index or a
-// gorge id (null for kNone), a number, or the four fingers.
-#define FLOOD_EVENT_FIELDS(X)                                                                  \
-    X(ActionName, Action, action, Action::Start)                                               \
-    X(SideName, Side, side, Side::Left) /* C: the acting end (Raise, Spill, Jump) */           \
-    X(TestNames, uint8_t, tested, 0)    /* bit i: Test(i) was evaluated */                     \
-    X(TestNames, uint8_t, passed, 0)    /* bit i: Test(i) was true */                          \
-    X(ReasonName, Forbidden, reason, Forbidden::None)                                          \
-    X(Number, uint32_t, step, 0) /* position in the log */                                     \
-    X(Number, uint32_t, part, 0) /* part of a multipolygon being flooded */                    \
-    X(FingerVertices, Fingers, before, {})                                                     \
-    X(FingerVertices, Fingers, after, {})                                                      \
-    X(Vertex, Index, water, kNone)        /* vertex at the water level after the action */     \
-    X(Number, uint32_t, firstTriangle, 0) /* triangles cut by this action */                   \
-    X(Number, uint32_t, triangleCount, 0)                                                      \
-    X(Number, uint32_t, sagTests, 0) /* inside() evaluations made searching the sag list */    \
-    /* Bridge: sag joined to chain vertex `bridgeTo` at position `chainIndex` of the chain; */ \
-    /* the wedge cut on the chain's left of it has `cutLeft` triangles, `cutRight` on the */   \
-    /* right. */                                                                               \
-    X(Vertex, Index, sag, kNone)                                                               \
-    X(Vertex, Index, bridgeTo, kNone)                                                          \
-    X(Number, uint32_t, chainIndex, 0)                                                         \
-    X(Number, uint32_t, cutLeft, 0)                                                            \
-    X(Number, uint32_t, cutRight, 0)                                                           \
-    /* Spill / Jump: the top, and the jump pointer set (Spill) or followed (Jump). */          \
-    X(Vertex, Index, top, kNone)                                                               \
-    X(Vertex, Index, jumpTarget, kNone)                                                        \
-    /* Gorges put on the to-do list (Bridge: the other half; Spill: the chain held at the */   \
-    /* top) and taken from it (Fill, Spill landing on a pending gorge): ids, kNone if none. */ \
-    X(GorgeId, uint32_t, gorgePushed, kNone)                                                   \
-    X(GorgeId, uint32_t, gorgePopped, kNone)                                                   \
-    X(Vertex, Index, bottom, kNone) /* Start / Spill: the bottom where the new gorge begins */ \
-    /* Forbidden: the vertices involved (up to two besides the fingers). */                    \
-    X(Vertex, Index, culprit, kNone)                                                           \
+// gorge id (null for kNone), a number, or the four fingers. The list's own fields are stored
+// each in its place; the subject fields after them share storage (see Event).
+#define FLOOD_EVENT_FIELDS(X)                                                         \
+    FLOOD_EVENT_OWN_FIELDS(X)                                                         \
+    /* The subject: Bridge: the sag joined to chain vertex `bridgeTo`. */             \
+    X(Vertex, Index, sag, kNone)                                                      \
+    X(Vertex, Index, bridgeTo, kNone)                                                 \
+    /* Spill / Jump: the top, and the jump pointer set (Spill) or followed (Jump). */ \
+    X(Vertex, Index, top, kNone)                                                      \
+    X(Vertex, Index, jumpTarget, kNone)                                               \
+    /* Forbidden: the vertices involved (up to two besides the fingers). */           \
+    X(Vertex, Index, culprit, kNone)                                                  \
     X(Vertex, Index, culprit2, kNone)
 
-struct Event {
-#define FLOOD_X(kind, type, name, initial) type name = initial;
+#define FLOOD_EVENT_OWN_FIELDS(X)                                                               \
+    X(ActionName, Action, action, Action::Start)                                                \
+    X(SideName, Side, side, Side::Left) /* C: the acting end (Raise, Spill, Jump) */            \
+    X(TestNames, uint8_t, tested, 0)    /* bit i: Test(i) was evaluated */                      \
+    X(TestNames, uint8_t, passed, 0)    /* bit i: Test(i) was true */                           \
+    X(ReasonName, Forbidden, reason, Forbidden::None)                                           \
+    X(Number, uint32_t, step, 0) /* position in the log */                                      \
+    X(Number, uint32_t, part, 0) /* part of a multipolygon being flooded */                     \
+    X(FingerVertices, Fingers, before, {})                                                      \
+    X(FingerVertices, Fingers, after, {})                                                       \
+    X(Vertex, Index, water, kNone)        /* vertex at the water level after the action */      \
+    X(Number, uint32_t, firstTriangle, 0) /* triangles cut by this action */                    \
+    X(Number, uint32_t, triangleCount, 0)                                                       \
+    X(Number, uint32_t, sagTests, 0) /* inside() evaluations made searching the sag list */     \
+    /* Bridge: the sag is joined at position `chainIndex` of the chain; the wedge cut on the */ \
+    /* chain's left of it has `cutLeft` triangles, `cutRight` on the right. */                  \
+    X(Number, uint32_t, chainIndex, 0)                                                          \
+    X(Number, uint32_t, cutLeft, 0)                                                             \
+    X(Number, uint32_t, cutRight, 0)                                                            \
+    /* Gorges put on the to-do list (Bridge: the other half; Spill: the chain held at the */    \
+    /* top) and taken from it (Fill, Spill landing on a pending gorge): ids, kNone if none. */  \
+    X(GorgeId, uint32_t, gorgePushed, kNone)                                                    \
+    X(GorgeId, uint32_t, gorgePopped, kNone)                                                    \
+    X(Vertex, Index, bottom, kNone) /* Start / Spill: the bottom where the new gorge begins */
+
+// The fields, numbered in list order (Field::sag), to ask which ones an action uses.
+enum class Field : uint8_t {
+#define FLOOD_X(kind, type, name, initial) name,
     FLOOD_EVENT_FIELDS(FLOOD_X)
 #undef FLOOD_X
+        Count
+};
+
+// Whether field `f` means anything in an event of action `a`: every field does except the
+// subject fields, which only their own actions give a meaning. A Forbidden event stopped
+// mid-action keeps that action's counts and gorges, not its subject (the culprits replace it).
+constexpr bool usesField(Action a, Field f) {
+    switch (f) {
+        case Field::sag:
+        case Field::bridgeTo: return a == Action::Bridge;
+        case Field::top:
+        case Field::jumpTarget: return a == Action::Spill || a == Action::Jump;
+        case Field::culprit:
+        case Field::culprit2: return a == Action::Forbidden;
+        default: return true;
+    }
+}
+
+// One record per action: 96 bytes, most of a trace's memory. No action has more than one
+// subject pair, so the three pairs share storage: in an event, read the pair of its action
+// (usesField()); the others alias it. (GCC and Clang define reading a union member other than
+// the one last written, as C does; the members here are all the same type.)
+struct Event {
+#define FLOOD_X(kind, type, name, initial) type name = initial;
+    FLOOD_EVENT_OWN_FIELDS(FLOOD_X)
+#undef FLOOD_X
+    union {
+        Index sag = kNone;
+        Index top;
+        Index culprit;
+    };
+    union {
+        Index bridgeTo = kNone;
+        Index jumpTarget;
+        Index culprit2;
+    };
 
     bool didTest(Test t) const { return tested >> int(t) & 1; }
     bool testResult(Test t) const { return passed >> int(t) & 1; }
@@ -141,7 +183,7 @@ inline bool operator==(const Event& a, const Event& b) {
 // A field added to Event outside FLOOD_EVENT_FIELDS would be neither compared nor traced, and
 // one added to the list changes what traces hold: either way, bump kTraceFormatVersion and
 // this size.
-static_assert(sizeof(Event) == 112,
+static_assert(sizeof(Event) == 96,
               "Event changed: list its fields in FLOOD_EVENT_FIELDS, bump kTraceFormatVersion");
 
 const char* actionName(Action a);  // "Raise"

@@ -12,7 +12,12 @@ namespace flood {
 namespace {
 struct Recorder : Listener {
     std::vector<Event>* events;
-    void onEvent(const Event& e) override { events->push_back(e); }
+    size_t growth = 0;  // events added to the log's reserve when it runs out
+    void onEvent(const Event& e) override {
+        // Not doubling: the log would hold up to twice the events it needs until the end.
+        if (events->size() == events->capacity()) events->reserve(events->size() + growth);
+        events->push_back(e);
+    }
 };
 
 // A large log is fresh memory the kernel maps page by page on first touch; 2 MB pages make
@@ -46,7 +51,10 @@ Trace record(const Polygon& polygon, const Options& options) {
     // Runs take about 1.5 events per vertex: reserve once rather than regrow (and copy) the log.
     t.events.reserve(polygon.vertices.size() + polygon.vertices.size() / 2 + 64);
     backWithHugePages(t.events.data(), t.events.capacity() * sizeof(Event));
+    rec.growth = polygon.vertices.size() / 2 + 64;
     FloodResult r = triangulate(t.polygon, &rec, options);
+    // The log is most of a trace's memory: it keeps just its events (one copy of it, once).
+    t.events.shrink_to_fit();
     t.triangles = std::move(r.triangles);
     t.diagnostic = r.diagnostic;
     return t;

@@ -70,9 +70,16 @@ json writeFingerVertices(const Fingers& f) { return fingersJson(f); }
 json writeVertex(Index v) { return indexJson(v); }
 json writeGorgeId(uint32_t g) { return indexJson(g); }
 
+const Event kInitial;  // every field at its initial value
+
+// The fields the event's action uses (usesField()), less those at their initial value: the
+// reader restores them. The action is always written.
 json eventJson(const Event& e) {
     json o = json::object();
-#define FLOOD_X(kind, type, name, initial) o[#name] = write##kind(e.name);
+#define FLOOD_X(kind, type, name, initial)                                \
+    if (Field::name == Field::action ||                                   \
+        (usesField(e.action, Field::name) && !(e.name == kInitial.name))) \
+        o[#name] = write##kind(e.name);
     FLOOD_EVENT_FIELDS(FLOOD_X)
 #undef FLOOD_X
     return o;
@@ -155,9 +162,15 @@ Fingers readFingerVertices(const json& o, const char* key, size_t n) { return fi
 Index readVertex(const json& o, const char* key, size_t n) { return vertex(o, key, n); }
 uint32_t readGorgeId(const json& o, const char* key, size_t) { return idOrNone(o, key); }
 
+// A field left out keeps its initial value (version 1 wrote them all); only the action is
+// required. A subject field the action does not use is skipped: it shares storage with the
+// action's own (version 1 wrote them all, null).
 Event parseEvent(const json& o, size_t n) {
     Event e;
-#define FLOOD_X(kind, type, name, initial) e.name = read##kind(o, #name, n);
+    e.action = readActionName(o, "action", n);
+#define FLOOD_X(kind, type, name, initial)                                                     \
+    if (Field::name != Field::action && usesField(e.action, Field::name) && o.contains(#name)) \
+        e.name = read##kind(o, #name, n);
     FLOOD_EVENT_FIELDS(FLOOD_X)
 #undef FLOOD_X
     return e;
@@ -168,9 +181,9 @@ void parseHeader(const json& h, Polygon& p) {
     if (!format.is_string() || format.get<std::string>() != "flood-trace")
         throw Bad{"not a flood trace (\"format\" is not \"flood-trace\")"};
     uint32_t version = number(h, "version");
-    if (int(version) != kTraceFormatVersion)
-        throw Bad{"trace format version " + std::to_string(version) + ", this build reads " +
-                  std::to_string(kTraceFormatVersion)};
+    if (version < 1 || int(version) > kTraceFormatVersion)
+        throw Bad{"trace format version " + std::to_string(version) +
+                  ", this build reads versions 1 to " + std::to_string(kTraceFormatVersion)};
     const json& vs = field(h, "vertices");
     if (!vs.is_array()) throw Bad{"\"vertices\" is not an array"};
     for (size_t i = 0; i < vs.size(); ++i) {
@@ -328,6 +341,7 @@ Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& tra
                 throw Bad{"event " + std::to_string(e.step) +
                           " refers to triangles beyond the final list"};
             }
+        trace.events.shrink_to_fit();  // the log is most of a trace's memory: no slack kept
     } catch (const Bad& b) {
         trace = Trace{};
         return {Status::Malformed,

@@ -3,8 +3,10 @@
 //   {"format":"flood-trace","version":kTraceFormatVersion,"vertices":[[x,y],...],
 //    "rings":[[first,count],...],"parts":[[firstRing,ringCount],...]}
 // plus "up":[x,y], the direction the water rose along, when it is not +y,
-// then one object per event with every field of flood::Event (action, side, reason by name;
-// tested and passed as lists of test names; fingers as objects; kNone written as null),
+// then one object per event with the fields of flood::Event its action uses (usesField()) that
+// differ from their initial values, always its action (action, side, reason by name; tested
+// and passed as lists of test names; fingers as objects; kNone written as null; version 1
+// wrote every field, and is still read),
 // then a last line {"triangles":[[a,b,c],...],"status":"ok","message":"..."}.
 // Coordinates are JSON numbers, or "NaN", "Infinity", "-Infinity" (JSON has none of these;
 // an unvalidated run can hold them).

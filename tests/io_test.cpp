@@ -472,7 +472,8 @@ TEST(TraceIo, RoundTripAndErrors) {
     // Damage: wrong version, bad line, truncated, index out of range.
     std::string text = out.str();
     std::string v2 = text;
-    v2.replace(v2.find("\"version\":1"), 11, "\"version\":99");
+    const std::string version = "\"version\":" + std::to_string(kTraceFormatVersion);
+    v2.replace(v2.find(version), version.size(), "\"version\":99");
     EXPECT_TRUE(contains(parseTrace(v2, "t", back).message, "t:1: trace format version 99"));
     std::string bad = text;
     size_t line2 = bad.find('\n') + 1;

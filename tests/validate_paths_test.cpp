@@ -91,8 +91,8 @@ Polygon staircase(size_t k) {
 
 TEST(ValidatePaths, SamplesAndInvalidCatalogueAgree) {
     size_t files = 0;
-    for (const std::string& dir : {"polygons", "polygons/invalid"})
-        for (const std::string& ext : {".json", ".wkt"})
+    for (const std::string dir : {"polygons", "polygons/invalid"})
+        for (const std::string ext : {".json", ".wkt"})
             for (const std::string& path : filesIn(sourcePath(dir), ext)) {
                 ReadResult rr = readPolygonFile(path);
                 if (!rr.diagnostic.ok()) continue;  // unreadable: validation never sees it

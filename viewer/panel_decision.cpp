@@ -188,13 +188,17 @@ void eventNumbers(Ui& ui, const Event& e) {
         any = true;
         number(ui, label, value, kind);
     };
-    item("sag", e.sag, 'v');
-    item("to", e.bridgeTo, 'v');
-    item("top", e.top, 'v');
-    item("jump", e.jumpTarget, 'v');
+    // The subject fields share storage (core/events.h): only the event's own action's are shown.
+    auto subject = [&](const char* label, Index value, Field f) {
+        if (usesField(e.action, f)) item(label, value, 'v');
+    };
+    subject("sag", e.sag, Field::sag);
+    subject("to", e.bridgeTo, Field::bridgeTo);
+    subject("top", e.top, Field::top);
+    subject("jump", e.jumpTarget, Field::jumpTarget);
     item("bottom", e.bottom, 'v');
-    item("culprit", e.culprit, 'v');
-    item("and", e.culprit2, 'v');
+    subject("culprit", e.culprit, Field::culprit);
+    subject("and", e.culprit2, Field::culprit2);
     if (e.triangleCount) {
         item("triangles", e.firstTriangle, 't');
         if (e.triangleCount > 1) item("to", e.firstTriangle + e.triangleCount - 1, 't');

@@ -49,8 +49,8 @@ void tooltip(const DecisionNode& n, uint64_t count, bool full) {
         ImGui::TextDisabled("%s", n.detail);
     }
     ImGui::Text("%llu events of this run pass here", static_cast<unsigned long long>(count));
-    ImGui::TextDisabled(full ? (n.leaf() ? "click: the next step that ends here" : "")
-                             : "click: the whole tree, labelled");
+    if (!full) ImGui::TextDisabled("click: the whole tree, labelled");
+    else if (n.leaf()) ImGui::TextDisabled("click: the next step that ends here");
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
 }

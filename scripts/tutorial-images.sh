@@ -67,4 +67,10 @@ viewer polygons/tutorial/crossing-face.json --show-error --screenshot docs/img/w
 # Presenter mode (Tab) in the light theme, as a slide would show it.
 viewer polygons/paper-figure-7.json --presenter --theme light --step "$(step_after paper-figure-7.json Bridge 2)" \
   --screenshot docs/img/presenter-light.png --size 900x600
-echo "docs/img: $(ls docs/img/*.png | wc -l) images"
+# "Teaching with Flood": a slide (the canvas alone, light theme, with its caption), the dial
+# turned to +x beside the +y run, and the whole flood of sag.json as a small animated GIF.
+viewer polygons/sag.json --theme light --step "$(step_after sag.json Bridge 1)" --canvas-only --caption \
+  --screenshot docs/img/teach-slide-light.png --size 900x600
+viewer polygons/sag.json --theme light --up +x --step 2 --screenshot docs/img/teach-dial.png --size 1100x700
+viewer polygons/sag.json --theme light --export-gif docs/img/teach-sag.gif --fps 1 --caption --size 480x320
+echo "docs/img: $(ls docs/img/*.png | wc -l) images, $(ls docs/img/*.gif | wc -l) GIF"

@@ -13,7 +13,7 @@ namespace flood::view {
 
 // ========================================================================================
 // [SECTION] Model's side of an edit
-Model::EditedRun Model::floodEdit(Polygon polygon, const std::string& name) {
+Model::EditedRun Model::floodEdit(Polygon polygon, const std::string& name, Up up) {
     EditedRun run;
     polygon.splits.clear();  // validate() finds the edited polygon's own T-junctions
     // An empty canvas is a start, not an invalid polygon.
@@ -22,7 +22,7 @@ Model::EditedRun Model::floodEdit(Polygon polygon, const std::string& name) {
         // Invalid polygons are flooded too, as an open does: the student sees where the
         // machine stops.
         try {
-            run.trace = record(polygon);
+            run.trace = record(polygon, Options{up});
         } catch (const std::exception& ex) {
             run.trace.diagnostic = {Status::Internal, name + ": " + ex.what()};
         }
@@ -36,6 +36,7 @@ Model::EditedRun Model::floodEdit(Polygon polygon, const std::string& name) {
         }
     }
     run.trace.polygon = std::move(polygon);
+    run.trace.up = up;  // an empty canvas too: the dial's direction is kept
     return run;
 }
 
@@ -46,7 +47,12 @@ void Model::adoptEdit(EditedRun run, bool deferScan) {
     const size_t feature = feature_;
     const std::string origin = origin_, originName = originName_;
     const size_t originFeature = originFeature_;
-    cancelInvariants();  // the scan reads the trace about to be replaced
+    cancelInvariants();                   // the scan reads the trace about to be replaced
+    if (!(run.trace.up == trace_->up)) {  // the dial turned: the direction panel compares
+        previousSummary_ = summary();
+        hasPrevious_ = true;
+        up_ = run.trace.up;
+    }
     ++generation_;
     openDiag_ = {};
     input_ = std::move(run.input);
@@ -175,6 +181,7 @@ void Editor::sync() {
     dirty_ = false;
     polygon_ = model_.polygon();
     name_ = model_.path();
+    up_ = model_.up();
     history_.clear();
     done_ = 0;
     corners.clear();
@@ -384,6 +391,14 @@ bool Editor::closeRing() {
     return true;
 }
 
+bool Editor::setUp(Up up) {
+    sync();
+    if (!up.valid() || up == up_) return false;
+    up_ = up;
+    reflood();
+    return true;
+}
+
 bool Editor::undo() {
     sync();
     if (done_ == 0) return message_ = "nothing to undo", false;
@@ -407,19 +422,23 @@ bool Editor::redo() {
 // ---- flooding the edit -----------------------------------------------------------------
 void Editor::reflood() {
     if (!background) {
-        model_.adoptEdit(Model::floodEdit(polygon_, name_), gesture_);
+        ++floods_;
+        model_.adoptEdit(Model::floodEdit(polygon_, name_, up_), gesture_);
         generation_ = model_.generation();
         return;
     }
+    // One flood at a time; what comes in meanwhile waits (dirty_) for the next frame's poll(),
+    // which adopts the finished flood and starts one of the latest polygon and direction.
     dirty_ = true;
-    poll();
+    if (!job_.joinable()) startJob();
 }
 
 void Editor::startJob() {
+    ++floods_;
     jobDone_ = false;
     dirty_ = false;
-    job_ = std::thread([this, polygon = polygon_, name = name_]() mutable {
-        jobResult_ = Model::floodEdit(std::move(polygon), name);
+    job_ = std::thread([this, polygon = polygon_, name = name_, up = up_]() mutable {
+        jobResult_ = Model::floodEdit(std::move(polygon), name, up);
         jobDone_.store(true, std::memory_order_release);
         if (onReady) onReady();
     });

@@ -7,7 +7,8 @@
 // flooded again under the same name, at the same step (clamped to the new trace). An edit
 // that makes the polygon invalid is kept, and the verdict shows the validator's diagnostic;
 // undo brings the valid polygon back. With `background` set the flood runs in a thread and
-// the old trace stays on screen until the new one is ready (poll() adopts it).
+// the old trace stays on screen until the new one is ready (poll() adopts it). The direction
+// dial floods through here too (setUp), so turning it never floods on the UI thread either.
 #pragma once
 #include <atomic>
 #include <functional>
@@ -80,6 +81,16 @@ public:
     // An empty canvas ("draw your own"); undo brings the polygon back.
     void newEmpty();
 
+    // The flood direction (the direction dial): the edited polygon floods again along `up`,
+    // as after an edit (in the background, one flood at a time, the latest direction next),
+    // at the same step; the Model's previousSummary() is then the run before. Not an edit:
+    // nothing to undo. False, nothing done, when `up` is not a direction or is up() already.
+    bool setUp(Up up);
+    Up up() { return sync(), up_; }  // the direction asked for, ahead of the Model's
+    // Floods started (each edit's, each turn's) since this editor was made: a drag of the
+    // dial through many angles starts few of them in the background.
+    uint64_t floods() const { return floods_; }
+
     bool undo();
     bool redo();
     // These follow the model too: after an open there is nothing to undo.
@@ -125,6 +136,7 @@ private:
     Polygon polygon_;
     uint64_t generation_ = ~0ull;  // the model generation polygon_ belongs to
     std::string name_;             // the loaded file's name, kept by every edit
+    Up up_ = Up::PlusY;            // the direction polygon_ floods along
     std::vector<EditCommand> history_;
     size_t done_ = 0;  // commands applied: history_[0, done_)
     bool gesture_ = false, merging_ = false;
@@ -135,6 +147,7 @@ private:
     std::atomic<bool> jobDone_{false};
     Model::EditedRun jobResult_;
     bool dirty_ = false;
+    uint64_t floods_ = 0;
 };
 
 }  // namespace flood::view

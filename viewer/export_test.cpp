@@ -333,4 +333,79 @@ TEST(ExportGui, BadExportOptionsAreUsageErrors) {
     }
 }
 
+// Exports follow the theme: with --theme light the canvas-only PNG's ground and water, the
+// SVG's background and dry land, and the GIF's palette are the light palette's; with --theme
+// dark the dark one's (named explicitly: without it the viewer takes the last theme chosen).
+TEST(ExportGui, ExportsUseTheTheme) {
+    NEED_DISPLAY();
+    fs::path dir = scratch("theme");
+    std::string input = squareWithHole(dir);
+    Model m;
+    m.open(input);
+    const uint32_t step = middleStep(input);
+    ASSERT_GT(step, 0u);
+    m.seek(step);
+    const int W = 480, H = 360;
+    Camera cam = exportView(m, Rect{0, 0, double(W), double(H)});
+    const auto& v = m.polygon().vertices;
+    const Triangle& t = m.trace().triangles[0];  // flooded, not by the current event
+    const Vec2 inWater = cam.toScreen({0.6 * v[t[0]].x + 0.2 * v[t[1]].x + 0.2 * v[t[2]].x,
+                                       0.6 * v[t[0]].y + 0.2 * v[t[1]].y + 0.2 * v[t[2]].y});
+    auto svgFill = [](const std::string& svg, const std::string& element) {
+        size_t at = svg.find(element);
+        if (at == std::string::npos) return std::string("(no ") + element + ")";
+        size_t fill = svg.find("fill=\"#", at);
+        return fill == std::string::npos ? std::string("(no fill)") : svg.substr(fill + 6, 7);
+    };
+    auto hex = [](Rgba c) {
+        char buf[8];
+        std::snprintf(buf, sizeof buf, "#%02x%02x%02x", c.r, c.g, c.b);
+        return std::string(buf);
+    };
+    for (Theme theme : {Theme::Light, Theme::Dark}) {
+        const std::string name = palette::themeName(theme);
+        SCOPED_TRACE(name);
+        const palette::Colours& want = theme == Theme::Light ? palette::kLight : palette::kDark;
+        const std::string args = "'" + input + "' --theme " + name + " --step " +
+                                 std::to_string(step) + " --size " + std::to_string(W) + "x" +
+                                 std::to_string(H);
+        const std::string png = (dir / (name + ".png")).string(),
+                          svg = (dir / (name + ".svg")).string();
+        ViewerRun r = viewer(args + " --canvas-only --screenshot '" + png + "'");
+        ASSERT_EQ(r.code, 0) << r.out;
+        Image img;
+        ASSERT_TRUE(img.load(png));
+        for (auto [x, y] : {std::pair{1, 1}, {W - 2, H - 2}})
+            EXPECT_TRUE(close(img.at(x, y), want.background, 2)) << "corner " << x << "," << y;
+        bool water = false;
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx)
+                water |= close(img.at(int(inWater.x) + dx, int(inWater.y) + dy), want.water, 6);
+        EXPECT_TRUE(water) << "the theme's water inside triangle 0";
+        r = viewer(args + " --screenshot '" + svg + "'");
+        ASSERT_EQ(r.code, 0) << r.out;
+        std::ifstream in(svg);
+        const std::string text((std::istreambuf_iterator<char>(in)), {});
+        EXPECT_EQ(svgFill(text, "<rect width=\"100%\" height=\"100%\""), hex(want.background));
+        EXPECT_EQ(svgFill(text, "<path fill-rule=\"evenodd\""), hex(want.polygonFill));
+#ifdef FLOOD_GIF
+        const std::string gifPath = (dir / (name + ".gif")).string();
+        r = viewer("'" + input + "' --theme " + name + " --export-gif '" + gifPath +
+                   "' --steps 0:2 --size 160x120");
+        ASSERT_EQ(r.code, 0) << r.out;
+        int err = 0;
+        GifFileType* g = DGifOpenFileName(gifPath.c_str(), &err);
+        ASSERT_NE(g, nullptr) << GifErrorString(err);
+        ASSERT_EQ(DGifSlurp(g), GIF_OK) << GifErrorString(g->Error);
+        bool background = false;
+        for (int i = 0; i < g->SColorMap->ColorCount; ++i) {
+            GifColorType c = g->SColorMap->Colors[i];
+            background |= close(Rgba{c.Red, c.Green, c.Blue, 255}, want.background, 0);
+        }
+        EXPECT_TRUE(background) << "the theme's background in the GIF's palette";
+        DGifCloseFile(g, &err);
+#endif
+    }
+}
+
 }  // namespace

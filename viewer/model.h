@@ -422,9 +422,11 @@ public:
         CheckResult check;  // the exact checker on a completed run (checked: it ran)
         bool checked = false;
     };
-    static EditedRun floodEdit(Polygon polygon, const std::string& name);
+    static EditedRun floodEdit(Polygon polygon, const std::string& name, Up up = Up::PlusY);
     // Makes `run` the loaded run under the same name. Unlike an open, the step (clamped to
     // the new trace), the camera and the timeline stay, and no landing moves the step.
+    // A run along another direction (the dial, Editor::setUp) makes previousSummary() the
+    // run before, as setUp() does.
     // `deferScan` (a drag goes on): the invariant scan waits for startDeferredInvariants(),
     // since stopping a scan still setting up would stall the UI thread at the next edit.
     void adoptEdit(EditedRun run, bool deferScan = false);

@@ -159,6 +159,32 @@ inline Rgba action(Action a) {
         default: return {128, 128, 128, 255};
     }
 }
+
+// The Fig. 9 tree (panel_decision.cpp): its boxes, labels and edges, each readable on the
+// theme's panel (ImGui's dark or light window background). The yes/no answers on the edges
+// are a green and a blue, never the forbidden red; the light theme's are dark enough to read
+// on white at a contrast of 4:1 or more.
+struct TreeColours {
+    Rgba test, border, label,   // a test box not reached, its outline and label
+        leafLabel,              // an action's or a forbidden state's label when not reached
+        stop,                   // a forbidden state not reached (reached: kCulprit)
+        edge,                   // an edge without an answer (after an action, a pass-through)
+        testLit, testLitLabel,  // a test the current event ran
+        actionLitLabel,         // the current event's action box (its fill: action())
+        stopLitLabel,           // the forbidden state the event ended in
+        yes, no;
+};
+constexpr TreeColours kDarkTree{{50, 54, 62, 255},    {100, 104, 112, 255}, {140, 144, 150, 255},
+                                {220, 220, 220, 255}, {105, 28, 28, 255},   {78, 82, 90, 255},
+                                {90, 86, 52, 255},    {250, 250, 250, 255}, {20, 20, 20, 255},
+                                {250, 250, 250, 255}, {140, 220, 140, 255}, {150, 180, 230, 255}};
+constexpr TreeColours kLightTree{{226, 228, 233, 255}, {150, 153, 160, 255}, {90, 93, 100, 255},
+                                 {40, 40, 40, 255},    {238, 196, 196, 255}, {160, 163, 170, 255},
+                                 {255, 232, 140, 255}, {25, 25, 25, 255},    {255, 255, 255, 255},
+                                 {255, 255, 255, 255}, {0, 115, 35, 255},    {20, 75, 190, 255}};
+inline const TreeColours& tree() {
+    return detail::g_theme == Theme::Light ? kLightTree : kDarkTree;
+}
 }  // namespace palette
 
 }  // namespace flood::view

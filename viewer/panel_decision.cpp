@@ -1,8 +1,10 @@
 // The paper's Fig. 9 drawn live: the decision tree (core/decision_tree.h) as boxes and edges,
 // the current event's path lit, the nodes it did not reach (or reached without running) grey,
-// forbidden states red; above it the event narrated in a sentence, and the vertices, triangles
-// and step it names, each clickable. "Tree..." opens the tree large, labelled and with each
-// node's count over the trace; clicking a leaf there seeks to the next event that ends in it.
+// forbidden states red; below it the event narrated in a sentence, and the vertices, triangles
+// and step it names, each clickable. The panel's tree is a thumbnail (a dozen rows in a fifth of
+// the window cannot carry labels): hovering names a box, clicking opens the tree large,
+// labelled and with each node's count over the trace, as "Tree..." does; clicking a leaf there
+// seeks to the next event that ends in it. Colours: palette::tree(), per theme.
 #include <imgui.h>
 
 #include <algorithm>
@@ -19,14 +21,12 @@ namespace {
 
 using Kind = DecisionNode::Kind;
 
-constexpr Rgba kNodeFill{50, 54, 62, 255}, kNodeBorder{100, 104, 112, 255},
-    kNodeText{140, 144, 150, 255};
-constexpr Rgba kStopFill{105, 28, 28, 255};
-constexpr Rgba kEdge{78, 82, 90, 255};
-constexpr Rgba kYes{140, 220, 140, 255},
-    kNo{150, 180, 230, 255};  // answers; "no" is not the forbidden red
-
-Rgba dim(Rgba c) { return {uint8_t(c.r / 2), uint8_t(c.g / 2), uint8_t(c.b / 2), 255}; }
+// Halfway to the panel's background: what the current event did not take, in either theme.
+Rgba dim(Rgba c) {
+    const ImVec4 bg = ImGui::GetStyleColorVec4(ImGuiCol_WindowBg);
+    auto mix = [](uint8_t a, float b) { return uint8_t((float(a) + b * 255.0f) / 2 + 0.5f); };
+    return {mix(c.r, bg.x), mix(c.g, bg.y), mix(c.b, bg.z), 255};
+}
 
 // The events through each node, counted once per opened trace.
 const std::vector<uint64_t>& counts(Ui& ui) {
@@ -37,7 +37,7 @@ const std::vector<uint64_t>& counts(Ui& ui) {
     return ui.treeCounts;
 }
 
-void tooltip(const DecisionNode& n, uint64_t count) {
+void tooltip(const DecisionNode& n, uint64_t count, bool full) {
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(ImGui::GetFontSize() * 30);
     ImGui::TextUnformatted(n.label);
@@ -49,7 +49,8 @@ void tooltip(const DecisionNode& n, uint64_t count) {
         ImGui::TextDisabled("%s", n.detail);
     }
     ImGui::Text("%llu events of this run pass here", static_cast<unsigned long long>(count));
-    if (n.leaf()) ImGui::TextDisabled("click: the next step that ends here");
+    if (!full) ImGui::TextDisabled("click: the whole tree, labelled");
+    else if (n.leaf()) ImGui::TextDisabled("click: the next step that ends here");
     ImGui::PopTextWrapPos();
     ImGui::EndTooltip();
 }
@@ -69,23 +70,30 @@ void seekLeaf(Ui& ui, int leaf) {
 }
 
 // Draws the tree into the rectangle at the cursor, `size` logical pixels; labels where they
-// fit. Hovering a node shows what it tests; clicking a leaf seeks. With `countBars`, a bar
-// along each box's foot shows the share of the run's events that pass there.
-void drawTree(Ui& ui, ImVec2 size, const DecisionPath& path, bool countBars) {
+// fit. Hovering a node shows what it tests. The `full` tree (its own window) has a bar along
+// each box's foot, the share of the run's events that pass there, and a click on a leaf
+// seeks; a click on the thumbnail opens the full tree.
+void drawTree(Ui& ui, ImVec2 size, const DecisionPath& path, bool full) {
     const DecisionTree& t = decisionTree();
+    const palette::TreeColours& colour = palette::tree();
     const std::vector<uint64_t>& count = counts(ui);
     ImDrawList* dl = ImGui::GetWindowDrawList();
     const ImVec2 o = ImGui::GetCursorScreenPos();
     ImGui::InvisibleButton("tree", size);
     const bool hovered = ImGui::IsItemHovered();
-    const float cw = size.x / float(t.columns), ch = size.y / float(t.rows);
+    // The thumbnail says what a click does in a strip of its own under the boxes.
+    const char* hint = "click to enlarge";
+    const ImVec2 hintSize = full ? ImVec2(0, 0) : ImGui::CalcTextSize(hint);
+    const float cw = size.x / float(t.columns), ch = (size.y - hintSize.y) / float(t.rows);
     const float bw = cw * float(DecisionTree::kBoxWidth), bh = ch * float(DecisionTree::kBoxHeight);
     auto centre = [&](const DecisionNode& n) {
         return ImVec2(o.x + (float(n.column) + 0.5f) * cw, o.y + (float(n.row) + 0.5f) * ch);
     };
     std::vector<const PathStep*> on(t.nodes.size(), nullptr);
     for (const PathStep& s : path.steps) on[size_t(s.node)] = &s;
-    const float line = std::max(1.0f, ui.scale), thick = std::max(2.0f, 2.5f * ui.scale);
+    // Answers twice as wide as plain edges, so their colour reads in the thumbnail too.
+    const float line = std::max(1.0f, ui.scale), answerLine = 2 * line,
+                thick = std::max(3.0f, 3.5f * ui.scale);
     // Each label at the largest size up to the UI's that fits its box; none below a legible size.
     ImFont* fontFace = ImGui::GetFont();
     const float base = ImGui::GetFontSize(), legible = 7 * ui.scale;
@@ -107,15 +115,14 @@ void drawTree(Ui& ui, ImVec2 size, const DecisionPath& path, bool countBars) {
                 const bool litEdge = on[i] && on[size_t(c)];
                 if (litEdge != bool(lit)) continue;
                 const bool answers = n.kind != Kind::Action && n.yes != n.no;
-                const Rgba answer = c == n.yes ? kYes : kNo;
+                const Rgba answer = c == n.yes ? colour.yes : colour.no;
                 ImVec2 a = centre(n), b = centre(child);
                 float mx = a.x + cw * 0.5f;
                 ImVec2 pts[4] = {{a.x + bw / 2, a.y}, {mx, a.y}, {mx, b.y}, {b.x - bw / 2, b.y}};
                 if (litEdge) dl->AddPolyline(pts, 4, toImU32(palette::kTreePath), 0, thick);
-                if (answers || !litEdge)
-                    dl->AddPolyline(pts, 4,
-                                    toImU32(answers ? (litEdge ? answer : dim(answer)) : kEdge), 0,
-                                    line);
+                if (answers)
+                    dl->AddPolyline(pts, 4, toImU32(litEdge ? answer : dim(answer)), 0, answerLine);
+                else if (!litEdge) dl->AddPolyline(pts, 4, toImU32(colour.edge), 0, line);
             }
         }
     // Boxes.
@@ -126,19 +133,21 @@ void drawTree(Ui& ui, ImVec2 size, const DecisionPath& path, bool countBars) {
         const ImVec2 c = centre(n), p0(c.x - bw / 2, c.y - bh / 2), p1(c.x + bw / 2, c.y + bh / 2);
         const PathStep* s = on[i];
         const bool reached = s && s->ran;  // a test on the path that did not run stays grey
-        Rgba fill = kNodeFill, border = kNodeBorder, text = kNodeText;
-        if (n.kind == Kind::Stop) fill = reached ? palette::kCulprit : kStopFill;
-        else if (n.kind == Kind::Action)
+        Rgba fill = colour.test, border = colour.border, text = colour.label;
+        if (n.kind == Kind::Stop) {
+            fill = reached ? palette::kCulprit : colour.stop;
+            text = reached ? colour.stopLitLabel : colour.leafLabel;
+        } else if (n.kind == Kind::Action) {
             fill = reached ? palette::action(n.action) : dim(palette::action(n.action));
-        else if (reached) fill = {90, 86, 52, 255};
-        if (reached)
-            border = palette::kTreePath,
-            text = n.kind == Kind::Action ? Rgba{20, 20, 20, 255} : Rgba{250, 250, 250, 255};
-        else if (n.kind == Kind::Stop || n.kind == Kind::Action) text = {220, 220, 220, 255};
+            text = reached ? colour.actionLitLabel : colour.leafLabel;
+        } else if (reached) {
+            fill = colour.testLit, text = colour.testLitLabel;
+        }
+        if (reached) border = palette::kTreePath;
         const float r = 3 * ui.scale;
         dl->AddRectFilled(p0, p1, toImU32(fill), r);
         dl->AddRect(p0, p1, toImU32(border), r, 0, reached ? thick : line);
-        if (countBars && count[i]) {
+        if (full && count[i]) {
             const float share =
                 float(double(count[i]) / double(std::max<size_t>(1, ui.model.steps())));
             const float foot = std::max(2.0f, bh * 0.12f);
@@ -154,9 +163,17 @@ void drawTree(Ui& ui, ImVec2 size, const DecisionPath& path, bool countBars) {
         if (hovered && mouse.x >= p0.x && mouse.x < p1.x && mouse.y >= p0.y && mouse.y < p1.y)
             hoveredNode = int(i);
     }
+    if (!full) {
+        dl->AddText(ImVec2(o.x + size.x - hintSize.x - 2, o.y + size.y - hintSize.y),
+                    ImGui::GetColorU32(ImGuiCol_TextDisabled), hint);
+        if (hovered) {
+            ImGui::SetMouseCursor(ImGuiMouseCursor_Hand);
+            if (ImGui::IsItemClicked()) ui.showDecisionTree = true;
+        }
+    }
     if (hoveredNode < 0) return;
-    tooltip(t.nodes[size_t(hoveredNode)], count[size_t(hoveredNode)]);
-    if (t.nodes[size_t(hoveredNode)].leaf() && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
+    tooltip(t.nodes[size_t(hoveredNode)], count[size_t(hoveredNode)], full);
+    if (full && t.nodes[size_t(hoveredNode)].leaf() && ImGui::IsMouseClicked(ImGuiMouseButton_Left))
         seekLeaf(ui, hoveredNode);
 }
 
@@ -218,8 +235,8 @@ void drawDecision(Ui& ui) {
     if (ImGui::SmallButton("Predicates...")) ui.showPredicates = true;
     ImGui::SameLine();
     if (ImGui::SmallButton("To-do list...")) ui.showTodo = true;
-    // The tree first, in at least half of the panel (a thumbnail: hover for labels, "Tree..."
-    // for the large one); the sentence and the numbers below it.
+    // The tree first, in at least half of the panel (a thumbnail: hover for labels, click or
+    // "Tree..." for the large one); the sentence and the numbers below it.
     ImVec2 avail = ImGui::GetContentRegionAvail();
     avail.y = std::max(avail.y * 0.5f, 7 * decisionTree().rows * ui.scale);
     drawTree(ui, avail, path, false);

@@ -1,7 +1,9 @@
 // The flood direction dial: the paper's "chosen vertical" (§3) turned to any angle. Turning it
 // floods the polygon again along the new direction (heights stay exact: core/up.h) and shows
 // how the decomposition changed against the direction before: the gorges, the vertex classes
-// and each action (the decomposition into gorges is not unique).
+// and each action (the decomposition into gorges is not unique). The floods go through the
+// editor's (viewer/edit.h): in the background, one at a time, so dragging the dial over a
+// large polygon skips the angles passed while a flood runs and the UI never waits for one.
 #include <imgui.h>
 
 #include <cmath>
@@ -15,24 +17,28 @@ namespace flood::view {
 void drawDirection(Ui& ui) {
     if (!ui.showDirection) return;
     Model& m = ui.model;
+    Editor& editor = ui.edit.editor;
     if (!beginFloating(ui, "Flood direction", &ui.showDirection, 330, 360, 60, 60)) return;
-    const Up up = m.up();
+    const Up up = editor.up();  // the one asked for: the dial follows the mouse, not the flood
     float degrees = float(upDegrees(up));
     ImGui::TextDisabled("degrees counter-clockwise from +x; 90 is +y");
     ImGui::SetNextItemWidth(-1);
-    // Re-floods while dragging: a run of a few thousand vertices takes milliseconds.
     if (ImGui::SliderFloat("##angle", &degrees, 0, 360, "%.1f°") &&
         std::fabs(degrees - upDegrees(up)) > 1e-4)
-        m.setUp(upFromDegrees(double(degrees)));
+        editor.setUp(upFromDegrees(double(degrees)));
     const struct {
         const char* label;
         Up up;
     } axes[] = {{"+x", Up::PlusX}, {"+y", Up::PlusY}, {"-x", Up::MinusX}, {"-y", Up::MinusY}};
     for (const auto& a : axes) {
         if (a.up != axes[0].up) ImGui::SameLine();
-        if (ImGui::Button(a.label)) m.setUp(a.up);
+        if (ImGui::Button(a.label)) editor.setUp(a.up);
     }
     ImGui::Text("up = %s", upName(up).c_str());
+    if (!(m.up() == up)) {
+        ImGui::SameLine();
+        ImGui::TextDisabled("(flooding...)");
+    }
     ImGui::Separator();
     const FloodSummary now = m.summary();
     if (!m.hasPreviousSummary()) {

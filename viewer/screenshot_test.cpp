@@ -18,6 +18,7 @@
 
 #include <sys/wait.h>
 
+#include "decision_tree.h"
 #include "gui_test_display.h"
 #include "model.h"
 #include "palette.h"
@@ -551,6 +552,83 @@ int checkInvariantLane(const std::string& dir, int W, int H, const Layout& layou
     return failures;
 }
 
+// WCAG's contrast ratio of two colours (1 to 21; 3 is its floor for graphics such as lines).
+double contrast(Rgba a, Rgba b) {
+    auto lum = [](Rgba c) {
+        auto lin = [](uint8_t v) {
+            double s = v / 255.0;
+            return s <= 0.04045 ? s / 12.92 : std::pow((s + 0.055) / 1.055, 2.4);
+        };
+        return 0.2126 * lin(c.r) + 0.7152 * lin(c.g) + 0.0722 * lin(c.b);
+    };
+    double x = lum(a) + 0.05, y = lum(b) + 0.05;
+    return std::max(x, y) / std::min(x, y);
+}
+
+// The Decision panel's yes/no answers in each theme: at a step whose path answers both yes
+// and no, both colours are drawn in the panel and stand out from its background (read from
+// the picture: its most common colour) at 3:1 or more; "no" is never the forbidden red.
+int checkDecisionAnswers(const std::string& dir) {
+    const std::string input = std::string(FLOOD_SOURCE_DIR) + "/polygons/paper-figure-7.json";
+    Model model;
+    model.open(input);
+    const DecisionTree& tree = decisionTree();
+    // The step whose lit path has the most answered tests, at least one of each answer.
+    uint32_t step = 0;
+    size_t best = 0;
+    for (uint32_t s = 1; s <= model.steps(); ++s) {
+        model.seek(s);
+        size_t yes = 0, no = 0;
+        for (const PathStep& p : decisionPath(*model.currentEvent()).steps) {
+            const DecisionNode& n = tree.nodes[size_t(p.node)];
+            if (n.kind != DecisionNode::Kind::Action && n.yes != n.no && n.yes >= 0 && n.no >= 0)
+                (p.answer ? yes : no) += 1;
+        }
+        if (yes && no && yes + no > best) best = yes + no, step = s;
+    }
+    if (!step) return failWith("decision answers: no step answers both yes and no");
+    const int W = 1000, H = 700;
+    const Rect col = computeLayout(W, H, 1).left;
+    const Rect panel{col.x, col.y + col.h * 0.38, col.w, col.h * 0.27};
+    int failures = 0;
+    for (Theme theme : {Theme::Light, Theme::Dark}) {
+        palette::setTheme(theme);
+        const std::string name = palette::themeName(theme);
+        Image img;
+        if (!shoot(input, "--theme " + name + " --step " + std::to_string(step),
+                   dir + "/screenshot-test-decision-" + name + ".png", W, H, img))
+            return failures + 1;
+        std::map<uint32_t, int> seen;
+        for (int y = int(panel.y); y < int(panel.y + panel.h); ++y)
+            for (int x = int(panel.x); x < int(panel.x + panel.w); ++x) {
+                Rgba c = img.at(x, y);
+                ++seen[uint32_t(c.r) << 16 | uint32_t(c.g) << 8 | c.b];
+            }
+        uint32_t mode = 0;
+        int most = 0;
+        for (auto [c, n] : seen)
+            if (n > most) most = n, mode = c;
+        const Rgba background{uint8_t(mode >> 16), uint8_t(mode >> 8), uint8_t(mode), 255};
+        const palette::TreeColours& colours = palette::tree();
+        for (auto [what, c] : {std::pair{"yes", colours.yes}, {"no", colours.no}}) {
+            int drawn = count(img, panel, [&](Rgba p) { return close(p, c, 8); });
+            double ratio = contrast(c, background);
+            std::printf("decision %s theme, step %u: '%s' %d pixels, contrast %.2f with %d,%d,%d\n",
+                        name.c_str(), step, what, drawn, ratio, background.r, background.g,
+                        background.b);
+            if (drawn < 8 || ratio < 3)
+                failures += failWith("the " + name + " theme's '" + what +
+                                     "' answers are missing or too close to the panel");
+        }
+        if (close(colours.no, palette::kCulprit, 100) ||
+            close(colours.no, palette::action(Action::Forbidden), 100) ||
+            colours.no.r >= colours.no.b)
+            failures += failWith("the " + name + " theme's 'no' is the forbidden red");
+        stbi_image_free(img.px);
+    }
+    palette::setTheme(Theme::Dark);
+    return failures;
+}
 }  // namespace
 
 int main() {
@@ -648,6 +726,7 @@ int main() {
     failures += checkLightTheme(dir, input, model, step, layout);
     failures += checkInspector(input, model, layout, W, H, dir);
     failures += checkInvariantLane(dir, W, H, layout);
+    failures += checkDecisionAnswers(dir);
     if (failures) return 1;
     std::printf(
         "ok: step %u, background, water, dry land and Left marker where expected, also "
@@ -657,7 +736,7 @@ int main() {
         "the toolbar's "
         "last button inside 1024x768 at 2x; Ctrl+plus rebuilds the fonts; F11 fills the screen; "
         "the light theme's ground, lines and panels; the predicate inspector's rows and hover; the "
-        "invariant lane's ticks\n",
+        "invariant lane's ticks; the decision tree's yes/no answers readable in both themes\n",
         step);
     return 0;
 }

@@ -1334,75 +1334,77 @@ TEST(ViewerModel, SetPlayingRewindsAtTheEnd) {
     m.advance(1.0);
     EXPECT_EQ(m.step(), 2u);
     EXPECT_FALSE(m.playing());
+}
 
-    // The dial floods through the editor's background flood: dragging it through a hundred
-    // angles in one go on a large polygon starts one flood, then one of the last angle when that
-    // is adopted; the UI thread (this one) validates, floods and checks nothing.
-    TEST(ViewerDirection, DraggingTheDialFloodsInTheBackgroundOnceAtATime) {
-        Model m;
-        Polygon p = generate("circle-holes", 3, 5000);
-        m.openPolygon(p, "circle-holes", validate(p, "circle-holes"));
-        ASSERT_FALSE(m.failed()) << m.verdict();
-        m.seek(m.steps() / 2);
-        const uint32_t at = m.step();
-        Editor e(m);
-        e.background = true;
-        work() = {};
-        for (int i = 1; i <= 100; ++i) ASSERT_TRUE(e.setUp(upFromDegrees(90 + 2.5 * i)));
-        EXPECT_EQ(e.floods(), 1u) << "the angles passed while a flood runs wait for the next";
-        EXPECT_EQ(m.up(), Up::PlusY) << "the old run stays on screen until the new one is ready";
-        EXPECT_EQ(e.up(), upFromDegrees(340)) << "the dial shows the angle asked for";
-        e.wait();
-        EXPECT_EQ(e.floods(), 2u);
-        EXPECT_EQ(m.up(), upFromDegrees(340));
-        EXPECT_EQ(m.trace().up, upFromDegrees(340));
-        EXPECT_FALSE(m.failed()) << m.verdict();
-        EXPECT_EQ(m.step(), std::min(at, m.steps()));
-        EXPECT_TRUE(m.hasPreviousSummary());
-        EXPECT_EQ(work().nodeVisits, 0u) << "a flood ran on the UI thread";
-        EXPECT_EQ(work().validatorSteps, 0u);
-        EXPECT_EQ(work().checkerSteps, 0u);
-        // The run adopted is the one of that direction.
-        Trace direct = record(m.polygon(), Options{upFromDegrees(340)});
-        EXPECT_EQ(direct.events.size(), m.trace().events.size());
-        work() = {};  // that flood was this test's own
+// The dial floods through the editor's background flood: dragging it through a hundred
+// angles in one go on a large polygon starts one flood, then one of the last angle when that
+// is adopted; the UI thread (this one) validates, floods and checks nothing.
+TEST(ViewerDirection, DraggingTheDialFloodsInTheBackgroundOnceAtATime) {
+    Model m;
+    Polygon p = generate("circle-holes", 3, 5000);
+    m.openPolygon(p, "circle-holes", validate(p, "circle-holes"));
+    ASSERT_FALSE(m.failed()) << m.verdict();
+    m.seek(m.steps() / 2);
+    const uint32_t at = m.step();
+    Editor e(m);
+    e.background = true;
+    work() = {};
+    for (int i = 1; i <= 100; ++i) ASSERT_TRUE(e.setUp(upFromDegrees(90 + 2.5 * i)));
+    EXPECT_EQ(e.floods(), 1u) << "the angles passed while a flood runs wait for the next";
+    EXPECT_EQ(m.up(), Up::PlusY) << "the old run stays on screen until the new one is ready";
+    EXPECT_EQ(e.up(), upFromDegrees(340)) << "the dial shows the angle asked for";
+    e.wait();
+    EXPECT_EQ(e.floods(), 2u);
+    EXPECT_EQ(m.up(), upFromDegrees(340));
+    EXPECT_EQ(m.trace().up, upFromDegrees(340));
+    EXPECT_FALSE(m.failed()) << m.verdict();
+    EXPECT_EQ(m.step(), std::min(at, m.steps()));
+    EXPECT_TRUE(m.hasPreviousSummary());
+    EXPECT_EQ(work().nodeVisits, 0u) << "a flood ran on the UI thread";
+    EXPECT_EQ(work().validatorSteps, 0u);
+    EXPECT_EQ(work().checkerSteps, 0u);
+    // The run adopted is the one of that direction.
+    Trace direct = record(m.polygon(), Options{upFromDegrees(340)});
+    EXPECT_EQ(direct.events.size(), m.trace().events.size());
+    work() = {};  // that flood was this test's own
 
-        // Frame by frame (a turn, then the frame's poll): never two floods at once, and every
-        // flood started but the last one running has been adopted.
-        const uint64_t floods = e.floods(), generation = m.generation();
-        for (int i = 1; i <= 40; ++i) {
-            e.setUp(upFromDegrees(10 + 7.5 * i));
-            e.poll();
-            EXPECT_LE(e.floods() - floods, m.generation() - generation + 1);
-        }
-        e.wait();
-        EXPECT_EQ(e.floods() - floods, m.generation() - generation);
-        EXPECT_EQ(m.up(), upFromDegrees(310));
-        EXPECT_EQ(work().nodeVisits, 0u) << "a flood ran on the UI thread";
+    // Frame by frame (a turn, then the frame's poll): never two floods at once, and every
+    // flood started but the last one running has been adopted.
+    const uint64_t floods = e.floods(), generation = m.generation();
+    for (int i = 1; i <= 40; ++i) {
+        e.setUp(upFromDegrees(10 + 7.5 * i));
+        e.poll();
+        EXPECT_LE(e.floods() - floods, m.generation() - generation + 1);
     }
+    e.wait();
+    EXPECT_EQ(e.floods() - floods, m.generation() - generation);
+    EXPECT_EQ(m.up(), upFromDegrees(310));
+    EXPECT_EQ(work().nodeVisits, 0u) << "a flood ran on the UI thread";
+}
 
-    // Turning the dial is not an edit and forgets none: the edits' undo history stays, and an
-    // edit floods along the dial's direction, not back along +y.
-    TEST(ViewerDirection, EditsFloodAlongTheDialsDirection) {
-        Model m;
-        m.open(std::string(FLOOD_SOURCE_DIR) + "/polygons/hole.json");
-        ASSERT_FALSE(m.failed()) << m.verdict();
-        Editor e(m);
-        const Point v = m.polygon().vertices[0];
-        ASSERT_TRUE(e.moveVertex(0, {v.x - 0.25, v.y - 0.25}));
-        const Up turned = upFromDegrees(17);
-        ASSERT_TRUE(e.setUp(turned));
-        EXPECT_EQ(m.up(), turned);
-        EXPECT_TRUE(m.hasPreviousSummary());
-        EXPECT_TRUE(e.canUndo()) << "the dial dropped the edit history";
-        EXPECT_TRUE(m.polygon().vertices[0] == (Point{v.x - 0.25, v.y - 0.25}));
-        ASSERT_TRUE(e.undo());
-        EXPECT_TRUE(m.polygon().vertices[0] == v);
-        EXPECT_EQ(m.up(), turned) << "the edit flooded along another direction than the dial's";
-        EXPECT_EQ(m.trace().up, turned);
-        EXPECT_FALSE(e.setUp(turned)) << "the same direction again does nothing";
-        EXPECT_FALSE(e.setUp(Up{0, 0}));
-        EXPECT_EQ(e.floods(), 3u);  // the move, the turn and the undo
-    }
+// Turning the dial is not an edit and forgets none: the edits' undo history stays, and an
+// edit floods along the dial's direction, not back along +y.
+TEST(ViewerDirection, EditsFloodAlongTheDialsDirection) {
+    Model m;
+    m.open(std::string(FLOOD_SOURCE_DIR) + "/polygons/hole.json");
+    ASSERT_FALSE(m.failed()) << m.verdict();
+    Editor e(m);
+    const Point v = m.polygon().vertices[0];
+    ASSERT_TRUE(e.moveVertex(0, {v.x - 0.25, v.y - 0.25}));
+    const Up turned = upFromDegrees(17);
+    ASSERT_TRUE(e.setUp(turned));
+    EXPECT_EQ(m.up(), turned);
+    EXPECT_TRUE(m.hasPreviousSummary());
+    EXPECT_TRUE(e.canUndo()) << "the dial dropped the edit history";
+    EXPECT_TRUE(m.polygon().vertices[0] == (Point{v.x - 0.25, v.y - 0.25}));
+    ASSERT_TRUE(e.undo());
+    EXPECT_TRUE(m.polygon().vertices[0] == v);
+    EXPECT_EQ(m.up(), turned) << "the edit flooded along another direction than the dial's";
+    EXPECT_EQ(m.trace().up, turned);
+    EXPECT_FALSE(e.setUp(turned)) << "the same direction again does nothing";
+    EXPECT_FALSE(e.setUp(Up{0, 0}));
+    EXPECT_EQ(e.floods(), 3u);  // the move, the turn and the undo
+}
+}
 
 #endif

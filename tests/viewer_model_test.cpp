@@ -1405,6 +1405,5 @@ TEST(ViewerDirection, EditsFloodAlongTheDialsDirection) {
     EXPECT_FALSE(e.setUp(Up{0, 0}));
     EXPECT_EQ(e.floods(), 3u);  // the move, the turn and the undo
 }
-}
 
 #endif

@@ -27,29 +27,17 @@
 #include <cmath>
 #include <cstdint>
 #include <numeric>
-#include <sstream>
 
-#include "coincident.h"
+#include "loops.h"
 #include "predicates.h"
 #include "ring_area.h"
 #include "sag_banks.h"
 #include "sag_index.h"
+#include "stretches.h"
 #include "work.h"
 
 namespace flood {
 namespace {
-
-constexpr uint32_t kNil = kNone;
-
-struct Node {
-    Index v;  // vertex (index into the input)
-    uint32_t prev, next;
-    uint32_t jump = kNil;        // top: the other bank of its held gorge
-    uint32_t gorgeLeft = kNil;   // dormant gorge whose Left end is this node
-    uint32_t gorgeRight = kNil;  // dormant gorge whose Right end is this node
-    bool alive = true;
-    bool wet = false;  // has been in an active chain: the water reached it
-};
 
 struct GorgeRec {
     uint32_t left, right, water;  // nodes
@@ -113,18 +101,6 @@ public:
     }
 
 private:
-    struct Stretch {  // a position of a stretch
-        uint32_t node;
-        uint32_t stretch;  // its StretchRec
-        int32_t drops;     // the count's change from the stretch's start to just before here
-        int8_t delta;      // +1 a sag, -1 a bottom or ceiling (when the count is positive)
-        bool sensitive;    // a convex bottom or ceiling: where a zero count matters
-    };
-    struct StretchRec {
-        uint32_t start, end;    // its positions in stretches_
-        uint32_t tree, leaves;  // its tree in stretchTree_ (firstAtMost()), leaves a power of two
-    };
-
     // ---- [SECTION] predicates on nodes -------------------------------------------------
     Point P(uint32_t n) const { return pts_[nodes_[n].v]; }
     // The paper's below, made a strict total order on nodes: coincident vertices (rings
@@ -140,18 +116,8 @@ private:
         if (nodes_[a].v != nodes_[b].v) return nodes_[a].v < nodes_[b].v;
         return a < b;
     }
-    // The same order as lower(), as a value: what the sorted sag list is searched with. Off
-    // the axes y is the vertex's height rank and x is 0.
-    struct HeightKey {
-        double y, x;
-        uint32_t v, node;
-        bool operator<(const HeightKey& o) const {
-            if (y != o.y) return y < o.y;
-            if (x != o.x) return x < o.x;
-            if (v != o.v) return v < o.v;
-            return node < o.node;
-        }
-    };
+    // The same order as lower(), as a value (sag_index.h): what the sorted sag list is searched
+    // with.
     HeightKey key(uint32_t n) const {
         if (general_) return {double(heightRank_[nodes_[n].v]), 0, nodes_[n].v, n};
         return {P(n).y, P(n).x, nodes_[n].v, n};
@@ -188,54 +154,18 @@ private:
         if (n - partFirstNode_ >= sagsBelow_.size())
             sagsBelow_.resize(nodes_.size() - partFirstNode_, kNil);
         uint32_t& r = sagsBelow_[n - partFirstNode_];
-        if (r == kNil) {
-            // The height bucket bounds the search; break ties on the full keys only if needed.
-            HeightKey k = key(n);
-            size_t b = heightBucket(k.y);
-            auto first = sagY_.begin() + long(sagBucket_[b]),
-                 last = sagY_.begin() + long(sagBucket_[b + 1]);
-            size_t a = size_t(std::lower_bound(first, last, k.y) - sagY_.begin());
-            if (a < sagY_.size() && sagY_[a] == k.y)
-                a = size_t(std::lower_bound(sagKeys_.begin() + long(a),
-                                            sagKeys_.begin() + long(sagBucket_[b + 1]), k) -
-                           sagKeys_.begin());
-            r = uint32_t(a);
-        }
+        if (r == kNil) r = sagHeights_.below(key(n));
         return r;
     }
-    // Buckets of equal height span over the sags' heights. The bucket of y never decreases
-    // as y grows (rounding is monotone), so the sags of the buckets below y's are all lower
-    // than y and those above all higher: a search for y needs only its own bucket. Monotone at
-    // every scale too: a span that overflows gives scale 0, so every height is in bucket 0
-    // except those whose difference is infinite (inf · 0 = NaN: the last bucket); one so small
-    // that the scale is infinite puts every height above the lowest in the last bucket.
-    size_t heightBucket(double y) const {
-        const size_t last = sagBucket_.size() - 2;
-        if (!(y > bucketY0_)) return 0;
-        double b = (y - bucketY0_) * bucketScale_;
-        return b < double(last) ? size_t(b) : last;
-    }
-    // The sags' points for the plane index, their heights, and the height buckets.
+    // The sags' points for the plane index, and their heights for the ranks.
     void indexSags() {
-        const size_t count = sagKeys_.size();
+        const size_t count = sags_.size();
         std::vector<Point>& pointOfRank = b_.pointOfRank;
         pointOfRank.resize(count);
-        sagY_.resize(count);
-        for (size_t k = 0; k < count; ++k) {
-            pointOfRank[k] = P(sags_[k]);
-            sagY_[k] = sagKeys_[k].y;
-        }
+        for (size_t k = 0; k < count; ++k) pointOfRank[k] = P(sags_[k]);
         sagIndex_.build(pointOfRank);
+        sagHeights_.index();
         unusedSags_ = uint32_t(count);
-        const size_t buckets = count / 2 + 1;
-        bucketY0_ = count ? sagY_.front() : 0;
-        double span = count ? sagY_.back() - bucketY0_ : 0;
-        bucketScale_ = span > 0 && std::isfinite(span) ? double(buckets) / span : 0;
-        sagBucket_.assign(buckets + 1, uint32_t(count));
-        size_t filled = 0;
-        for (size_t k = 0; k < count; ++k)
-            for (size_t b = heightBucket(sagY_[k]); filled <= b;)
-                sagBucket_[filled++] = uint32_t(k);
         // Indexed from the part's first node: per-part work stays proportional to the part.
         sagsBelow_.assign(nodes_.size() - partFirstNode_, kNil);
         work().nodeVisits += sagsBelow_.size();
@@ -249,112 +179,15 @@ private:
     bool ok() const { return result_.diagnostic.ok(); }
 
     // ---- [SECTION] set-up: loops, non-manifold points, sags -------------------------------
+    // A part is flooded from the lowest node of its outer loop until no gorge is left; then
+    // every node must have been flooded: a loop never reached means a hole outside the outer
+    // ring, or loops that cross.
     void floodPart(uint32_t part) {
-        const Part& pa = poly_.parts[part];
-        part_ = part;
-        partNodes_ = 0;
-        partFirstNode_ = uint32_t(nodes_.size());
-        std::vector<uint32_t>& partVertices = b_.partVertices;  // nodes of the part's loops
-        std::vector<uint32_t>& points = b_.points;              // one-node loops: Steiner points
-        partVertices.clear();
-        points.clear();
-        for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
-            if (!std::isfinite(pts_[v].x) || !std::isfinite(pts_[v].y)) {
-                Event f = begin(Action::Forbidden);
-                return forbid(f, Forbidden::NotFinite, kNil, kNil, v);
-            }
-        }
-        for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
-            bool steiner = poly_.rings[r].count == 1 && r != pa.firstRing;  // a point hole
-            if (poly_.rings[r].count < 3 && !steiner) {
-                Event f = begin(Action::Forbidden);
-                Index v = poly_.rings[r].first;
-                f.culprit = poly_.rings[r].count ? v : kNone;
-                return forbidShortRing(f, r);
-            }
-        }
-        // T-junctions of the part (validate() found them): each adds a node on its edge.
-        auto split = std::lower_bound(poly_.splits.begin(), poly_.splits.end(),
-                                      poly_.rings[pa.firstRing].first,
-                                      [](const EdgeSplit& s, Index v) { return s.edge < v; });
-        uint32_t outerNodes = 0;
-        std::vector<Index>& loop = b_.loop;
-        for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
-            const Ring& ring = poly_.rings[r];
-            // A ring without T-junctions is its own loop; only the others are copied out.
-            const bool plain =
-                split == poly_.splits.end() || split->edge >= ring.first + ring.count;
-            loop.clear();
-            for (Index v = ring.first; !plain && v < ring.first + ring.count; ++v) {
-                loop.push_back(v);
-                for (; split != poly_.splits.end() && split->edge == v; ++split)
-                    loop.push_back(split->vertex);
-            }
-            // Orient loops so the interior is on the left: outer counter-clockwise, holes
-            // clockwise, whatever the file said.
-            bool wantCcw = (r == pa.firstRing);
-            bool reverse =
-                ring.count >= 3 && (ringOrientation(pts_ + ring.first, ring.count) > 0) != wantCcw;
-            const uint32_t base = uint32_t(nodes_.size()),
-                           count = plain ? ring.count : uint32_t(loop.size());
-            for (uint32_t i = 0; i < count; ++i) {
-                Node nd;
-                nd.v = plain ? ring.first + i : loop[i];
-                uint32_t p = base + (i == 0 ? count - 1
-                                            : i - 1);  // no division: set-up is most of a small run
-                uint32_t q = base + (i + 1 == count ? 0 : i + 1);
-                nd.prev = reverse ? q : p;
-                nd.next = reverse ? p : q;
-                nodes_.push_back(nd);
-                if (count > 1) partVertices.push_back(base + i);
-                else points.push_back(base + i);
-            }
-            partNodes_ += count;
-            work().nodeVisits += count;
-            if (r == pa.firstRing) outerNodes = count;
-        }
-        // Validation found no point shared by two vertices, nor a T-junction: nothing to merge.
-        const bool touching = !poly_.pointsDistinct && mergeTouchingLoops(partVertices);
-
-        // The sags of the part, sorted by height (§4), taken from its minima (kept in bottoms_
-        // until the bottoms are sorted out of them below: no node is classified twice).
-        sags_.clear();
-        bottoms_.clear();
-        for (uint32_t n : partVertices)
-            if (isMinimum(n)) bottoms_.push_back(n);
-        for (uint32_t n : bottoms_)
-            if (turn(prev(n), n, next(n)) <= 0) sags_.push_back(n);
-        // A point hole is a hole whose lowest vertex is its only one: a sag.
-        sags_.insert(sags_.end(), points.begin(), points.end());
-        sortByHeight(sags_, sagKeys_);
-        indexSags();
-        prepareBanks(touching);
-        // The bottoms, lowest first: every one of them starts a gorge unless the water
-        // reaches it first. They are the to-do list of last resort (see lowestDryBottom()).
-        size_t bottoms = 0;
-        for (uint32_t n : bottoms_)
-            if (turn(prev(n), n, next(n)) > 0) bottoms_[bottoms++] = n;
-        bottoms_.resize(bottoms);
-        bottomCursor_ = 0;
-        bottomScans_ = 0;  // sorted only if the fallback is asked often (takeNextGorge())
-        stretches_.clear();
-        stretchRecs_.clear();
-        stretchTree_.clear();
-        for (auto& at : stretchAt_) at.clear();  // grown by the first spill walk (recordAt())
-
-        // The lowest node of the outer ring is where the water starts.
-        uint32_t start = kNil;
-        for (uint32_t i = 0; i < outerNodes; ++i) {
-            uint32_t n = partVertices[i];
-            if (start == kNil || lower(n, start)) start = n;
-        }
-        gorges_.clear();
-        todo_.clear();
-        budget_ = 8ull * partNodes_ + 64;
+        const uint32_t start = setUp(part);
+        if (!ok()) return;
         Event e = begin(Action::Start);
-        if (!isMinimum(start) || turn(prev(start), start, next(start)) <= 0) {
+        if (!isMinimum(start) || turn(prev(start), start, next(start)) <= 0)
             return forbid(e, Forbidden::StartNotBottom, start, kNil);
-        }
         startGorge(start);
         e.bottom = nodes_[start].v;
         emit(e);
@@ -365,91 +198,84 @@ private:
             }
             step();
         }
-        // Every node of the part must have been flooded: a loop never reached means a hole
-        // outside the outer ring, or loops that cross.
-        if (ok()) {
-            uint32_t alive = firstAliveNode(partFirstNode_);
-            if (alive != kNil) {
+        const uint32_t alive = ok() ? firstAliveNode(partFirstNode_) : kNil;
+        if (alive != kNil) {
+            Event f = begin(Action::Forbidden);
+            forbid(f, Forbidden::LeftBehind, alive, kNil);
+        }
+    }
+
+    // The part's loops, sags and bottoms; the lowest node of the outer loop, where the water
+    // starts (kNil, forbidden, when a ring cannot be a loop).
+    uint32_t setUp(uint32_t part) {
+        const Part& pa = poly_.parts[part];
+        part_ = part;
+        partNodes_ = 0;
+        partFirstNode_ = uint32_t(nodes_.size());
+        for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
+            if (!std::isfinite(pts_[v].x) || !std::isfinite(pts_[v].y)) {
                 Event f = begin(Action::Forbidden);
-                return forbid(f, Forbidden::LeftBehind, alive, kNil);
+                forbid(f, Forbidden::NotFinite, kNil, kNil, v);
+                return kNil;
             }
         }
+        for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
+            const Ring& ring = poly_.rings[r];
+            bool steiner = ring.count == 1 && r != pa.firstRing;  // a point hole
+            if (ring.count < 3 && !steiner) {
+                Event f = begin(Action::Forbidden);
+                forbid(f, Forbidden::ShortLoop, kNil, kNil, ring.count ? ring.first : kNone, r);
+                return kNil;
+            }
+        }
+        std::vector<uint32_t>& partVertices = b_.partVertices;  // nodes of the part's loops
+        std::vector<uint32_t>& points = b_.points;              // one-node loops: Steiner points
+        partVertices.clear();
+        points.clear();
+        const PartLoops loops = buildLoops(poly_, pts_, pa, nodes_, partVertices, points, b_.loops);
+        partNodes_ = uint32_t(nodes_.size()) - partFirstNode_;
+        findSags(partVertices, points, loops.touching);
+        gorges_.clear();
+        todo_.clear();
+        budget_ = 8ull * partNodes_ + 64;
+        uint32_t start = kNil;
+        for (uint32_t i = 0; i < loops.outerNodes; ++i) {
+            uint32_t n = partVertices[i];
+            if (start == kNil || lower(n, start)) start = n;
+        }
+        return start;
+    }
+
+    // The sags of the part, sorted by height (§4), and its bottoms, both taken from its minima
+    // (kept in bottoms_ until the bottoms are sorted out of them: no node is classified twice).
+    void findSags(const std::vector<uint32_t>& partVertices, const std::vector<uint32_t>& points,
+                  bool touching) {
+        sags_.clear();
+        bottoms_.clear();
+        for (uint32_t n : partVertices)
+            if (isMinimum(n)) bottoms_.push_back(n);
+        for (uint32_t n : bottoms_)
+            if (turn(prev(n), n, next(n)) <= 0) sags_.push_back(n);
+        // A point hole is a hole whose lowest vertex is its only one: a sag.
+        sags_.insert(sags_.end(), points.begin(), points.end());
+        sortByHeight(sags_, sagHeights_.keys());
+        indexSags();
+        prepareBanks(touching);
+        // The bottoms, lowest first: every one of them starts a gorge unless the water
+        // reaches it first. They are the to-do list of last resort (see lowestDryBottom()).
+        size_t bottoms = 0;
+        for (uint32_t n : bottoms_)
+            if (turn(prev(n), n, next(n)) > 0) bottoms_[bottoms++] = n;
+        bottoms_.resize(bottoms);
+        bottomCursor_ = 0;
+        bottomScans_ = 0;  // sorted only if the fallback is asked often (takeNextGorge())
+        walked_.clear(partFirstNode_);
     }
 
     uint32_t firstAliveNode(uint32_t from) const {
         for (uint32_t n = from; n < nodes_.size(); ++n)
             if (nodes_[n].alive) return n;
         return kNil;
-    }
-
-    // Rings touching at a point become one loop there: arriving at the point, the next edge
-    // is the first one met rotating clockwise from the edge we came along (§1). The k passages
-    // through a point are merged in O(k log k): their outgoing edges are sorted once by exact
-    // angle, and each arrival takes the outgoing edge just before its own direction.
-    // True when some point was shared (the loops may have changed).
-    bool mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
-        work().touchSearchNodes += partVertices.size();
-        repeatedPoints(
-            partVertices.size(), [&](size_t i) { return P(partVertices[i]); }, b_.repeats);
-        std::vector<std::pair<uint32_t, uint32_t>>& copies = b_.repeats.copies;
-        if (copies.empty()) return false;
-        for (auto& [first, later] : copies)
-            first = partVertices[first], later = partVertices[later];
-        std::sort(copies.begin(), copies.end());
-        std::vector<uint32_t>&corner = b_.corner, &newNext = b_.newNext;
-        std::vector<std::pair<Point, uint32_t>>& outs =
-            b_.outs;  // (where the edge goes, its passage)
-        for (size_t g = 0; g < copies.size();) {
-            corner.assign(1, copies[g].first);
-            size_t e = g;
-            for (; e < copies.size() && copies[e].first == copies[g].first; ++e)
-                corner.push_back(copies[e].second);
-            g = e;
-            std::sort(corner.begin(), corner.end());
-            const Point c = P(corner[0]);
-            // Counter-clockwise from +x; among edges of one direction the first passage last,
-            // so that the element before any position is the lowest passage of its direction.
-            outs.clear();
-            for (uint32_t i = 0; i < corner.size(); ++i) outs.emplace_back(P(next(corner[i])), i);
-            auto before = [&](const std::pair<Point, uint32_t>& a,
-                              const std::pair<Point, uint32_t>& b) {
-                if (angleLess(c, a.first, b.first)) return true;
-                if (angleLess(c, b.first, a.first)) return false;
-                return a.second > b.second;
-            };
-            std::sort(outs.begin(), outs.end(), before);
-            work().nodeVisits += corner.size();
-            newNext.resize(corner.size());
-            for (size_t i = 0; i < corner.size(); ++i) {
-                // Clockwise from the arrival's direction: the last edge strictly before it
-                // counter-clockwise, else (wrapping round) the last edge of all.
-                Point back = P(prev(corner[i]));
-                auto at = std::partition_point(outs.begin(), outs.end(),
-                                               [&](const std::pair<Point, uint32_t>& o) {
-                                                   return angleLess(c, o.first, back);
-                                               });
-                const auto& pick = at == outs.begin() ? outs.back() : *(at - 1);
-                newNext[i] = next(corner[pick.second]);
-            }
-            for (size_t i = 0; i < corner.size(); ++i) {
-                nodes_[corner[i]].next = newNext[i];
-                nodes_[newNext[i]].prev = corner[i];
-            }
-        }
-        return true;
-    }
-
-    // Direction c->a comes before c->b counter-clockwise from +x, exactly (half-planes, then
-    // orient). A zero-length edge (only in invalid input) comes after every direction, so the
-    // order stays a strict weak order.
-    static int halfPlane(Point c, Point a) {
-        if (a == c) return 2;
-        return (a.y > c.y || (a.y == c.y && a.x > c.x)) ? 0 : 1;
-    }
-    static bool angleLess(Point c, Point a, Point b) {
-        int ha = halfPlane(c, a), hb = halfPlane(c, b);
-        if (ha != hb) return ha < hb;
-        return ha < 2 && orient(c, a, b) > 0;
     }
 
     // ---- [SECTION] events -----------------------------------------------------------------
@@ -478,8 +304,10 @@ private:
         const Ring& last = poly_.rings[pa.firstRing + pa.ringCount - 1];
         return last.first + last.count;
     }
-    // `vertex`: a culprit given as a vertex index rather than a node (before loops exist).
-    void forbid(Event& e, Forbidden why, uint32_t a, uint32_t b, Index vertex = kNone) {
+    // `vertex`: a culprit given as a vertex index rather than a node (before loops exist);
+    // `ring`: the ring of fewer than three vertices of a ShortLoop, which bounds no area.
+    void forbid(Event& e, Forbidden why, uint32_t a, uint32_t b, Index vertex = kNone,
+                Index ring = kNone) {
         e.action = Action::Forbidden;
         e.reason = why;
         e.culprit = a == kNil ? vertex : nodes_[a].v;
@@ -488,21 +316,14 @@ private:
         emit(e);
         e.after = fingers();
         result_.failure = e;
-        result_.diagnostic = {Status::Forbidden, describeForbidden(poly_, e),
-                              forbiddenCulprits(poly_, e)};
-        left_ = right_ = kNil;
-    }
-
-    // A ring of fewer than three vertices bounds no area: no loop can be built from it.
-    void forbidShortRing(Event& e, Index ring) {
-        e.action = Action::Forbidden;
-        e.reason = Forbidden::ShortLoop;
-        emit(e);
-        result_.failure = e;
-        result_.diagnostic = {Status::Forbidden,
-                              describeForbidden(poly_, e) + " (ring " + std::to_string(ring) +
-                                  " has " + std::to_string(poly_.rings[ring].count) + " vertices)"};
-        result_.diagnostic.culprits.rings = {ring};
+        Diagnostic& d = result_.diagnostic = {Status::Forbidden, describeForbidden(poly_, e),
+                                              forbiddenCulprits(poly_, e)};
+        if (ring != kNone) {
+            d.message += " (ring " + std::to_string(ring) + " has " +
+                         std::to_string(poly_.rings[ring].count) + " vertices)";
+            d.culprits = {};
+            d.culprits.rings = {ring};
+        }
         left_ = right_ = kNil;
     }
     static void mark(Event& e, Test t, bool r) {
@@ -564,7 +385,7 @@ private:
             return kNil;  // every sag bridged already (or none): no bracket to search
         // Ranks bracketing the water and Next: the number of sags below each.
         int64_t lo = int64_t(sagsBelow(water_)) - 1;
-        if (lo + 1 < int64_t(sagKeys_.size()) && sags_[size_t(lo + 1)] == water_)
+        if (lo + 1 < int64_t(sags_.size()) && sags_[size_t(lo + 1)] == water_)
             ++lo;  // the water is itself a sag
         int64_t hi = sagsBelow(nx);
         if (hi <= lo + 1) return kNil;
@@ -795,17 +616,18 @@ private:
         // `drops` counts sags the water fell from whose landing is not settled yet: a sag
         // followed by a ceiling roofs the basin below it (the next bottom is its floor); a
         // sag followed by a top is matched by the bottom of the pocket beyond that top.
-        // Stretches already walked are crossed in one step (see Stretch), so walks from the
+        // Stretches already walked are crossed in one step (stretches.h), so walks from the
         // tops along a spiral arm do not retrace the arm.
         int64_t drops = 0;
         const int dir = goPrev ? 0 : 1;
-        size_t run = stretches_.size();  // first position of the stretch this walk records
+        const std::vector<Stretches::Position>& pos = walked_.positions;
+        size_t run = pos.size();  // first position of the stretch this walk records
         for (uint32_t guard = 0; guard <= partNodes_; ++guard, x = goPrev ? prev(x) : next(x)) {
             ++work().nodeVisits;
             Node& nd = nodes_[x];
             uint32_t g = goPrev ? nd.gorgeRight : nd.gorgeLeft;
             if (g != kNil && !gorges_[g].done && !gorges_[g].held) {
-                closeStretch(run);
+                walked_.close(run);
                 e.gorgePopped = g;
                 resumeGorge(g);
                 return emit(e);
@@ -813,7 +635,7 @@ private:
             if (nd.gorgeLeft != kNil || nd.gorgeRight != kNil || x == t) break;
             // Only extremes matter to the walk; the orientation test is spent on them alone
             // (and on every maximum of a stretch being recorded: a later walk may need it).
-            const uint32_t at = recordedAt(dir, x);
+            const uint32_t at = walked_.recordedAt(dir, x);
             const bool fresh = at == kNil && !nd.wet;
             bool minimum = isMinimum(x);
             bool maximum = !minimum && lower(prev(x), x) && lower(next(x), x);
@@ -821,20 +643,20 @@ private:
                 (minimum || (maximum && (drops > 0 || fresh))) && turn(prev(x), x, next(x)) > 0;
             bool sag = minimum && !convexHere, sensitive = convexHere;  // ceilings and bottoms
             if (fresh) {
-                int32_t before =
-                    stretches_.size() > run ? stretches_.back().drops + stretches_.back().delta : 0;
-                recordAt(dir, x, uint32_t(stretches_.size()));
+                int32_t before = pos.size() > run ? pos.back().drops + pos.back().delta : 0;
                 int8_t delta = sag ? 1 : sensitive ? -1 : 0;
-                stretches_.push_back({x, uint32_t(stretchRecs_.size()), before, delta, sensitive});
+                walked_.record(dir,
+                               {x, uint32_t(walked_.stretches.size()), before, delta, sensitive},
+                               uint32_t(nodes_.size()));
             } else {
-                closeStretch(run);
+                walked_.close(run);
             }
             if (sag) {
                 ++drops;
             } else if (sensitive && drops > 0) {
                 --drops;  // a bottom beyond a top, or a ceiling roofing the basin under the last sag
             } else if (minimum && sensitive && !nd.wet) {
-                closeStretch(run);
+                walked_.close(run);
                 mark(e, Test::WalkLanded, true);
                 e.bottom = nd.v;
                 startGorge(x);
@@ -846,24 +668,24 @@ private:
                 // or ceiling the count would reach at zero (it may be the landing): none of
                 // the nodes crossed can end the walk, and the count changes by their sum. The
                 // stretch's tree finds whichever comes first (a wet node holds INT32_MIN).
-                const StretchRec& rec = stretchRecs_[stretches_[at].stretch];
+                const Stretches::Stretch& rec = walked_.stretches[pos[at].stretch];
                 const uint32_t a = at + 1;
                 if (a < rec.end) {
                     uint32_t f =
-                        firstAtMost(rec, a - rec.start, int64_t(stretches_[a].drops) - drops) +
+                        walked_.firstAtMost(rec, a - rec.start, int64_t(pos[a].drops) - drops) +
                         rec.start;
                     // One past the last node crossed: a wet node (or the stretch's end) is not
                     // reached, nor the node before it; a zero-count node is reached live.
-                    uint32_t b = f == rec.end || nodes_[stretches_[f].node].wet ? f - 1 : f;
+                    uint32_t b = f == rec.end || nodes_[pos[f].node].wet ? f - 1 : f;
                     if (b > a && guard + (b - a) <= partNodes_) {
-                        drops += stretches_[b].drops - stretches_[a].drops;
+                        drops += pos[b].drops - pos[a].drops;
                         guard += b - a;
-                        x = stretches_[b - 1].node;
+                        x = pos[b - 1].node;
                     }
                 }
             }
         }
-        closeStretch(run);
+        walked_.close(run);
         // The walk cannot tell where a drip from a sag lands when the basin below it is
         // bounded by another part of the boundary (a spiral, say). Any gorge not flooded
         // yet will do: flooding it reaches this top from its far side in time.
@@ -882,10 +704,7 @@ private:
         if (g == kNil || gorges_[g].done || !gorges_[g].held)
             return forbid(e, Forbidden::JumpWrongSide, t, nodes_[t].jump);
         e.gorgePopped = g;
-        GorgeRec& rec = gorges_[g];
-        rec.done = true;
-        nodes_[rec.left].gorgeLeft = kNil;
-        nodes_[rec.right].gorgeRight = kNil;
+        const GorgeRec& rec = retireGorge(g);
         if (side == Side::Left) left_ = rec.left;
         else right_ = rec.right;
         nodes_[t].jump = kNil;
@@ -969,66 +788,9 @@ private:
         left_ = right_ = water_ = bottom;
         makeWet(bottom);
     }
-
-    // A node becomes wet: a stretch holding it can no longer be crossed past it, so its leaf
-    // and their ancestors in the stretch's tree get INT32_MIN, below any count.
     void makeWet(uint32_t n) {
         nodes_[n].wet = true;
-        if (stretchRecs_.empty())
-            return;  // no spill walk recorded a stretch yet: no tree to update
-        for (int dir = 0; dir < 2; ++dir) {
-            uint32_t at = recordedAt(dir, n);
-            if (at == kNil) continue;
-            const StretchRec& rec = stretchRecs_[stretches_[at].stretch];
-            int32_t* t = stretchTree_.data() + rec.tree;
-            for (size_t i = rec.leaves + at - rec.start; i >= 1 && t[i] != INT32_MIN; i >>= 1) {
-                t[i] = INT32_MIN;
-                ++work().nodeVisits;
-            }
-        }
-    }
-    // The position of node n in the stretches walked in direction dir; kNil if not recorded.
-    uint32_t recordedAt(int dir, uint32_t n) const {
-        const std::vector<uint32_t>& v = stretchAt_[dir];
-        return n - partFirstNode_ < v.size() ? v[n - partFirstNode_] : kNil;
-    }
-    void recordAt(int dir, uint32_t n, uint32_t position) {
-        std::vector<uint32_t>& v = stretchAt_[dir];
-        if (n - partFirstNode_ >= v.size()) v.resize(nodes_.size() - partFirstNode_, kNil);
-        v[n - partFirstNode_] = position;
-    }
-    // Ends the stretch a walk is recording (positions from `run` on) and builds its tree: a
-    // complete binary tree over the positions holding, for bottoms and ceilings, the count's
-    // change before them (INT32_MAX elsewhere), each inner node the least of its two.
-    void closeStretch(size_t& run) {
-        const uint32_t start = uint32_t(run), end = uint32_t(stretches_.size());
-        run = end;
-        if (start == end) return;
-        uint32_t leaves = 1;
-        while (leaves < end - start) leaves <<= 1;
-        const uint32_t tree = uint32_t(stretchTree_.size());
-        stretchTree_.resize(tree + 2 * size_t(leaves), INT32_MAX);
-        int32_t* t = stretchTree_.data() + tree;
-        for (uint32_t k = start; k < end; ++k)
-            if (stretches_[k].sensitive) t[leaves + k - start] = stretches_[k].drops;
-        for (uint32_t i = leaves; i-- > 1;) t[i] = std::min(t[2 * i], t[2 * i + 1]);
-        work().nodeVisits += 2 * size_t(leaves);
-        stretchRecs_.push_back({start, end, tree, leaves});
-    }
-    // The first position from `from` on (relative to the stretch's start) whose tree value is
-    // at most `limit`; the stretch's length if none. O(log length).
-    uint32_t firstAtMost(const StretchRec& rec, uint32_t from, int64_t limit) const {
-        const int32_t* t = stretchTree_.data() + rec.tree;
-        for (size_t i = rec.leaves + from;;) {
-            ++work().nodeVisits;
-            if (t[i] <= limit) {
-                while (i < rec.leaves) i = t[2 * i] <= limit ? 2 * i : 2 * i + 1;
-                return uint32_t(i - rec.leaves);
-            }
-            for (; i & 1; i >>= 1)
-                if (i == 1) return rec.end - rec.start;  // right edge of the tree: none
-            ++i;
-        }
+        walked_.markWet(n);
     }
 
     uint32_t pushGorge(uint32_t l, uint32_t r, uint32_t w, bool held, Index top) {
@@ -1039,11 +801,16 @@ private:
         if (!held) todo_.push_back(id);
         return id;
     }
-    void resumeGorge(uint32_t g) {
+    // A gorge is flooded again (Jump, or taken from the to-do list): its ends forget it.
+    const GorgeRec& retireGorge(uint32_t g) {
         GorgeRec& rec = gorges_[g];
         rec.done = true;
         nodes_[rec.left].gorgeLeft = kNil;
         nodes_[rec.right].gorgeRight = kNil;
+        return rec;
+    }
+    void resumeGorge(uint32_t g) {
+        const GorgeRec& rec = retireGorge(g);
         left_ = rec.left;
         right_ = rec.right;
         water_ = rec.water;
@@ -1055,21 +822,14 @@ public:
     struct Buffers {
         std::vector<Point> rotated, pointOfRank;
         std::vector<Node> nodes;
-        std::vector<uint32_t> sags, partVertices, points, initialNext, sagBucket, sagsBelow,
-            bottoms, todo;
-        std::vector<Index> loop;
+        std::vector<uint32_t> sags, partVertices, points, initialNext, sagsBelow, bottoms, todo;
         SagIndex sagIndex;
         SagBanks banks;
-        std::vector<HeightKey> sagKeys, bottomKeys;
-        std::vector<double> sagY;
+        SagHeights sagHeights;
+        std::vector<HeightKey> bottomKeys;
         std::vector<GorgeRec> gorges;
-        std::vector<Stretch> stretches;
-        std::vector<StretchRec> stretchRecs;
-        std::vector<int32_t> stretchTree;
-        std::vector<uint32_t> stretchAt[2];
-        RepeatedPointsScratch repeats;  // mergeTouchingLoops' search (coincident.h)
-        std::vector<uint32_t> corner, newNext;
-        std::vector<std::pair<Point, uint32_t>> outs;
+        Stretches walked;
+        LoopScratch loops;
     };
 
 private:
@@ -1091,12 +851,8 @@ private:
     uint64_t treeWork_ = 0;  // box visits of the plane index in this part
     uint32_t partFirstVertex_ = 0, initialNodes_ = 0;
     std::vector<uint32_t>& initialNext_ =
-        b_.initialNext;  // per initial node of the part (local ids): next
-    std::vector<HeightKey>& sagKeys_ = b_.sagKeys;  // height keys of sags_, for binary search
-    std::vector<double>& sagY_ = b_.sagY;  // their y alone: a denser array for the first search
-    std::vector<uint32_t>& sagBucket_ =
-        b_.sagBucket;  // first rank of each height bucket (heightBucket())
-    double bucketY0_ = 0, bucketScale_ = 0;
+        b_.initialNext;                       // per initial node of the part (local ids): next
+    SagHeights& sagHeights_ = b_.sagHeights;  // the sags' heights by rank (sag_index.h)
     std::vector<HeightKey>& bottomKeys_ = b_.bottomKeys;  // scratch for sorting the bottoms
     std::vector<uint32_t>& sagsBelow_ =
         b_.sagsBelow;  // per node of the part (from partFirstNode_): sags below it, kNil until asked
@@ -1105,15 +861,7 @@ private:
     size_t bottomCursor_ = 0;
     uint32_t bottomScans_ = 0;
     std::vector<GorgeRec>& gorges_ = b_.gorges;
-    // Spill walks remembered: the dry nodes a walk passed, in its direction (prev-wards or
-    // next-wards), with the drop count's change along them. Links between dry nodes do not
-    // change (every edit of the loops touches a wet node), so a later walk reaching such a
-    // stretch crosses it in one step up to its first node that got wet since.
-    std::vector<Stretch>& stretches_ = b_.stretches;
-    std::vector<StretchRec>& stretchRecs_ = b_.stretchRecs;
-    std::vector<int32_t>& stretchTree_ = b_.stretchTree;
-    std::vector<uint32_t> (&stretchAt_)[2] =
-        b_.stretchAt;                        // per node of the part, per direction: its position
+    Stretches& walked_ = b_.walked;          // spill walks remembered (stretches.h)
     std::vector<uint32_t>& todo_ = b_.todo;  // pending gorges (ids), last pushed first
     uint32_t left_ = kNil, right_ = kNil, water_ = kNil;
     uint32_t part_ = 0, partNodes_ = 0, partFirstNode_ = 0, cut_ = 0, step_ = 0;
@@ -1156,38 +904,6 @@ const FloodResult& Triangulator::run(const Polygon& polygon, Listener* listener,
     Workspace& w = *workspace_;
     Machine(polygon, listener, options, w.result, &w.buffers).run();  // refills the last result
     return w.result;
-}
-
-Culprits forbiddenCulprits(const Polygon& polygon, const Event& e) {
-    Culprits c;
-    const Fingers& f = e.before;
-    for (Index v : {e.culprit, e.culprit2, f.left, f.right, f.nextLeft, f.nextRight})
-        if (v < polygon.vertices.size() &&
-            std::find(c.vertices.begin(), c.vertices.end(), v) == c.vertices.end()) {
-            c.vertices.push_back(v);
-            Index r = polygon.ringOf(v);
-            if (std::find(c.rings.begin(), c.rings.end(), r) == c.rings.end()) c.rings.push_back(r);
-        }
-    return c;
-}
-
-std::string describeForbidden(const Polygon& polygon, const Event& e) {
-    std::ostringstream os;
-    os.precision(17);
-    auto vertex = [&](const char* label, Index v) {
-        if (v == kNone || v >= polygon.vertices.size()) return;
-        Index r = polygon.ringOf(v);
-        Point p = polygon.vertices[v];
-        os << "; " << label << " = vertex " << v << " (ring " << r << " vertex "
-           << v - polygon.rings[r].first << ", " << p.x << ", " << p.y << ")";
-    };
-    os << "forbidden transition " << forbiddenName(e.reason) << " at step " << e.step + 1;
-    vertex("at", e.culprit);
-    vertex("and", e.culprit2);
-    vertex("Left", e.after.left);
-    vertex("Right", e.after.right);
-    os << ": " << forbiddenText(e.reason);
-    return os.str();
 }
 
 }  // namespace flood

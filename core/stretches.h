@@ -1,0 +1,56 @@
+// Spill walks remembered (§5; ALGORITHM.md): the dry nodes a walk passed, in its direction
+// (prev-wards or next-wards), with the drop count's change along them. Links between dry
+// nodes do not change (every edit of the loops touches a wet node), so a later walk reaching
+// such a stretch crosses it in one step up to its first node that got wet since. Each
+// stretch keeps a tree over its positions that finds that node, or the first bottom or
+// ceiling the count would reach at zero, in O(log length).
+// Internal to core/, not a public API.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "polygon.h"
+
+namespace flood {
+
+class Stretches {
+public:
+    struct Position {
+        uint32_t node;
+        uint32_t stretch;  // its Stretch in stretches
+        int32_t drops;     // the count's change from the stretch's start to just before here
+        int8_t delta;      // +1 a sag, -1 a bottom or ceiling (when the count is positive)
+        bool sensitive;    // a convex bottom or ceiling: where a zero count matters
+    };
+    struct Stretch {
+        uint32_t start, end;    // its positions in positions
+        uint32_t tree, leaves;  // its tree in tree_ (firstAtMost()), leaves a power of two
+    };
+    std::vector<Position> positions;  // of every stretch recorded, stretch after stretch
+    std::vector<Stretch> stretches;
+
+    // For a part whose nodes are numbered from firstNode on.
+    void clear(uint32_t firstNode);
+    // The position of node n in the stretches walked in direction dir (0 prev-wards, 1
+    // next-wards); kNone if not recorded.
+    uint32_t recordedAt(int dir, uint32_t n) const {
+        const std::vector<uint32_t>& v = at_[dir];
+        return n - first_ < v.size() ? v[n - first_] : kNone;
+    }
+    // Appends p to the stretch being recorded; `nodeCount`: the nodes there are now.
+    void record(int dir, const Position& p, uint32_t nodeCount);
+    // Ends the stretch a walk is recording (positions from `run` on) and builds its tree.
+    void close(size_t& run);
+    // The first position from `from` on (relative to the stretch's start) whose tree value is
+    // at most `limit`; the stretch's length if none.
+    uint32_t firstAtMost(const Stretch& s, uint32_t from, int64_t limit) const;
+    // Node n got wet: a stretch holding it can no longer be crossed past it.
+    void markWet(uint32_t n);
+
+private:
+    std::vector<int32_t> tree_;
+    std::vector<uint32_t> at_[2];  // per node of the part, per direction: its position
+    uint32_t first_ = 0;
+};
+
+}  // namespace flood

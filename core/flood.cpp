@@ -21,6 +21,15 @@
 //   4. A top has a jump pointer only while its gorge is held there.
 // When one of these cannot hold — the input is invalid — the machine stops in a Forbidden
 // state (§6) instead of producing a wrong triangle.
+//
+// Sections (search for "[SECTION]"):
+//   predicates on nodes     lower(): the paper's below as a total order on nodes; sag ranks
+//   a part                  set-up (loops.h builds the loops), the run, the left-behind check
+//   events                  begin/emit; forbid() (narrate.cpp words the diagnostic)
+//   the decision tree       step(): Fig. 9; the sag search (sag_index.h, sag_banks.h)
+//   the five actions        Raise, Bridge, Spill (its walks remembered: stretches.h), Jump, Fill
+//   the to-do list          pending gorges, dry bottoms; a gorge retired in retireGorge()
+//   the machine's memory    the buffers lent from run to run; then the entry points
 #include "flood.h"
 
 #include <algorithm>
@@ -40,8 +49,8 @@ namespace flood {
 namespace {
 
 struct GorgeRec {
-    uint32_t left, right, water;  // nodes
-    bool held = false;            // held at a top (Spill) rather than pending (Bridge)
+    NodeId left, right, water;
+    bool held = false;  // held at a top (Spill) rather than pending (Bridge)
     bool done = false;
     Index top = kNone;
 };
@@ -102,10 +111,10 @@ public:
 
 private:
     // ---- [SECTION] predicates on nodes -------------------------------------------------
-    Point P(uint32_t n) const { return pts_[nodes_[n].v]; }
+    Point P(NodeId n) const { return pts_[nodes_[n].v]; }
     // The paper's below, made a strict total order on nodes: coincident vertices (rings
     // touching at a point, bridge copies) are ordered by vertex index, then node id.
-    bool lower(uint32_t a, uint32_t b) const {
+    bool lower(NodeId a, NodeId b) const {
         if (general_) {
             const Index va = nodes_[a].v, vb = nodes_[b].v;
             return va != vb ? heightRank_[va] < heightRank_[vb] : a < b;
@@ -118,7 +127,7 @@ private:
     }
     // The same order as lower(), as a value (sag_index.h): what the sorted sag list is searched
     // with.
-    HeightKey key(uint32_t n) const {
+    HeightKey key(NodeId n) const {
         if (general_) return {double(heightRank_[nodes_[n].v]), 0, nodes_[n].v, n};
         return {P(n).y, P(n).x, nodes_[n].v, n};
     }
@@ -142,7 +151,7 @@ private:
     }
     // Sorts nodes by lower(), comparing contiguous keys rather than chasing node -> vertex
     // -> point on every comparison; `keys` gets the sorted keys.
-    void sortByHeight(std::vector<uint32_t>& ns, std::vector<HeightKey>& keys) const {
+    void sortByHeight(std::vector<NodeId>& ns, std::vector<HeightKey>& keys) const {
         keys.resize(ns.size());
         for (size_t i = 0; i < ns.size(); ++i) keys[i] = key(ns[i]);
         std::sort(keys.begin(), keys.end());
@@ -150,11 +159,11 @@ private:
     }
     // Number of sags strictly below node n, by binary search on the contiguous height keys,
     // remembered per node: the water is usually the previous step's Next.
-    uint32_t sagsBelow(uint32_t n) {
+    uint32_t sagsBelow(NodeId n) {
         if (n - partFirstNode_ >= sagsBelow_.size())
-            sagsBelow_.resize(nodes_.size() - partFirstNode_, kNil);
+            sagsBelow_.resize(nodes_.end() - partFirstNode_, kNone);
         uint32_t& r = sagsBelow_[n - partFirstNode_];
-        if (r == kNil) r = sagHeights_.below(key(n));
+        if (r == kNone) r = sagHeights_.below(key(n));
         return r;
     }
     // The sags' points for the plane index, and their heights for the ranks.
@@ -167,23 +176,23 @@ private:
         sagHeights_.index();
         unusedSags_ = uint32_t(count);
         // Indexed from the part's first node: per-part work stays proportional to the part.
-        sagsBelow_.assign(nodes_.size() - partFirstNode_, kNil);
+        sagsBelow_.assign(nodes_.end() - partFirstNode_, kNone);
         work().nodeVisits += sagsBelow_.size();
         for (size_t k = 0; k < count; ++k)
             sagsBelow_[sags_[k] - partFirstNode_] = uint32_t(k);  // a sag's rank
     }
-    int turn(uint32_t a, uint32_t b, uint32_t c) const { return orient(P(a), P(b), P(c)); }
-    uint32_t prev(uint32_t n) const { return nodes_[n].prev; }
-    uint32_t next(uint32_t n) const { return nodes_[n].next; }
-    bool isMinimum(uint32_t n) const { return lower(n, prev(n)) && lower(n, next(n)); }
+    int turn(NodeId a, NodeId b, NodeId c) const { return orient(P(a), P(b), P(c)); }
+    NodeId prev(NodeId n) const { return nodes_[n].prev; }
+    NodeId next(NodeId n) const { return nodes_[n].next; }
+    bool isMinimum(NodeId n) const { return lower(n, prev(n)) && lower(n, next(n)); }
     bool ok() const { return result_.diagnostic.ok(); }
 
-    // ---- [SECTION] set-up: loops, non-manifold points, sags -------------------------------
+    // ---- [SECTION] a part: set-up, the run, the left-behind check ---------------------------
     // A part is flooded from the lowest node of its outer loop until no gorge is left; then
     // every node must have been flooded: a loop never reached means a hole outside the outer
     // ring, or loops that cross.
     void floodPart(uint32_t part) {
-        const uint32_t start = setUp(part);
+        const NodeId start = setUp(part);
         if (!ok()) return;
         Event e = begin(Action::Start);
         if (!isMinimum(start) || turn(prev(start), start, next(start)) <= 0)
@@ -198,7 +207,7 @@ private:
             }
             step();
         }
-        const uint32_t alive = ok() ? firstAliveNode(partFirstNode_) : kNil;
+        const NodeId alive = ok() ? firstAliveNode(partFirstNode_) : kNil;
         if (alive != kNil) {
             Event f = begin(Action::Forbidden);
             forbid(f, Forbidden::LeftBehind, alive, kNil);
@@ -207,11 +216,11 @@ private:
 
     // The part's loops, sags and bottoms; the lowest node of the outer loop, where the water
     // starts (kNil, forbidden, when a ring cannot be a loop).
-    uint32_t setUp(uint32_t part) {
+    NodeId setUp(uint32_t part) {
         const Part& pa = poly_.parts[part];
         part_ = part;
         partNodes_ = 0;
-        partFirstNode_ = uint32_t(nodes_.size());
+        partFirstNode_ = nodes_.end();
         for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
             if (!std::isfinite(pts_[v].x) || !std::isfinite(pts_[v].y)) {
                 Event f = begin(Action::Forbidden);
@@ -228,19 +237,19 @@ private:
                 return kNil;
             }
         }
-        std::vector<uint32_t>& partVertices = b_.partVertices;  // nodes of the part's loops
-        std::vector<uint32_t>& points = b_.points;              // one-node loops: Steiner points
+        std::vector<NodeId>& partVertices = b_.partVertices;  // nodes of the part's loops
+        std::vector<NodeId>& points = b_.points;              // one-node loops: Steiner points
         partVertices.clear();
         points.clear();
         const PartLoops loops = buildLoops(poly_, pts_, pa, nodes_, partVertices, points, b_.loops);
-        partNodes_ = uint32_t(nodes_.size()) - partFirstNode_;
+        partNodes_ = nodes_.end() - partFirstNode_;
         findSags(partVertices, points, loops.touching);
         gorges_.clear();
         todo_.clear();
         budget_ = 8ull * partNodes_ + 64;
-        uint32_t start = kNil;
+        NodeId start = kNil;
         for (uint32_t i = 0; i < loops.outerNodes; ++i) {
-            uint32_t n = partVertices[i];
+            NodeId n = partVertices[i];
             if (start == kNil || lower(n, start)) start = n;
         }
         return start;
@@ -248,13 +257,13 @@ private:
 
     // The sags of the part, sorted by height (§4), and its bottoms, both taken from its minima
     // (kept in bottoms_ until the bottoms are sorted out of them: no node is classified twice).
-    void findSags(const std::vector<uint32_t>& partVertices, const std::vector<uint32_t>& points,
+    void findSags(const std::vector<NodeId>& partVertices, const std::vector<NodeId>& points,
                   bool touching) {
         sags_.clear();
         bottoms_.clear();
-        for (uint32_t n : partVertices)
+        for (NodeId n : partVertices)
             if (isMinimum(n)) bottoms_.push_back(n);
-        for (uint32_t n : bottoms_)
+        for (NodeId n : bottoms_)
             if (turn(prev(n), n, next(n)) <= 0) sags_.push_back(n);
         // A point hole is a hole whose lowest vertex is its only one: a sag.
         sags_.insert(sags_.end(), points.begin(), points.end());
@@ -264,7 +273,7 @@ private:
         // The bottoms, lowest first: every one of them starts a gorge unless the water
         // reaches it first. They are the to-do list of last resort (see lowestDryBottom()).
         size_t bottoms = 0;
-        for (uint32_t n : bottoms_)
+        for (NodeId n : bottoms_)
             if (turn(prev(n), n, next(n)) > 0) bottoms_[bottoms++] = n;
         bottoms_.resize(bottoms);
         bottomCursor_ = 0;
@@ -272,8 +281,8 @@ private:
         walked_.clear(partFirstNode_);
     }
 
-    uint32_t firstAliveNode(uint32_t from) const {
-        for (uint32_t n = from; n < nodes_.size(); ++n)
+    NodeId firstAliveNode(NodeId from) const {
+        for (NodeId n = from; n < nodes_.end(); n = n + 1)
             if (nodes_[n].alive) return n;
         return kNil;
     }
@@ -306,7 +315,7 @@ private:
     }
     // `vertex`: a culprit given as a vertex index rather than a node (before loops exist);
     // `ring`: the ring of fewer than three vertices of a ShortLoop, which bounds no area.
-    void forbid(Event& e, Forbidden why, uint32_t a, uint32_t b, Index vertex = kNone,
+    void forbid(Event& e, Forbidden why, NodeId a, NodeId b, Index vertex = kNone,
                 Index ring = kNone) {
         e.action = Action::Forbidden;
         e.reason = why;
@@ -334,13 +343,13 @@ private:
     // ---- [SECTION] the decision tree (Fig. 9) ----------------------------------------------
     void step() {
         work().nodeVisits += 4;  // Left, Right and the fingers
-        uint32_t nl = prev(left_), nr = next(right_);
+        NodeId nl = prev(left_), nr = next(right_);
         Event e = begin(Action::Raise);
         bool same = nl == nr;
         mark(e, Test::SameNext, same);
         if (same) {
             // The fingers meet, but a hole may still hang in the gorge below them.
-            uint32_t s = findSag(nl, e);
+            NodeId s = findSag(nl, e);
             mark(e, Test::SagInside, s != kNil);
             if (s != kNil) return bridge(e, s);
             return fill(e);
@@ -349,13 +358,13 @@ private:
         bool leftLower = lower(nl, nr);
         mark(e, Test::LeftLower, leftLower);
         Side side = leftLower ? Side::Left : Side::Right;
-        uint32_t c = leftLower ? left_ : right_;
-        uint32_t nx = leftLower ? nl : nr;
+        NodeId c = leftLower ? left_ : right_;
+        NodeId nx = leftLower ? nl : nr;
         e.side = side;
         bool up = lower(c, nx);
         mark(e, Test::NextAbove, up);
         if (up) {
-            uint32_t s = findSag(nx, e);
+            NodeId s = findSag(nx, e);
             mark(e, Test::SagInside, s != kNil);
             if (s != kNil) return bridge(e, s);
             return raise(e, side);
@@ -373,14 +382,14 @@ private:
     // The lowest unused sag above the water and below Next inside the quadrangle
     // Left, Right, NextRight, NextLeft (§4, §5). Sags are sorted, so the scan starts at the
     // water level and stops at Next.
-    uint32_t findSag(uint32_t nx, Event& e) {
+    NodeId findSag(NodeId nx, Event& e) {
         WorkCounters& w = work();
         const uint64_t before = w.nodeVisits + w.sagTests + w.orientCalls;  // not all ten counters
-        uint32_t s = searchSag(nx, e);
+        NodeId s = searchSag(nx, e);
         w.sagSearch += w.nodeVisits + w.sagTests + w.orientCalls - before;
         return s;
     }
-    uint32_t searchSag(uint32_t nx, Event& e) {
+    NodeId searchSag(NodeId nx, Event& e) {
         if (unusedSags_ == 0)
             return kNil;  // every sag bridged already (or none): no bracket to search
         // Ranks bracketing the water and Next: the number of sags below each.
@@ -440,7 +449,7 @@ private:
         if (k < 0) return kNil;
         return useSag(k);
     }
-    uint32_t useSag(int64_t rank) {
+    NodeId useSag(int64_t rank) {
         sagIndex_.markUsed(uint32_t(rank));
         --unusedSags_;
         return sags_[size_t(rank)];
@@ -475,11 +484,11 @@ private:
         if (!banks_.build(point, initialNext_, sagOfRank, general_ ? up_ : Up::PlusY))
             banks_.clear();  // crossing edges
     }
-    // The input edge from node a to node b, as its tail's initial node; kNil when a -> b
+    // The input edge from node a to node b, as its tail's initial node; kNone when a -> b
     // is not an input edge (a diagonal). Without shared points a vertex has one initial node.
-    uint32_t inputEdge(uint32_t a, uint32_t b) const {
+    uint32_t inputEdge(NodeId a, NodeId b) const {
         uint32_t t = nodes_[a].v - partFirstVertex_;
-        if (t >= initialNodes_ || initialNext_[t] + partFirstVertex_ != nodes_[b].v) return kNil;
+        if (t >= initialNodes_ || initialNext_[t] + partFirstVertex_ != nodes_[b].v) return kNone;
         return t;
     }
     // The bank lists' answer for the active gorge: a rank, -1 for no sag, -2 when neither
@@ -487,18 +496,18 @@ private:
     int64_t bankCandidate(int64_t lo, int64_t hi) const {
         auto used = [&](uint32_t rank) { return sagIndex_.used(rank); };
         uint32_t t = inputEdge(prev(left_), left_);
-        if (t != kNil) return banks_.lowest(true, t, lo, hi, used);
+        if (t != kNone) return banks_.lowest(true, t, lo, hi, used);
         t = inputEdge(right_, next(right_));
-        if (t != kNil) return banks_.lowest(false, t, lo, hi, used);
+        if (t != kNone) return banks_.lowest(false, t, lo, hi, used);
         return -2;
     }
 
     // ---- [SECTION] the five actions ----------------------------------------------------------
-    void cutTriangle(uint32_t a, uint32_t b, uint32_t c) {
+    void cutTriangle(NodeId a, NodeId b, NodeId c) {
         result_.triangles.push_back({nodes_[a].v, nodes_[b].v, nodes_[c].v});
         ++cut_;
     }
-    void unlink(uint32_t n) {
+    void unlink(NodeId n) {
         nodes_[prev(n)].next = next(n);
         nodes_[next(n)].prev = prev(n);
         nodes_[n].alive = false;
@@ -508,12 +517,12 @@ private:
     void raise(Event& e, Side side) {
         uint32_t guard = partNodes_ + 2;  // a walk longer than the part means broken loops
         if (side == Side::Left) {
-            uint32_t nl = prev(left_), c = left_;
+            NodeId nl = prev(left_), c = left_;
             while (c != right_ && turn(nl, c, next(c)) > 0) {
                 if (guard-- == 0 || !nodes_[c].alive)
                     return forbid(e, Forbidden::NoProgress, c, nl);
                 ++work().nodeVisits;
-                uint32_t n = next(c);
+                NodeId n = next(c);
                 cutTriangle(nl, c, n);
                 unlink(c);
                 c = n;
@@ -521,12 +530,12 @@ private:
             left_ = water_ = nl;
             makeWet(nl);
         } else {
-            uint32_t nr = next(right_), c = right_;
+            NodeId nr = next(right_), c = right_;
             while (c != left_ && turn(prev(c), c, nr) > 0) {
                 if (guard-- == 0 || !nodes_[c].alive)
                     return forbid(e, Forbidden::NoProgress, c, nr);
                 ++work().nodeVisits;
-                uint32_t p = prev(c);
+                NodeId p = prev(c);
                 cutTriangle(p, c, nr);
                 unlink(c);
                 c = p;
@@ -545,44 +554,45 @@ private:
     // A Steiner point (a one-node loop) bounds nothing, so it splits nothing: the diagonal is
     // an antenna c -> s -> c' into the gorge, s stays inside the chain as the water node
     // (reflex: the whole gorge above it is open), and no gorge is pushed.
-    void bridge(Event& e, uint32_t s) {
+    void bridge(Event& e, NodeId s) {
         e.action = Action::Bridge;
-        uint32_t c = water_;
+        NodeId c = water_;
         e.sag = nodes_[s].v;
         e.bridgeTo = nodes_[c].v;
         if (listener_) {
             uint32_t i = 0;
-            for (uint32_t x = left_; x != c && i <= partNodes_ * 2; x = next(x)) ++i;
+            for (NodeId x = left_; x != c && i <= partNodes_ * 2; x = next(x)) ++i;
             e.chainIndex = i;
         }
         const bool point = prev(s) == s;
-        uint32_t s2 = point ? s : uint32_t(nodes_.size()), c2 = uint32_t(nodes_.size()) + !point;
-        if (!point) nodes_.push_back(Node{nodes_[s].v, prev(s), c2});
-        nodes_.push_back(Node{nodes_[c].v, s2, next(c)});
+        NodeId s2 = point ? s : nodes_.end(), c2 = nodes_.end() + !point;
+        if (!point) nodes_.push(Node{nodes_[s].v, prev(s), c2});
+        nodes_.push(Node{nodes_[c].v, s2, next(c)});
         if (!point) nodes_[prev(s)].next = s2;
         nodes_[next(c)].prev = c2;
         nodes_[c].next = s;
         nodes_[s].prev = c;
         nodes_[s2].next = c2;
         partNodes_ += point ? 1 : 2;
-        uint32_t right2 = (right_ == c) ? c2 : right_;
+        NodeId right2 = (right_ == c) ? c2 : right_;
         // Left half: Left .. c, s. Cut while the node before s is convex.
-        uint32_t x = c, before = cut_, guard = partNodes_ + 2;
+        NodeId x = c;
+        uint32_t before = cut_, guard = partNodes_ + 2;
         while (x != left_ && turn(prev(x), x, s) > 0) {
             if (guard-- == 0 || !nodes_[x].alive) return forbid(e, Forbidden::NoProgress, x, s);
             ++work().nodeVisits;
-            uint32_t p = prev(x);
+            NodeId p = prev(x);
             cutTriangle(p, x, s);
             unlink(x);
             x = p;
         }
         e.cutLeft = cut_ - before;
         before = cut_;
-        uint32_t y = c2;
+        NodeId y = c2;
         while (y != right2 && turn(s2, y, next(y)) > 0) {
             if (guard-- == 0 || !nodes_[y].alive) return forbid(e, Forbidden::NoProgress, y, s);
             ++work().nodeVisits;
-            uint32_t n = next(y);
+            NodeId n = next(y);
             cutTriangle(s2, y, n);
             unlink(y);
             y = n;
@@ -604,15 +614,15 @@ private:
     // set to the other bank, and the water runs down the far side of the top to the next
     // bottom, skipping the sags it drips from (Fig. 5). A pending gorge met on the way
     // is the one that collects the water: it is taken off the to-do list.
-    void spill(Event& e, Side side, uint32_t t) {
+    void spill(Event& e, Side side, NodeId t) {
         e.action = Action::Spill;
-        uint32_t other = side == Side::Left ? right_ : left_;
+        NodeId other = side == Side::Left ? right_ : left_;
         nodes_[t].jump = other;
         e.top = nodes_[t].v;
         e.jumpTarget = nodes_[other].v;
         e.gorgePushed = pushGorge(left_, right_, water_, true, nodes_[t].v);
         bool goPrev = side == Side::Left;
-        uint32_t x = goPrev ? prev(t) : next(t);
+        NodeId x = goPrev ? prev(t) : next(t);
         // `drops` counts sags the water fell from whose landing is not settled yet: a sag
         // followed by a ceiling roofs the basin below it (the next bottom is its floor); a
         // sag followed by a top is matched by the bottom of the pocket beyond that top.
@@ -626,17 +636,17 @@ private:
             ++work().nodeVisits;
             Node& nd = nodes_[x];
             uint32_t g = goPrev ? nd.gorgeRight : nd.gorgeLeft;
-            if (g != kNil && !gorges_[g].done && !gorges_[g].held) {
+            if (g != kNoGorge && !gorges_[g].done && !gorges_[g].held) {
                 walked_.close(run);
                 e.gorgePopped = g;
                 resumeGorge(g);
                 return emit(e);
             }
-            if (nd.gorgeLeft != kNil || nd.gorgeRight != kNil || x == t) break;
+            if (nd.gorgeLeft != kNoGorge || nd.gorgeRight != kNoGorge || x == t) break;
             // Only extremes matter to the walk; the orientation test is spent on them alone
             // (and on every maximum of a stretch being recorded: a later walk may need it).
             const uint32_t at = walked_.recordedAt(dir, x);
-            const bool fresh = at == kNil && !nd.wet;
+            const bool fresh = at == kNone && !nd.wet;
             bool minimum = isMinimum(x);
             bool maximum = !minimum && lower(prev(x), x) && lower(next(x), x);
             bool convexHere =
@@ -647,7 +657,7 @@ private:
                 int8_t delta = sag ? 1 : sensitive ? -1 : 0;
                 walked_.record(dir,
                                {x, uint32_t(walked_.stretches.size()), before, delta, sensitive},
-                               uint32_t(nodes_.size()));
+                               nodes_.end());
             } else {
                 walked_.close(run);
             }
@@ -662,7 +672,7 @@ private:
                 startGorge(x);
                 return emit(e);
             }
-            if (!fresh && at != kNil && !nd.wet) {
+            if (!fresh && at != kNone && !nd.wet) {
                 // Cross the stretch beyond x in one step, up to the node before the first one
                 // that got wet since (its links may have changed) and before the first bottom
                 // or ceiling the count would reach at zero (it may be the landing): none of
@@ -696,12 +706,12 @@ private:
 
     // Jump: the water reached a held top from its far side; the chain continues on the
     // other bank, where the jump pointer leads (Fig. 6). The two chains meet at the top.
-    void jump(Event& e, Side side, uint32_t t) {
+    void jump(Event& e, Side side, NodeId t) {
         e.action = Action::Jump;
         uint32_t g = side == Side::Left ? nodes_[t].gorgeRight : nodes_[t].gorgeLeft;
         e.top = nodes_[t].v;
         e.jumpTarget = nodes_[nodes_[t].jump].v;
-        if (g == kNil || gorges_[g].done || !gorges_[g].held)
+        if (g == kNoGorge || gorges_[g].done || !gorges_[g].held)
             return forbid(e, Forbidden::JumpWrongSide, t, nodes_[t].jump);
         e.gorgePopped = g;
         const GorgeRec& rec = retireGorge(g);
@@ -716,18 +726,18 @@ private:
     // Then the next pending gorge on the to-do list becomes active.
     void fill(Event& e) {
         e.action = Action::Fill;
-        uint32_t apex = prev(left_);
+        NodeId apex = prev(left_);
         if (left_ == right_) return forbid(e, Forbidden::FillOpen, apex, left_);
         uint32_t guard = partNodes_ + 2;
-        for (uint32_t c = left_; c != right_;) {
-            uint32_t n = next(c);
+        for (NodeId c = left_; c != right_;) {
+            NodeId n = next(c);
             if (guard-- == 0) return forbid(e, Forbidden::FillOpen, apex, c);  // Right unreachable
             ++work().nodeVisits;
             if (turn(apex, c, n) <= 0) return forbid(e, Forbidden::BadTriangle, c, n);
             c = n;
         }
-        for (uint32_t c = left_; c != right_;) {
-            uint32_t n = next(c);
+        for (NodeId c = left_; c != right_;) {
+            NodeId n = next(c);
             cutTriangle(apex, c, n);
             nodes_[c].alive = false;
             c = n;
@@ -738,6 +748,7 @@ private:
         emit(e);
     }
 
+    // ---- [SECTION] the to-do list and the gorges -------------------------------------------
     // The next gorge to flood: the last pending gorge on the to-do list, else the lowest
     // bottom the water has not reached. False when neither exists.
     bool takeNextGorge(Event& e) {
@@ -749,7 +760,7 @@ private:
             resumeGorge(g);
             return true;
         }
-        uint32_t b = lowestDryBottom();
+        NodeId b = lowestDryBottom();
         if (b == kNil) return false;
         e.bottom = nodes_[b].v;
         startGorge(b);
@@ -761,13 +772,13 @@ private:
     // bottoms reached since (they stay reached); after kBottomScans the list is sorted once
     // and a cursor walks it, as the paper's sorted list would.
     static constexpr uint32_t kBottomScans = 4;
-    uint32_t lowestDryBottom() {
+    NodeId lowestDryBottom() {
         if (bottomScans_ < kBottomScans) {
             ++bottomScans_;
-            uint32_t best = kNil;
+            NodeId best = kNil;
             size_t kept = 0;
             work().nodeVisits += bottoms_.size();
-            for (uint32_t b : bottoms_) {
+            for (NodeId b : bottoms_) {
                 if (nodes_[b].wet || !nodes_[b].alive) continue;
                 bottoms_[kept++] = b;
                 if (best == kNil || lower(b, best)) best = b;
@@ -778,22 +789,22 @@ private:
         }
         for (; bottomCursor_ < bottoms_.size(); ++bottomCursor_) {
             ++work().nodeVisits;
-            uint32_t b = bottoms_[bottomCursor_];
+            NodeId b = bottoms_[bottomCursor_];
             if (!nodes_[b].wet && nodes_[b].alive) return b;
         }
         return kNil;
     }
 
-    void startGorge(uint32_t bottom) {
+    void startGorge(NodeId bottom) {
         left_ = right_ = water_ = bottom;
         makeWet(bottom);
     }
-    void makeWet(uint32_t n) {
+    void makeWet(NodeId n) {
         nodes_[n].wet = true;
         walked_.markWet(n);
     }
 
-    uint32_t pushGorge(uint32_t l, uint32_t r, uint32_t w, bool held, Index top) {
+    uint32_t pushGorge(NodeId l, NodeId r, NodeId w, bool held, Index top) {
         uint32_t id = uint32_t(gorges_.size());
         gorges_.push_back({l, r, w, held, false, top});
         nodes_[l].gorgeLeft = id;
@@ -805,8 +816,8 @@ private:
     const GorgeRec& retireGorge(uint32_t g) {
         GorgeRec& rec = gorges_[g];
         rec.done = true;
-        nodes_[rec.left].gorgeLeft = kNil;
-        nodes_[rec.right].gorgeRight = kNil;
+        nodes_[rec.left].gorgeLeft = kNoGorge;
+        nodes_[rec.right].gorgeRight = kNoGorge;
         return rec;
     }
     void resumeGorge(uint32_t g) {
@@ -816,13 +827,15 @@ private:
         water_ = rec.water;
     }
 
+    // ---- [SECTION] the machine's memory -----------------------------------------------------
 public:
     // What the machine allocates, lent by a Triangulator (or the thread, for small inputs)
     // from run to run; the members below of the same names refer to them.
     struct Buffers {
         std::vector<Point> rotated, pointOfRank;
-        std::vector<Node> nodes;
-        std::vector<uint32_t> sags, partVertices, points, initialNext, sagsBelow, bottoms, todo;
+        Nodes nodes;
+        std::vector<NodeId> sags, partVertices, points, bottoms;
+        std::vector<uint32_t> initialNext, sagsBelow, todo;
         SagIndex sagIndex;
         SagBanks banks;
         SagHeights sagHeights;
@@ -843,8 +856,8 @@ private:
     const Up up_;                       // the chosen vertical
     const bool general_;                // off the axes: heights are heightRank_, never coordinates
     std::vector<uint32_t> heightRank_;  // per vertex, off the axes: its rank by height along up_
-    std::vector<Node>& nodes_ = b_.nodes;
-    std::vector<uint32_t>& sags_ = b_.sags;
+    Nodes& nodes_ = b_.nodes;
+    std::vector<NodeId>& sags_ = b_.sags;
     SagIndex& sagIndex_ = b_.sagIndex;  // the sags by height rank, searchable by x
     SagBanks& banks_ = b_.banks;  // the sags each input edge sees, once the plane index is costly
     bool banksTried_ = false;
@@ -855,16 +868,16 @@ private:
     SagHeights& sagHeights_ = b_.sagHeights;  // the sags' heights by rank (sag_index.h)
     std::vector<HeightKey>& bottomKeys_ = b_.bottomKeys;  // scratch for sorting the bottoms
     std::vector<uint32_t>& sagsBelow_ =
-        b_.sagsBelow;  // per node of the part (from partFirstNode_): sags below it, kNil until asked
-    std::vector<uint32_t>& bottoms_ =
+        b_.sagsBelow;  // per node of the part (from partFirstNode_): sags below it, kNone until asked
+    std::vector<NodeId>& bottoms_ =
         b_.bottoms;  // bottoms; lowest first once sorted (lowestDryBottom())
     size_t bottomCursor_ = 0;
     uint32_t bottomScans_ = 0;
     std::vector<GorgeRec>& gorges_ = b_.gorges;
     Stretches& walked_ = b_.walked;          // spill walks remembered (stretches.h)
     std::vector<uint32_t>& todo_ = b_.todo;  // pending gorges (ids), last pushed first
-    uint32_t left_ = kNil, right_ = kNil, water_ = kNil;
-    uint32_t part_ = 0, partNodes_ = 0, partFirstNode_ = 0, cut_ = 0, step_ = 0;
+    NodeId left_ = kNil, right_ = kNil, water_ = kNil, partFirstNode_ = NodeId(0);
+    uint32_t part_ = 0, partNodes_ = 0, cut_ = 0, step_ = 0;
     uint64_t budget_ = 0;
     uint32_t unusedSags_ = 0;  // sags of the part not bridged yet
     FloodResult& result_;

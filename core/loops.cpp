@@ -11,11 +11,11 @@ namespace {
 
 class LoopBuilder {
 public:
-    LoopBuilder(const Polygon& poly, const Point* pts, std::vector<Node>& nodes, LoopScratch& b)
+    LoopBuilder(const Polygon& poly, const Point* pts, Nodes& nodes, LoopScratch& b)
         : poly_(poly), pts_(pts), nodes_(nodes), b_(b) {}
 
-    PartLoops build(const Part& pa, std::vector<uint32_t>& partVertices,
-                    std::vector<uint32_t>& points) {
+    PartLoops build(const Part& pa, std::vector<NodeId>& partVertices,
+                    std::vector<NodeId>& points) {
         // T-junctions of the part (validate() found them): each adds a node on its edge.
         auto split = std::lower_bound(poly_.splits.begin(), poly_.splits.end(),
                                       poly_.rings[pa.firstRing].first,
@@ -38,17 +38,16 @@ public:
             bool wantCcw = (r == pa.firstRing);
             bool reverse =
                 ring.count >= 3 && (ringOrientation(pts_ + ring.first, ring.count) > 0) != wantCcw;
-            const uint32_t base = uint32_t(nodes_.size()),
-                           count = plain ? ring.count : uint32_t(loop.size());
+            const NodeId base = nodes_.end();
+            const uint32_t count = plain ? ring.count : uint32_t(loop.size());
             for (uint32_t i = 0; i < count; ++i) {
                 Node nd;
                 nd.v = plain ? ring.first + i : loop[i];
-                uint32_t p = base + (i == 0 ? count - 1
-                                            : i - 1);  // no division: set-up is most of a small run
-                uint32_t q = base + (i + 1 == count ? 0 : i + 1);
+                NodeId p = base + (i == 0 ? count - 1 : i - 1);  // no division: set-up is most of
+                NodeId q = base + (i + 1 == count ? 0 : i + 1);  // a small run
                 nd.prev = reverse ? q : p;
                 nd.next = reverse ? p : q;
-                nodes_.push_back(nd);
+                nodes_.push(nd);
                 if (count > 1) partVertices.push_back(base + i);
                 else points.push_back(base + i);
             }
@@ -61,31 +60,31 @@ public:
     }
 
 private:
-    Point P(uint32_t n) const { return pts_[nodes_[n].v]; }
-    uint32_t prev(uint32_t n) const { return nodes_[n].prev; }
-    uint32_t next(uint32_t n) const { return nodes_[n].next; }
+    Point P(NodeId n) const { return pts_[nodes_[n].v]; }
+    NodeId prev(NodeId n) const { return nodes_[n].prev; }
+    NodeId next(NodeId n) const { return nodes_[n].next; }
 
     // Rings touching at a point become one loop there: arriving at the point, the next edge
     // is the first one met rotating clockwise from the edge we came along (§1). The k passages
     // through a point are merged in O(k log k): their outgoing edges are sorted once by exact
     // angle, and each arrival takes the outgoing edge just before its own direction.
     // True when some point was shared (the loops may have changed).
-    bool mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
+    bool mergeTouchingLoops(const std::vector<NodeId>& partVertices) {
         work().touchSearchNodes += partVertices.size();
         repeatedPoints(
             partVertices.size(), [&](size_t i) { return P(partVertices[i]); }, b_.repeats);
         std::vector<std::pair<uint32_t, uint32_t>>& copies = b_.repeats.copies;
         if (copies.empty()) return false;
-        for (auto& [first, later] : copies)
-            first = partVertices[first], later = partVertices[later];
+        for (auto& [first, later] : copies)  // from positions in partVertices to node ids
+            first = uint32_t(partVertices[first]), later = uint32_t(partVertices[later]);
         std::sort(copies.begin(), copies.end());
-        std::vector<uint32_t>&corner = b_.corner, &newNext = b_.newNext;
+        std::vector<NodeId>&corner = b_.corner, &newNext = b_.newNext;
         std::vector<std::pair<Point, uint32_t>>& outs = b_.outs;
         for (size_t g = 0; g < copies.size();) {
-            corner.assign(1, copies[g].first);
+            corner.assign(1, NodeId(copies[g].first));
             size_t e = g;
             for (; e < copies.size() && copies[e].first == copies[g].first; ++e)
-                corner.push_back(copies[e].second);
+                corner.push_back(NodeId(copies[e].second));
             g = e;
             std::sort(corner.begin(), corner.end());
             const Point c = P(corner[0]);
@@ -136,15 +135,15 @@ private:
 
     const Polygon& poly_;
     const Point* pts_;
-    std::vector<Node>& nodes_;
+    Nodes& nodes_;
     LoopScratch& b_;
 };
 
 }  // namespace
 
-PartLoops buildLoops(const Polygon& polygon, const Point* pts, const Part& part,
-                     std::vector<Node>& nodes, std::vector<uint32_t>& vertices,
-                     std::vector<uint32_t>& points, LoopScratch& scratch) {
+PartLoops buildLoops(const Polygon& polygon, const Point* pts, const Part& part, Nodes& nodes,
+                     std::vector<NodeId>& vertices, std::vector<NodeId>& points,
+                     LoopScratch& scratch) {
     return LoopBuilder(polygon, pts, nodes, scratch).build(part, vertices, points);
 }
 

@@ -8,28 +8,43 @@
 #include <vector>
 
 #include "coincident.h"
+#include "node_id.h"
 #include "polygon.h"
 
 namespace flood {
 
-constexpr uint32_t kNil = kNone;  // no node
+constexpr uint32_t kNoGorge = kNone;
 
 // A node is a reference to a vertex; coincident vertices and bridge copies are distinct nodes.
 struct Node {
     Index v;  // vertex (index into the input)
-    uint32_t prev, next;
-    uint32_t jump = kNil;        // top: the other bank of its held gorge
-    uint32_t gorgeLeft = kNil;   // dormant gorge whose Left end is this node
-    uint32_t gorgeRight = kNil;  // dormant gorge whose Right end is this node
+    NodeId prev, next;
+    NodeId jump = kNil;              // top: the other bank of its held gorge
+    uint32_t gorgeLeft = kNoGorge;   // dormant gorge whose Left end is this node
+    uint32_t gorgeRight = kNoGorge;  // dormant gorge whose Right end is this node
     bool alive = true;
     bool wet = false;  // has been in an active chain: the water reached it
+};
+
+// The nodes of every loop, indexed by NodeId alone.
+class Nodes {
+public:
+    Node& operator[](NodeId n) { return nodes_[size_t(n)]; }
+    const Node& operator[](NodeId n) const { return nodes_[size_t(n)]; }
+    NodeId end() const { return NodeId(uint32_t(nodes_.size())); }  // the next node's id
+    void push(const Node& n) { nodes_.push_back(n); }
+    void clear() { nodes_.clear(); }
+    void reserve(size_t n) { nodes_.reserve(n); }
+
+private:
+    std::vector<Node> nodes_;
 };
 
 // What loop building allocates, kept from run to run with the machine's buffers.
 struct LoopScratch {
     std::vector<Index> loop;        // a ring with its T-junctions
     RepeatedPointsScratch repeats;  // the search for shared points (coincident.h)
-    std::vector<uint32_t> corner, newNext;
+    std::vector<NodeId> corner, newNext;
     std::vector<std::pair<Point, uint32_t>> outs;  // (where the edge goes, its passage)
 };
 
@@ -42,8 +57,8 @@ struct PartLoops {
 // indexed like polygon.vertices). `vertices` gets the nodes of loops of several nodes,
 // `points` those of one-node loops (Steiner points). The part's rings have three vertices or
 // more, or one (a point hole), and finite coordinates: the machine checked.
-PartLoops buildLoops(const Polygon& polygon, const Point* pts, const Part& part,
-                     std::vector<Node>& nodes, std::vector<uint32_t>& vertices,
-                     std::vector<uint32_t>& points, LoopScratch& scratch);
+PartLoops buildLoops(const Polygon& polygon, const Point* pts, const Part& part, Nodes& nodes,
+                     std::vector<NodeId>& vertices, std::vector<NodeId>& points,
+                     LoopScratch& scratch);
 
 }  // namespace flood

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "node_id.h"
 #include "polygon.h"
 #include "work.h"
 
@@ -24,7 +25,8 @@ namespace flood {
 // rank and x is 0.
 struct HeightKey {
     double y, x;
-    uint32_t v, node;
+    uint32_t v;
+    NodeId node;
     bool operator<(const HeightKey& o) const {
         if (y != o.y) return y < o.y;
         if (x != o.x) return x < o.x;

@@ -6,7 +6,7 @@
 
 namespace flood {
 
-void Stretches::clear(uint32_t firstNode) {
+void Stretches::clear(NodeId firstNode) {
     positions.clear();
     stretches.clear();
     tree_.clear();
@@ -14,9 +14,9 @@ void Stretches::clear(uint32_t firstNode) {
     first_ = firstNode;
 }
 
-void Stretches::record(int dir, const Position& p, uint32_t nodeCount) {
+void Stretches::record(int dir, const Position& p, NodeId end) {
     std::vector<uint32_t>& v = at_[dir];
-    if (p.node - first_ >= v.size()) v.resize(nodeCount - first_, kNone);
+    if (p.node - first_ >= v.size()) v.resize(end - first_, kNone);
     v[p.node - first_] = uint32_t(positions.size());
     positions.push_back(p);
 }
@@ -54,7 +54,7 @@ uint32_t Stretches::firstAtMost(const Stretch& s, uint32_t from, int64_t limit) 
 }
 
 // Its leaf and their ancestors in the stretch's tree get INT32_MIN, below any count.
-void Stretches::markWet(uint32_t n) {
+void Stretches::markWet(NodeId n) {
     if (stretches.empty()) return;  // no spill walk recorded a stretch yet: no tree to update
     for (int dir = 0; dir < 2; ++dir) {
         uint32_t at = recordedAt(dir, n);

@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "node_id.h"
 #include "polygon.h"
 
 namespace flood {
@@ -16,7 +17,7 @@ namespace flood {
 class Stretches {
 public:
     struct Position {
-        uint32_t node;
+        NodeId node;
         uint32_t stretch;  // its Stretch in stretches
         int32_t drops;     // the count's change from the stretch's start to just before here
         int8_t delta;      // +1 a sag, -1 a bottom or ceiling (when the count is positive)
@@ -30,27 +31,27 @@ public:
     std::vector<Stretch> stretches;
 
     // For a part whose nodes are numbered from firstNode on.
-    void clear(uint32_t firstNode);
+    void clear(NodeId firstNode);
     // The position of node n in the stretches walked in direction dir (0 prev-wards, 1
     // next-wards); kNone if not recorded.
-    uint32_t recordedAt(int dir, uint32_t n) const {
+    uint32_t recordedAt(int dir, NodeId n) const {
         const std::vector<uint32_t>& v = at_[dir];
         return n - first_ < v.size() ? v[n - first_] : kNone;
     }
-    // Appends p to the stretch being recorded; `nodeCount`: the nodes there are now.
-    void record(int dir, const Position& p, uint32_t nodeCount);
+    // Appends p to the stretch being recorded; `end`: the id the next node will get.
+    void record(int dir, const Position& p, NodeId end);
     // Ends the stretch a walk is recording (positions from `run` on) and builds its tree.
     void close(size_t& run);
     // The first position from `from` on (relative to the stretch's start) whose tree value is
     // at most `limit`; the stretch's length if none.
     uint32_t firstAtMost(const Stretch& s, uint32_t from, int64_t limit) const;
     // Node n got wet: a stretch holding it can no longer be crossed past it.
-    void markWet(uint32_t n);
+    void markWet(NodeId n);
 
 private:
     std::vector<int32_t> tree_;
     std::vector<uint32_t> at_[2];  // per node of the part, per direction: its position
-    uint32_t first_ = 0;
+    NodeId first_{0};
 };
 
 }  // namespace flood

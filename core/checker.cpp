@@ -1,8 +1,9 @@
 // The exact triangulation checker. It is the oracle of every test and of `flood triangulate`'s
 // own check, so it deliberately shares no code with what it checks: not the ring orientation
-// (ring_area.h's ringAreaSign) nor the search for coincident points (coincident.h) that the
-// machine, validation, the triangle count and the viewer use, only the exact predicates and
-// sums (predicates.h, AreaEstimate). A bug in a shared facility must not hide in both.
+// (ring_area.h's ringOrientation, ringAreaSign) nor the search for coincident points
+// (coincident.h) that the machine, validation, the triangle count and the viewer use, only the
+// exact predicates and sums (predicates.h, AreaEstimate). A bug in a shared facility must not
+// hide in both: the checker stays a separate oracle.
 // Rules, checked in this order (the first broken one is reported, naming the rule, the
 // triangle number and the vertex indices, and the rule as data: CheckResult::rule):
 //   0. every ring has 3 vertices or more (a hole may be a single point), the vertex count fits

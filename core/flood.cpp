@@ -21,39 +21,36 @@
 //   4. A top has a jump pointer only while its gorge is held there.
 // When one of these cannot hold — the input is invalid — the machine stops in a Forbidden
 // state (§6) instead of producing a wrong triangle.
+//
+// Sections (search for "[SECTION]"):
+//   predicates on nodes     lower(): the paper's below as a total order on nodes; sag ranks
+//   a part                  set-up (loops.h builds the loops), the run, the left-behind check
+//   events                  begin/emit; forbid() (narrate.cpp words the diagnostic)
+//   the decision tree       step(): Fig. 9; the sag search (sag_index.h, sag_banks.h)
+//   the five actions        Raise, Bridge, Spill (its walks remembered: stretches.h), Jump, Fill
+//   the to-do list          pending gorges, dry bottoms; a gorge retired in retireGorge()
+//   the machine's memory    the buffers lent from run to run; then the entry points
 #include "flood.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <numeric>
-#include <sstream>
 
-#include "coincident.h"
+#include "loops.h"
 #include "predicates.h"
 #include "ring_area.h"
 #include "sag_banks.h"
 #include "sag_index.h"
+#include "stretches.h"
 #include "work.h"
 
 namespace flood {
 namespace {
 
-constexpr uint32_t kNil = kNone;
-
-struct Node {
-    Index v;  // vertex (index into the input)
-    uint32_t prev, next;
-    uint32_t jump = kNil;        // top: the other bank of its held gorge
-    uint32_t gorgeLeft = kNil;   // dormant gorge whose Left end is this node
-    uint32_t gorgeRight = kNil;  // dormant gorge whose Right end is this node
-    bool alive = true;
-    bool wet = false;  // has been in an active chain: the water reached it
-};
-
 struct GorgeRec {
-    uint32_t left, right, water;  // nodes
-    bool held = false;            // held at a top (Spill) rather than pending (Bridge)
+    NodeId left, right, water;
+    bool held = false;  // held at a top (Spill) rather than pending (Bridge)
     bool done = false;
     Index top = kNone;
 };
@@ -113,23 +110,11 @@ public:
     }
 
 private:
-    struct Stretch {  // a position of a stretch
-        uint32_t node;
-        uint32_t stretch;  // its StretchRec
-        int32_t drops;     // the count's change from the stretch's start to just before here
-        int8_t delta;      // +1 a sag, -1 a bottom or ceiling (when the count is positive)
-        bool sensitive;    // a convex bottom or ceiling: where a zero count matters
-    };
-    struct StretchRec {
-        uint32_t start, end;    // its positions in stretches_
-        uint32_t tree, leaves;  // its tree in stretchTree_ (firstAtMost()), leaves a power of two
-    };
-
     // ---- [SECTION] predicates on nodes -------------------------------------------------
-    Point P(uint32_t n) const { return pts_[nodes_[n].v]; }
+    Point P(NodeId n) const { return pts_[nodes_[n].v]; }
     // The paper's below, made a strict total order on nodes: coincident vertices (rings
     // touching at a point, bridge copies) are ordered by vertex index, then node id.
-    bool lower(uint32_t a, uint32_t b) const {
+    bool lower(NodeId a, NodeId b) const {
         if (general_) {
             const Index va = nodes_[a].v, vb = nodes_[b].v;
             return va != vb ? heightRank_[va] < heightRank_[vb] : a < b;
@@ -140,19 +125,9 @@ private:
         if (nodes_[a].v != nodes_[b].v) return nodes_[a].v < nodes_[b].v;
         return a < b;
     }
-    // The same order as lower(), as a value: what the sorted sag list is searched with. Off
-    // the axes y is the vertex's height rank and x is 0.
-    struct HeightKey {
-        double y, x;
-        uint32_t v, node;
-        bool operator<(const HeightKey& o) const {
-            if (y != o.y) return y < o.y;
-            if (x != o.x) return x < o.x;
-            if (v != o.v) return v < o.v;
-            return node < o.node;
-        }
-    };
-    HeightKey key(uint32_t n) const {
+    // The same order as lower(), as a value (sag_index.h): what the sorted sag list is searched
+    // with.
+    HeightKey key(NodeId n) const {
         if (general_) return {double(heightRank_[nodes_[n].v]), 0, nodes_[n].v, n};
         return {P(n).y, P(n).x, nodes_[n].v, n};
     }
@@ -176,7 +151,7 @@ private:
     }
     // Sorts nodes by lower(), comparing contiguous keys rather than chasing node -> vertex
     // -> point on every comparison; `keys` gets the sorted keys.
-    void sortByHeight(std::vector<uint32_t>& ns, std::vector<HeightKey>& keys) const {
+    void sortByHeight(std::vector<NodeId>& ns, std::vector<HeightKey>& keys) const {
         keys.resize(ns.size());
         for (size_t i = 0; i < ns.size(); ++i) keys[i] = key(ns[i]);
         std::sort(keys.begin(), keys.end());
@@ -184,177 +159,44 @@ private:
     }
     // Number of sags strictly below node n, by binary search on the contiguous height keys,
     // remembered per node: the water is usually the previous step's Next.
-    uint32_t sagsBelow(uint32_t n) {
+    uint32_t sagsBelow(NodeId n) {
         if (n - partFirstNode_ >= sagsBelow_.size())
-            sagsBelow_.resize(nodes_.size() - partFirstNode_, kNil);
+            sagsBelow_.resize(nodes_.end() - partFirstNode_, kNone);
         uint32_t& r = sagsBelow_[n - partFirstNode_];
-        if (r == kNil) {
-            // The height bucket bounds the search; break ties on the full keys only if needed.
-            HeightKey k = key(n);
-            size_t b = heightBucket(k.y);
-            auto first = sagY_.begin() + long(sagBucket_[b]),
-                 last = sagY_.begin() + long(sagBucket_[b + 1]);
-            size_t a = size_t(std::lower_bound(first, last, k.y) - sagY_.begin());
-            if (a < sagY_.size() && sagY_[a] == k.y)
-                a = size_t(std::lower_bound(sagKeys_.begin() + long(a),
-                                            sagKeys_.begin() + long(sagBucket_[b + 1]), k) -
-                           sagKeys_.begin());
-            r = uint32_t(a);
-        }
+        if (r == kNone) r = sagHeights_.below(key(n));
         return r;
     }
-    // Buckets of equal height span over the sags' heights. The bucket of y never decreases
-    // as y grows (rounding is monotone), so the sags of the buckets below y's are all lower
-    // than y and those above all higher: a search for y needs only its own bucket. Monotone at
-    // every scale too: a span that overflows gives scale 0, so every height is in bucket 0
-    // except those whose difference is infinite (inf · 0 = NaN: the last bucket); one so small
-    // that the scale is infinite puts every height above the lowest in the last bucket.
-    size_t heightBucket(double y) const {
-        const size_t last = sagBucket_.size() - 2;
-        if (!(y > bucketY0_)) return 0;
-        double b = (y - bucketY0_) * bucketScale_;
-        return b < double(last) ? size_t(b) : last;
-    }
-    // The sags' points for the plane index, their heights, and the height buckets.
+    // The sags' points for the plane index, and their heights for the ranks.
     void indexSags() {
-        const size_t count = sagKeys_.size();
+        const size_t count = sags_.size();
         std::vector<Point>& pointOfRank = b_.pointOfRank;
         pointOfRank.resize(count);
-        sagY_.resize(count);
-        for (size_t k = 0; k < count; ++k) {
-            pointOfRank[k] = P(sags_[k]);
-            sagY_[k] = sagKeys_[k].y;
-        }
+        for (size_t k = 0; k < count; ++k) pointOfRank[k] = P(sags_[k]);
         sagIndex_.build(pointOfRank);
+        sagHeights_.index();
         unusedSags_ = uint32_t(count);
-        const size_t buckets = count / 2 + 1;
-        bucketY0_ = count ? sagY_.front() : 0;
-        double span = count ? sagY_.back() - bucketY0_ : 0;
-        bucketScale_ = span > 0 && std::isfinite(span) ? double(buckets) / span : 0;
-        sagBucket_.assign(buckets + 1, uint32_t(count));
-        size_t filled = 0;
-        for (size_t k = 0; k < count; ++k)
-            for (size_t b = heightBucket(sagY_[k]); filled <= b;)
-                sagBucket_[filled++] = uint32_t(k);
         // Indexed from the part's first node: per-part work stays proportional to the part.
-        sagsBelow_.assign(nodes_.size() - partFirstNode_, kNil);
+        sagsBelow_.assign(nodes_.end() - partFirstNode_, kNone);
         work().nodeVisits += sagsBelow_.size();
         for (size_t k = 0; k < count; ++k)
             sagsBelow_[sags_[k] - partFirstNode_] = uint32_t(k);  // a sag's rank
     }
-    int turn(uint32_t a, uint32_t b, uint32_t c) const { return orient(P(a), P(b), P(c)); }
-    uint32_t prev(uint32_t n) const { return nodes_[n].prev; }
-    uint32_t next(uint32_t n) const { return nodes_[n].next; }
-    bool isMinimum(uint32_t n) const { return lower(n, prev(n)) && lower(n, next(n)); }
+    int turn(NodeId a, NodeId b, NodeId c) const { return orient(P(a), P(b), P(c)); }
+    NodeId prev(NodeId n) const { return nodes_[n].prev; }
+    NodeId next(NodeId n) const { return nodes_[n].next; }
+    bool isMinimum(NodeId n) const { return lower(n, prev(n)) && lower(n, next(n)); }
     bool ok() const { return result_.diagnostic.ok(); }
 
-    // ---- [SECTION] set-up: loops, non-manifold points, sags -------------------------------
+    // ---- [SECTION] a part: set-up, the run, the left-behind check ---------------------------
+    // A part is flooded from the lowest node of its outer loop until no gorge is left; then
+    // every node must have been flooded: a loop never reached means a hole outside the outer
+    // ring, or loops that cross.
     void floodPart(uint32_t part) {
-        const Part& pa = poly_.parts[part];
-        part_ = part;
-        partNodes_ = 0;
-        partFirstNode_ = uint32_t(nodes_.size());
-        std::vector<uint32_t>& partVertices = b_.partVertices;  // nodes of the part's loops
-        std::vector<uint32_t>& points = b_.points;              // one-node loops: Steiner points
-        partVertices.clear();
-        points.clear();
-        for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
-            if (!std::isfinite(pts_[v].x) || !std::isfinite(pts_[v].y)) {
-                Event f = begin(Action::Forbidden);
-                return forbid(f, Forbidden::NotFinite, kNil, kNil, v);
-            }
-        }
-        for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
-            bool steiner = poly_.rings[r].count == 1 && r != pa.firstRing;  // a point hole
-            if (poly_.rings[r].count < 3 && !steiner) {
-                Event f = begin(Action::Forbidden);
-                Index v = poly_.rings[r].first;
-                f.culprit = poly_.rings[r].count ? v : kNone;
-                return forbidShortRing(f, r);
-            }
-        }
-        // T-junctions of the part (validate() found them): each adds a node on its edge.
-        auto split = std::lower_bound(poly_.splits.begin(), poly_.splits.end(),
-                                      poly_.rings[pa.firstRing].first,
-                                      [](const EdgeSplit& s, Index v) { return s.edge < v; });
-        uint32_t outerNodes = 0;
-        std::vector<Index>& loop = b_.loop;
-        for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
-            const Ring& ring = poly_.rings[r];
-            // A ring without T-junctions is its own loop; only the others are copied out.
-            const bool plain =
-                split == poly_.splits.end() || split->edge >= ring.first + ring.count;
-            loop.clear();
-            for (Index v = ring.first; !plain && v < ring.first + ring.count; ++v) {
-                loop.push_back(v);
-                for (; split != poly_.splits.end() && split->edge == v; ++split)
-                    loop.push_back(split->vertex);
-            }
-            // Orient loops so the interior is on the left: outer counter-clockwise, holes
-            // clockwise, whatever the file said.
-            bool wantCcw = (r == pa.firstRing);
-            bool reverse =
-                ring.count >= 3 && (ringOrientation(pts_ + ring.first, ring.count) > 0) != wantCcw;
-            const uint32_t base = uint32_t(nodes_.size()),
-                           count = plain ? ring.count : uint32_t(loop.size());
-            for (uint32_t i = 0; i < count; ++i) {
-                Node nd;
-                nd.v = plain ? ring.first + i : loop[i];
-                uint32_t p = base + (i == 0 ? count - 1
-                                            : i - 1);  // no division: set-up is most of a small run
-                uint32_t q = base + (i + 1 == count ? 0 : i + 1);
-                nd.prev = reverse ? q : p;
-                nd.next = reverse ? p : q;
-                nodes_.push_back(nd);
-                if (count > 1) partVertices.push_back(base + i);
-                else points.push_back(base + i);
-            }
-            partNodes_ += count;
-            work().nodeVisits += count;
-            if (r == pa.firstRing) outerNodes = count;
-        }
-        // Validation found no point shared by two vertices, nor a T-junction: nothing to merge.
-        const bool touching = !poly_.pointsDistinct && mergeTouchingLoops(partVertices);
-
-        // The sags of the part, sorted by height (§4), taken from its minima (kept in bottoms_
-        // until the bottoms are sorted out of them below: no node is classified twice).
-        sags_.clear();
-        bottoms_.clear();
-        for (uint32_t n : partVertices)
-            if (isMinimum(n)) bottoms_.push_back(n);
-        for (uint32_t n : bottoms_)
-            if (turn(prev(n), n, next(n)) <= 0) sags_.push_back(n);
-        // A point hole is a hole whose lowest vertex is its only one: a sag.
-        sags_.insert(sags_.end(), points.begin(), points.end());
-        sortByHeight(sags_, sagKeys_);
-        indexSags();
-        prepareBanks(touching);
-        // The bottoms, lowest first: every one of them starts a gorge unless the water
-        // reaches it first. They are the to-do list of last resort (see lowestDryBottom()).
-        size_t bottoms = 0;
-        for (uint32_t n : bottoms_)
-            if (turn(prev(n), n, next(n)) > 0) bottoms_[bottoms++] = n;
-        bottoms_.resize(bottoms);
-        bottomCursor_ = 0;
-        bottomScans_ = 0;  // sorted only if the fallback is asked often (takeNextGorge())
-        stretches_.clear();
-        stretchRecs_.clear();
-        stretchTree_.clear();
-        for (auto& at : stretchAt_) at.clear();  // grown by the first spill walk (recordAt())
-
-        // The lowest node of the outer ring is where the water starts.
-        uint32_t start = kNil;
-        for (uint32_t i = 0; i < outerNodes; ++i) {
-            uint32_t n = partVertices[i];
-            if (start == kNil || lower(n, start)) start = n;
-        }
-        gorges_.clear();
-        todo_.clear();
-        budget_ = 8ull * partNodes_ + 64;
+        const NodeId start = setUp(part);
+        if (!ok()) return;
         Event e = begin(Action::Start);
-        if (!isMinimum(start) || turn(prev(start), start, next(start)) <= 0) {
+        if (!isMinimum(start) || turn(prev(start), start, next(start)) <= 0)
             return forbid(e, Forbidden::StartNotBottom, start, kNil);
-        }
         startGorge(start);
         e.bottom = nodes_[start].v;
         emit(e);
@@ -365,91 +207,84 @@ private:
             }
             step();
         }
-        // Every node of the part must have been flooded: a loop never reached means a hole
-        // outside the outer ring, or loops that cross.
-        if (ok()) {
-            uint32_t alive = firstAliveNode(partFirstNode_);
-            if (alive != kNil) {
-                Event f = begin(Action::Forbidden);
-                return forbid(f, Forbidden::LeftBehind, alive, kNil);
-            }
+        const NodeId alive = ok() ? firstAliveNode(partFirstNode_) : kNil;
+        if (alive != kNil) {
+            Event f = begin(Action::Forbidden);
+            forbid(f, Forbidden::LeftBehind, alive, kNil);
         }
     }
 
-    uint32_t firstAliveNode(uint32_t from) const {
-        for (uint32_t n = from; n < nodes_.size(); ++n)
+    // The part's loops, sags and bottoms; the lowest node of the outer loop, where the water
+    // starts (kNil, forbidden, when a ring cannot be a loop).
+    NodeId setUp(uint32_t part) {
+        const Part& pa = poly_.parts[part];
+        part_ = part;
+        partNodes_ = 0;
+        partFirstNode_ = nodes_.end();
+        for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
+            if (!std::isfinite(pts_[v].x) || !std::isfinite(pts_[v].y)) {
+                Event f = begin(Action::Forbidden);
+                forbid(f, Forbidden::NotFinite, kNil, kNil, v);
+                return kNil;
+            }
+        }
+        for (Index r = pa.firstRing; r < pa.firstRing + pa.ringCount; ++r) {
+            const Ring& ring = poly_.rings[r];
+            bool steiner = ring.count == 1 && r != pa.firstRing;  // a point hole
+            if (ring.count < 3 && !steiner) {
+                Event f = begin(Action::Forbidden);
+                forbid(f, Forbidden::ShortLoop, kNil, kNil, ring.count ? ring.first : kNone, r);
+                return kNil;
+            }
+        }
+        std::vector<NodeId>& partVertices = b_.partVertices;  // nodes of the part's loops
+        std::vector<NodeId>& points = b_.points;              // one-node loops: Steiner points
+        partVertices.clear();
+        points.clear();
+        const PartLoops loops = buildLoops(poly_, pts_, pa, nodes_, partVertices, points, b_.loops);
+        partNodes_ = nodes_.end() - partFirstNode_;
+        findSags(partVertices, points, loops.touching);
+        gorges_.clear();
+        todo_.clear();
+        budget_ = 8ull * partNodes_ + 64;
+        NodeId start = kNil;
+        for (uint32_t i = 0; i < loops.outerNodes; ++i) {
+            NodeId n = partVertices[i];
+            if (start == kNil || lower(n, start)) start = n;
+        }
+        return start;
+    }
+
+    // The sags of the part, sorted by height (§4), and its bottoms, both taken from its minima
+    // (kept in bottoms_ until the bottoms are sorted out of them: no node is classified twice).
+    void findSags(const std::vector<NodeId>& partVertices, const std::vector<NodeId>& points,
+                  bool touching) {
+        sags_.clear();
+        bottoms_.clear();
+        for (NodeId n : partVertices)
+            if (isMinimum(n)) bottoms_.push_back(n);
+        for (NodeId n : bottoms_)
+            if (turn(prev(n), n, next(n)) <= 0) sags_.push_back(n);
+        // A point hole is a hole whose lowest vertex is its only one: a sag.
+        sags_.insert(sags_.end(), points.begin(), points.end());
+        sortByHeight(sags_, sagHeights_.keys());
+        indexSags();
+        prepareBanks(touching);
+        // The bottoms, lowest first: every one of them starts a gorge unless the water
+        // reaches it first. They are the to-do list of last resort (see lowestDryBottom()).
+        size_t bottoms = 0;
+        for (NodeId n : bottoms_)
+            if (turn(prev(n), n, next(n)) > 0) bottoms_[bottoms++] = n;
+        bottoms_.resize(bottoms);
+        bottomCursor_ = 0;
+        bottomScans_ = 0;  // sorted only if the fallback is asked often (takeNextGorge())
+        walked_.clear(partFirstNode_);
+    }
+
+    NodeId firstAliveNode(NodeId from) const {
+        for (NodeId n = from; n < nodes_.end(); n = n + 1)
             if (nodes_[n].alive) return n;
         return kNil;
-    }
-
-    // Rings touching at a point become one loop there: arriving at the point, the next edge
-    // is the first one met rotating clockwise from the edge we came along (§1). The k passages
-    // through a point are merged in O(k log k): their outgoing edges are sorted once by exact
-    // angle, and each arrival takes the outgoing edge just before its own direction.
-    // True when some point was shared (the loops may have changed).
-    bool mergeTouchingLoops(const std::vector<uint32_t>& partVertices) {
-        work().touchSearchNodes += partVertices.size();
-        repeatedPoints(
-            partVertices.size(), [&](size_t i) { return P(partVertices[i]); }, b_.repeats);
-        std::vector<std::pair<uint32_t, uint32_t>>& copies = b_.repeats.copies;
-        if (copies.empty()) return false;
-        for (auto& [first, later] : copies)
-            first = partVertices[first], later = partVertices[later];
-        std::sort(copies.begin(), copies.end());
-        std::vector<uint32_t>&corner = b_.corner, &newNext = b_.newNext;
-        std::vector<std::pair<Point, uint32_t>>& outs =
-            b_.outs;  // (where the edge goes, its passage)
-        for (size_t g = 0; g < copies.size();) {
-            corner.assign(1, copies[g].first);
-            size_t e = g;
-            for (; e < copies.size() && copies[e].first == copies[g].first; ++e)
-                corner.push_back(copies[e].second);
-            g = e;
-            std::sort(corner.begin(), corner.end());
-            const Point c = P(corner[0]);
-            // Counter-clockwise from +x; among edges of one direction the first passage last,
-            // so that the element before any position is the lowest passage of its direction.
-            outs.clear();
-            for (uint32_t i = 0; i < corner.size(); ++i) outs.emplace_back(P(next(corner[i])), i);
-            auto before = [&](const std::pair<Point, uint32_t>& a,
-                              const std::pair<Point, uint32_t>& b) {
-                if (angleLess(c, a.first, b.first)) return true;
-                if (angleLess(c, b.first, a.first)) return false;
-                return a.second > b.second;
-            };
-            std::sort(outs.begin(), outs.end(), before);
-            work().nodeVisits += corner.size();
-            newNext.resize(corner.size());
-            for (size_t i = 0; i < corner.size(); ++i) {
-                // Clockwise from the arrival's direction: the last edge strictly before it
-                // counter-clockwise, else (wrapping round) the last edge of all.
-                Point back = P(prev(corner[i]));
-                auto at = std::partition_point(outs.begin(), outs.end(),
-                                               [&](const std::pair<Point, uint32_t>& o) {
-                                                   return angleLess(c, o.first, back);
-                                               });
-                const auto& pick = at == outs.begin() ? outs.back() : *(at - 1);
-                newNext[i] = next(corner[pick.second]);
-            }
-            for (size_t i = 0; i < corner.size(); ++i) {
-                nodes_[corner[i]].next = newNext[i];
-                nodes_[newNext[i]].prev = corner[i];
-            }
-        }
-        return true;
-    }
-
-    // Direction c->a comes before c->b counter-clockwise from +x, exactly (half-planes, then
-    // orient). A zero-length edge (only in invalid input) comes after every direction, so the
-    // order stays a strict weak order.
-    static int halfPlane(Point c, Point a) {
-        if (a == c) return 2;
-        return (a.y > c.y || (a.y == c.y && a.x > c.x)) ? 0 : 1;
-    }
-    static bool angleLess(Point c, Point a, Point b) {
-        int ha = halfPlane(c, a), hb = halfPlane(c, b);
-        if (ha != hb) return ha < hb;
-        return ha < 2 && orient(c, a, b) > 0;
     }
 
     // ---- [SECTION] events -----------------------------------------------------------------
@@ -478,8 +313,10 @@ private:
         const Ring& last = poly_.rings[pa.firstRing + pa.ringCount - 1];
         return last.first + last.count;
     }
-    // `vertex`: a culprit given as a vertex index rather than a node (before loops exist).
-    void forbid(Event& e, Forbidden why, uint32_t a, uint32_t b, Index vertex = kNone) {
+    // `vertex`: a culprit given as a vertex index rather than a node (before loops exist);
+    // `ring`: the ring of fewer than three vertices of a ShortLoop, which bounds no area.
+    void forbid(Event& e, Forbidden why, NodeId a, NodeId b, Index vertex = kNone,
+                Index ring = kNone) {
         e.action = Action::Forbidden;
         e.reason = why;
         e.culprit = a == kNil ? vertex : nodes_[a].v;
@@ -488,21 +325,14 @@ private:
         emit(e);
         e.after = fingers();
         result_.failure = e;
-        result_.diagnostic = {Status::Forbidden, describeForbidden(poly_, e),
-                              forbiddenCulprits(poly_, e)};
-        left_ = right_ = kNil;
-    }
-
-    // A ring of fewer than three vertices bounds no area: no loop can be built from it.
-    void forbidShortRing(Event& e, Index ring) {
-        e.action = Action::Forbidden;
-        e.reason = Forbidden::ShortLoop;
-        emit(e);
-        result_.failure = e;
-        result_.diagnostic = {Status::Forbidden,
-                              describeForbidden(poly_, e) + " (ring " + std::to_string(ring) +
-                                  " has " + std::to_string(poly_.rings[ring].count) + " vertices)"};
-        result_.diagnostic.culprits.rings = {ring};
+        Diagnostic& d = result_.diagnostic = {Status::Forbidden, describeForbidden(poly_, e),
+                                              forbiddenCulprits(poly_, e)};
+        if (ring != kNone) {
+            d.message += " (ring " + std::to_string(ring) + " has " +
+                         std::to_string(poly_.rings[ring].count) + " vertices)";
+            d.culprits = {};
+            d.culprits.rings = {ring};
+        }
         left_ = right_ = kNil;
     }
     static void mark(Event& e, Test t, bool r) {
@@ -513,13 +343,13 @@ private:
     // ---- [SECTION] the decision tree (Fig. 9) ----------------------------------------------
     void step() {
         work().nodeVisits += 4;  // Left, Right and the fingers
-        uint32_t nl = prev(left_), nr = next(right_);
+        NodeId nl = prev(left_), nr = next(right_);
         Event e = begin(Action::Raise);
         bool same = nl == nr;
         mark(e, Test::SameNext, same);
         if (same) {
             // The fingers meet, but a hole may still hang in the gorge below them.
-            uint32_t s = findSag(nl, e);
+            NodeId s = findSag(nl, e);
             mark(e, Test::SagInside, s != kNil);
             if (s != kNil) return bridge(e, s);
             return fill(e);
@@ -528,13 +358,13 @@ private:
         bool leftLower = lower(nl, nr);
         mark(e, Test::LeftLower, leftLower);
         Side side = leftLower ? Side::Left : Side::Right;
-        uint32_t c = leftLower ? left_ : right_;
-        uint32_t nx = leftLower ? nl : nr;
+        NodeId c = leftLower ? left_ : right_;
+        NodeId nx = leftLower ? nl : nr;
         e.side = side;
         bool up = lower(c, nx);
         mark(e, Test::NextAbove, up);
         if (up) {
-            uint32_t s = findSag(nx, e);
+            NodeId s = findSag(nx, e);
             mark(e, Test::SagInside, s != kNil);
             if (s != kNil) return bridge(e, s);
             return raise(e, side);
@@ -552,19 +382,19 @@ private:
     // The lowest unused sag above the water and below Next inside the quadrangle
     // Left, Right, NextRight, NextLeft (§4, §5). Sags are sorted, so the scan starts at the
     // water level and stops at Next.
-    uint32_t findSag(uint32_t nx, Event& e) {
+    NodeId findSag(NodeId nx, Event& e) {
         WorkCounters& w = work();
         const uint64_t before = w.nodeVisits + w.sagTests + w.orientCalls;  // not all ten counters
-        uint32_t s = searchSag(nx, e);
+        NodeId s = searchSag(nx, e);
         w.sagSearch += w.nodeVisits + w.sagTests + w.orientCalls - before;
         return s;
     }
-    uint32_t searchSag(uint32_t nx, Event& e) {
+    NodeId searchSag(NodeId nx, Event& e) {
         if (unusedSags_ == 0)
             return kNil;  // every sag bridged already (or none): no bracket to search
         // Ranks bracketing the water and Next: the number of sags below each.
         int64_t lo = int64_t(sagsBelow(water_)) - 1;
-        if (lo + 1 < int64_t(sagKeys_.size()) && sags_[size_t(lo + 1)] == water_)
+        if (lo + 1 < int64_t(sags_.size()) && sags_[size_t(lo + 1)] == water_)
             ++lo;  // the water is itself a sag
         int64_t hi = sagsBelow(nx);
         if (hi <= lo + 1) return kNil;
@@ -619,7 +449,7 @@ private:
         if (k < 0) return kNil;
         return useSag(k);
     }
-    uint32_t useSag(int64_t rank) {
+    NodeId useSag(int64_t rank) {
         sagIndex_.markUsed(uint32_t(rank));
         --unusedSags_;
         return sags_[size_t(rank)];
@@ -654,11 +484,11 @@ private:
         if (!banks_.build(point, initialNext_, sagOfRank, general_ ? up_ : Up::PlusY))
             banks_.clear();  // crossing edges
     }
-    // The input edge from node a to node b, as its tail's initial node; kNil when a -> b
+    // The input edge from node a to node b, as its tail's initial node; kNone when a -> b
     // is not an input edge (a diagonal). Without shared points a vertex has one initial node.
-    uint32_t inputEdge(uint32_t a, uint32_t b) const {
+    uint32_t inputEdge(NodeId a, NodeId b) const {
         uint32_t t = nodes_[a].v - partFirstVertex_;
-        if (t >= initialNodes_ || initialNext_[t] + partFirstVertex_ != nodes_[b].v) return kNil;
+        if (t >= initialNodes_ || initialNext_[t] + partFirstVertex_ != nodes_[b].v) return kNone;
         return t;
     }
     // The bank lists' answer for the active gorge: a rank, -1 for no sag, -2 when neither
@@ -666,18 +496,18 @@ private:
     int64_t bankCandidate(int64_t lo, int64_t hi) const {
         auto used = [&](uint32_t rank) { return sagIndex_.used(rank); };
         uint32_t t = inputEdge(prev(left_), left_);
-        if (t != kNil) return banks_.lowest(true, t, lo, hi, used);
+        if (t != kNone) return banks_.lowest(true, t, lo, hi, used);
         t = inputEdge(right_, next(right_));
-        if (t != kNil) return banks_.lowest(false, t, lo, hi, used);
+        if (t != kNone) return banks_.lowest(false, t, lo, hi, used);
         return -2;
     }
 
     // ---- [SECTION] the five actions ----------------------------------------------------------
-    void cutTriangle(uint32_t a, uint32_t b, uint32_t c) {
+    void cutTriangle(NodeId a, NodeId b, NodeId c) {
         result_.triangles.push_back({nodes_[a].v, nodes_[b].v, nodes_[c].v});
         ++cut_;
     }
-    void unlink(uint32_t n) {
+    void unlink(NodeId n) {
         nodes_[prev(n)].next = next(n);
         nodes_[next(n)].prev = prev(n);
         nodes_[n].alive = false;
@@ -687,12 +517,12 @@ private:
     void raise(Event& e, Side side) {
         uint32_t guard = partNodes_ + 2;  // a walk longer than the part means broken loops
         if (side == Side::Left) {
-            uint32_t nl = prev(left_), c = left_;
+            NodeId nl = prev(left_), c = left_;
             while (c != right_ && turn(nl, c, next(c)) > 0) {
                 if (guard-- == 0 || !nodes_[c].alive)
                     return forbid(e, Forbidden::NoProgress, c, nl);
                 ++work().nodeVisits;
-                uint32_t n = next(c);
+                NodeId n = next(c);
                 cutTriangle(nl, c, n);
                 unlink(c);
                 c = n;
@@ -700,12 +530,12 @@ private:
             left_ = water_ = nl;
             makeWet(nl);
         } else {
-            uint32_t nr = next(right_), c = right_;
+            NodeId nr = next(right_), c = right_;
             while (c != left_ && turn(prev(c), c, nr) > 0) {
                 if (guard-- == 0 || !nodes_[c].alive)
                     return forbid(e, Forbidden::NoProgress, c, nr);
                 ++work().nodeVisits;
-                uint32_t p = prev(c);
+                NodeId p = prev(c);
                 cutTriangle(p, c, nr);
                 unlink(c);
                 c = p;
@@ -724,44 +554,45 @@ private:
     // A Steiner point (a one-node loop) bounds nothing, so it splits nothing: the diagonal is
     // an antenna c -> s -> c' into the gorge, s stays inside the chain as the water node
     // (reflex: the whole gorge above it is open), and no gorge is pushed.
-    void bridge(Event& e, uint32_t s) {
+    void bridge(Event& e, NodeId s) {
         e.action = Action::Bridge;
-        uint32_t c = water_;
+        NodeId c = water_;
         e.sag = nodes_[s].v;
         e.bridgeTo = nodes_[c].v;
         if (listener_) {
             uint32_t i = 0;
-            for (uint32_t x = left_; x != c && i <= partNodes_ * 2; x = next(x)) ++i;
+            for (NodeId x = left_; x != c && i <= partNodes_ * 2; x = next(x)) ++i;
             e.chainIndex = i;
         }
         const bool point = prev(s) == s;
-        uint32_t s2 = point ? s : uint32_t(nodes_.size()), c2 = uint32_t(nodes_.size()) + !point;
-        if (!point) nodes_.push_back(Node{nodes_[s].v, prev(s), c2});
-        nodes_.push_back(Node{nodes_[c].v, s2, next(c)});
+        NodeId s2 = point ? s : nodes_.end(), c2 = nodes_.end() + !point;
+        if (!point) nodes_.push(Node{nodes_[s].v, prev(s), c2});
+        nodes_.push(Node{nodes_[c].v, s2, next(c)});
         if (!point) nodes_[prev(s)].next = s2;
         nodes_[next(c)].prev = c2;
         nodes_[c].next = s;
         nodes_[s].prev = c;
         nodes_[s2].next = c2;
         partNodes_ += point ? 1 : 2;
-        uint32_t right2 = (right_ == c) ? c2 : right_;
+        NodeId right2 = (right_ == c) ? c2 : right_;
         // Left half: Left .. c, s. Cut while the node before s is convex.
-        uint32_t x = c, before = cut_, guard = partNodes_ + 2;
+        NodeId x = c;
+        uint32_t before = cut_, guard = partNodes_ + 2;
         while (x != left_ && turn(prev(x), x, s) > 0) {
             if (guard-- == 0 || !nodes_[x].alive) return forbid(e, Forbidden::NoProgress, x, s);
             ++work().nodeVisits;
-            uint32_t p = prev(x);
+            NodeId p = prev(x);
             cutTriangle(p, x, s);
             unlink(x);
             x = p;
         }
         e.cutLeft = cut_ - before;
         before = cut_;
-        uint32_t y = c2;
+        NodeId y = c2;
         while (y != right2 && turn(s2, y, next(y)) > 0) {
             if (guard-- == 0 || !nodes_[y].alive) return forbid(e, Forbidden::NoProgress, y, s);
             ++work().nodeVisits;
-            uint32_t n = next(y);
+            NodeId n = next(y);
             cutTriangle(s2, y, n);
             unlink(y);
             y = n;
@@ -783,87 +614,88 @@ private:
     // set to the other bank, and the water runs down the far side of the top to the next
     // bottom, skipping the sags it drips from (Fig. 5). A pending gorge met on the way
     // is the one that collects the water: it is taken off the to-do list.
-    void spill(Event& e, Side side, uint32_t t) {
+    void spill(Event& e, Side side, NodeId t) {
         e.action = Action::Spill;
-        uint32_t other = side == Side::Left ? right_ : left_;
+        NodeId other = side == Side::Left ? right_ : left_;
         nodes_[t].jump = other;
         e.top = nodes_[t].v;
         e.jumpTarget = nodes_[other].v;
         e.gorgePushed = pushGorge(left_, right_, water_, true, nodes_[t].v);
         bool goPrev = side == Side::Left;
-        uint32_t x = goPrev ? prev(t) : next(t);
+        NodeId x = goPrev ? prev(t) : next(t);
         // `drops` counts sags the water fell from whose landing is not settled yet: a sag
         // followed by a ceiling roofs the basin below it (the next bottom is its floor); a
         // sag followed by a top is matched by the bottom of the pocket beyond that top.
-        // Stretches already walked are crossed in one step (see Stretch), so walks from the
+        // Stretches already walked are crossed in one step (stretches.h), so walks from the
         // tops along a spiral arm do not retrace the arm.
         int64_t drops = 0;
         const int dir = goPrev ? 0 : 1;
-        size_t run = stretches_.size();  // first position of the stretch this walk records
+        const std::vector<Stretches::Position>& pos = walked_.positions;
+        size_t run = pos.size();  // first position of the stretch this walk records
         for (uint32_t guard = 0; guard <= partNodes_; ++guard, x = goPrev ? prev(x) : next(x)) {
             ++work().nodeVisits;
             Node& nd = nodes_[x];
             uint32_t g = goPrev ? nd.gorgeRight : nd.gorgeLeft;
-            if (g != kNil && !gorges_[g].done && !gorges_[g].held) {
-                closeStretch(run);
+            if (g != kNoGorge && !gorges_[g].done && !gorges_[g].held) {
+                walked_.close(run);
                 e.gorgePopped = g;
                 resumeGorge(g);
                 return emit(e);
             }
-            if (nd.gorgeLeft != kNil || nd.gorgeRight != kNil || x == t) break;
+            if (nd.gorgeLeft != kNoGorge || nd.gorgeRight != kNoGorge || x == t) break;
             // Only extremes matter to the walk; the orientation test is spent on them alone
             // (and on every maximum of a stretch being recorded: a later walk may need it).
-            const uint32_t at = recordedAt(dir, x);
-            const bool fresh = at == kNil && !nd.wet;
+            const uint32_t at = walked_.recordedAt(dir, x);
+            const bool fresh = at == kNone && !nd.wet;
             bool minimum = isMinimum(x);
             bool maximum = !minimum && lower(prev(x), x) && lower(next(x), x);
             bool convexHere =
                 (minimum || (maximum && (drops > 0 || fresh))) && turn(prev(x), x, next(x)) > 0;
             bool sag = minimum && !convexHere, sensitive = convexHere;  // ceilings and bottoms
             if (fresh) {
-                int32_t before =
-                    stretches_.size() > run ? stretches_.back().drops + stretches_.back().delta : 0;
-                recordAt(dir, x, uint32_t(stretches_.size()));
+                int32_t before = pos.size() > run ? pos.back().drops + pos.back().delta : 0;
                 int8_t delta = sag ? 1 : sensitive ? -1 : 0;
-                stretches_.push_back({x, uint32_t(stretchRecs_.size()), before, delta, sensitive});
+                walked_.record(dir,
+                               {x, uint32_t(walked_.stretches.size()), before, delta, sensitive},
+                               nodes_.end());
             } else {
-                closeStretch(run);
+                walked_.close(run);
             }
             if (sag) {
                 ++drops;
             } else if (sensitive && drops > 0) {
                 --drops;  // a bottom beyond a top, or a ceiling roofing the basin under the last sag
             } else if (minimum && sensitive && !nd.wet) {
-                closeStretch(run);
+                walked_.close(run);
                 mark(e, Test::WalkLanded, true);
                 e.bottom = nd.v;
                 startGorge(x);
                 return emit(e);
             }
-            if (!fresh && at != kNil && !nd.wet) {
+            if (!fresh && at != kNone && !nd.wet) {
                 // Cross the stretch beyond x in one step, up to the node before the first one
                 // that got wet since (its links may have changed) and before the first bottom
                 // or ceiling the count would reach at zero (it may be the landing): none of
                 // the nodes crossed can end the walk, and the count changes by their sum. The
                 // stretch's tree finds whichever comes first (a wet node holds INT32_MIN).
-                const StretchRec& rec = stretchRecs_[stretches_[at].stretch];
+                const Stretches::Stretch& rec = walked_.stretches[pos[at].stretch];
                 const uint32_t a = at + 1;
                 if (a < rec.end) {
                     uint32_t f =
-                        firstAtMost(rec, a - rec.start, int64_t(stretches_[a].drops) - drops) +
+                        walked_.firstAtMost(rec, a - rec.start, int64_t(pos[a].drops) - drops) +
                         rec.start;
                     // One past the last node crossed: a wet node (or the stretch's end) is not
                     // reached, nor the node before it; a zero-count node is reached live.
-                    uint32_t b = f == rec.end || nodes_[stretches_[f].node].wet ? f - 1 : f;
+                    uint32_t b = f == rec.end || nodes_[pos[f].node].wet ? f - 1 : f;
                     if (b > a && guard + (b - a) <= partNodes_) {
-                        drops += stretches_[b].drops - stretches_[a].drops;
+                        drops += pos[b].drops - pos[a].drops;
                         guard += b - a;
-                        x = stretches_[b - 1].node;
+                        x = pos[b - 1].node;
                     }
                 }
             }
         }
-        closeStretch(run);
+        walked_.close(run);
         // The walk cannot tell where a drip from a sag lands when the basin below it is
         // bounded by another part of the boundary (a spiral, say). Any gorge not flooded
         // yet will do: flooding it reaches this top from its far side in time.
@@ -874,18 +706,15 @@ private:
 
     // Jump: the water reached a held top from its far side; the chain continues on the
     // other bank, where the jump pointer leads (Fig. 6). The two chains meet at the top.
-    void jump(Event& e, Side side, uint32_t t) {
+    void jump(Event& e, Side side, NodeId t) {
         e.action = Action::Jump;
         uint32_t g = side == Side::Left ? nodes_[t].gorgeRight : nodes_[t].gorgeLeft;
         e.top = nodes_[t].v;
         e.jumpTarget = nodes_[nodes_[t].jump].v;
-        if (g == kNil || gorges_[g].done || !gorges_[g].held)
+        if (g == kNoGorge || gorges_[g].done || !gorges_[g].held)
             return forbid(e, Forbidden::JumpWrongSide, t, nodes_[t].jump);
         e.gorgePopped = g;
-        GorgeRec& rec = gorges_[g];
-        rec.done = true;
-        nodes_[rec.left].gorgeLeft = kNil;
-        nodes_[rec.right].gorgeRight = kNil;
+        const GorgeRec& rec = retireGorge(g);
         if (side == Side::Left) left_ = rec.left;
         else right_ = rec.right;
         nodes_[t].jump = kNil;
@@ -897,18 +726,18 @@ private:
     // Then the next pending gorge on the to-do list becomes active.
     void fill(Event& e) {
         e.action = Action::Fill;
-        uint32_t apex = prev(left_);
+        NodeId apex = prev(left_);
         if (left_ == right_) return forbid(e, Forbidden::FillOpen, apex, left_);
         uint32_t guard = partNodes_ + 2;
-        for (uint32_t c = left_; c != right_;) {
-            uint32_t n = next(c);
+        for (NodeId c = left_; c != right_;) {
+            NodeId n = next(c);
             if (guard-- == 0) return forbid(e, Forbidden::FillOpen, apex, c);  // Right unreachable
             ++work().nodeVisits;
             if (turn(apex, c, n) <= 0) return forbid(e, Forbidden::BadTriangle, c, n);
             c = n;
         }
-        for (uint32_t c = left_; c != right_;) {
-            uint32_t n = next(c);
+        for (NodeId c = left_; c != right_;) {
+            NodeId n = next(c);
             cutTriangle(apex, c, n);
             nodes_[c].alive = false;
             c = n;
@@ -919,6 +748,7 @@ private:
         emit(e);
     }
 
+    // ---- [SECTION] the to-do list and the gorges -------------------------------------------
     // The next gorge to flood: the last pending gorge on the to-do list, else the lowest
     // bottom the water has not reached. False when neither exists.
     bool takeNextGorge(Event& e) {
@@ -930,7 +760,7 @@ private:
             resumeGorge(g);
             return true;
         }
-        uint32_t b = lowestDryBottom();
+        NodeId b = lowestDryBottom();
         if (b == kNil) return false;
         e.bottom = nodes_[b].v;
         startGorge(b);
@@ -942,13 +772,13 @@ private:
     // bottoms reached since (they stay reached); after kBottomScans the list is sorted once
     // and a cursor walks it, as the paper's sorted list would.
     static constexpr uint32_t kBottomScans = 4;
-    uint32_t lowestDryBottom() {
+    NodeId lowestDryBottom() {
         if (bottomScans_ < kBottomScans) {
             ++bottomScans_;
-            uint32_t best = kNil;
+            NodeId best = kNil;
             size_t kept = 0;
             work().nodeVisits += bottoms_.size();
-            for (uint32_t b : bottoms_) {
+            for (NodeId b : bottoms_) {
                 if (nodes_[b].wet || !nodes_[b].alive) continue;
                 bottoms_[kept++] = b;
                 if (best == kNil || lower(b, best)) best = b;
@@ -959,79 +789,22 @@ private:
         }
         for (; bottomCursor_ < bottoms_.size(); ++bottomCursor_) {
             ++work().nodeVisits;
-            uint32_t b = bottoms_[bottomCursor_];
+            NodeId b = bottoms_[bottomCursor_];
             if (!nodes_[b].wet && nodes_[b].alive) return b;
         }
         return kNil;
     }
 
-    void startGorge(uint32_t bottom) {
+    void startGorge(NodeId bottom) {
         left_ = right_ = water_ = bottom;
         makeWet(bottom);
     }
-
-    // A node becomes wet: a stretch holding it can no longer be crossed past it, so its leaf
-    // and their ancestors in the stretch's tree get INT32_MIN, below any count.
-    void makeWet(uint32_t n) {
+    void makeWet(NodeId n) {
         nodes_[n].wet = true;
-        if (stretchRecs_.empty())
-            return;  // no spill walk recorded a stretch yet: no tree to update
-        for (int dir = 0; dir < 2; ++dir) {
-            uint32_t at = recordedAt(dir, n);
-            if (at == kNil) continue;
-            const StretchRec& rec = stretchRecs_[stretches_[at].stretch];
-            int32_t* t = stretchTree_.data() + rec.tree;
-            for (size_t i = rec.leaves + at - rec.start; i >= 1 && t[i] != INT32_MIN; i >>= 1) {
-                t[i] = INT32_MIN;
-                ++work().nodeVisits;
-            }
-        }
-    }
-    // The position of node n in the stretches walked in direction dir; kNil if not recorded.
-    uint32_t recordedAt(int dir, uint32_t n) const {
-        const std::vector<uint32_t>& v = stretchAt_[dir];
-        return n - partFirstNode_ < v.size() ? v[n - partFirstNode_] : kNil;
-    }
-    void recordAt(int dir, uint32_t n, uint32_t position) {
-        std::vector<uint32_t>& v = stretchAt_[dir];
-        if (n - partFirstNode_ >= v.size()) v.resize(nodes_.size() - partFirstNode_, kNil);
-        v[n - partFirstNode_] = position;
-    }
-    // Ends the stretch a walk is recording (positions from `run` on) and builds its tree: a
-    // complete binary tree over the positions holding, for bottoms and ceilings, the count's
-    // change before them (INT32_MAX elsewhere), each inner node the least of its two.
-    void closeStretch(size_t& run) {
-        const uint32_t start = uint32_t(run), end = uint32_t(stretches_.size());
-        run = end;
-        if (start == end) return;
-        uint32_t leaves = 1;
-        while (leaves < end - start) leaves <<= 1;
-        const uint32_t tree = uint32_t(stretchTree_.size());
-        stretchTree_.resize(tree + 2 * size_t(leaves), INT32_MAX);
-        int32_t* t = stretchTree_.data() + tree;
-        for (uint32_t k = start; k < end; ++k)
-            if (stretches_[k].sensitive) t[leaves + k - start] = stretches_[k].drops;
-        for (uint32_t i = leaves; i-- > 1;) t[i] = std::min(t[2 * i], t[2 * i + 1]);
-        work().nodeVisits += 2 * size_t(leaves);
-        stretchRecs_.push_back({start, end, tree, leaves});
-    }
-    // The first position from `from` on (relative to the stretch's start) whose tree value is
-    // at most `limit`; the stretch's length if none. O(log length).
-    uint32_t firstAtMost(const StretchRec& rec, uint32_t from, int64_t limit) const {
-        const int32_t* t = stretchTree_.data() + rec.tree;
-        for (size_t i = rec.leaves + from;;) {
-            ++work().nodeVisits;
-            if (t[i] <= limit) {
-                while (i < rec.leaves) i = t[2 * i] <= limit ? 2 * i : 2 * i + 1;
-                return uint32_t(i - rec.leaves);
-            }
-            for (; i & 1; i >>= 1)
-                if (i == 1) return rec.end - rec.start;  // right edge of the tree: none
-            ++i;
-        }
+        walked_.markWet(n);
     }
 
-    uint32_t pushGorge(uint32_t l, uint32_t r, uint32_t w, bool held, Index top) {
+    uint32_t pushGorge(NodeId l, NodeId r, NodeId w, bool held, Index top) {
         uint32_t id = uint32_t(gorges_.size());
         gorges_.push_back({l, r, w, held, false, top});
         nodes_[l].gorgeLeft = id;
@@ -1039,37 +812,37 @@ private:
         if (!held) todo_.push_back(id);
         return id;
     }
-    void resumeGorge(uint32_t g) {
+    // A gorge is flooded again (Jump, or taken from the to-do list): its ends forget it.
+    const GorgeRec& retireGorge(uint32_t g) {
         GorgeRec& rec = gorges_[g];
         rec.done = true;
-        nodes_[rec.left].gorgeLeft = kNil;
-        nodes_[rec.right].gorgeRight = kNil;
+        nodes_[rec.left].gorgeLeft = kNoGorge;
+        nodes_[rec.right].gorgeRight = kNoGorge;
+        return rec;
+    }
+    void resumeGorge(uint32_t g) {
+        const GorgeRec& rec = retireGorge(g);
         left_ = rec.left;
         right_ = rec.right;
         water_ = rec.water;
     }
 
+    // ---- [SECTION] the machine's memory -----------------------------------------------------
 public:
     // What the machine allocates, lent by a Triangulator (or the thread, for small inputs)
     // from run to run; the members below of the same names refer to them.
     struct Buffers {
         std::vector<Point> rotated, pointOfRank;
-        std::vector<Node> nodes;
-        std::vector<uint32_t> sags, partVertices, points, initialNext, sagBucket, sagsBelow,
-            bottoms, todo;
-        std::vector<Index> loop;
+        Nodes nodes;
+        std::vector<NodeId> sags, partVertices, points, bottoms;
+        std::vector<uint32_t> initialNext, sagsBelow, todo;
         SagIndex sagIndex;
         SagBanks banks;
-        std::vector<HeightKey> sagKeys, bottomKeys;
-        std::vector<double> sagY;
+        SagHeights sagHeights;
+        std::vector<HeightKey> bottomKeys;
         std::vector<GorgeRec> gorges;
-        std::vector<Stretch> stretches;
-        std::vector<StretchRec> stretchRecs;
-        std::vector<int32_t> stretchTree;
-        std::vector<uint32_t> stretchAt[2];
-        RepeatedPointsScratch repeats;  // mergeTouchingLoops' search (coincident.h)
-        std::vector<uint32_t> corner, newNext;
-        std::vector<std::pair<Point, uint32_t>> outs;
+        Stretches walked;
+        LoopScratch loops;
     };
 
 private:
@@ -1083,40 +856,28 @@ private:
     const Up up_;                       // the chosen vertical
     const bool general_;                // off the axes: heights are heightRank_, never coordinates
     std::vector<uint32_t> heightRank_;  // per vertex, off the axes: its rank by height along up_
-    std::vector<Node>& nodes_ = b_.nodes;
-    std::vector<uint32_t>& sags_ = b_.sags;
+    Nodes& nodes_ = b_.nodes;
+    std::vector<NodeId>& sags_ = b_.sags;
     SagIndex& sagIndex_ = b_.sagIndex;  // the sags by height rank, searchable by x
     SagBanks& banks_ = b_.banks;  // the sags each input edge sees, once the plane index is costly
     bool banksTried_ = false;
     uint64_t treeWork_ = 0;  // box visits of the plane index in this part
     uint32_t partFirstVertex_ = 0, initialNodes_ = 0;
     std::vector<uint32_t>& initialNext_ =
-        b_.initialNext;  // per initial node of the part (local ids): next
-    std::vector<HeightKey>& sagKeys_ = b_.sagKeys;  // height keys of sags_, for binary search
-    std::vector<double>& sagY_ = b_.sagY;  // their y alone: a denser array for the first search
-    std::vector<uint32_t>& sagBucket_ =
-        b_.sagBucket;  // first rank of each height bucket (heightBucket())
-    double bucketY0_ = 0, bucketScale_ = 0;
+        b_.initialNext;                       // per initial node of the part (local ids): next
+    SagHeights& sagHeights_ = b_.sagHeights;  // the sags' heights by rank (sag_index.h)
     std::vector<HeightKey>& bottomKeys_ = b_.bottomKeys;  // scratch for sorting the bottoms
     std::vector<uint32_t>& sagsBelow_ =
-        b_.sagsBelow;  // per node of the part (from partFirstNode_): sags below it, kNil until asked
-    std::vector<uint32_t>& bottoms_ =
+        b_.sagsBelow;  // per node of the part (from partFirstNode_): sags below it, kNone until asked
+    std::vector<NodeId>& bottoms_ =
         b_.bottoms;  // bottoms; lowest first once sorted (lowestDryBottom())
     size_t bottomCursor_ = 0;
     uint32_t bottomScans_ = 0;
     std::vector<GorgeRec>& gorges_ = b_.gorges;
-    // Spill walks remembered: the dry nodes a walk passed, in its direction (prev-wards or
-    // next-wards), with the drop count's change along them. Links between dry nodes do not
-    // change (every edit of the loops touches a wet node), so a later walk reaching such a
-    // stretch crosses it in one step up to its first node that got wet since.
-    std::vector<Stretch>& stretches_ = b_.stretches;
-    std::vector<StretchRec>& stretchRecs_ = b_.stretchRecs;
-    std::vector<int32_t>& stretchTree_ = b_.stretchTree;
-    std::vector<uint32_t> (&stretchAt_)[2] =
-        b_.stretchAt;                        // per node of the part, per direction: its position
+    Stretches& walked_ = b_.walked;          // spill walks remembered (stretches.h)
     std::vector<uint32_t>& todo_ = b_.todo;  // pending gorges (ids), last pushed first
-    uint32_t left_ = kNil, right_ = kNil, water_ = kNil;
-    uint32_t part_ = 0, partNodes_ = 0, partFirstNode_ = 0, cut_ = 0, step_ = 0;
+    NodeId left_ = kNil, right_ = kNil, water_ = kNil, partFirstNode_ = NodeId(0);
+    uint32_t part_ = 0, partNodes_ = 0, cut_ = 0, step_ = 0;
     uint64_t budget_ = 0;
     uint32_t unusedSags_ = 0;  // sags of the part not bridged yet
     FloodResult& result_;
@@ -1156,38 +917,6 @@ const FloodResult& Triangulator::run(const Polygon& polygon, Listener* listener,
     Workspace& w = *workspace_;
     Machine(polygon, listener, options, w.result, &w.buffers).run();  // refills the last result
     return w.result;
-}
-
-Culprits forbiddenCulprits(const Polygon& polygon, const Event& e) {
-    Culprits c;
-    const Fingers& f = e.before;
-    for (Index v : {e.culprit, e.culprit2, f.left, f.right, f.nextLeft, f.nextRight})
-        if (v < polygon.vertices.size() &&
-            std::find(c.vertices.begin(), c.vertices.end(), v) == c.vertices.end()) {
-            c.vertices.push_back(v);
-            Index r = polygon.ringOf(v);
-            if (std::find(c.rings.begin(), c.rings.end(), r) == c.rings.end()) c.rings.push_back(r);
-        }
-    return c;
-}
-
-std::string describeForbidden(const Polygon& polygon, const Event& e) {
-    std::ostringstream os;
-    os.precision(17);
-    auto vertex = [&](const char* label, Index v) {
-        if (v == kNone || v >= polygon.vertices.size()) return;
-        Index r = polygon.ringOf(v);
-        Point p = polygon.vertices[v];
-        os << "; " << label << " = vertex " << v << " (ring " << r << " vertex "
-           << v - polygon.rings[r].first << ", " << p.x << ", " << p.y << ")";
-    };
-    os << "forbidden transition " << forbiddenName(e.reason) << " at step " << e.step + 1;
-    vertex("at", e.culprit);
-    vertex("and", e.culprit2);
-    vertex("Left", e.after.left);
-    vertex("Right", e.after.right);
-    os << ": " << forbiddenText(e.reason);
-    return os.str();
 }
 
 }  // namespace flood

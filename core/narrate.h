@@ -1,7 +1,8 @@
 // Narration: one sentence per event in the flood metaphor of the paper (§3–§6), saying what
 // happened and why, built from the event's decision bits (Event::tested/passed), fingers,
 // triangle range and sag/top/jump fields. Shown by the viewer's Decision panel and by
-// `flood transcript --narrate`; docs/TUTORIAL.md quotes it.
+// `flood transcript --narrate`; docs/TUTORIAL.md quotes it. A forbidden state's diagnostic
+// (describeForbidden, forbiddenCulprits: declared in flood.h, the public API) is made here too.
 #pragma once
 #include <string>
 

@@ -13,12 +13,23 @@ int ringAreaSign(const Point* p, Index count) {
     return exact.sign();
 }
 
-int ringOrientation(const Point* p, Index count) {
+namespace {
+template <class Below>
+int turnAtLowest(const Point* p, Index count, Below lower) {
     Index low = 0;
     for (Index i = 1; i < count; ++i)
-        if (below(p[i], p[low])) low = i;
+        if (lower(p[i], p[low])) low = i;
     int t = orient(p[low == 0 ? count - 1 : low - 1], p[low], p[low + 1 == count ? 0 : low + 1]);
     return t != 0 ? t : ringAreaSign(p, count);
+}
+}  // namespace
+
+int ringOrientation(const Point* p, Index count) {
+    return turnAtLowest(p, count, [](Point a, Point b) { return below(a, b); });
+}
+
+int ringOrientation(const Point* p, Index count, Up up) {
+    return turnAtLowest(p, count, [up](Point a, Point b) { return belowToward(up, a, b); });
 }
 
 }  // namespace flood

@@ -3,15 +3,18 @@
 // arithmetic whenever the bound allows — and ExactSum (predicates.h) when it does not. At 10^6
 // vertices the exact expansions were an eighth of `flood triangulate`'s time.
 // With ringOrientation below, the core's one place for a ring's orientation: the flood
-// machine orients its loops with ringOrientation; validation (whose check 3 asks for the area
-// anyway) and classifyVertices (the viewer's colours) take ringAreaSign. The exact checker
-// uses AreaEstimate alone, deliberately (checker.cpp says why).
+// machine orients its loops with ringOrientation, and classifyVertices (the viewer's colours,
+// the state table's rows) with the same rule, so that its classes are the machine's on every
+// ring; validation takes ringAreaSign, since its check 3 asks whether the area is zero, and
+// the two agree on the simple rings it accepts. The exact checker uses AreaEstimate alone,
+// deliberately (checker.cpp says why).
 // Internal to core/, not a public API.
 #pragma once
 #include <cmath>
 #include <cstddef>
 
 #include "polygon.h"
+#include "up.h"
 
 namespace flood {
 
@@ -63,5 +66,8 @@ inline int ringAreaSign(const Polygon& polygon, Index first, Index count) {
 // are not simple the two can differ, and the machine's choice decides which forbidden state
 // unvalidated input reaches (docs/ERRORS.md's forbidden-bad-triangle.json): kept as it is.
 int ringOrientation(const Point* ring, Index count);
+// The same with the lowest vertex taken along `up` (belowToward()): the machine's rule for a
+// ring of the input's coordinates when the machine turns them so that `up`, an axis, is +y.
+int ringOrientation(const Point* ring, Index count, Up up);
 
 }  // namespace flood

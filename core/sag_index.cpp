@@ -9,6 +9,44 @@ namespace {
 constexpr uint32_t kLeafSize = 8;
 }  // namespace
 
+// The bucket of y never decreases as y grows (rounding is monotone), so the sags of the
+// buckets below y's are all lower than y and those above all higher: a search for y needs only
+// its own bucket. Monotone at every scale too: a span that overflows gives scale 0, so every
+// height is in bucket 0 except those whose difference is infinite (inf · 0 = NaN: the last
+// bucket); one so small that the scale is infinite puts every height above the lowest in the
+// last bucket.
+size_t SagHeights::bucket(double y) const {
+    const size_t last = buckets_.size() - 2;
+    if (!(y > y0_)) return 0;
+    double b = (y - y0_) * scale_;
+    return b < double(last) ? size_t(b) : last;
+}
+
+void SagHeights::index() {
+    const size_t count = keys_.size();
+    y_.resize(count);
+    for (size_t k = 0; k < count; ++k) y_[k] = keys_[k].y;
+    const size_t buckets = count / 2 + 1;
+    y0_ = count ? y_.front() : 0;
+    double span = count ? y_.back() - y0_ : 0;
+    scale_ = span > 0 && std::isfinite(span) ? double(buckets) / span : 0;
+    buckets_.assign(buckets + 1, uint32_t(count));
+    size_t filled = 0;
+    for (size_t k = 0; k < count; ++k)
+        for (size_t b = bucket(y_[k]); filled <= b;) buckets_[filled++] = uint32_t(k);
+}
+
+uint32_t SagHeights::below(const HeightKey& k) const {
+    size_t b = bucket(k.y);
+    auto first = y_.begin() + long(buckets_[b]), last = y_.begin() + long(buckets_[b + 1]);
+    size_t a = size_t(std::lower_bound(first, last, k.y) - y_.begin());
+    if (a < y_.size() && y_[a] == k.y)
+        a = size_t(
+            std::lower_bound(keys_.begin() + long(a), keys_.begin() + long(buckets_[b + 1]), k) -
+            keys_.begin());
+    return uint32_t(a);
+}
+
 void SagIndex::build(const std::vector<Point>& pointOfRank) {
     const uint32_t n = uint32_t(pointOfRank.size());
     used_.assign(n, 0);

@@ -14,10 +14,43 @@
 #include <utility>
 #include <vector>
 
+#include "node_id.h"
 #include "polygon.h"
 #include "work.h"
 
 namespace flood {
+
+// The order of heights the flood machine uses (below(), ties by vertex index, then node id),
+// as a value: what the sorted sag list is searched with. Off the axes y is the vertex's height
+// rank and x is 0.
+struct HeightKey {
+    double y, x;
+    uint32_t v;
+    NodeId node;
+    bool operator<(const HeightKey& o) const {
+        if (y != o.y) return y < o.y;
+        if (x != o.x) return x < o.x;
+        if (v != o.v) return v < o.v;
+        return node < o.node;
+    }
+};
+
+// The sorted sag list's ranks (§4): how many sags lie strictly below a height, by a binary
+// search within one bucket of an equal-height span over the sags' heights, on their y alone (a
+// denser array) and on the full keys only to break a tie.
+class SagHeights {
+public:
+    std::vector<HeightKey>& keys() { return keys_; }  // the sags' keys, sorted; then index()
+    void index();
+    uint32_t below(const HeightKey& k) const;
+
+private:
+    size_t bucket(double y) const;
+    std::vector<HeightKey> keys_;
+    std::vector<double> y_;          // keys_[k].y
+    std::vector<uint32_t> buckets_;  // first rank of each height bucket (bucket())
+    double y0_ = 0, scale_ = 0;
+};
 
 class SagIndex {
 public:

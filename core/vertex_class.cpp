@@ -38,7 +38,10 @@ std::vector<VertexClass> classifyVertices(const Polygon& polygon, Up up) {
         // Outer rings of a part come first: holes must turn the other way.
         bool isOuter = false;
         for (const Part& p : polygon.parts) isOuter |= (p.firstRing == r);
-        const int sign = ringAreaSign(polygon, ring.first, ring.count);
+        // The machine's orientation (ring_area.h): it compares coordinates turned so that an
+        // axis `up` is +y, and off the axes the input's own, lowest by y.
+        const int sign =
+            ringOrientation(v.data() + ring.first, ring.count, up.axis() ? up : Up::PlusY);
         bool reversed = isOuter ? sign < 0 : sign > 0;
         for (Index i = 0; i < ring.count; ++i) {
             Point prev = v[ring.first + (i + ring.count - 1) % ring.count];

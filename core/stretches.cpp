@@ -1,0 +1,71 @@
+#include "stretches.h"
+
+#include <algorithm>
+
+#include "work.h"
+
+namespace flood {
+
+void Stretches::clear(NodeId firstNode) {
+    positions.clear();
+    stretches.clear();
+    tree_.clear();
+    for (auto& at : at_) at.clear();  // grown by the first spill walk (record())
+    first_ = firstNode;
+}
+
+void Stretches::record(int dir, const Position& p, NodeId end) {
+    std::vector<uint32_t>& v = at_[dir];
+    if (p.node - first_ >= v.size()) v.resize(end - first_, kNone);
+    v[p.node - first_] = uint32_t(positions.size());
+    positions.push_back(p);
+}
+
+// The tree is a complete binary tree over the positions holding, for bottoms and ceilings, the
+// count's change before them (INT32_MAX elsewhere), each inner node the least of its two.
+void Stretches::close(size_t& run) {
+    const uint32_t start = uint32_t(run), end = uint32_t(positions.size());
+    run = end;
+    if (start == end) return;
+    uint32_t leaves = 1;
+    while (leaves < end - start) leaves <<= 1;
+    const uint32_t tree = uint32_t(tree_.size());
+    tree_.resize(tree + 2 * size_t(leaves), INT32_MAX);
+    int32_t* t = tree_.data() + tree;
+    for (uint32_t k = start; k < end; ++k)
+        if (positions[k].sensitive) t[leaves + k - start] = positions[k].drops;
+    for (uint32_t i = leaves; i-- > 1;) t[i] = std::min(t[2 * i], t[2 * i + 1]);
+    work().nodeVisits += 2 * size_t(leaves);
+    stretches.push_back({start, end, tree, leaves});
+}
+
+uint32_t Stretches::firstAtMost(const Stretch& s, uint32_t from, int64_t limit) const {
+    const int32_t* t = tree_.data() + s.tree;
+    for (size_t i = s.leaves + from;;) {
+        ++work().nodeVisits;
+        if (t[i] <= limit) {
+            while (i < s.leaves) i = t[2 * i] <= limit ? 2 * i : 2 * i + 1;
+            return uint32_t(i - s.leaves);
+        }
+        for (; i & 1; i >>= 1)
+            if (i == 1) return s.end - s.start;  // right edge of the tree: none
+        ++i;
+    }
+}
+
+// Its leaf and their ancestors in the stretch's tree get INT32_MIN, below any count.
+void Stretches::markWet(NodeId n) {
+    if (stretches.empty()) return;  // no spill walk recorded a stretch yet: no tree to update
+    for (int dir = 0; dir < 2; ++dir) {
+        uint32_t at = recordedAt(dir, n);
+        if (at == kNone) continue;
+        const Stretch& s = stretches[positions[at].stretch];
+        int32_t* t = tree_.data() + s.tree;
+        for (size_t i = s.leaves + at - s.start; i >= 1 && t[i] != INT32_MIN; i >>= 1) {
+            t[i] = INT32_MIN;
+            ++work().nodeVisits;
+        }
+    }
+}
+
+}  // namespace flood

@@ -1,0 +1,57 @@
+// Spill walks remembered (§5; ALGORITHM.md): the dry nodes a walk passed, in its direction
+// (prev-wards or next-wards), with the drop count's change along them. Links between dry
+// nodes do not change (every edit of the loops touches a wet node), so a later walk reaching
+// such a stretch crosses it in one step up to its first node that got wet since. Each
+// stretch keeps a tree over its positions that finds that node, or the first bottom or
+// ceiling the count would reach at zero, in O(log length).
+// Internal to core/, not a public API.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "node_id.h"
+#include "polygon.h"
+
+namespace flood {
+
+class Stretches {
+public:
+    struct Position {
+        NodeId node;
+        uint32_t stretch;  // its Stretch in stretches
+        int32_t drops;     // the count's change from the stretch's start to just before here
+        int8_t delta;      // +1 a sag, -1 a bottom or ceiling (when the count is positive)
+        bool sensitive;    // a convex bottom or ceiling: where a zero count matters
+    };
+    struct Stretch {
+        uint32_t start, end;    // its positions in positions
+        uint32_t tree, leaves;  // its tree in tree_ (firstAtMost()), leaves a power of two
+    };
+    std::vector<Position> positions;  // of every stretch recorded, stretch after stretch
+    std::vector<Stretch> stretches;
+
+    // For a part whose nodes are numbered from firstNode on.
+    void clear(NodeId firstNode);
+    // The position of node n in the stretches walked in direction dir (0 prev-wards, 1
+    // next-wards); kNone if not recorded.
+    uint32_t recordedAt(int dir, NodeId n) const {
+        const std::vector<uint32_t>& v = at_[dir];
+        return n - first_ < v.size() ? v[n - first_] : kNone;
+    }
+    // Appends p to the stretch being recorded; `end`: the id the next node will get.
+    void record(int dir, const Position& p, NodeId end);
+    // Ends the stretch a walk is recording (positions from `run` on) and builds its tree.
+    void close(size_t& run);
+    // The first position from `from` on (relative to the stretch's start) whose tree value is
+    // at most `limit`; the stretch's length if none.
+    uint32_t firstAtMost(const Stretch& s, uint32_t from, int64_t limit) const;
+    // Node n got wet: a stretch holding it can no longer be crossed past it.
+    void markWet(NodeId n);
+
+private:
+    std::vector<int32_t> tree_;
+    std::vector<uint32_t> at_[2];  // per node of the part, per direction: its position
+    NodeId first_{0};
+};
+
+}  // namespace flood

@@ -351,11 +351,18 @@ TEST(ExportGui, ExportsUseTheTheme) {
     const Triangle& t = m.trace().triangles[0];  // flooded, not by the current event
     const Vec2 inWater = cam.toScreen({0.6 * v[t[0]].x + 0.2 * v[t[1]].x + 0.2 * v[t[2]].x,
                                        0.6 * v[t[0]].y + 0.2 * v[t[1]].y + 0.2 * v[t[2]].y});
-    auto svgFill = [](const std::string& svg, const std::string& element) {
-        size_t at = svg.find(element);
-        if (at == std::string::npos) return std::string("(no ") + element + ")";
-        size_t fill = svg.find("fill=\"#", at);
-        return fill == std::string::npos ? std::string("(no fill)") : svg.substr(fill + 6, 7);
+    // The fill of the first element whose tag starts with `element` and holds `attribute`,
+    // in whatever order the writer puts the attributes.
+    auto svgFill = [](const std::string& svg, const std::string& element,
+                      const std::string& attribute = "") {
+        for (size_t at = svg.find(element); at != std::string::npos;
+             at = svg.find(element, at + 1)) {
+            const std::string tag = svg.substr(at, svg.find('>', at) - at);
+            if (tag.find(attribute) == std::string::npos) continue;
+            size_t fill = tag.find("fill=\"#");
+            return fill == std::string::npos ? std::string("(no fill)") : tag.substr(fill + 6, 7);
+        }
+        return std::string("(no ") + element + " " + attribute + ")";
     };
     auto hex = [](Rgba c) {
         char buf[8];
@@ -387,7 +394,7 @@ TEST(ExportGui, ExportsUseTheTheme) {
         std::ifstream in(svg);
         const std::string text((std::istreambuf_iterator<char>(in)), {});
         EXPECT_EQ(svgFill(text, "<rect width=\"100%\" height=\"100%\""), hex(want.background));
-        EXPECT_EQ(svgFill(text, "<path fill-rule=\"evenodd\""), hex(want.polygonFill));
+        EXPECT_EQ(svgFill(text, "<path", "fill-rule=\"evenodd\""), hex(want.polygonFill));
 #ifdef FLOOD_GIF
         const std::string gifPath = (dir / (name + ".gif")).string();
         r = viewer("'" + input + "' --theme " + name + " --export-gif '" + gifPath +

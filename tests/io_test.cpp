@@ -15,9 +15,11 @@
 #include "checker.h"
 #include "io.h"
 #include "replay.h"
+#include "test_support.h"
 #include "trace_io.h"
 
 using namespace flood;
+using flood::testing::writtenAndRead;
 
 namespace {
 
@@ -443,11 +445,7 @@ TEST(TraceIo, RoundTripAndErrors) {
     ReadResult r = readPolygonFile(source("polygons/hole.json"));
     ASSERT_TRUE(r.diagnostic.ok()) << r.diagnostic.message;
     Trace t = record(r.polygon);
-    std::ostringstream out;
-    writeTrace(out, t);
-    Trace back;
-    Diagnostic d = parseTrace(out.str(), "t.jsonl", back);
-    ASSERT_TRUE(d.ok()) << d.message;
+    Trace back = writtenAndRead(t);
     ASSERT_EQ(back.events.size(), t.events.size());
     for (size_t i = 0; i < t.events.size(); ++i)  // every field (FLOOD_EVENT_FIELDS)
         EXPECT_TRUE(back.events[i] == t.events[i]) << "event " << i << " changed on the way";
@@ -459,10 +457,7 @@ TEST(TraceIo, RoundTripAndErrors) {
     ASSERT_TRUE(validate(tj, "tj").ok());
     ASSERT_FALSE(tj.splits.empty());
     Trace withSplits = record(tj);
-    std::ostringstream tjOut;
-    writeTrace(tjOut, withSplits);
-    Trace tjBack;
-    ASSERT_TRUE(parseTrace(tjOut.str(), "tj.jsonl", tjBack).ok());
+    Trace tjBack = writtenAndRead(withSplits);
     ASSERT_EQ(tjBack.polygon.splits.size(), tj.splits.size());
     for (size_t i = 0; i < tj.splits.size(); ++i) {
         EXPECT_EQ(tjBack.polygon.splits[i].edge, tj.splits[i].edge);
@@ -470,6 +465,8 @@ TEST(TraceIo, RoundTripAndErrors) {
     }
     EXPECT_TRUE(checkTriangulation(tjBack.polygon, tjBack.triangles).ok);
     // Damage: wrong version, bad line, truncated, index out of range.
+    std::ostringstream out;
+    writeTrace(out, t);
     std::string text = out.str();
     std::string v2 = text;
     const std::string version = "\"version\":" + std::to_string(kTraceFormatVersion);

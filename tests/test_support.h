@@ -10,12 +10,15 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
 #include "checker.h"
 #include "flood.h"
 #include "io.h"
+#include "replay.h"
+#include "trace_io.h"
 
 namespace flood::testing {
 
@@ -90,6 +93,19 @@ inline FloodResult expectTriangulates(const Polygon& p, const std::string& what,
     CheckResult c = checkTriangulation(p, r.triangles);
     EXPECT_TRUE(c.ok) << what << ": " << c.reason;
     return r;
+}
+
+// `t` written as `flood trace` writes it and read back, for the round-trip tests: the test
+// fails if it does not read or loses events; whether each event came back is theirs to say
+// (Event's == compares every field).
+inline Trace writtenAndRead(const Trace& t) {
+    std::ostringstream out;
+    writeTrace(out, t);
+    Trace back;
+    Diagnostic d = parseTrace(out.str(), "t.jsonl", back);
+    EXPECT_TRUE(d.ok()) << d.message;
+    EXPECT_EQ(back.events.size(), t.events.size());
+    return back;
 }
 
 }  // namespace flood::testing

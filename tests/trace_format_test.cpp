@@ -14,6 +14,7 @@
 using namespace flood;
 using flood::testing::readOrFail;
 using flood::testing::sourcePath;
+using flood::testing::writtenAndRead;
 
 namespace {
 
@@ -21,11 +22,7 @@ TEST(TraceFormat, RoundTripOnEveryFamily) {
     for (const std::string& family : familyNames()) {
         SCOPED_TRACE(family);
         Trace t = record(generate(family, 3, 3000));
-        std::ostringstream out;
-        writeTrace(out, t);
-        Trace back;
-        Diagnostic d = parseTrace(out.str(), "t.jsonl", back);
-        ASSERT_TRUE(d.ok()) << d.message;
+        Trace back = writtenAndRead(t);
         ASSERT_EQ(back.events.size(), t.events.size());
         for (size_t i = 0; i < t.events.size(); ++i)  // every field (FLOOD_EVENT_FIELDS)
             ASSERT_TRUE(back.events[i] == t.events[i]) << "event " << i << " changed on the way";

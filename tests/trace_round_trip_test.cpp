@@ -28,11 +28,7 @@ TEST(TraceRoundTrip, EveryEventFieldComesBackAndIsExercised) {
     std::map<std::string, size_t> changed;  // field -> events where it is not its initial value
     const Event initial;
     for (const Trace& t : traces) {
-        std::ostringstream out;
-        writeTrace(out, t);
-        Trace back;
-        Diagnostic d = parseTrace(out.str(), "t.jsonl", back);
-        ASSERT_TRUE(d.ok()) << d.message;
+        Trace back = writtenAndRead(t);
         ASSERT_EQ(back.events.size(), t.events.size());
         for (size_t i = 0; i < t.events.size(); ++i) {
             const Event& e = t.events[i];

@@ -85,10 +85,19 @@ void drawStateMachine(Ui& ui) {
     float side = std::max(40.f, std::min(avail.x, avail.y - textH));
     ImVec2 c(origin.x + avail.x / 2, origin.y + side / 2);
     float R = side * 0.36f, nodeR = std::max(12.f, side * 0.1f);
+    // The states sit on an ellipse as wide as the panel: in a short panel a circle would put the
+    // names on top of one another, and names are wider than they are tall.
+    float widest = 0;
+    for (Action a : kNodes) widest = std::max(widest, ImGui::CalcTextSize(actionName(a)).x);
+    const float lineH = ImGui::GetTextLineHeight();
+    const float Rx = std::max(R, avail.x / 2 - widest / 2 - 2);
+    const float Ry = std::max(R, lineH * 1.05f);  // the side names clear the top and bottom ones
+    side = std::max(side, 2 * Ry + lineH + 2);
+    c.y = origin.y + side / 2;
     ImVec2 pos[kNodeCount];
     for (int i = 0; i < kNodeCount; ++i) {
         float a = float(-M_PI / 2 + 2 * M_PI * i / kNodeCount);
-        pos[i] = ImVec2(c.x + R * std::cos(a), c.y + R * std::sin(a));
+        pos[i] = ImVec2(c.x + Rx * std::cos(a), c.y + Ry * std::sin(a));
     }
     // Every transition between two states that occurs in the run, with its count.
     const Model::Transitions& counts = m.transitions();

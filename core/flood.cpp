@@ -35,6 +35,7 @@
 
 #include "machine.h"
 #include "predicates.h"
+#include "spill_walk.h"
 #include "work.h"
 
 namespace flood {
@@ -401,81 +402,19 @@ private:
         e.top = nodes_[t].v;
         e.jumpTarget = nodes_[other].v;
         e.gorgePushed = pushGorge(left_, right_, water_, true, nodes_[t].v);
-        bool goPrev = side == Side::Left;
-        NodeId x = goPrev ? prev(t) : next(t);
-        // `drops` counts sags the water fell from whose landing is not settled yet: a sag
-        // followed by a ceiling roofs the basin below it (the next bottom is its floor); a
-        // sag followed by a top is matched by the bottom of the pocket beyond that top.
-        // Stretches already walked are crossed in one step (stretches.h), so walks from the
-        // tops along a spiral arm do not retrace the arm.
-        int64_t drops = 0;
-        const int dir = goPrev ? 0 : 1;
-        const std::vector<Stretches::Position>& pos = walked_.positions;
-        size_t run = pos.size();  // first position of the stretch this walk records
-        for (uint32_t guard = 0; guard <= partNodes_; ++guard, x = goPrev ? prev(x) : next(x)) {
-            ++work().nodeVisits;
-            Node& nd = nodes_[x];
-            uint32_t g = goPrev ? nd.gorgeRight : nd.gorgeLeft;
-            if (g != kNoGorge && !gorges_[g].done && !gorges_[g].held) {
-                walked_.close(run);
-                e.gorgePopped = g;
-                resumeGorge(g);
-                return emit(e);
-            }
-            if (nd.gorgeLeft != kNoGorge || nd.gorgeRight != kNoGorge || x == t) break;
-            // Only extremes matter to the walk; the orientation test is spent on them alone
-            // (and on every maximum of a stretch being recorded: a later walk may need it).
-            const uint32_t at = walked_.recordedAt(dir, x);
-            const bool fresh = at == kNone && !nd.wet;
-            bool minimum = isMinimum(x);
-            bool maximum = !minimum && lower(prev(x), x) && lower(next(x), x);
-            bool convexHere =
-                (minimum || (maximum && (drops > 0 || fresh))) && turn(prev(x), x, next(x)) > 0;
-            bool sag = minimum && !convexHere, sensitive = convexHere;  // ceilings and bottoms
-            if (fresh) {
-                int32_t before = pos.size() > run ? pos.back().drops + pos.back().delta : 0;
-                int8_t delta = sag ? 1 : sensitive ? -1 : 0;
-                walked_.record(dir,
-                               {x, uint32_t(walked_.stretches.size()), before, delta, sensitive},
-                               nodes_.end());
-            } else {
-                walked_.close(run);
-            }
-            if (sag) {
-                ++drops;
-            } else if (sensitive && drops > 0) {
-                --drops;  // a bottom beyond a top, or a ceiling roofing the basin under the last sag
-            } else if (minimum && sensitive && !nd.wet) {
-                walked_.close(run);
-                mark(e, Test::WalkLanded, true);
-                e.bottom = nd.v;
-                startGorge(x);
-                return emit(e);
-            }
-            if (!fresh && at != kNone && !nd.wet) {
-                // Cross the stretch beyond x in one step, up to the node before the first one
-                // that got wet since (its links may have changed) and before the first bottom
-                // or ceiling the count would reach at zero (it may be the landing): none of
-                // the nodes crossed can end the walk, and the count changes by their sum. The
-                // stretch's tree finds whichever comes first (a wet node holds INT32_MIN).
-                const Stretches::Stretch& rec = walked_.stretches[pos[at].stretch];
-                const uint32_t a = at + 1;
-                if (a < rec.end) {
-                    uint32_t f =
-                        walked_.firstAtMost(rec, a - rec.start, int64_t(pos[a].drops) - drops) +
-                        rec.start;
-                    // One past the last node crossed: a wet node (or the stretch's end) is not
-                    // reached, nor the node before it; a zero-count node is reached live.
-                    uint32_t b = f == rec.end || nodes_[pos[f].node].wet ? f - 1 : f;
-                    if (b > a && guard + (b - a) <= partNodes_) {
-                        drops += pos[b].drops - pos[a].drops;
-                        guard += b - a;
-                        x = pos[b - 1].node;
-                    }
-                }
-            }
+        const Landing land =
+            walkDown(heights_, gorges_, walked_, t, side == Side::Left, partNodes_);
+        if (land.gorge != kNoGorge) {
+            e.gorgePopped = land.gorge;
+            resumeGorge(land.gorge);
+            return emit(e);
         }
-        walked_.close(run);
+        if (land.bottom != kNil) {
+            mark(e, Test::WalkLanded, true);
+            e.bottom = nodes_[land.bottom].v;
+            startGorge(land.bottom);
+            return emit(e);
+        }
         // The walk cannot tell where a drip from a sag lands when the basin below it is
         // bounded by another part of the boundary (a spiral, say). Any gorge not flooded
         // yet will do: flooding it reaches this top from its far side in time.

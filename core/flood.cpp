@@ -23,13 +23,14 @@
 // state (§6) instead of producing a wrong triangle.
 //
 // Sections (search for "[SECTION]"):
-//   predicates on nodes     lower(): the paper's below as a total order on nodes; sag ranks
+//   predicates on nodes     lower(): the paper's below as a total order on nodes (heights.h)
 //   a part                  set-up (loops.h builds the loops), the run, the left-behind check
 //   events                  begin/emit; forbid() (narrate.cpp words the diagnostic)
-//   the decision tree       step(): Fig. 9; the sag search (sag_index.h, sag_banks.h)
-//   the five actions        Raise, Bridge, Spill (its walks remembered: stretches.h), Jump, Fill
-//   the to-do list          pending gorges, dry bottoms; a gorge retired in retireGorge()
-//   the machine's memory    the buffers lent from run to run; then the entry points
+//   the decision tree       step(): Fig. 9; the sag search (sag_search.h)
+//   the five actions        Raise, Bridge, Spill (its walk: spill_walk.h), Jump, Fill
+//   the to-do list          pending gorges, dry bottoms (dry_bottoms.h); retireGorge()
+//   the machine's memory    the buffers lent from run to run (machine.h); the entry points
+//                           are in triangulate.cpp
 #include <cmath>
 #include <cstdint>
 

@@ -23,70 +23,36 @@
 // state (§6) instead of producing a wrong triangle.
 //
 // Sections (search for "[SECTION]"):
-//   predicates on nodes     lower(): the paper's below as a total order on nodes; sag ranks
+//   predicates on nodes     lower(): the paper's below as a total order on nodes (heights.h)
 //   a part                  set-up (loops.h builds the loops), the run, the left-behind check
 //   events                  begin/emit; forbid() (narrate.cpp words the diagnostic)
-//   the decision tree       step(): Fig. 9; the sag search (sag_index.h, sag_banks.h)
-//   the five actions        Raise, Bridge, Spill (its walks remembered: stretches.h), Jump, Fill
-//   the to-do list          pending gorges, dry bottoms; a gorge retired in retireGorge()
-//   the machine's memory    the buffers lent from run to run; then the entry points
-#include "flood.h"
-
-#include <algorithm>
+//   the decision tree       step(): Fig. 9; the sag search (sag_search.h)
+//   the five actions        Raise, Bridge, Spill (its walk: spill_walk.h), Jump, Fill
+//   the to-do list          pending gorges, dry bottoms (dry_bottoms.h); retireGorge()
+//   the machine's memory    the buffers lent from run to run (machine.h); the entry points
+//                           are in triangulate.cpp
 #include <cmath>
 #include <cstdint>
-#include <numeric>
 
-#include "loops.h"
+#include "machine.h"
 #include "predicates.h"
-#include "ring_area.h"
-#include "sag_banks.h"
-#include "sag_index.h"
-#include "stretches.h"
+#include "spill_walk.h"
 #include "work.h"
 
 namespace flood {
 namespace {
 
-struct GorgeRec {
-    NodeId left, right, water;
-    bool held = false;  // held at a top (Spill) rather than pending (Bridge)
-    bool done = false;
-    Index top = kNone;
-};
-
-// Exact coordinate permutation making an axis direction +y (a rotation: keeps orientation).
-// Only for the axes: off them heights are compared exactly along the direction (heightRank_).
-Point toUp(Point p, Up up) {
-    if (up.x == 0) return up.y > 0 ? p : Point{-p.x, -p.y};
-    return up.x > 0 ? Point{-p.y, p.x} : Point{p.y, -p.x};
-}
-
 class Machine {
 public:
-    struct Buffers;
-    // The run's result goes to `out` (its triangles' capacity reused). `keep`, if given, lends
-    // the machine its buffers, so that a run on an input no larger than the last one
-    // allocates nothing.
     Machine(const Polygon& poly, Listener* listener, const Options& opt, FloodResult& out,
-            Buffers* keep)
+            MachineBuffers* keep)
         : poly_(poly),
           listener_(listener),
-          own_(keep ? nullptr : new Buffers),
+          own_(keep ? nullptr : new MachineBuffers),
           b_(keep ? *keep : *own_),
           up_(opt.up),
-          general_(!opt.up.axis()),
-          result_(out) {
-        if (general_ ||
-            (opt.up.x == 0 && opt.up.y > 0)) {  // heights are the input's or ranks: no copy
-            pts_ = poly.vertices.data();
-            return;
-        }
-        rotated_.clear();
-        rotated_.reserve(poly.vertices.size());
-        for (Point p : poly.vertices) rotated_.push_back(toUp(p, opt.up));
-        pts_ = rotated_.data();
-    }
+          heights_(poly, opt.up, b_.nodes, b_.rotated),
+          result_(out) {}
 
     Machine(const Machine&) = delete;
     Machine& operator=(const Machine&) = delete;
@@ -102,7 +68,7 @@ public:
                                       ") is not a direction: it must be a nonzero finite vector"};
             return;
         }
-        if (general_) rankHeights();
+        if (heights_.general()) heights_.rank();
         nodes_.reserve(poly_.vertices.size() * 3 / 2 + 16);  // bridges add two nodes per sag
         result_.triangles.reserve(poly_.vertices.size() + 2 * poly_.rings.size());
         for (uint32_t part = 0; part < poly_.parts.size() && ok(); ++part) floodPart(part);
@@ -111,76 +77,8 @@ public:
 
 private:
     // ---- [SECTION] predicates on nodes -------------------------------------------------
-    Point P(NodeId n) const { return pts_[nodes_[n].v]; }
-    // The paper's below, made a strict total order on nodes: coincident vertices (rings
-    // touching at a point, bridge copies) are ordered by vertex index, then node id.
-    bool lower(NodeId a, NodeId b) const {
-        if (general_) {
-            const Index va = nodes_[a].v, vb = nodes_[b].v;
-            return va != vb ? heightRank_[va] < heightRank_[vb] : a < b;
-        }
-        Point pa = P(a), pb = P(b);
-        if (pa.y != pb.y) return pa.y < pb.y;
-        if (pa.x != pb.x) return pa.x < pb.x;
-        if (nodes_[a].v != nodes_[b].v) return nodes_[a].v < nodes_[b].v;
-        return a < b;
-    }
-    // The same order as lower(), as a value (sag_index.h): what the sorted sag list is searched
-    // with.
-    HeightKey key(NodeId n) const {
-        if (general_) return {double(heightRank_[nodes_[n].v]), 0, nodes_[n].v, n};
-        return {P(n).y, P(n).x, nodes_[n].v, n};
-    }
-    // Off the axes no coordinate is a height: the vertices are sorted once by the exact
-    // comparison along the direction (ties along its perpendicular, then by index, as lower())
-    // and compared by rank from then on. Non-finite vertices go last (floodPart refuses them).
-    void rankHeights() {
-        std::vector<Index> order(poly_.vertices.size());
-        std::iota(order.begin(), order.end(), Index(0));
-        auto finite = [&](Index v) { return std::isfinite(pts_[v].x) && std::isfinite(pts_[v].y); };
-        std::sort(order.begin(), order.end(), [&](Index a, Index b) {
-            const bool fa = finite(a), fb = finite(b);
-            if (fa != fb || !fa) return fa != fb ? fa : a < b;
-            int h = heightSign(up_, pts_[a], pts_[b]);
-            if (h == 0) h = acrossSign(up_, pts_[a], pts_[b]);
-            return h != 0 ? h > 0 : a < b;
-        });
-        heightRank_.resize(order.size());
-        for (size_t k = 0; k < order.size(); ++k) heightRank_[order[k]] = uint32_t(k);
-        work().nodeVisits += order.size();
-    }
-    // Sorts nodes by lower(), comparing contiguous keys rather than chasing node -> vertex
-    // -> point on every comparison; `keys` gets the sorted keys.
-    void sortByHeight(std::vector<NodeId>& ns, std::vector<HeightKey>& keys) const {
-        keys.resize(ns.size());
-        for (size_t i = 0; i < ns.size(); ++i) keys[i] = key(ns[i]);
-        std::sort(keys.begin(), keys.end());
-        for (size_t i = 0; i < ns.size(); ++i) ns[i] = keys[i].node;
-    }
-    // Number of sags strictly below node n, by binary search on the contiguous height keys,
-    // remembered per node: the water is usually the previous step's Next.
-    uint32_t sagsBelow(NodeId n) {
-        if (n - partFirstNode_ >= sagsBelow_.size())
-            sagsBelow_.resize(nodes_.end() - partFirstNode_, kNone);
-        uint32_t& r = sagsBelow_[n - partFirstNode_];
-        if (r == kNone) r = sagHeights_.below(key(n));
-        return r;
-    }
-    // The sags' points for the plane index, and their heights for the ranks.
-    void indexSags() {
-        const size_t count = sags_.size();
-        std::vector<Point>& pointOfRank = b_.pointOfRank;
-        pointOfRank.resize(count);
-        for (size_t k = 0; k < count; ++k) pointOfRank[k] = P(sags_[k]);
-        sagIndex_.build(pointOfRank);
-        sagHeights_.index();
-        unusedSags_ = uint32_t(count);
-        // Indexed from the part's first node: per-part work stays proportional to the part.
-        sagsBelow_.assign(nodes_.end() - partFirstNode_, kNone);
-        work().nodeVisits += sagsBelow_.size();
-        for (size_t k = 0; k < count; ++k)
-            sagsBelow_[sags_[k] - partFirstNode_] = uint32_t(k);  // a sag's rank
-    }
+    Point P(NodeId n) const { return heights_.at(n); }
+    bool lower(NodeId a, NodeId b) const { return heights_.lower(a, b); }
     int turn(NodeId a, NodeId b, NodeId c) const { return orient(P(a), P(b), P(c)); }
     NodeId prev(NodeId n) const { return nodes_[n].prev; }
     NodeId next(NodeId n) const { return nodes_[n].next; }
@@ -222,7 +120,8 @@ private:
         partNodes_ = 0;
         partFirstNode_ = nodes_.end();
         for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
-            if (!std::isfinite(pts_[v].x) || !std::isfinite(pts_[v].y)) {
+            const Point p = heights_.points()[v];
+            if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
                 Event f = begin(Action::Forbidden);
                 forbid(f, Forbidden::NotFinite, kNil, kNil, v);
                 return kNil;
@@ -241,7 +140,8 @@ private:
         std::vector<NodeId>& points = b_.points;              // one-node loops: Steiner points
         partVertices.clear();
         points.clear();
-        const PartLoops loops = buildLoops(poly_, pts_, pa, nodes_, partVertices, points, b_.loops);
+        const PartLoops loops =
+            buildLoops(poly_, heights_.points(), pa, nodes_, partVertices, points, b_.loops);
         partNodes_ = nodes_.end() - partFirstNode_;
         findSags(partVertices, points, loops.touching);
         gorges_.clear();
@@ -256,28 +156,27 @@ private:
     }
 
     // The sags of the part, sorted by height (§4), and its bottoms, both taken from its minima
-    // (kept in bottoms_ until the bottoms are sorted out of them: no node is classified twice).
+    // (kept in the bottoms' list until the bottoms are sorted out of them: no node is
+    // classified twice).
     void findSags(const std::vector<NodeId>& partVertices, const std::vector<NodeId>& points,
                   bool touching) {
-        sags_.clear();
-        bottoms_.clear();
+        std::vector<NodeId>& sags = sags_.sags();
+        std::vector<NodeId>& bottoms = bottoms_.reset();
+        sags.clear();
         for (NodeId n : partVertices)
-            if (isMinimum(n)) bottoms_.push_back(n);
-        for (NodeId n : bottoms_)
-            if (turn(prev(n), n, next(n)) <= 0) sags_.push_back(n);
+            if (isMinimum(n)) bottoms.push_back(n);
+        for (NodeId n : bottoms)
+            if (turn(prev(n), n, next(n)) <= 0) sags.push_back(n);
         // A point hole is a hole whose lowest vertex is its only one: a sag.
-        sags_.insert(sags_.end(), points.begin(), points.end());
-        sortByHeight(sags_, sagHeights_.keys());
-        indexSags();
-        prepareBanks(touching);
+        sags.insert(sags.end(), points.begin(), points.end());
+        sags_.index(heights_, partFirstNode_, poly_.rings[poly_.parts[part_].firstRing].first,
+                    touching);
         // The bottoms, lowest first: every one of them starts a gorge unless the water
-        // reaches it first. They are the to-do list of last resort (see lowestDryBottom()).
-        size_t bottoms = 0;
-        for (NodeId n : bottoms_)
-            if (turn(prev(n), n, next(n)) > 0) bottoms_[bottoms++] = n;
-        bottoms_.resize(bottoms);
-        bottomCursor_ = 0;
-        bottomScans_ = 0;  // sorted only if the fallback is asked often (takeNextGorge())
+        // reaches it first. They are the to-do list of last resort (dry_bottoms.h).
+        size_t kept = 0;
+        for (NodeId n : bottoms)
+            if (turn(prev(n), n, next(n)) > 0) bottoms[kept++] = n;
+        bottoms.resize(kept);
         walked_.clear(partFirstNode_);
     }
 
@@ -380,126 +279,9 @@ private:
     }
 
     // The lowest unused sag above the water and below Next inside the quadrangle
-    // Left, Right, NextRight, NextLeft (§4, §5). Sags are sorted, so the scan starts at the
-    // water level and stops at Next.
+    // Left, Right, NextRight, NextLeft (§4, §5): sag_search.h.
     NodeId findSag(NodeId nx, Event& e) {
-        WorkCounters& w = work();
-        const uint64_t before = w.nodeVisits + w.sagTests + w.orientCalls;  // not all ten counters
-        NodeId s = searchSag(nx, e);
-        w.sagSearch += w.nodeVisits + w.sagTests + w.orientCalls - before;
-        return s;
-    }
-    NodeId searchSag(NodeId nx, Event& e) {
-        if (unusedSags_ == 0)
-            return kNil;  // every sag bridged already (or none): no bracket to search
-        // Ranks bracketing the water and Next: the number of sags below each.
-        int64_t lo = int64_t(sagsBelow(water_)) - 1;
-        if (lo + 1 < int64_t(sags_.size()) && sags_[size_t(lo + 1)] == water_)
-            ++lo;  // the water is itself a sag
-        int64_t hi = sagsBelow(nx);
-        if (hi <= lo + 1) return kNil;
-        Point l = P(left_), r = P(right_), nl = P(prev(left_)), nr = P(next(right_));
-        // Where such a sag can be: the quadrangle's box, the water's height band, and the
-        // interior side of both banks (left of NextLeft->Left and of Right->NextRight).
-        SagIndex::Region region;
-        region.xMin = std::min(std::min(l.x, r.x), std::min(nl.x, nr.x));
-        region.xMax = std::max(std::max(l.x, r.x), std::max(nl.x, nr.x));
-        if (general_) {  // no coordinate is a height: the quadrangle's box bounds y too
-            region.yMin = std::min(std::min(l.y, r.y), std::min(nl.y, nr.y));
-            region.yMax = std::max(std::max(l.y, r.y), std::max(nl.y, nr.y));
-        } else {
-            region.yMin = P(water_).y;
-            region.yMax = P(nx).y;
-        }
-        region.lines[0][0] = nl, region.lines[0][1] = l;
-        region.lines[1][0] = r, region.lines[1][1] = nr;
-        region.lineCount = 2;
-        auto test = [&](uint32_t rank) {
-            ++e.sagTests;
-            ++work().sagTests;
-            return inside(sagIndex_.point(rank), l, r, nr, nl);
-        };
-        if (!banksTried_ && treeWork_ > partNodes_ / 2) buildBanks();
-        if (banks_.built()) {
-            // The lowest such sag sees a bank that is an input edge across open water: it is
-            // the first unused sag of the bank's list in the bracket (ALGORITHM.md §4). The
-            // exact test confirms it; were it refused, the plane index below decides.
-            int64_t k = bankCandidate(lo, hi);
-            if (k == -1) return kNil;
-            if (k >= 0 && test(uint32_t(k))) {
-                return useSag(k);
-            }
-        }
-        // The next few ranks first, in order: in a wide gorge (a strip under a row of holes)
-        // the lowest sag is usually the next one up, which the tree would reach only after
-        // visiting every box whose rank range begins below it.
-        int64_t k = -1;
-        for (int64_t end = std::min(hi, lo + 1 + kProbes); lo + 1 < end && k < 0;) {
-            const uint32_t rank = uint32_t(++lo);
-            ++work().nodeVisits;
-            const Point s = sagIndex_.point(rank);
-            if (!sagIndex_.used(rank) && s.x >= region.xMin && s.x <= region.xMax && test(rank))
-                k = rank;
-        }
-        if (k < 0) {
-            const uint64_t before = work().nodeVisits;
-            k = sagIndex_.lowest(lo, hi, region, test);
-            treeWork_ += work().nodeVisits - before;
-        }
-        if (k < 0) return kNil;
-        return useSag(k);
-    }
-    NodeId useSag(int64_t rank) {
-        sagIndex_.markUsed(uint32_t(rank));
-        --unusedSags_;
-        return sags_[size_t(rank)];
-    }
-
-    static constexpr int64_t kProbes = 4;  // ranks findSag tests before the sag tree
-
-    // The bank lists (core/sag_banks.h) are built once the plane index has visited more than
-    // half a box per node of the part: a part whose gorges it prunes well never pays the sweep.
-    // Labels are only sound on loops whose edges are the input's and meet only at their
-    // ends; where points are shared (touching rings, T-junctions) the plane index alone is
-    // used. The initial links are kept for the sweep, which may run after edits. Off the axes
-    // the sweep runs along the direction itself (its rays are the lines across it).
-    void prepareBanks(bool touching) {
-        banks_.clear();
-        banksTried_ = touching || sags_.empty();
-        treeWork_ = 0;
-        partFirstVertex_ = poly_.rings[poly_.parts[part_].firstRing].first;
-        initialNodes_ = partNodes_;
-        initialNext_.clear();
-        if (banksTried_) return;
-        initialNext_.resize(initialNodes_);
-        for (uint32_t i = 0; i < initialNodes_; ++i)
-            initialNext_[i] = next(partFirstNode_ + i) - partFirstNode_;
-    }
-    void buildBanks() {
-        banksTried_ = true;
-        std::vector<Point> point(initialNodes_);
-        for (uint32_t i = 0; i < initialNodes_; ++i) point[i] = P(partFirstNode_ + i);
-        std::vector<uint32_t> sagOfRank(sags_.size());
-        for (size_t k = 0; k < sags_.size(); ++k) sagOfRank[k] = sags_[k] - partFirstNode_;
-        if (!banks_.build(point, initialNext_, sagOfRank, general_ ? up_ : Up::PlusY))
-            banks_.clear();  // crossing edges
-    }
-    // The input edge from node a to node b, as its tail's initial node; kNone when a -> b
-    // is not an input edge (a diagonal). Without shared points a vertex has one initial node.
-    uint32_t inputEdge(NodeId a, NodeId b) const {
-        uint32_t t = nodes_[a].v - partFirstVertex_;
-        if (t >= initialNodes_ || initialNext_[t] + partFirstVertex_ != nodes_[b].v) return kNone;
-        return t;
-    }
-    // The bank lists' answer for the active gorge: a rank, -1 for no sag, -2 when neither
-    // bank is an input edge.
-    int64_t bankCandidate(int64_t lo, int64_t hi) const {
-        auto used = [&](uint32_t rank) { return sagIndex_.used(rank); };
-        uint32_t t = inputEdge(prev(left_), left_);
-        if (t != kNone) return banks_.lowest(true, t, lo, hi, used);
-        t = inputEdge(right_, next(right_));
-        if (t != kNone) return banks_.lowest(false, t, lo, hi, used);
-        return -2;
+        return sags_.find(left_, right_, water_, nx, partNodes_, e);
     }
 
     // ---- [SECTION] the five actions ----------------------------------------------------------
@@ -621,81 +403,19 @@ private:
         e.top = nodes_[t].v;
         e.jumpTarget = nodes_[other].v;
         e.gorgePushed = pushGorge(left_, right_, water_, true, nodes_[t].v);
-        bool goPrev = side == Side::Left;
-        NodeId x = goPrev ? prev(t) : next(t);
-        // `drops` counts sags the water fell from whose landing is not settled yet: a sag
-        // followed by a ceiling roofs the basin below it (the next bottom is its floor); a
-        // sag followed by a top is matched by the bottom of the pocket beyond that top.
-        // Stretches already walked are crossed in one step (stretches.h), so walks from the
-        // tops along a spiral arm do not retrace the arm.
-        int64_t drops = 0;
-        const int dir = goPrev ? 0 : 1;
-        const std::vector<Stretches::Position>& pos = walked_.positions;
-        size_t run = pos.size();  // first position of the stretch this walk records
-        for (uint32_t guard = 0; guard <= partNodes_; ++guard, x = goPrev ? prev(x) : next(x)) {
-            ++work().nodeVisits;
-            Node& nd = nodes_[x];
-            uint32_t g = goPrev ? nd.gorgeRight : nd.gorgeLeft;
-            if (g != kNoGorge && !gorges_[g].done && !gorges_[g].held) {
-                walked_.close(run);
-                e.gorgePopped = g;
-                resumeGorge(g);
-                return emit(e);
-            }
-            if (nd.gorgeLeft != kNoGorge || nd.gorgeRight != kNoGorge || x == t) break;
-            // Only extremes matter to the walk; the orientation test is spent on them alone
-            // (and on every maximum of a stretch being recorded: a later walk may need it).
-            const uint32_t at = walked_.recordedAt(dir, x);
-            const bool fresh = at == kNone && !nd.wet;
-            bool minimum = isMinimum(x);
-            bool maximum = !minimum && lower(prev(x), x) && lower(next(x), x);
-            bool convexHere =
-                (minimum || (maximum && (drops > 0 || fresh))) && turn(prev(x), x, next(x)) > 0;
-            bool sag = minimum && !convexHere, sensitive = convexHere;  // ceilings and bottoms
-            if (fresh) {
-                int32_t before = pos.size() > run ? pos.back().drops + pos.back().delta : 0;
-                int8_t delta = sag ? 1 : sensitive ? -1 : 0;
-                walked_.record(dir,
-                               {x, uint32_t(walked_.stretches.size()), before, delta, sensitive},
-                               nodes_.end());
-            } else {
-                walked_.close(run);
-            }
-            if (sag) {
-                ++drops;
-            } else if (sensitive && drops > 0) {
-                --drops;  // a bottom beyond a top, or a ceiling roofing the basin under the last sag
-            } else if (minimum && sensitive && !nd.wet) {
-                walked_.close(run);
-                mark(e, Test::WalkLanded, true);
-                e.bottom = nd.v;
-                startGorge(x);
-                return emit(e);
-            }
-            if (!fresh && at != kNone && !nd.wet) {
-                // Cross the stretch beyond x in one step, up to the node before the first one
-                // that got wet since (its links may have changed) and before the first bottom
-                // or ceiling the count would reach at zero (it may be the landing): none of
-                // the nodes crossed can end the walk, and the count changes by their sum. The
-                // stretch's tree finds whichever comes first (a wet node holds INT32_MIN).
-                const Stretches::Stretch& rec = walked_.stretches[pos[at].stretch];
-                const uint32_t a = at + 1;
-                if (a < rec.end) {
-                    uint32_t f =
-                        walked_.firstAtMost(rec, a - rec.start, int64_t(pos[a].drops) - drops) +
-                        rec.start;
-                    // One past the last node crossed: a wet node (or the stretch's end) is not
-                    // reached, nor the node before it; a zero-count node is reached live.
-                    uint32_t b = f == rec.end || nodes_[pos[f].node].wet ? f - 1 : f;
-                    if (b > a && guard + (b - a) <= partNodes_) {
-                        drops += pos[b].drops - pos[a].drops;
-                        guard += b - a;
-                        x = pos[b - 1].node;
-                    }
-                }
-            }
+        const Landing land =
+            walkDown(heights_, gorges_, walked_, t, side == Side::Left, partNodes_);
+        if (land.gorge != kNoGorge) {
+            e.gorgePopped = land.gorge;
+            resumeGorge(land.gorge);
+            return emit(e);
         }
-        walked_.close(run);
+        if (land.bottom != kNil) {
+            mark(e, Test::WalkLanded, true);
+            e.bottom = nodes_[land.bottom].v;
+            startGorge(land.bottom);
+            return emit(e);
+        }
         // The walk cannot tell where a drip from a sag lands when the basin below it is
         // bounded by another part of the boundary (a spiral, say). Any gorge not flooded
         // yet will do: flooding it reaches this top from its far side in time.
@@ -760,39 +480,11 @@ private:
             resumeGorge(g);
             return true;
         }
-        NodeId b = lowestDryBottom();
+        NodeId b = bottoms_.lowest(heights_);
         if (b == kNil) return false;
         e.bottom = nodes_[b].v;
         startGorge(b);
         return true;
-    }
-
-    // The lowest bottom the water has not reached (kNil if none). Most runs ask a few times
-    // (the last time to learn there is none), so the first asks scan the list, dropping the
-    // bottoms reached since (they stay reached); after kBottomScans the list is sorted once
-    // and a cursor walks it, as the paper's sorted list would.
-    static constexpr uint32_t kBottomScans = 4;
-    NodeId lowestDryBottom() {
-        if (bottomScans_ < kBottomScans) {
-            ++bottomScans_;
-            NodeId best = kNil;
-            size_t kept = 0;
-            work().nodeVisits += bottoms_.size();
-            for (NodeId b : bottoms_) {
-                if (nodes_[b].wet || !nodes_[b].alive) continue;
-                bottoms_[kept++] = b;
-                if (best == kNil || lower(b, best)) best = b;
-            }
-            bottoms_.resize(kept);
-            if (bottomScans_ == kBottomScans) sortByHeight(bottoms_, bottomKeys_);
-            return best;
-        }
-        for (; bottomCursor_ < bottoms_.size(); ++bottomCursor_) {
-            ++work().nodeVisits;
-            NodeId b = bottoms_[bottomCursor_];
-            if (!nodes_[b].wet && nodes_[b].alive) return b;
-        }
-        return kNil;
     }
 
     void startGorge(NodeId bottom) {
@@ -828,95 +520,29 @@ private:
     }
 
     // ---- [SECTION] the machine's memory -----------------------------------------------------
-public:
-    // What the machine allocates, lent by a Triangulator (or the thread, for small inputs)
-    // from run to run; the members below of the same names refer to them.
-    struct Buffers {
-        std::vector<Point> rotated, pointOfRank;
-        Nodes nodes;
-        std::vector<NodeId> sags, partVertices, points, bottoms;
-        std::vector<uint32_t> initialNext, sagsBelow, todo;
-        SagIndex sagIndex;
-        SagBanks banks;
-        SagHeights sagHeights;
-        std::vector<HeightKey> bottomKeys;
-        std::vector<GorgeRec> gorges;
-        Stretches walked;
-        LoopScratch loops;
-    };
-
-private:
     const Polygon& poly_;
     Listener* listener_;
-    std::unique_ptr<Buffers> own_;  // when none are lent
-    Buffers& b_;                    // the buffers of this run: lent, or own_
-    std::vector<Point>& rotated_ =
-        b_.rotated;                     // the vertices turned so that the chosen vertical is +y
-    const Point* pts_ = nullptr;        // the vertices as the machine sees them (rotated_ or input)
-    const Up up_;                       // the chosen vertical
-    const bool general_;                // off the axes: heights are heightRank_, never coordinates
-    std::vector<uint32_t> heightRank_;  // per vertex, off the axes: its rank by height along up_
+    std::unique_ptr<MachineBuffers> own_;  // when none are lent
+    MachineBuffers& b_;                    // the buffers of this run: lent, or own_
+    const Up up_;                          // the chosen vertical
+    Heights heights_;                      // the vertices as the machine sees them, and below
     Nodes& nodes_ = b_.nodes;
-    std::vector<NodeId>& sags_ = b_.sags;
-    SagIndex& sagIndex_ = b_.sagIndex;  // the sags by height rank, searchable by x
-    SagBanks& banks_ = b_.banks;  // the sags each input edge sees, once the plane index is costly
-    bool banksTried_ = false;
-    uint64_t treeWork_ = 0;  // box visits of the plane index in this part
-    uint32_t partFirstVertex_ = 0, initialNodes_ = 0;
-    std::vector<uint32_t>& initialNext_ =
-        b_.initialNext;                       // per initial node of the part (local ids): next
-    SagHeights& sagHeights_ = b_.sagHeights;  // the sags' heights by rank (sag_index.h)
-    std::vector<HeightKey>& bottomKeys_ = b_.bottomKeys;  // scratch for sorting the bottoms
-    std::vector<uint32_t>& sagsBelow_ =
-        b_.sagsBelow;  // per node of the part (from partFirstNode_): sags below it, kNone until asked
-    std::vector<NodeId>& bottoms_ =
-        b_.bottoms;  // bottoms; lowest first once sorted (lowestDryBottom())
-    size_t bottomCursor_ = 0;
-    uint32_t bottomScans_ = 0;
+    SagSearch& sags_ = b_.sags;
+    DryBottoms& bottoms_ = b_.bottoms;
     std::vector<GorgeRec>& gorges_ = b_.gorges;
     Stretches& walked_ = b_.walked;          // spill walks remembered (stretches.h)
     std::vector<uint32_t>& todo_ = b_.todo;  // pending gorges (ids), last pushed first
     NodeId left_ = kNil, right_ = kNil, water_ = kNil, partFirstNode_ = NodeId(0);
     uint32_t part_ = 0, partNodes_ = 0, cut_ = 0, step_ = 0;
     uint64_t budget_ = 0;
-    uint32_t unusedSags_ = 0;  // sags of the part not bridged yet
     FloodResult& result_;
 };
 
 }  // namespace
 
-// Inputs up to this size reuse their thread's buffers: a program flooding many small polygons
-// allocates little more than each result, and a thread keeps at most ~1 MB after a big one.
-constexpr size_t kThreadBufferVertices = 4096;
-
-FloodResult triangulate(const Polygon& polygon, Listener* listener, const Options& options) {
-    thread_local Machine::Buffers buffers;
-    thread_local bool lent = false;  // a listener that triangulates too gets buffers of its own
-    struct Lending {
-        bool active;
-        ~Lending() {
-            if (active) lent = false;
-        }
-    } lending{!lent && polygon.vertices.size() <= kThreadBufferVertices};
-    if (lending.active) lent = true;
-    FloodResult result;
-    Machine(polygon, listener, options, result, lending.active ? &buffers : nullptr).run();
-    return result;
-}
-
-struct Triangulator::Workspace {
-    Machine::Buffers buffers;
-    FloodResult result;
-};
-Triangulator::Triangulator() : workspace_(new Workspace) {}
-Triangulator::~Triangulator() = default;
-Triangulator::Triangulator(Triangulator&&) noexcept = default;
-Triangulator& Triangulator::operator=(Triangulator&&) noexcept = default;
-const FloodResult& Triangulator::run(const Polygon& polygon, Listener* listener,
-                                     const Options& options) {
-    Workspace& w = *workspace_;
-    Machine(polygon, listener, options, w.result, &w.buffers).run();  // refills the last result
-    return w.result;
+void flood(const Polygon& poly, Listener* listener, const Options& options, FloodResult& out,
+           MachineBuffers* keep) {
+    Machine(poly, listener, options, out, keep).run();
 }
 
 }  // namespace flood

@@ -1,0 +1,168 @@
+// The sag search (sag_search.h).
+#include "sag_search.h"
+
+#include <algorithm>
+
+#include "predicates.h"
+#include "work.h"
+
+namespace flood {
+
+void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFirstVertex,
+                      bool touching) {
+    heights_ = &heights;
+    partFirstNode_ = partFirstNode;
+    const Nodes& nodes = heights.nodes();
+    heights.sort(sags_, heightsOf_.keys());
+    // The sags' points for the plane index, and their heights for the ranks.
+    const size_t count = sags_.size();
+    pointOfRank_.resize(count);
+    for (size_t k = 0; k < count; ++k) pointOfRank_[k] = heights.at(sags_[k]);
+    index_.build(pointOfRank_);
+    heightsOf_.index();
+    unused_ = uint32_t(count);
+    // Indexed from the part's first node: per-part work stays proportional to the part.
+    sagsBelow_.assign(nodes.end() - partFirstNode_, kNone);
+    work().nodeVisits += sagsBelow_.size();
+    for (size_t k = 0; k < count; ++k)
+        sagsBelow_[sags_[k] - partFirstNode_] = uint32_t(k);  // a sag's rank
+    // The bank lists are built once the plane index has visited more than half a box per
+    // node of the part: a part whose gorges it prunes well never pays the sweep. Labels are
+    // only sound on loops whose edges are the input's and meet only at their ends; where
+    // points are shared (touching rings, T-junctions) the plane index alone is used. The
+    // initial links are kept for the sweep, which may run after edits. Off the axes the
+    // sweep runs along the direction itself (its rays are the lines across it).
+    banks_.clear();
+    banksTried_ = touching || sags_.empty();
+    treeWork_ = 0;
+    partFirstVertex_ = partFirstVertex;
+    initialNodes_ = nodes.end() - partFirstNode_;
+    initialNext_.clear();
+    if (banksTried_) return;
+    initialNext_.resize(initialNodes_);
+    for (uint32_t i = 0; i < initialNodes_; ++i)
+        initialNext_[i] = nodes[partFirstNode_ + i].next - partFirstNode_;
+}
+
+NodeId SagSearch::find(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
+                       Event& e) {
+    WorkCounters& w = work();
+    const uint64_t before = w.nodeVisits + w.sagTests + w.orientCalls;  // not all ten counters
+    NodeId s = search(left, right, water, next, partNodes, e);
+    w.sagSearch += w.nodeVisits + w.sagTests + w.orientCalls - before;
+    return s;
+}
+
+// Number of sags strictly below node n, by binary search on the contiguous height keys,
+// remembered per node: the water is usually the previous step's Next.
+uint32_t SagSearch::sagsBelow(NodeId n) {
+    if (n - partFirstNode_ >= sagsBelow_.size())
+        sagsBelow_.resize(heights_->nodes().end() - partFirstNode_, kNone);
+    uint32_t& r = sagsBelow_[n - partFirstNode_];
+    if (r == kNone) r = heightsOf_.below(heights_->key(n));
+    return r;
+}
+
+// Sags are sorted, so the search starts at the water level and stops at Next.
+NodeId SagSearch::search(NodeId left, NodeId right, NodeId water, NodeId nx, uint32_t partNodes,
+                         Event& e) {
+    if (unused_ == 0) return kNil;  // every sag bridged already (or none): no bracket to search
+    const Heights& h = *heights_;
+    const Nodes& nodes = h.nodes();
+    // Ranks bracketing the water and Next: the number of sags below each.
+    int64_t lo = int64_t(sagsBelow(water)) - 1;
+    if (lo + 1 < int64_t(sags_.size()) && sags_[size_t(lo + 1)] == water)
+        ++lo;  // the water is itself a sag
+    int64_t hi = sagsBelow(nx);
+    if (hi <= lo + 1) return kNil;
+    Point l = h.at(left), r = h.at(right), nl = h.at(nodes[left].prev),
+          nr = h.at(nodes[right].next);
+    // Where such a sag can be: the quadrangle's box, the water's height band, and the
+    // interior side of both banks (left of NextLeft->Left and of Right->NextRight).
+    SagIndex::Region region;
+    region.xMin = std::min(std::min(l.x, r.x), std::min(nl.x, nr.x));
+    region.xMax = std::max(std::max(l.x, r.x), std::max(nl.x, nr.x));
+    if (h.general()) {  // no coordinate is a height: the quadrangle's box bounds y too
+        region.yMin = std::min(std::min(l.y, r.y), std::min(nl.y, nr.y));
+        region.yMax = std::max(std::max(l.y, r.y), std::max(nl.y, nr.y));
+    } else {
+        region.yMin = h.at(water).y;
+        region.yMax = h.at(nx).y;
+    }
+    region.lines[0][0] = nl, region.lines[0][1] = l;
+    region.lines[1][0] = r, region.lines[1][1] = nr;
+    region.lineCount = 2;
+    auto test = [&](uint32_t rank) {
+        ++e.sagTests;
+        ++work().sagTests;
+        return inside(index_.point(rank), l, r, nr, nl);
+    };
+    if (!banksTried_ && treeWork_ > partNodes / 2) buildBanks();
+    if (banks_.built()) {
+        // The lowest such sag sees a bank that is an input edge across open water: it is
+        // the first unused sag of the bank's list in the bracket (ALGORITHM.md §4). The
+        // exact test confirms it; were it refused, the plane index below decides.
+        int64_t k = bankCandidate(left, right, lo, hi);
+        if (k == -1) return kNil;
+        if (k >= 0 && test(uint32_t(k))) {
+            return use(k);
+        }
+    }
+    // The next few ranks first, in order: in a wide gorge (a strip under a row of holes)
+    // the lowest sag is usually the next one up, which the tree would reach only after
+    // visiting every box whose rank range begins below it.
+    int64_t k = -1;
+    for (int64_t end = std::min(hi, lo + 1 + kProbes); lo + 1 < end && k < 0;) {
+        const uint32_t rank = uint32_t(++lo);
+        ++work().nodeVisits;
+        const Point s = index_.point(rank);
+        if (!index_.used(rank) && s.x >= region.xMin && s.x <= region.xMax && test(rank)) k = rank;
+    }
+    if (k < 0) {
+        const uint64_t before = work().nodeVisits;
+        k = index_.lowest(lo, hi, region, test);
+        treeWork_ += work().nodeVisits - before;
+    }
+    if (k < 0) return kNil;
+    return use(k);
+}
+
+NodeId SagSearch::use(int64_t rank) {
+    index_.markUsed(uint32_t(rank));
+    --unused_;
+    return sags_[size_t(rank)];
+}
+
+void SagSearch::buildBanks() {
+    banksTried_ = true;
+    std::vector<Point> point(initialNodes_);
+    for (uint32_t i = 0; i < initialNodes_; ++i) point[i] = heights_->at(partFirstNode_ + i);
+    std::vector<uint32_t> sagOfRank(sags_.size());
+    for (size_t k = 0; k < sags_.size(); ++k) sagOfRank[k] = sags_[k] - partFirstNode_;
+    if (!banks_.build(point, initialNext_, sagOfRank,
+                      heights_->general() ? heights_->up() : Up::PlusY))
+        banks_.clear();  // crossing edges
+}
+
+// The input edge from node a to node b, as its tail's initial node; kNone when a -> b is not
+// an input edge (a diagonal). Without shared points a vertex has one initial node.
+uint32_t SagSearch::inputEdge(NodeId a, NodeId b) const {
+    const Nodes& nodes = heights_->nodes();
+    uint32_t t = nodes[a].v - partFirstVertex_;
+    if (t >= initialNodes_ || initialNext_[t] + partFirstVertex_ != nodes[b].v) return kNone;
+    return t;
+}
+
+// The bank lists' answer for the active gorge: a rank, -1 for no sag, -2 when neither bank is
+// an input edge.
+int64_t SagSearch::bankCandidate(NodeId left, NodeId right, int64_t lo, int64_t hi) const {
+    const Nodes& nodes = heights_->nodes();
+    auto used = [&](uint32_t rank) { return index_.used(rank); };
+    uint32_t t = inputEdge(nodes[left].prev, left);
+    if (t != kNone) return banks_.lowest(true, t, lo, hi, used);
+    t = inputEdge(right, nodes[right].next);
+    if (t != kNone) return banks_.lowest(false, t, lo, hi, used);
+    return -2;
+}
+
+}  // namespace flood

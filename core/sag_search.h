@@ -1,0 +1,54 @@
+// The sag search (§4, §5): the lowest unused sag above the water and below Next inside the
+// active gorge's quadrangle Left, Right, NextRight, NextLeft. The sorted sag list's ranks
+// (SagHeights) bracket the water and Next; the bank lists (sag_banks.h) answer in O(1) when a
+// bank is an input edge, else a few ranks are probed and the plane index (sag_index.h) decides.
+// Internal to core/, not a public API.
+#pragma once
+#include <cstdint>
+#include <vector>
+
+#include "events.h"
+#include "heights.h"
+#include "sag_banks.h"
+#include "sag_index.h"
+
+namespace flood {
+
+class SagSearch {
+public:
+    // The part's sags, filled by the machine before index().
+    std::vector<NodeId>& sags() { return sags_; }
+    // Sorts the part's sags by height and indexes them. The part's nodes run from
+    // `partFirstNode` to the last node, its vertices from `partFirstVertex`; `touching`:
+    // some loops share a point (the bank lists are then never built).
+    void index(const Heights& heights, NodeId partFirstNode, Index partFirstVertex, bool touching);
+    // The sag sought, now used; kNil if none. `partNodes`: the part's nodes so far.
+    NodeId find(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes, Event& e);
+
+private:
+    NodeId search(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
+                  Event& e);
+    uint32_t sagsBelow(NodeId n);
+    NodeId use(int64_t rank);
+    void buildBanks();
+    uint32_t inputEdge(NodeId a, NodeId b) const;
+    int64_t bankCandidate(NodeId left, NodeId right, int64_t lo, int64_t hi) const;
+
+    static constexpr int64_t kProbes = 4;  // ranks tested before the sag tree
+    const Heights* heights_ = nullptr;     // the run's, from index() on
+    std::vector<NodeId> sags_;             // by height rank
+    std::vector<Point> pointOfRank_;
+    SagIndex index_;        // the sags by height rank, searchable by x
+    SagHeights heightsOf_;  // the sags' heights by rank
+    // Per node of the part (from partFirstNode_): sags below it, kNone until asked.
+    std::vector<uint32_t> sagsBelow_;
+    SagBanks banks_;  // the sags each input edge sees, once the plane index is costly
+    bool banksTried_ = false;
+    uint64_t treeWork_ = 0;  // box visits of the plane index in this part
+    NodeId partFirstNode_ = NodeId(0);
+    uint32_t partFirstVertex_ = 0, initialNodes_ = 0;
+    std::vector<uint32_t> initialNext_;  // per initial node of the part (local ids): next
+    uint32_t unused_ = 0;                // sags of the part not bridged yet
+};
+
+}  // namespace flood

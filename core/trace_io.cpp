@@ -70,7 +70,7 @@ json writeFingerVertices(const Fingers& f) { return fingersJson(f); }
 json writeVertex(Index v) { return indexJson(v); }
 json writeGorgeId(uint32_t g) { return indexJson(g); }
 
-const Event kInitial;  // every field at its initial value
+const Event kInitial{};  // every field at its initial value
 
 // The fields the event's action uses (usesField()), less those at their initial value: the
 // reader restores them. The action is always written.

@@ -21,7 +21,7 @@ namespace {
 TEST(TraceFormat, RoundTripOnEveryFamily) {
     for (const std::string& family : familyNames()) {
         SCOPED_TRACE(family);
-        Trace t = record(generate(family, 3, 3000));
+        Trace t = record(generate(family, 3, 1000));
         Trace back = writtenAndRead(t);
         ASSERT_EQ(back.events.size(), t.events.size());
         for (size_t i = 0; i < t.events.size(); ++i)  // every field (FLOOD_EVENT_FIELDS)

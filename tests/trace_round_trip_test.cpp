@@ -26,7 +26,7 @@ TEST(TraceRoundTrip, EveryEventFieldComesBackAndIsExercised) {
         traces.push_back(record(generate(family, 1, 60)));
 
     std::map<std::string, size_t> changed;  // field -> events where it is not its initial value
-    const Event initial;
+    const Event initial{};
     for (const Trace& t : traces) {
         Trace back = writtenAndRead(t);
         ASSERT_EQ(back.events.size(), t.events.size());

@@ -298,33 +298,24 @@ private:
     // Raise: Next joins the chain; the wedge of chain nodes it sees is cut off (Fig. 2).
     void raise(Event& e, Side side) {
         uint32_t guard = partNodes_ + 2;  // a walk longer than the part means broken loops
-        if (side == Side::Left) {
-            NodeId nl = prev(left_), c = left_;
-            while (c != right_ && turn(nl, c, next(c)) > 0) {
-                if (guard-- == 0 || !nodes_[c].alive)
-                    return forbid(e, Forbidden::NoProgress, c, nl);
-                ++work().nodeVisits;
-                NodeId n = next(c);
-                cutTriangle(nl, c, n);
-                unlink(c);
-                c = n;
-            }
-            left_ = water_ = nl;
-            makeWet(nl);
-        } else {
-            NodeId nr = next(right_), c = right_;
-            while (c != left_ && turn(prev(c), c, nr) > 0) {
-                if (guard-- == 0 || !nodes_[c].alive)
-                    return forbid(e, Forbidden::NoProgress, c, nr);
-                ++work().nodeVisits;
-                NodeId p = prev(c);
-                cutTriangle(p, c, nr);
-                unlink(c);
-                c = p;
-            }
-            right_ = water_ = nr;
-            makeWet(nr);
+        // The two banks are mirror images: Next (`joining`) is off the chain beyond the acting
+        // end, and the walk goes along the chain towards the other end.
+        const bool left = side == Side::Left;
+        NodeId& end = left ? left_ : right_;
+        const NodeId other = left ? right_ : left_, joining = left ? prev(end) : next(end);
+        for (NodeId c = end; c != other;) {
+            const NodeId along = left ? next(c) : prev(c);
+            const NodeId a = left ? joining : along, b = left ? along : joining;  // loop order
+            if (turn(a, c, b) <= 0) break;
+            if (guard-- == 0 || !nodes_[c].alive)
+                return forbid(e, Forbidden::NoProgress, c, joining);
+            ++work().nodeVisits;
+            cutTriangle(a, c, b);
+            unlink(c);
+            c = along;
         }
+        end = water_ = joining;
+        makeWet(joining);
         emit(e);
     }
 

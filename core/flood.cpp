@@ -295,25 +295,33 @@ private:
         nodes_[n].alive = false;
     }
 
-    // Raise: Next joins the chain; the wedge of chain nodes it sees is cut off (Fig. 2).
-    void raise(Event& e, Side side) {
-        uint32_t guard = partNodes_ + 2;  // a walk longer than the part means broken loops
-        // The two banks are mirror images: Next (`joining`) is off the chain beyond the acting
-        // end, and the walk goes along the chain towards the other end.
-        const bool left = side == Side::Left;
-        NodeId& end = left ? left_ : right_;
-        const NodeId other = left ? right_ : left_, joining = left ? prev(end) : next(end);
-        for (NodeId c = end; c != other;) {
-            const NodeId along = left ? next(c) : prev(c);
-            const NodeId a = left ? joining : along, b = left ? along : joining;  // loop order
-            if (turn(a, c, b) <= 0) break;
-            if (guard-- == 0 || !nodes_[c].alive)
-                return forbid(e, Forbidden::NoProgress, c, joining);
+    // Cuts off the wedge of chain nodes that `apex` sees (a Raise, each half of a Bridge): from
+    // `c` along the chain, towards next() if `forward` else prev(), while the node is convex
+    // and not `stop`, each triangle in the loop's order. False if the walk ran longer than the
+    // part (broken loops), `c` then the node where it failed.
+    bool cutWedge(NodeId& c, NodeId stop, NodeId apex, bool forward, uint32_t& guard) {
+        while (c != stop) {
+            const NodeId along = forward ? next(c) : prev(c);
+            const NodeId a = forward ? apex : along, b = forward ? along : apex;
+            if (turn(a, c, b) <= 0) return true;
+            if (guard-- == 0 || !nodes_[c].alive) return false;
             ++work().nodeVisits;
             cutTriangle(a, c, b);
             unlink(c);
             c = along;
         }
+        return true;
+    }
+
+    // Raise: Next joins the chain; the wedge of chain nodes it sees is cut off (Fig. 2).
+    void raise(Event& e, Side side) {
+        uint32_t guard = partNodes_ + 2;  // a walk longer than the part means broken loops
+        const bool left = side == Side::Left;
+        NodeId& end = left ? left_ : right_;
+        const NodeId joining = left ? prev(end) : next(end);  // Next, off the acting end
+        NodeId c = end;
+        if (!cutWedge(c, left ? right_ : left_, joining, left, guard))
+            return forbid(e, Forbidden::NoProgress, c, joining);
         end = water_ = joining;
         makeWet(joining);
         emit(e);
@@ -351,25 +359,11 @@ private:
         // Left half: Left .. c, s. Cut while the node before s is convex.
         NodeId x = c;
         uint32_t before = cut_, guard = partNodes_ + 2;
-        while (x != left_ && turn(prev(x), x, s) > 0) {
-            if (guard-- == 0 || !nodes_[x].alive) return forbid(e, Forbidden::NoProgress, x, s);
-            ++work().nodeVisits;
-            NodeId p = prev(x);
-            cutTriangle(p, x, s);
-            unlink(x);
-            x = p;
-        }
+        if (!cutWedge(x, left_, s, false, guard)) return forbid(e, Forbidden::NoProgress, x, s);
         e.cutLeft = cut_ - before;
         before = cut_;
-        NodeId y = c2;
-        while (y != right2 && turn(s2, y, next(y)) > 0) {
-            if (guard-- == 0 || !nodes_[y].alive) return forbid(e, Forbidden::NoProgress, y, s);
-            ++work().nodeVisits;
-            NodeId n = next(y);
-            cutTriangle(s2, y, n);
-            unlink(y);
-            y = n;
-        }
+        NodeId y = c2;  // right half: c2 .. Right, s2
+        if (!cutWedge(y, right2, s2, true, guard)) return forbid(e, Forbidden::NoProgress, y, s);
         e.cutRight = cut_ - before;
         if (point) {
             right_ = right2;

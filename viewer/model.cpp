@@ -230,11 +230,13 @@ std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState&
             sags.push_back(v);
     std::sort(sags.begin(), sags.end(),
               [&](Index a, Index b) { return compareHeight(p, trace.up, a, b) < 0; });
-    // The one bridged is listed even when the cap cuts the rest.
-    if (e.action == Action::Bridge && std::find(sags.begin(), sags.end(), e.sag) == sags.end())
-        sags.insert(sags.begin(), e.sag);
+    // The one bridged is listed even when the cap cuts the rest. (Only a Bridge names a sag:
+    // in other events the field holds their own subject, core/events.h.)
+    const Index bridging = e.action == Action::Bridge ? e.sag : kNone;
+    if (bridging != kNone && std::find(sags.begin(), sags.end(), bridging) == sags.end())
+        sags.insert(sags.begin(), bridging);
     if (sags.size() > maxSags) {
-        auto it = std::find(sags.begin(), sags.end(), e.sag);
+        auto it = std::find(sags.begin(), sags.end(), bridging);
         if (it != sags.end() && size_t(it - sags.begin()) >= maxSags)
             std::rotate(sags.begin(), it, it + 1);
         sags.resize(maxSags);
@@ -702,7 +704,7 @@ FindTarget findTarget(const Trace& trace, const std::string& query) {
             // Its first event: the first step it is a finger or the event's subject.
             for (const Event& e : trace.events)
                 for (Index u : {e.after.left, e.after.right, e.after.nextLeft, e.after.nextRight,
-                                e.bottom, e.sag, e.top})
+                                e.bottom, e.sag})  // sag, top and culprit share storage
                     if (u == v && f.seekTo == kNone) f.seekTo = e.step + 1;
             Index r = P.ringOf(v);
             f.message = "vertex " + std::to_string(v) + ": ring " + std::to_string(r) + " vertex " +

@@ -16,6 +16,11 @@ namespace flood {
 // -1 when it lies right (clockwise), 0 when the three points are collinear.
 int orient(Point a, Point b, Point c);
 
+// orient()'s first stage alone: the sign when the floating-point filter decides it, 0 when it
+// cannot. For tests that only prune (touches.cpp's box test), where a 0 costs a slower path and
+// never a wrong answer. Not counted as orient work.
+int orientFiltered(Point a, Point b, Point c);
+
 // below(a, b): a is lower than b. Heights are y; equal heights are ordered by x, as if
 // every horizontal line were tilted slightly (the paper's lexicographic tie-break).
 inline bool below(Point a, Point b) { return a.y < b.y || (a.y == b.y && a.x < b.x); }

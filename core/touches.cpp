@@ -80,20 +80,31 @@ struct PartSearch {
         return at;
     }
 
-    // The segment a-b meets the closed box: the boxes overlap and the corners are not all
-    // strictly on one side of its line. Exact.
+    // The segment a-b may meet the closed box: the boxes overlap and the corners are not all
+    // strictly on one side of its line. Only a pruning test, so the filter's sign suffices: a
+    // corner it cannot decide counts as on the line, and the leaves test exactly.
     static bool meets(Point a, Point b, const Node& n) {
         if (std::max(a.x, b.x) < n.x0 || std::min(a.x, b.x) > n.x1 || std::max(a.y, b.y) < n.y0 ||
             std::min(a.y, b.y) > n.y1)
             return false;
+        auto holds = [&n](Point p) {
+            return n.x0 <= p.x && p.x <= n.x1 && n.y0 <= p.y && p.y <= n.y1;
+        };
+        if (holds(a) || holds(b)) return true;  // most edges are short: no line test above them
         int s = 0;
         for (Point c :
              {Point{n.x0, n.y0}, Point{n.x1, n.y0}, Point{n.x1, n.y1}, Point{n.x0, n.y1}}) {
-            int o = orient(a, b, c);
+            int o = orientFiltered(a, b, c);
             if (o == 0 || (s != 0 && o != s)) return true;
             s = o;
         }
         return false;
+    }
+
+    // p lies in the closed bounding box of a and b: cheap, before the exact test.
+    static bool inBox(Point a, Point b, Point p) {
+        return std::min(a.x, b.x) <= p.x && p.x <= std::max(a.x, b.x) &&
+               std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y);
     }
 
     // Tests edge e against the spots of every leaf whose box it meets.
@@ -114,7 +125,8 @@ struct PartSearch {
             for (Index i = n.begin; i < n.end; ++i) {
                 const Spot& sp = spots[i];
                 Index v = ring(sp.lowest) != ring(e) ? sp.lowest : sp.other;
-                if (v != kNone && insideSegment(a, b, sp.p)) out.push_back({e, v});
+                if (v != kNone && inBox(a, b, sp.p) && insideSegment(a, b, sp.p))
+                    out.push_back({e, v});
             }
         }
     }
@@ -162,6 +174,12 @@ TouchSearch findTouches(Polygon& polygon, uint64_t maxSteps) {
         PartSearch s{polygon, first.first, last.first + last.count, {}, result.steps, splits,
                      {},      {}};
         if (s.endVertex == s.firstVertex) continue;
+        // A T-junction is a vertex inside an edge of another ring: a part needs two rings
+        // that are not single points (a point hole touches nothing).
+        int rings = 0;
+        for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r)
+            rings += polygon.rings[r].count > 1;
+        if (rings < 2) continue;
         bool allFinite = true;
         for (Index v = s.firstVertex; v < s.endVertex; ++v)
             allFinite &= finite(polygon.vertices[v]);

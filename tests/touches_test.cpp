@@ -200,3 +200,16 @@ TEST(Touches, EveryFamilyCompletesUnderTheDefaultCap) {
         EXPECT_TRUE(findTouches(p).complete) << family;
     }
 }
+
+// A T-junction needs two rings that are not points: a part without such holes costs nothing,
+// whatever its size.
+TEST(Touches, APartWithoutHolesIsNotSearched) {
+    for (const char* family : {"star", "spiral", "comb"}) {
+        Polygon p = generate(family, 1, 20000);
+        work() = {};
+        TouchSearch t = findTouches(p);
+        EXPECT_TRUE(t.complete) << family;
+        EXPECT_EQ(t.steps, 0u) << family;
+        EXPECT_TRUE(p.splits.empty()) << family;
+    }
+}

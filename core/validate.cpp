@@ -82,6 +82,7 @@ struct Scratch {
     std::vector<Point> ringPoints;  // check 2's distinct-point count
     std::vector<Segment> segs;
     std::vector<EventKey> keys;
+    std::vector<Index> bucketStart;  // the event sort's buckets
     std::vector<Index> events, ending, starting, points, newRings, leftmostOf;
     std::vector<char> ringSeen;
     std::vector<std::pair<Index, Index>> leftmost, copies;
@@ -97,7 +98,7 @@ struct Validator {
     std::vector<EdgeSplit>& splits;     // the junctions within one part, for the machine
     std::optional<Index> zeroArea;      // first vertex of the first ring of zero area (check 3)
     bool edgesCrossed = false;          // check 4's problem is a crossing of two edges
-    bool pairsFirst = true;             // small single rings: pairsClear() before any sweep
+    bool pairsFirst = true;  // shortcuts: pairsClear() on small single rings, the minimal sweep
     size_t n = 0;
     std::vector<Index>& ringOfV;  // ring of each vertex
     std::vector<int>& ringSign;   // orientation of each ring: +1 counter-clockwise, -1 clockwise
@@ -183,7 +184,7 @@ struct Validator {
     Diagnostic run();
     Diagnostic checkRings();
     Diagnostic checkEdges();  // sweepEdges(), then orderJunctions()
-    void sweepEdges();
+    void sweepEdges(bool minimal);
     bool pairsClear();
     void classifyMeeting(Index e, Index f);
     void touchOnEdge(Index vertex, Index edge);
@@ -210,11 +211,14 @@ struct Validator {
 
 // --- exact geometric helpers -------------------------------------------------------------
 
-// orient(), answered at once where the three points lie on one vertical or horizontal line:
-// collinear exactly, a case the filter cannot decide (its determinant is zero), so orient()
-// would go on to expansions. Orthogonal polygons make most of the validator's collinear triples.
+// orient(), answered at once where the three points lie on one vertical or horizontal line,
+// or two of them are one point: collinear exactly, a case the filter cannot decide (its
+// determinant is zero), so orient() would go on to expansions. Orthogonal polygons make most
+// of the validator's collinear triples; the two edges starting at a vertex, compared in the
+// sweep, make the repeated points.
 int orientAxisFirst(Point a, Point b, Point c) {
     if ((a.x == b.x && b.x == c.x) || (a.y == b.y && b.y == c.y)) return 0;
+    if (c == a || c == b || a == b) return 0;
     return orient(a, b, c);
 }
 
@@ -244,19 +248,40 @@ bool angleLess(Point p, Point a, Point b) {
     return orientAxisFirst(p, a, b) > 0;
 }
 
-// The vertices in the order of `less` on their points, ties by index, into `order`. Sorted as
+// The vertices in the order of below() on their points, ties by index, into `order`. Sorted as
 // (point, index) records, so no comparison reaches into the vertex array: at 10^6 vertices a
-// sort of bare indices spent most of its time waiting for memory.
-template <typename Less>
-void sortVertices(const std::vector<Point>& V, Less less, std::vector<EventKey>& keys,
-                  std::vector<Index>& order) {
-    keys.resize(V.size());
-    for (Index v = 0; v < V.size(); ++v) keys[v] = {V[v], v};
-    std::sort(keys.begin(), keys.end(), [&](const EventKey& a, const EventKey& b) {
-        return less(a.p, b.p) || (a.p == b.p && a.v < b.v);
-    });
-    order.resize(V.size());
-    for (size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].v;
+// sort of bare indices spent most of its time waiting for memory. A large input is first dealt
+// into about n/4 buckets by height (a counting sort), then each bucket is sorted alone, in the
+// cache: 2 log2 4 comparisons a vertex instead of about log2 n. The bucket of a height is a
+// rounded linear map of it, and rounding is monotone, so a lower bucket never holds a higher
+// point: the buckets only share out the work, the exact comparisons decide the order, which is
+// the one a single sort gives (a strict total order has one sorted sequence).
+void sortVerticesBelow(const std::vector<Point>& V, std::vector<EventKey>& keys,
+                       std::vector<Index>& order, std::vector<Index>& start) {
+    auto less = [](const EventKey& a, const EventKey& b) {
+        return below(a.p, b.p) || (a.p == b.p && a.v < b.v);
+    };
+    const size_t n = V.size();
+    keys.resize(n);
+    double lo = n ? V[0].y : 0, hi = lo;
+    for (const Point& q : V) lo = std::min(lo, q.y), hi = std::max(hi, q.y);
+    const size_t buckets = n / 4;
+    const double scale = double(buckets) / (hi - lo);  // inf or 0 when the range is degenerate
+    if (n < 4096 || !(scale > 0 && scale < HUGE_VAL)) {
+        for (Index v = 0; v < n; ++v) keys[v] = {V[v], v};
+        std::sort(keys.begin(), keys.end(), less);
+    } else {
+        auto bucketOf = [&](double y) { return std::min(size_t((y - lo) * scale), buckets - 1); };
+        start.assign(buckets + 1, 0);
+        for (const Point& q : V) ++start[bucketOf(q.y) + 1];
+        for (size_t b = 1; b <= buckets; ++b) start[b] += start[b - 1];
+        for (Index v = 0; v < n; ++v) keys[start[bucketOf(V[v].y)]++] = {V[v], v};
+        // start[b] is now where bucket b ends, the next one's start.
+        for (size_t b = 0, from = 0; b < buckets; from = start[b++])
+            std::sort(keys.begin() + long(from), keys.begin() + long(start[b]), less);
+    }
+    order.resize(n);
+    for (size_t i = 0; i < n; ++i) order[i] = keys[i].v;
 }
 
 // --- checks 1 to 3: coordinates and rings ------------------------------------------------
@@ -414,8 +439,14 @@ void Validator::touchOnEdge(Index vertex, Index edge) {
 }
 
 // The sweep: every pair of edges that become neighbours along the sweep line goes to
-// classifyMeeting(); it stops at the first problem. Also fills enclosing[].
-void Validator::sweepEdges() {
+// classifyMeeting(); it stops at the first problem. Also fills enclosing[]. The full sweep
+// also tests pairs that were neighbours already, around every ending edge: the order of its
+// tests decides which of several problems is reported, so every message comes from it. The
+// minimal one (`minimal`) tests only new neighbours where a lone vertex passes on or ends, and
+// stops at the first problem or T-junction: when it finds none there is none (Shamos-Hoey),
+// and its tree, copies and enclosing[] are the full sweep's (the tree's shape is that of its
+// order); otherwise checkEdges() runs the full sweep.
+void Validator::sweepEdges(bool minimal) {
     std::vector<Segment>& segs = s.segs;
     segs.resize(n);
     for (Index v = 0; v < n; ++v) {
@@ -425,8 +456,7 @@ void Validator::sweepEdges() {
     // The ring runs from lo to hi along edge e (false for a point hole).
     auto up = [&](Index e) { return segs[e].lo == e && segs[e].hi != e; };
     std::vector<Index>& events = s.events;
-    sortVertices(
-        P.vertices, [](Point a, Point b) { return below(a, b); }, s.keys, events);
+    sortVerticesBelow(P.vertices, s.keys, events, s.bucketStart);
     SweepTree<SweepOrder> active(n, SweepOrder{&segs, P.vertices.data()}, s.links);
     enclosing.assign(P.rings.size(), kNone);
     std::vector<char>& ringSeen = s.ringSeen;
@@ -443,8 +473,9 @@ void Validator::sweepEdges() {
         bool rightIsInside = up(left) ? ringSign[tr] < 0 : ringSign[tr] > 0;
         return rightIsInside ? tr : enclosing[tr];
     };
-    for (size_t i = 0; i < n && !problem;) {
+    for (size_t i = 0; i < n && !problem && !(minimal && !junctions.empty());) {
         size_t j = i;
+        const size_t copiesBefore = copies.size();
         Point p = pt(events[i]);
         ending.clear(), starting.clear(), points.clear(), newRings.clear();
         for (; j < n && pt(events[j]) == p; ++j) {
@@ -459,6 +490,31 @@ void Validator::sweepEdges() {
             if (!ringSeen[r]) ringSeen[r] = 1, newRings.push_back(r);  // 2 once placed
         }
         i = j;
+        // The minimal sweep, at a lone vertex where the boundary passes on or ends: the tests of
+        // the pairs that become neighbours (Shamos-Hoey), no more; anything else as below.
+        if (minimal && points.empty() && copies.size() == copiesBefore) {
+            if (ending.size() == 1 && starting.size() == 1) {
+                // With nothing found so far and no edge through p (the tests of f would find it),
+                // f lies between e's neighbours: it takes e's place without a comparison.
+                Index e = ending[0], f = starting[0];
+                Index before = active.prev(e), after = active.next(e);
+                active.replace(e, f);
+                if (before != kNone) classifyMeeting(f, before);
+                if (after != kNone) classifyMeeting(f, after);
+                continue;
+            }
+            if (ending.size() == 2 && starting.empty()) {
+                Index e1 = ending[0], e2 = ending[1];
+                Index before = active.prev(e1), after = active.next(e1);
+                if (after == e2 || before == e2) {  // side by side, as they must be when clean
+                    if (after == e2) after = active.next(e2);
+                    else before = active.prev(e2);
+                    active.erase(e1), active.erase(e2);
+                    if (before != kNone && after != kNone) classifyMeeting(before, after);
+                    continue;
+                }
+            }
+        }
         bool handedOver = false;
         for (Index e : ending) {
             Index before = active.prev(e), after = active.next(e);
@@ -556,8 +612,13 @@ Diagnostic Validator::checkEdges() {
         enclosing.assign(1, kNone);
         return {};
     }
+    if (pairsFirst) {
+        sweepEdges(true);
+        if (!problem && junctions.empty()) return {};
+        copies.clear();
+    }
     problem.reset(), problemCulprits = {}, edgesCrossed = false, junctions.clear();
-    sweepEdges();
+    sweepEdges(false);
     if (problem) return fail(problem->first, problem->second, problemCulprits);
     orderJunctions();
     return {};

@@ -473,6 +473,8 @@ void Validator::sweepEdges(bool minimal) {
         bool rightIsInside = up(left) ? ringSign[tr] < 0 : ringSign[tr] > 0;
         return rightIsInside ? tr : enclosing[tr];
     };
+    Index lastPlaced = kNone;  // the minimal sweep's finger: an edge placed at the last event,
+    double lastY = 0;          // whose height this is
     for (size_t i = 0; i < n && !problem && !(minimal && !junctions.empty());) {
         size_t j = i;
         const size_t copiesBefore = copies.size();
@@ -501,6 +503,7 @@ void Validator::sweepEdges(bool minimal) {
                 active.replace(e, f);
                 if (before != kNone) classifyMeeting(f, before);
                 if (after != kNone) classifyMeeting(f, after);
+                lastPlaced = f, lastY = p.y;
                 continue;
             }
             if (ending.size() == 2 && starting.empty()) {
@@ -514,6 +517,22 @@ void Validator::sweepEdges(bool minimal) {
                     continue;
                 }
             }
+        }
+        // A lone vertex where the boundary starts: its first edge by a search from the last
+        // edge placed (events of one height come left to right), the second beside the first.
+        bool placed = false;
+        if (minimal && points.empty() && copies.size() == copiesBefore && ending.empty() &&
+            starting.size() == 2) {
+            Index e1 = starting[0], e2 = starting[1];
+            if (lastPlaced != kNone && lastY == p.y && active.contains(lastPlaced))
+                active.insertNear(e1, lastPlaced, 3);
+            else active.insert(e1);
+            active.insertBeside(e2, e1, active.less()(e1, e2));
+            for (Index e : {e1, e2}) {
+                if (Index before = active.prev(e); before != kNone) classifyMeeting(e, before);
+                if (Index after = active.next(e); after != kNone) classifyMeeting(e, after);
+            }
+            lastPlaced = e1, lastY = p.y, placed = true;
         }
         bool handedOver = false;
         for (Index e : ending) {
@@ -532,7 +551,7 @@ void Validator::sweepEdges(bool minimal) {
             if (handedOver && before != kNone) classifyMeeting(f, before);
             if (handedOver && after != kNone) classifyMeeting(f, after);
         }
-        for (size_t k = handedOver ? 1 : 0; k < starting.size(); ++k) {
+        for (size_t k = placed ? starting.size() : handedOver ? 1 : 0; k < starting.size(); ++k) {
             Index e = starting[k];
             active.insert(e);
             if (Index before = active.prev(e); before != kNone) classifyMeeting(e, before);

@@ -58,6 +58,11 @@ struct Segment {
     Index lo, hi;
 };
 
+// The closed bounding box of an edge.
+struct EdgeBox {
+    double x0, x1, y0, y1;
+};
+
 // A vertex as a sweep event: its point and index, so that sorting reads no other array.
 struct EventKey {
     Point p;
@@ -81,6 +86,7 @@ struct Scratch {
     std::vector<int> ringSign;
     std::vector<Point> ringPoints;  // check 2's distinct-point count
     std::vector<Segment> segs;
+    std::vector<EdgeBox> boxes;  // pairsClear()'s
     std::vector<EventKey> keys;
     std::vector<Index> bucketStart;  // the event sort's buckets
     std::vector<Index> events, ending, starting, points, newRings, leftmostOf;
@@ -613,12 +619,18 @@ constexpr size_t kPairsUpTo = 96;
 
 bool Validator::pairsClear() {
     const Point* V = P.vertices.data();
+    std::vector<EdgeBox>& boxes = s.boxes;  // each edge's box, computed once, not once a pair
+    boxes.resize(n);
     for (Index e = 0; e < n; ++e) {
         Point a = V[e], b = V[e + 1 == n ? 0 : e + 1];
+        boxes[e] = {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
+    }
+    for (Index e = 0; e < n; ++e) {
+        const EdgeBox a = boxes[e];
         for (Index f = e + 1; f < n; ++f) {
-            Point c = V[f], d = V[f + 1 == n ? 0 : f + 1];
-            if (boxesApart(a, b, c, d)) continue;
-            if (a == c) return false;  // a point twice: the rings (here one) touch there
+            const EdgeBox& b = boxes[f];  // as boxesApart()
+            if (a.x1 < b.x0 || b.x1 < a.x0 || a.y1 < b.y0 || b.y1 < a.y0) continue;
+            if (V[e] == V[f]) return false;  // a point twice: the rings (here one) touch there
             classifyMeeting(e, f);
             if (problem || !junctions.empty()) return false;
         }

@@ -459,6 +459,14 @@ void Validator::sweepEdges(bool minimal) {
         Index w = next(v);
         segs[v] = below(pt(v), pt(w)) ? Segment{v, w} : Segment{w, v};
     }
+    // classifyMeeting(), skipped for edges whose boxes are apart (it would find nothing):
+    // the box read off segs, without the ring lookups that edge ends cost there.
+    const Point* V = P.vertices.data();
+    auto meet = [&](Index e, Index f) {
+        const Segment g = segs[e], h = segs[f];
+        if (boxesApart(V[g.lo], V[g.hi], V[h.lo], V[h.hi])) ++work().validatorSteps;
+        else classifyMeeting(e, f);
+    };
     // The ring runs from lo to hi along edge e (false for a point hole).
     auto up = [&](Index e) { return segs[e].lo == e && segs[e].hi != e; };
     std::vector<Index>& events = s.events;
@@ -484,9 +492,9 @@ void Validator::sweepEdges(bool minimal) {
     for (size_t i = 0; i < n && !problem && !(minimal && !junctions.empty());) {
         size_t j = i;
         const size_t copiesBefore = copies.size();
-        Point p = pt(events[i]);
+        const Point p = s.keys[i].p;  // the sorted records: no read of the vertex array
         ending.clear(), starting.clear(), points.clear(), newRings.clear();
-        for (; j < n && pt(events[j]) == p; ++j) {
+        for (; j < n && s.keys[j].p == p; ++j) {
             Index v = events[j];
             if (j > i) copies.emplace_back(events[i], v);
             Index r = ringOfV[v];
@@ -507,8 +515,8 @@ void Validator::sweepEdges(bool minimal) {
                 Index e = ending[0], f = starting[0];
                 Index before = active.prev(e), after = active.next(e);
                 active.replace(e, f);
-                if (before != kNone) classifyMeeting(f, before);
-                if (after != kNone) classifyMeeting(f, after);
+                if (before != kNone) meet(f, before);
+                if (after != kNone) meet(f, after);
                 lastPlaced = f, lastY = p.y;
                 continue;
             }
@@ -519,7 +527,7 @@ void Validator::sweepEdges(bool minimal) {
                     if (after == e2) after = active.next(e2);
                     else before = active.prev(e2);
                     active.erase(e1), active.erase(e2);
-                    if (before != kNone && after != kNone) classifyMeeting(before, after);
+                    if (before != kNone && after != kNone) meet(before, after);
                     continue;
                 }
             }
@@ -535,16 +543,16 @@ void Validator::sweepEdges(bool minimal) {
             else active.insert(e1);
             active.insertBeside(e2, e1, active.less()(e1, e2));
             for (Index e : {e1, e2}) {
-                if (Index before = active.prev(e); before != kNone) classifyMeeting(e, before);
-                if (Index after = active.next(e); after != kNone) classifyMeeting(e, after);
+                if (Index before = active.prev(e); before != kNone) meet(e, before);
+                if (Index after = active.next(e); after != kNone) meet(e, after);
             }
             lastPlaced = e1, lastY = p.y, placed = true;
         }
         bool handedOver = false;
         for (Index e : ending) {
             Index before = active.prev(e), after = active.next(e);
-            if (before != kNone) classifyMeeting(e, before);
-            if (after != kNone) classifyMeeting(e, after);
+            if (before != kNone) meet(e, before);
+            if (after != kNone) meet(e, after);
             // Where the boundary passes on, the last edge to end hands its place to the first
             // to start when that one lies between the same neighbours: two comparisons instead
             // of a search, the same tree, and the same tests in the same order.
@@ -553,22 +561,22 @@ void Validator::sweepEdges(bool minimal) {
                          (after == kNone || active.less()(f, after));
             if (handedOver) active.replace(e, f);
             else active.erase(e);
-            if (before != kNone && after != kNone) classifyMeeting(before, after);
-            if (handedOver && before != kNone) classifyMeeting(f, before);
-            if (handedOver && after != kNone) classifyMeeting(f, after);
+            if (before != kNone && after != kNone) meet(before, after);
+            if (handedOver && before != kNone) meet(f, before);
+            if (handedOver && after != kNone) meet(f, after);
         }
         for (size_t k = placed ? starting.size() : handedOver ? 1 : 0; k < starting.size(); ++k) {
             Index e = starting[k];
             active.insert(e);
-            if (Index before = active.prev(e); before != kNone) classifyMeeting(e, before);
-            if (Index after = active.next(e); after != kNone) classifyMeeting(e, after);
+            if (Index before = active.prev(e); before != kNone) meet(e, before);
+            if (Index after = active.next(e); after != kNone) meet(e, after);
         }
         // A point hole is an edge of no length: placed in the active edges for an instant,
         // its neighbours tell whether it lies on an edge and which ring encloses it.
         for (Index v : points) {
             active.insert(v);
-            if (Index before = active.prev(v); before != kNone) classifyMeeting(v, before);
-            if (Index after = active.next(v); after != kNone) classifyMeeting(v, after);
+            if (Index before = active.prev(v); before != kNone) meet(v, before);
+            if (Index after = active.next(v); after != kNone) meet(v, after);
             enclosing[ringOfV[v]] = enclosingAt(v);
             active.erase(v);
         }

@@ -189,8 +189,8 @@ struct Validator {
 
     Diagnostic run();
     Diagnostic checkRings();
-    Diagnostic checkEdges();  // sweepEdges(), then orderJunctions()
-    void sweepEdges(bool minimal);
+    Diagnostic checkEdges();        // sweepEdges(), then orderJunctions()
+    bool sweepEdges(bool minimal);  // false: stopped at a problem (or by minimal's doubt)
     bool pairsClear();
     void classifyMeeting(Index e, Index f);
     void touchOnEdge(Index vertex, Index edge);
@@ -449,10 +449,11 @@ void Validator::touchOnEdge(Index vertex, Index edge) {
 // also tests pairs that were neighbours already, around every ending edge: the order of its
 // tests decides which of several problems is reported, so every message comes from it. The
 // minimal one (`minimal`) tests only new neighbours where a lone vertex passes on or ends, and
-// stops at the first problem or T-junction: when it finds none there is none (Shamos-Hoey),
-// and its tree, copies and enclosing[] are the full sweep's (the tree's shape is that of its
-// order); otherwise checkEdges() runs the full sweep.
-void Validator::sweepEdges(bool minimal) {
+// stops at the first problem, or where an edge placed without a comparison (beside a T-junction)
+// is out of order: when it finds no problem there is none (Shamos-Hoey), and its tree, copies,
+// T-junctions and enclosing[] are the full sweep's (the tree's shape is that of its order);
+// otherwise checkEdges() runs the full sweep.
+bool Validator::sweepEdges(bool minimal) {
     std::vector<Segment>& segs = s.segs;
     segs.resize(n);
     for (Index v = 0; v < n; ++v) {
@@ -489,7 +490,12 @@ void Validator::sweepEdges(bool minimal) {
     };
     Index lastPlaced = kNone;  // the minimal sweep's finger: an edge placed at the last event,
     double lastY = 0;          // whose height this is
-    for (size_t i = 0; i < n && !problem && !(minimal && !junctions.empty());) {
+    // The minimal sweep stops when an edge placed without a search turns out out of order.
+    bool misplaced = false;
+    auto inOrder = [&](Index a, Index b) {
+        return a == kNone || b == kNone || active.less()(a, b);
+    };
+    for (size_t i = 0; i < n && !problem && !misplaced;) {
         size_t j = i;
         const size_t copiesBefore = copies.size();
         const Point p = s.keys[i].p;  // the sorted records: no read of the vertex array
@@ -510,13 +516,17 @@ void Validator::sweepEdges(bool minimal) {
         // the pairs that become neighbours (Shamos-Hoey), no more; anything else as below.
         if (minimal && points.empty() && copies.size() == copiesBefore) {
             if (ending.size() == 1 && starting.size() == 1) {
-                // With nothing found so far and no edge through p (the tests of f would find it),
-                // f lies between e's neighbours: it takes e's place without a comparison.
+                // With no problem so far and no edge through p, f lies between e's neighbours:
+                // it takes e's place without a comparison. An edge through p is a neighbour, and
+                // f's test with it finds the T-junction: then f's place is checked.
                 Index e = ending[0], f = starting[0];
                 Index before = active.prev(e), after = active.next(e);
+                const size_t found = junctions.size();
                 active.replace(e, f);
                 if (before != kNone) meet(f, before);
                 if (after != kNone) meet(f, after);
+                if (junctions.size() != found)
+                    misplaced = !inOrder(before, f) || !inOrder(f, after);
                 lastPlaced = f, lastY = p.y;
                 continue;
             }
@@ -541,10 +551,17 @@ void Validator::sweepEdges(bool minimal) {
             if (lastPlaced != kNone && lastY == p.y && active.contains(lastPlaced))
                 active.insertNear(e1, lastPlaced, 3);
             else active.insert(e1);
-            active.insertBeside(e2, e1, active.less()(e1, e2));
+            const bool e2After = active.less()(e1, e2);
+            active.insertBeside(e2, e1, e2After);
+            const size_t found = junctions.size();
             for (Index e : {e1, e2}) {
                 if (Index before = active.prev(e); before != kNone) meet(e, before);
                 if (Index after = active.next(e); after != kNone) meet(e, after);
+            }
+            if (junctions.size() != found) {  // an edge through p: is e2 beside e1 after all?
+                Index left = e2After ? e1 : e2, right = e2After ? e2 : e1;
+                misplaced =
+                    !inOrder(active.prev(left), left) || !inOrder(right, active.next(right));
             }
             lastPlaced = e1, lastY = p.y, placed = true;
         }
@@ -596,6 +613,7 @@ void Validator::sweepEdges(bool minimal) {
                   [&](auto a, auto b) { return active.less()(a.first, b.first); });
         for (auto [e, r] : leftmost) enclosing[r] = enclosingAt(e);
     }
+    return !problem && !misplaced;
 }
 
 // One junction per edge and point, ordered by edge, then along the edge from its start
@@ -652,8 +670,10 @@ Diagnostic Validator::checkEdges() {
         return {};
     }
     if (pairsFirst) {
-        sweepEdges(true);
-        if (!problem && junctions.empty()) return {};
+        if (sweepEdges(true)) {
+            orderJunctions();
+            return {};
+        }
         copies.clear();
     }
     problem.reset(), problemCulprits = {}, edgesCrossed = false, junctions.clear();

@@ -33,7 +33,9 @@
 // their 2k rays and O(log k) per ring to find a crossing (validatorSteps in core/work.h counts
 // the work, tests/validate_growth_test.cpp bounds it). A small single ring is checked by testing
 // its pairs of edges instead of sweeping (pairsClear()), with the sweep's verdicts
-// (tests/validate_paths_test.cpp).
+// (tests/validate_paths_test.cpp). The sweep itself runs first with only the tests Shamos-Hoey
+// needs (sweepEdges(minimal)), and again with all of them, whose order fixes the message, only
+// when that one finds a problem.
 #include <algorithm>
 #include <cmath>
 #include <optional>

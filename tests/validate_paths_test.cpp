@@ -167,8 +167,7 @@ TEST(ValidatePaths, SweepMakesFewOrientTestsPerVertex) {
 // Every family of the generator: validation's work (orientation tests plus validatorSteps) per
 // vertex at most 1.5 log2 n (at 3·10^4). Before the changes above it was up to 2.7 log2 n
 // (t-junctions; ortho-spiral, collinear and touching-holes above 2 too); before the minimal
-// sweep at most 1.8 (circle-jagged), now 0.87 on every family but touching-holes (1.07) and
-// t-junctions (1.36: its lowest T-junction sends validate() on to the full sweep).
+// sweep at most 1.8 (circle-jagged), now at most 0.87 on every family but touching-holes (1.07).
 TEST(ValidatePaths, EveryFamilyWorkPerVertexWithinOneAndAHalfLogN) {
     for (const std::string& family : familyNames()) {
         Polygon p = generate(family, 7, 30000);

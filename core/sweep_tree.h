@@ -49,6 +49,38 @@ public:
         while (up_[e] != kNone && priority(e) > priority(up_[e])) rotateUp(e);
     }
 
+    // Inserts e (not present) just after x (present) when `after`, else just before it, without
+    // a comparison: for an e that the order puts there, the same tree as insert(e).
+    void insertBeside(Index e, Index x, bool after) {
+        const std::vector<Index>& down = after ? right_ : left_;  // x's side where e goes
+        const std::vector<Index>& other = after ? left_ : right_;
+        Index parent = x;
+        bool toDown = true;      // e becomes parent's `down` child, else its `other` child
+        if (down[x] != kNone) {  // then the nearest node there, whose `other` side is empty
+            parent = down[x];
+            while (other[parent] != kNone) parent = other[parent];
+            toDown = false;
+        }
+        up_[e] = parent;
+        (toDown == after ? right_ : left_)[parent] = e;
+        while (up_[e] != kNone && priority(e) > priority(up_[e])) rotateUp(e);
+    }
+
+    // Inserts e (not present) where the order puts it, looking first within `reach` steps of
+    // `near` (present), then from the root: a finger search, for keys inserted near each other.
+    void insertNear(Index e, Index near, int reach) {
+        const bool after = less_(near, e);
+        Index x = near;
+        for (int k = 0; k < reach; ++k) {
+            Index y = after ? next(x) : prev(x);
+            if (y == kNone || (after ? less_(e, y) : less_(y, e))) return insertBeside(e, x, after);
+            x = y;
+        }
+        insert(e);
+    }
+
+    bool contains(Index e) const { return up_[e] != kNone || root_ == e; }
+
     // Removes e (present): rotated down to a leaf, then cut off.
     void erase(Index e) {
         while (left_[e] != kNone || right_[e] != kNone) {

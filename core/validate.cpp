@@ -33,7 +33,9 @@
 // their 2k rays and O(log k) per ring to find a crossing (validatorSteps in core/work.h counts
 // the work, tests/validate_growth_test.cpp bounds it). A small single ring is checked by testing
 // its pairs of edges instead of sweeping (pairsClear()), with the sweep's verdicts
-// (tests/validate_paths_test.cpp).
+// (tests/validate_paths_test.cpp). The sweep itself runs first with only the tests Shamos-Hoey
+// needs (sweepEdges(minimal)), and again with all of them, whose order fixes the message, only
+// when that one finds a problem.
 #include <algorithm>
 #include <cmath>
 #include <optional>
@@ -56,6 +58,11 @@ using io_detail::formatPoint;
 // Vertex indices, not points: 8 bytes an edge.
 struct Segment {
     Index lo, hi;
+};
+
+// The closed bounding box of an edge.
+struct EdgeBox {
+    double x0, x1, y0, y1;
 };
 
 // A vertex as a sweep event: its point and index, so that sorting reads no other array.
@@ -81,7 +88,9 @@ struct Scratch {
     std::vector<int> ringSign;
     std::vector<Point> ringPoints;  // check 2's distinct-point count
     std::vector<Segment> segs;
+    std::vector<EdgeBox> boxes;  // pairsClear()'s
     std::vector<EventKey> keys;
+    std::vector<Index> bucketStart;  // the event sort's buckets
     std::vector<Index> events, ending, starting, points, newRings, leftmostOf;
     std::vector<char> ringSeen;
     std::vector<std::pair<Index, Index>> leftmost, copies;
@@ -97,7 +106,7 @@ struct Validator {
     std::vector<EdgeSplit>& splits;     // the junctions within one part, for the machine
     std::optional<Index> zeroArea;      // first vertex of the first ring of zero area (check 3)
     bool edgesCrossed = false;          // check 4's problem is a crossing of two edges
-    bool pairsFirst = true;             // small single rings: pairsClear() before any sweep
+    bool pairsFirst = true;  // shortcuts: pairsClear() on small single rings, the minimal sweep
     size_t n = 0;
     std::vector<Index>& ringOfV;  // ring of each vertex
     std::vector<int>& ringSign;   // orientation of each ring: +1 counter-clockwise, -1 clockwise
@@ -182,8 +191,8 @@ struct Validator {
 
     Diagnostic run();
     Diagnostic checkRings();
-    Diagnostic checkEdges();  // sweepEdges(), then orderJunctions()
-    void sweepEdges();
+    Diagnostic checkEdges();        // sweepEdges(), then orderJunctions()
+    bool sweepEdges(bool minimal);  // false: stopped at a problem (or by minimal's doubt)
     bool pairsClear();
     void classifyMeeting(Index e, Index f);
     void touchOnEdge(Index vertex, Index edge);
@@ -210,11 +219,14 @@ struct Validator {
 
 // --- exact geometric helpers -------------------------------------------------------------
 
-// orient(), answered at once where the three points lie on one vertical or horizontal line:
-// collinear exactly, a case the filter cannot decide (its determinant is zero), so orient()
-// would go on to expansions. Orthogonal polygons make most of the validator's collinear triples.
+// orient(), answered at once where the three points lie on one vertical or horizontal line,
+// or two of them are one point: collinear exactly, a case the filter cannot decide (its
+// determinant is zero), so orient() would go on to expansions. Orthogonal polygons make most
+// of the validator's collinear triples; the two edges starting at a vertex, compared in the
+// sweep, make the repeated points.
 int orientAxisFirst(Point a, Point b, Point c) {
     if ((a.x == b.x && b.x == c.x) || (a.y == b.y && b.y == c.y)) return 0;
+    if (c == a || c == b || a == b) return 0;
     return orient(a, b, c);
 }
 
@@ -244,19 +256,40 @@ bool angleLess(Point p, Point a, Point b) {
     return orientAxisFirst(p, a, b) > 0;
 }
 
-// The vertices in the order of `less` on their points, ties by index, into `order`. Sorted as
+// The vertices in the order of below() on their points, ties by index, into `order`. Sorted as
 // (point, index) records, so no comparison reaches into the vertex array: at 10^6 vertices a
-// sort of bare indices spent most of its time waiting for memory.
-template <typename Less>
-void sortVertices(const std::vector<Point>& V, Less less, std::vector<EventKey>& keys,
-                  std::vector<Index>& order) {
-    keys.resize(V.size());
-    for (Index v = 0; v < V.size(); ++v) keys[v] = {V[v], v};
-    std::sort(keys.begin(), keys.end(), [&](const EventKey& a, const EventKey& b) {
-        return less(a.p, b.p) || (a.p == b.p && a.v < b.v);
-    });
-    order.resize(V.size());
-    for (size_t i = 0; i < keys.size(); ++i) order[i] = keys[i].v;
+// sort of bare indices spent most of its time waiting for memory. A large input is first dealt
+// into about n/4 buckets by height (a counting sort), then each bucket is sorted alone, in the
+// cache: 2 log2 4 comparisons a vertex instead of about log2 n. The bucket of a height is a
+// rounded linear map of it, and rounding is monotone, so a lower bucket never holds a higher
+// point: the buckets only share out the work, the exact comparisons decide the order, which is
+// the one a single sort gives (a strict total order has one sorted sequence).
+void sortVerticesBelow(const std::vector<Point>& V, std::vector<EventKey>& keys,
+                       std::vector<Index>& order, std::vector<Index>& start) {
+    auto less = [](const EventKey& a, const EventKey& b) {
+        return below(a.p, b.p) || (a.p == b.p && a.v < b.v);
+    };
+    const size_t n = V.size();
+    keys.resize(n);
+    double lo = n ? V[0].y : 0, hi = lo;
+    for (const Point& q : V) lo = std::min(lo, q.y), hi = std::max(hi, q.y);
+    const size_t buckets = n / 4;
+    const double scale = double(buckets) / (hi - lo);  // inf or 0 when the range is degenerate
+    if (n < 4096 || !(scale > 0 && scale < HUGE_VAL)) {
+        for (Index v = 0; v < n; ++v) keys[v] = {V[v], v};
+        std::sort(keys.begin(), keys.end(), less);
+    } else {
+        auto bucketOf = [&](double y) { return std::min(size_t((y - lo) * scale), buckets - 1); };
+        start.assign(buckets + 1, 0);
+        for (const Point& q : V) ++start[bucketOf(q.y) + 1];
+        for (size_t b = 1; b <= buckets; ++b) start[b] += start[b - 1];
+        for (Index v = 0; v < n; ++v) keys[start[bucketOf(V[v].y)]++] = {V[v], v};
+        // start[b] is now where bucket b ends, the next one's start.
+        for (size_t b = 0, from = 0; b < buckets; from = start[b++])
+            std::sort(keys.begin() + long(from), keys.begin() + long(start[b]), less);
+    }
+    order.resize(n);
+    for (size_t i = 0; i < n; ++i) order[i] = keys[i].v;
 }
 
 // --- checks 1 to 3: coordinates and rings ------------------------------------------------
@@ -414,19 +447,33 @@ void Validator::touchOnEdge(Index vertex, Index edge) {
 }
 
 // The sweep: every pair of edges that become neighbours along the sweep line goes to
-// classifyMeeting(); it stops at the first problem. Also fills enclosing[].
-void Validator::sweepEdges() {
+// classifyMeeting(); it stops at the first problem. Also fills enclosing[]. The full sweep
+// also tests pairs that were neighbours already, around every ending edge: the order of its
+// tests decides which of several problems is reported, so every message comes from it. The
+// minimal one (`minimal`) tests only new neighbours where a lone vertex passes on or ends, and
+// stops at the first problem, or where an edge placed without a comparison (beside a T-junction)
+// is out of order: when it finds no problem there is none (Shamos-Hoey), and its tree, copies,
+// T-junctions and enclosing[] are the full sweep's (the tree's shape is that of its order);
+// otherwise checkEdges() runs the full sweep.
+bool Validator::sweepEdges(bool minimal) {
     std::vector<Segment>& segs = s.segs;
     segs.resize(n);
     for (Index v = 0; v < n; ++v) {
         Index w = next(v);
         segs[v] = below(pt(v), pt(w)) ? Segment{v, w} : Segment{w, v};
     }
+    // classifyMeeting(), skipped for edges whose boxes are apart (it would find nothing):
+    // the box read off segs, without the ring lookups that edge ends cost there.
+    const Point* V = P.vertices.data();
+    auto meet = [&](Index e, Index f) {
+        const Segment g = segs[e], h = segs[f];
+        if (boxesApart(V[g.lo], V[g.hi], V[h.lo], V[h.hi])) ++work().validatorSteps;
+        else classifyMeeting(e, f);
+    };
     // The ring runs from lo to hi along edge e (false for a point hole).
     auto up = [&](Index e) { return segs[e].lo == e && segs[e].hi != e; };
     std::vector<Index>& events = s.events;
-    sortVertices(
-        P.vertices, [](Point a, Point b) { return below(a, b); }, s.keys, events);
+    sortVerticesBelow(P.vertices, s.keys, events, s.bucketStart);
     SweepTree<SweepOrder> active(n, SweepOrder{&segs, P.vertices.data()}, s.links);
     enclosing.assign(P.rings.size(), kNone);
     std::vector<char>& ringSeen = s.ringSeen;
@@ -443,11 +490,19 @@ void Validator::sweepEdges() {
         bool rightIsInside = up(left) ? ringSign[tr] < 0 : ringSign[tr] > 0;
         return rightIsInside ? tr : enclosing[tr];
     };
-    for (size_t i = 0; i < n && !problem;) {
+    Index lastPlaced = kNone;  // the minimal sweep's finger: an edge placed at the last event,
+    double lastY = 0;          // whose height this is
+    // The minimal sweep stops when an edge placed without a search turns out out of order.
+    bool misplaced = false;
+    auto inOrder = [&](Index a, Index b) {
+        return a == kNone || b == kNone || active.less()(a, b);
+    };
+    for (size_t i = 0; i < n && !problem && !misplaced;) {
         size_t j = i;
-        Point p = pt(events[i]);
+        const size_t copiesBefore = copies.size();
+        const Point p = s.keys[i].p;  // the sorted records: no read of the vertex array
         ending.clear(), starting.clear(), points.clear(), newRings.clear();
-        for (; j < n && pt(events[j]) == p; ++j) {
+        for (; j < n && s.keys[j].p == p; ++j) {
             Index v = events[j];
             if (j > i) copies.emplace_back(events[i], v);
             Index r = ringOfV[v];
@@ -459,11 +514,64 @@ void Validator::sweepEdges() {
             if (!ringSeen[r]) ringSeen[r] = 1, newRings.push_back(r);  // 2 once placed
         }
         i = j;
+        // The minimal sweep, at a lone vertex where the boundary passes on or ends: the tests of
+        // the pairs that become neighbours (Shamos-Hoey), no more; anything else as below.
+        if (minimal && points.empty() && copies.size() == copiesBefore) {
+            if (ending.size() == 1 && starting.size() == 1) {
+                // With no problem so far and no edge through p, f lies between e's neighbours:
+                // it takes e's place without a comparison. An edge through p is a neighbour, and
+                // f's test with it finds the T-junction: then f's place is checked.
+                Index e = ending[0], f = starting[0];
+                Index before = active.prev(e), after = active.next(e);
+                const size_t found = junctions.size();
+                active.replace(e, f);
+                if (before != kNone) meet(f, before);
+                if (after != kNone) meet(f, after);
+                if (junctions.size() != found)
+                    misplaced = !inOrder(before, f) || !inOrder(f, after);
+                lastPlaced = f, lastY = p.y;
+                continue;
+            }
+            if (ending.size() == 2 && starting.empty()) {
+                Index e1 = ending[0], e2 = ending[1];
+                Index before = active.prev(e1), after = active.next(e1);
+                if (after == e2 || before == e2) {  // side by side, as they must be when clean
+                    if (after == e2) after = active.next(e2);
+                    else before = active.prev(e2);
+                    active.erase(e1), active.erase(e2);
+                    if (before != kNone && after != kNone) meet(before, after);
+                    continue;
+                }
+            }
+        }
+        // A lone vertex where the boundary starts: its first edge by a search from the last
+        // edge placed (events of one height come left to right), the second beside the first.
+        bool placed = false;
+        if (minimal && points.empty() && copies.size() == copiesBefore && ending.empty() &&
+            starting.size() == 2) {
+            Index e1 = starting[0], e2 = starting[1];
+            if (lastPlaced != kNone && lastY == p.y && active.contains(lastPlaced))
+                active.insertNear(e1, lastPlaced, 3);
+            else active.insert(e1);
+            const bool e2After = active.less()(e1, e2);
+            active.insertBeside(e2, e1, e2After);
+            const size_t found = junctions.size();
+            for (Index e : {e1, e2}) {
+                if (Index before = active.prev(e); before != kNone) meet(e, before);
+                if (Index after = active.next(e); after != kNone) meet(e, after);
+            }
+            if (junctions.size() != found) {  // an edge through p: is e2 beside e1 after all?
+                Index left = e2After ? e1 : e2, right = e2After ? e2 : e1;
+                misplaced =
+                    !inOrder(active.prev(left), left) || !inOrder(right, active.next(right));
+            }
+            lastPlaced = e1, lastY = p.y, placed = true;
+        }
         bool handedOver = false;
         for (Index e : ending) {
             Index before = active.prev(e), after = active.next(e);
-            if (before != kNone) classifyMeeting(e, before);
-            if (after != kNone) classifyMeeting(e, after);
+            if (before != kNone) meet(e, before);
+            if (after != kNone) meet(e, after);
             // Where the boundary passes on, the last edge to end hands its place to the first
             // to start when that one lies between the same neighbours: two comparisons instead
             // of a search, the same tree, and the same tests in the same order.
@@ -472,22 +580,22 @@ void Validator::sweepEdges() {
                          (after == kNone || active.less()(f, after));
             if (handedOver) active.replace(e, f);
             else active.erase(e);
-            if (before != kNone && after != kNone) classifyMeeting(before, after);
-            if (handedOver && before != kNone) classifyMeeting(f, before);
-            if (handedOver && after != kNone) classifyMeeting(f, after);
+            if (before != kNone && after != kNone) meet(before, after);
+            if (handedOver && before != kNone) meet(f, before);
+            if (handedOver && after != kNone) meet(f, after);
         }
-        for (size_t k = handedOver ? 1 : 0; k < starting.size(); ++k) {
+        for (size_t k = placed ? starting.size() : handedOver ? 1 : 0; k < starting.size(); ++k) {
             Index e = starting[k];
             active.insert(e);
-            if (Index before = active.prev(e); before != kNone) classifyMeeting(e, before);
-            if (Index after = active.next(e); after != kNone) classifyMeeting(e, after);
+            if (Index before = active.prev(e); before != kNone) meet(e, before);
+            if (Index after = active.next(e); after != kNone) meet(e, after);
         }
         // A point hole is an edge of no length: placed in the active edges for an instant,
         // its neighbours tell whether it lies on an edge and which ring encloses it.
         for (Index v : points) {
             active.insert(v);
-            if (Index before = active.prev(v); before != kNone) classifyMeeting(v, before);
-            if (Index after = active.next(v); after != kNone) classifyMeeting(v, after);
+            if (Index before = active.prev(v); before != kNone) meet(v, before);
+            if (Index after = active.next(v); after != kNone) meet(v, after);
             enclosing[ringOfV[v]] = enclosingAt(v);
             active.erase(v);
         }
@@ -507,6 +615,7 @@ void Validator::sweepEdges() {
                   [&](auto a, auto b) { return active.less()(a.first, b.first); });
         for (auto [e, r] : leftmost) enclosing[r] = enclosingAt(e);
     }
+    return !problem && !misplaced;
 }
 
 // One junction per edge and point, ordered by edge, then along the edge from its start
@@ -538,12 +647,18 @@ constexpr size_t kPairsUpTo = 96;
 
 bool Validator::pairsClear() {
     const Point* V = P.vertices.data();
+    std::vector<EdgeBox>& boxes = s.boxes;  // each edge's box, computed once, not once a pair
+    boxes.resize(n);
     for (Index e = 0; e < n; ++e) {
         Point a = V[e], b = V[e + 1 == n ? 0 : e + 1];
+        boxes[e] = {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
+    }
+    for (Index e = 0; e < n; ++e) {
+        const EdgeBox a = boxes[e];
         for (Index f = e + 1; f < n; ++f) {
-            Point c = V[f], d = V[f + 1 == n ? 0 : f + 1];
-            if (boxesApart(a, b, c, d)) continue;
-            if (a == c) return false;  // a point twice: the rings (here one) touch there
+            const EdgeBox& b = boxes[f];  // as boxesApart()
+            if (a.x1 < b.x0 || b.x1 < a.x0 || a.y1 < b.y0 || b.y1 < a.y0) continue;
+            if (V[e] == V[f]) return false;  // a point twice: the rings (here one) touch there
             classifyMeeting(e, f);
             if (problem || !junctions.empty()) return false;
         }
@@ -556,8 +671,15 @@ Diagnostic Validator::checkEdges() {
         enclosing.assign(1, kNone);
         return {};
     }
+    if (pairsFirst) {
+        if (sweepEdges(true)) {
+            orderJunctions();
+            return {};
+        }
+        copies.clear();
+    }
     problem.reset(), problemCulprits = {}, edgesCrossed = false, junctions.clear();
-    sweepEdges();
+    sweepEdges(false);
     if (problem) return fail(problem->first, problem->second, problemCulprits);
     orderJunctions();
     return {};

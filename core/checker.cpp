@@ -66,7 +66,18 @@ public:
         for (const Triangle& tri : triangles)
             for (int k = 0; k < 3; ++k) to_[fill[C[tri[k]]]++] = C[tri[(k + 1) % 3]];
         fill = {};
-        for (size_t a = 0; a < n; ++a) std::sort(to_.begin() + at_[a], to_.begin() + at_[a + 1]);
+        // A list is a vertex's few outgoing edges, sorted by insertion; a long one (a fan)
+        // by std::sort, so a vertex of high degree costs no quadratic time.
+        for (size_t a = 0; a < n; ++a) {
+            const uint32_t first = at_[a], last = at_[a + 1];
+            if (last - first > 16) {
+                std::sort(to_.begin() + first, to_.begin() + last);
+                continue;
+            }
+            for (uint32_t i = first + 1; i < last; ++i)
+                for (uint32_t j = i; j > first && to_[j - 1] > to_[j]; --j)
+                    std::swap(to_[j - 1], to_[j]);
+        }
         used_.assign(to_.size(), false);
     }
     // A directed edge in two triangles: two equal ends in one list.
@@ -107,17 +118,28 @@ inline uint64_t edgeKey(Index a, Index b) { return (uint64_t(a) << 32) | b; }
 std::vector<Index> canonicalVertices(const std::vector<Point>& V, const std::vector<Index>& part) {
     size_t cap = 16;
     while (cap < V.size() * 2) cap <<= 1;
-    std::vector<Index> slots(cap, kNone), canonical(V.size());
+    // A slot holds a vertex and 32 bits of its hash: a probe compares points only where
+    // the hashes agree, so passing an occupied slot costs no look-up in V (a cache miss).
+    const uint64_t kEmpty = ~uint64_t(0);
+    std::vector<uint64_t> slots(cap, kEmpty);
+    std::vector<Index> canonical(V.size());
+    auto hash = [&](Index v) {
+        return pointHash(V[v]) ^ uint64_t(part[v]) * 0x94d049bb133111ebULL;
+    };
+    // The slots are looked at in random order: ask for a later vertex's slot ahead of time.
+    constexpr Index kAhead = 16;
     for (Index v = 0; v < V.size(); ++v) {
-        uint64_t h = pointHash(V[v]) ^ uint64_t(part[v]) * 0x94d049bb133111ebULL;
+        if (v + kAhead < V.size()) __builtin_prefetch(&slots[hash(v + kAhead) & (cap - 1)]);
+        const uint64_t h = hash(v), tag = h >> 32;
         for (size_t i = h & (cap - 1);; i = (i + 1) & (cap - 1)) {
-            if (slots[i] == kNone) {
-                slots[i] = v;
+            if (slots[i] == kEmpty) {
+                slots[i] = tag << 32 | v;
                 canonical[v] = v;
                 break;
             }
-            if (V[slots[i]] == V[v] && part[slots[i]] == part[v]) {
-                canonical[v] = slots[i];
+            const Index w = Index(slots[i]);
+            if (slots[i] >> 32 == tag && V[w] == V[v] && part[w] == part[v]) {
+                canonical[v] = w;
                 break;
             }
         }

@@ -7,7 +7,8 @@
 // Every command that floods follows the same pipeline (docs/ERRORS.md):
 //   read (warnings to stderr; Malformed -> exit 3) -> validate (Invalid -> exit 4, nothing
 //   written) -> flood (Forbidden -> exit 5) -> exact check of our own output (failure -> exit 6)
-//   -> write. Exit codes are flood::Status values. "-" means stdin for input, stdout for output.
+//   -> write (`triangulate -o FILE`: the check and the writing at once, see checkWhileWriting).
+//   Exit codes are flood::Status values. "-" means stdin for input, stdout for output.
 // Outputs are written whole or not at all (core/output.h; a failed write exits 8).
 #include <malloc.h>
 

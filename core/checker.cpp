@@ -66,7 +66,18 @@ public:
         for (const Triangle& tri : triangles)
             for (int k = 0; k < 3; ++k) to_[fill[C[tri[k]]]++] = C[tri[(k + 1) % 3]];
         fill = {};
-        for (size_t a = 0; a < n; ++a) std::sort(to_.begin() + at_[a], to_.begin() + at_[a + 1]);
+        // A list is a vertex's few outgoing edges, sorted by insertion; a long one (a fan)
+        // by std::sort, so a vertex of high degree costs no quadratic time.
+        for (size_t a = 0; a < n; ++a) {
+            const uint32_t first = at_[a], last = at_[a + 1];
+            if (last - first > 16) {
+                std::sort(to_.begin() + first, to_.begin() + last);
+                continue;
+            }
+            for (uint32_t i = first + 1; i < last; ++i)
+                for (uint32_t j = i; j > first && to_[j - 1] > to_[j]; --j)
+                    std::swap(to_[j - 1], to_[j]);
+        }
         used_.assign(to_.size(), false);
     }
     // A directed edge in two triangles: two equal ends in one list.
@@ -86,6 +97,14 @@ public:
     // Boundary edges are marked on their slot (rule 5), so rule 6 knows them.
     bool marked(uint32_t slot) const { return used_[slot]; }
     void mark(uint32_t slot) { used_[slot] = true; }
+    // Rule 6 over the lists themselves: every unmarked edge (a, b) has its twin (b, a). One
+    // search an edge, where going through the triangles needs two (the edge's own slot too).
+    bool allTwinned() const {
+        for (size_t a = 0; a + 1 < at_.size(); ++a)
+            for (uint32_t i = at_[a]; i < at_[a + 1]; ++i)
+                if (!used_[i] && !contains(to_[i], Index(a))) return false;
+        return true;
+    }
 
 private:
     std::vector<uint32_t> at_, to_;
@@ -99,17 +118,28 @@ inline uint64_t edgeKey(Index a, Index b) { return (uint64_t(a) << 32) | b; }
 std::vector<Index> canonicalVertices(const std::vector<Point>& V, const std::vector<Index>& part) {
     size_t cap = 16;
     while (cap < V.size() * 2) cap <<= 1;
-    std::vector<Index> slots(cap, kNone), canonical(V.size());
+    // A slot holds a vertex and 32 bits of its hash: a probe compares points only where
+    // the hashes agree, so passing an occupied slot costs no look-up in V (a cache miss).
+    const uint64_t kEmpty = ~uint64_t(0);
+    std::vector<uint64_t> slots(cap, kEmpty);
+    std::vector<Index> canonical(V.size());
+    auto hash = [&](Index v) {
+        return pointHash(V[v]) ^ uint64_t(part[v]) * 0x94d049bb133111ebULL;
+    };
+    // The slots are looked at in random order: ask for a later vertex's slot ahead of time.
+    constexpr Index kAhead = 16;
     for (Index v = 0; v < V.size(); ++v) {
-        uint64_t h = pointHash(V[v]) ^ uint64_t(part[v]) * 0x94d049bb133111ebULL;
+        if (v + kAhead < V.size()) __builtin_prefetch(&slots[hash(v + kAhead) & (cap - 1)]);
+        const uint64_t h = hash(v), tag = h >> 32;
         for (size_t i = h & (cap - 1);; i = (i + 1) & (cap - 1)) {
-            if (slots[i] == kNone) {
-                slots[i] = v;
+            if (slots[i] == kEmpty) {
+                slots[i] = tag << 32 | v;
                 canonical[v] = v;
                 break;
             }
-            if (V[slots[i]] == V[v] && part[slots[i]] == part[v]) {
-                canonical[v] = slots[i];
+            const Index w = Index(slots[i]);
+            if (slots[i] >> 32 == tag && V[w] == V[v] && part[w] == part[v]) {
+                canonical[v] = w;
                 break;
             }
         }
@@ -133,6 +163,24 @@ std::string triName(size_t t, const Triangle& tri) {
     return o.str();
 }
 
+// Rule 3: counter-clockwise and non-degenerate. Indices out of range are rule 1's.
+CheckResult counterClockwise(const std::vector<Point>& V, const std::vector<Triangle>& triangles) {
+    for (size_t t = 0; t < triangles.size(); ++t) {
+        const Triangle& tri = triangles[t];
+        if (tri[0] >= V.size() || tri[1] >= V.size() || tri[2] >= V.size()) continue;
+        int o = orient(V[tri[0]], V[tri[1]], V[tri[2]]);
+        if (o == 0)
+            return fail(CheckRule::CounterClockwise,
+                        "degenerate-triangle: " + triName(t, tri) + " has zero area", {uint32_t(t)},
+                        {tri[0], tri[1], tri[2]});
+        if (o < 0)
+            return fail(CheckRule::CounterClockwise,
+                        "clockwise-triangle: " + triName(t, tri) + " is clockwise", {uint32_t(t)},
+                        {tri[0], tri[1], tri[2]});
+    }
+    return kPass;
+}
+
 // One function per rule, run in order; each leaves behind what later rules use.
 struct Checker {
     const Polygon& polygon;
@@ -144,6 +192,7 @@ struct Checker {
     std::optional<EdgeLists> edges;  // rule 4 on
     std::vector<char> forwardRing;   // the ring's own direction has the interior on its left
     AreaEstimate polygonArea;        // doubled, rule 7
+    AreaEstimate triangleArea;       // doubled, rule 7 (checkTriangles)
 
     Checker(const Polygon& p, const std::vector<Triangle>& t) : polygon(p), triangles(t) {}
 
@@ -272,23 +321,6 @@ struct Checker {
         return kPass;
     }
 
-    // Rule 3: counter-clockwise and non-degenerate.
-    CheckResult counterClockwise() {
-        for (size_t t = 0; t < triangles.size(); ++t) {
-            const Triangle& tri = triangles[t];
-            int o = orient(V[tri[0]], V[tri[1]], V[tri[2]]);
-            if (o == 0)
-                return fail(CheckRule::CounterClockwise,
-                            "degenerate-triangle: " + triName(t, tri) + " has zero area",
-                            {uint32_t(t)}, {tri[0], tri[1], tri[2]});
-            if (o < 0)
-                return fail(CheckRule::CounterClockwise,
-                            "clockwise-triangle: " + triName(t, tri) + " is clockwise",
-                            {uint32_t(t)}, {tri[0], tri[1], tri[2]});
-        }
-        return kPass;
-    }
-
     // Rule 4: directed triangle edges are distinct.
     CheckResult distinctEdges() {
         if (triangles.size() * 3 >= kNone)
@@ -398,6 +430,8 @@ struct Checker {
 
     // Rule 6: interior edges come in twins.
     CheckResult interiorTwins() {
+        if (edges->allTwinned()) return kPass;
+        // The first unmatched edge in triangle order (the message names its triangle).
         for (size_t t = 0; t < triangles.size(); ++t) {
             const Triangle& tri = triangles[t];
             for (int k = 0; k < 3; ++k) {
@@ -419,9 +453,6 @@ struct Checker {
     // guard on the code of rules 4-6, in doubles: a sum differing by more than the two error
     // bounds differs exactly (no exact sum of 10^6 triangles is needed to prove what holds).
     CheckResult area() {
-        AreaEstimate triangleArea;
-        for (const Triangle& tri : triangles)
-            triangleArea.addTriangle(V[tri[0]], V[tri[1]], V[tri[2]]);
         const double gap = std::fabs(triangleArea.value() - polygonArea.value());
         if (triangleArea.finite() && polygonArea.finite() &&
             gap * (1 - 0x1p-52) > triangleArea.bound() + polygonArea.bound()) {
@@ -455,12 +486,45 @@ struct Checker {
 
 }  // namespace
 
+TriangleCheck checkTriangles(const Polygon& polygon, const std::vector<Triangle>& triangles) {
+    const std::vector<Point>& V = polygon.vertices;
+    TriangleCheck each{counterClockwise(V, triangles), {}};
+    for (const Triangle& tri : triangles)
+        if (tri[0] < V.size() && tri[1] < V.size() && tri[2] < V.size())
+            each.area.addTriangle(V[tri[0]], V[tri[1]], V[tri[2]]);
+    return each;
+}
+
 CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangle>& triangles) {
+    return checkTriangulation(polygon, triangles, {});
+}
+
+CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangle>& triangles,
+                               const std::function<TriangleCheck()>& triangleCheck) {
+    using Rule = CheckResult (Checker::*)();
     Checker checker(polygon, triangles);
-    for (CheckResult (Checker::*rule)() :
-         {&Checker::rings, &Checker::indices, &Checker::partsAndCount, &Checker::counterClockwise,
-          &Checker::distinctEdges, &Checker::orientRings, &Checker::boundaryEdges,
-          &Checker::interiorTwins, &Checker::area, &Checker::partsDisjoint}) {
+    for (Rule rule : {&Checker::rings, &Checker::indices, &Checker::partsAndCount}) {
+        CheckResult r = (checker.*rule)();
+        if (!r.ok) return r;
+    }
+    // Rule 3 here, or from the caller once a later rule needs it: it is reported before them.
+    std::optional<TriangleCheck> each;
+    if (!triangleCheck) {
+        each = checkTriangles(polygon, triangles);
+        if (!each->rule3.ok) return each->rule3;
+    }
+    auto rule3 = [&]() -> const CheckResult& {
+        if (!each) each = triangleCheck();
+        return each->rule3;
+    };
+    for (Rule rule : {&Checker::distinctEdges, &Checker::orientRings, &Checker::boundaryEdges,
+                      &Checker::interiorTwins}) {
+        CheckResult r = (checker.*rule)();
+        if (!r.ok) return rule3().ok ? r : rule3();
+    }
+    if (!rule3().ok) return rule3();
+    checker.triangleArea = each->area;
+    for (Rule rule : {&Checker::area, &Checker::partsDisjoint}) {
         CheckResult r = (checker.*rule)();
         if (!r.ok) return r;
     }

@@ -1,9 +1,11 @@
 // The exact triangulation checker: proves a triangle list is a triangulation of a polygon.
 #pragma once
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "polygon.h"
+#include "ring_area.h"  // AreaEstimate
 #include "status.h"
 
 namespace flood {
@@ -40,5 +42,18 @@ struct CheckResult {
 // different parts have disjoint interiors (parts may touch at points, at a vertex inside
 // another part's edge, along collinear stretches; a part may lie in another's hole).
 CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangle>& triangles);
+
+// Rule 3 and the triangles' half of rule 7 look at each triangle alone, so a caller with a
+// core to spare may compute them there (checkTriangles) while checkTriangulation does the
+// rest, handed a function that waits for them (`triangleCheck`): cli/main.cpp does it beside
+// writing the output. The result, message included, is the one checkTriangulation gives alone.
+struct TriangleCheck {
+    CheckResult rule3;  // the first clockwise or degenerate triangle, or a pass
+    AreaEstimate area;  // the doubled triangle areas, summed in triangle order
+};
+// Safe on any input: a triangle with an index out of range is left to rule 1.
+TriangleCheck checkTriangles(const Polygon& polygon, const std::vector<Triangle>& triangles);
+CheckResult checkTriangulation(const Polygon& polygon, const std::vector<Triangle>& triangles,
+                               const std::function<TriangleCheck()>& triangleCheck);
 
 }  // namespace flood

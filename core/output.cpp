@@ -127,6 +127,13 @@ Output::~Output() {
     if (!o.temp.empty()) ::unlink(o.temp.c_str());
 }
 
+bool Output::discardable() const { return !impl_->temp.empty(); }
+
+bool Output::discardable(const std::string& path) {
+    struct stat st;
+    return path != "-" && (::stat(path.c_str(), &st) != 0 || S_ISREG(st.st_mode));
+}
+
 std::ostream& Output::stream() { return impl_->path == "-" ? std::cout : impl_->out; }
 
 Status Output::commit(std::string* message) {

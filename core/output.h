@@ -22,6 +22,13 @@ public:
     Output& operator=(const Output&) = delete;
 
     std::ostream& stream();
+    // True when this output goes to a temporary file that commit() renames into place: what
+    // is written may still be discarded unseen (by not committing), so it can be written
+    // before it is known to be wanted. False for stdout and outputs written in place.
+    bool discardable() const;
+    // Whether Output(path) would be discardable, asked before opening it (a pipe is not
+    // opened until it is wanted: opening blocks until a reader comes).
+    static bool discardable(const std::string& path);
     // Flushes, closes and renames. On failure prints "error: PATH: cannot write: REASON"
     // (the system's reason), removes the temporary and returns WriteFailed. With `message`
     // the line goes there instead of stderr (the viewer shows it in its status line).

@@ -3,8 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <future>
+#include <set>
 
 #include "checker.h"
+#include "flood.h"
+#include "generate.h"
+#include "io.h"
 
 using flood::checkTriangulation;
 using flood::Point;
@@ -302,4 +307,71 @@ TEST(Checker, ReportsTheFailedRule) {
     EXPECT_EQ(ruleOf(twice, {{0, 1, 2}, {0, 2, 3}, {4, 5, 6}, {4, 6, 7}}),
               CheckRule::PartsDisjoint);
     EXPECT_EQ(ruleOf(square(), {{0, 1, 2}, {0, 2, 3}}), CheckRule::None);
+}
+
+// checkTriangles() on another thread, handed to checkTriangulation (as `flood triangulate -o`
+// does while writing), gives the verdict of the check alone: the same rule, reason and
+// culprits, rule 3 reported before any later rule even when the others finish first. Over
+// every generated family, triangulated, then broken in each way the rules catch.
+TEST(Checker, TriangleCheckOnAnotherThreadGivesTheSameVerdict) {
+    auto elsewhere = [](const Polygon& p, const std::vector<Triangle>& t) {
+        std::future<flood::TriangleCheck> each =
+            std::async(std::launch::async, [&] { return flood::checkTriangles(p, t); });
+        return checkTriangulation(p, t, [&] { return each.get(); });
+    };
+    size_t cases = 0, rejectedCases = 0;
+    std::set<flood::CheckRule> rules;
+    auto same = [&](const Polygon& p, const std::vector<Triangle>& t, const std::string& what) {
+        flood::CheckResult alone = checkTriangulation(p, t), split = elsewhere(p, t);
+        EXPECT_EQ(alone.ok, split.ok) << what;
+        EXPECT_EQ(alone.rule, split.rule) << what;
+        EXPECT_EQ(alone.reason, split.reason) << what;
+        EXPECT_EQ(alone.culprits.triangles, split.culprits.triangles) << what;
+        EXPECT_EQ(alone.culprits.vertices, split.culprits.vertices) << what;
+        EXPECT_EQ(alone.culprits.rings, split.culprits.rings) << what;
+        ++cases, rejectedCases += !alone.ok;
+        rules.insert(alone.rule);
+    };
+    for (const std::string& family : flood::familyNames()) {
+        Polygon p = flood::generate(family, 7, 400);
+        ASSERT_TRUE(flood::validate(p, family).ok()) << family;
+        const std::vector<Triangle> t = flood::triangulate(p, nullptr, {}).triangles;
+        ASSERT_FALSE(t.empty()) << family;
+        same(p, t, family);
+        const size_t k = t.size() / 2;
+        auto broken = [&](const char* how, auto&& change) {
+            std::vector<Triangle> b = t;
+            change(b);
+            same(p, b, family + ": " + how);
+        };
+        broken("flipped", [&](auto& b) { std::swap(b[k][1], b[k][2]); });  // rules 3 and 5/6
+        broken("flipped last", [&](auto& b) { std::swap(b.back()[1], b.back()[2]); });
+        broken("dropped", [&](auto& b) { b.erase(b.begin() + long(k)); });
+        broken("twice", [&](auto& b) { b[k] = b[k == 0 ? 1 : k - 1]; });
+        broken("degenerate", [&](auto& b) { b[k][2] = b[k][1]; });
+        broken("out of range", [&](auto& b) { b[k][0] = flood::Index(p.vertices.size()); });
+        broken("rotated ends", [&](auto& b) {  // two triangles trade a corner: twins break
+            std::swap(b[k][0], b[(k + 1) % b.size()][0]);
+        });
+    }
+    EXPECT_GT(rejectedCases, cases / 2);
+    for (flood::CheckRule r : {flood::CheckRule::None, flood::CheckRule::Indices,
+                               flood::CheckRule::PartsAndCount, flood::CheckRule::CounterClockwise})
+        EXPECT_TRUE(rules.count(r)) << "no case broke rule " << int(r);
+}
+
+// A fan: one vertex with an edge to every other (the checker sorts a long edge list
+// differently from the short ones), accepted, and refused with one triangle turned over.
+TEST(Checker, FanAroundOneVertex) {
+    const int n = 1000;
+    std::vector<Point> ring;
+    for (int i = 0; i < n; ++i)  // along the parabola y = x^2: convex, counter-clockwise
+        ring.push_back({double(i), double(i) * i});
+    Polygon p;
+    p.addRing(ring, true);
+    std::vector<Triangle> fan;
+    for (flood::Index i = 1; i + 1 < n; ++i) fan.push_back({0, i, i + 1});
+    EXPECT_TRUE(accepted(p, fan));
+    std::swap(fan[n / 2][1], fan[n / 2][2]);
+    EXPECT_TRUE(rejected(p, fan, "clockwise-triangle"));
 }

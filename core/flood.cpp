@@ -51,7 +51,7 @@ public:
           own_(keep ? nullptr : new MachineBuffers),
           b_(keep ? *keep : *own_),
           up_(opt.up),
-          heights_(poly, opt.up, b_.nodes, b_.rotated),
+          heights_(poly, opt.up, b_.nodes, b_.rotated, b_.ranks, b_.rankOrder),
           result_(out) {}
 
     Machine(const Machine&) = delete;

@@ -20,8 +20,9 @@ Point toUp(Point p, Up up) {
 
 }  // namespace
 
-Heights::Heights(const Polygon& poly, Up up, const Nodes& nodes, std::vector<Point>& rotated)
-    : poly_(poly), nodes_(nodes), up_(up), general_(!up.axis()) {
+Heights::Heights(const Polygon& poly, Up up, const Nodes& nodes, std::vector<Point>& rotated,
+                 std::vector<uint32_t>& rank, std::vector<Index>& order)
+    : poly_(poly), nodes_(nodes), up_(up), general_(!up.axis()), rank_(rank), order_(order) {
     if (general_ || (up.x == 0 && up.y > 0)) {  // heights are the input's or ranks: no copy
         pts_ = poly.vertices.data();
         return;
@@ -33,7 +34,8 @@ Heights::Heights(const Polygon& poly, Up up, const Nodes& nodes, std::vector<Poi
 }
 
 void Heights::rank() {
-    std::vector<Index> order(poly_.vertices.size());
+    std::vector<Index>& order = order_;
+    order.resize(poly_.vertices.size());
     std::iota(order.begin(), order.end(), Index(0));
     auto finite = [&](Index v) { return std::isfinite(pts_[v].x) && std::isfinite(pts_[v].y); };
     std::sort(order.begin(), order.end(), [&](Index a, Index b) {

@@ -16,8 +16,11 @@ namespace flood {
 class Heights {
 public:
     // The vertices of `poly` as the machine sees them: turned into `rotated` when `up` is an
-    // axis other than +y, else as given. Off the axes rank() must run before any comparison.
-    Heights(const Polygon& poly, Up up, const Nodes& nodes, std::vector<Point>& rotated);
+    // axis other than +y, else as given. Off the axes rank() must run before any comparison;
+    // it fills `rank` (per vertex) using `order` as scratch: both lent, so a warm run off the
+    // axes allocates nothing either.
+    Heights(const Polygon& poly, Up up, const Nodes& nodes, std::vector<Point>& rotated,
+            std::vector<uint32_t>& rank, std::vector<Index>& order);
     // Off the axes no coordinate is a height: the vertices are sorted once by the exact
     // comparison along the direction (ties along its perpendicular, then by index, as
     // lower()) and compared by rank from then on. Non-finite vertices go last.
@@ -57,7 +60,8 @@ private:
     const Up up_;
     const bool general_;
     const Point* pts_ = nullptr;
-    std::vector<uint32_t> rank_;  // per vertex, off the axes: its rank by height along up_
+    std::vector<uint32_t>& rank_;  // per vertex, off the axes: its rank by height along up_
+    std::vector<Index>& order_;    // rank()'s scratch
 };
 
 }  // namespace flood

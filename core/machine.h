@@ -25,6 +25,8 @@ struct GorgeRec {
 // from run to run, so that a run on an input no larger than the last one allocates nothing.
 struct MachineBuffers {
     std::vector<Point> rotated;
+    std::vector<uint32_t> ranks;  // off the axes (heights.h)
+    std::vector<Index> rankOrder;
     Nodes nodes;
     std::vector<NodeId> partVertices, points;
     std::vector<uint32_t> todo;

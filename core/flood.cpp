@@ -105,7 +105,8 @@ private:
             }
             step();
         }
-        const NodeId alive = ok() ? firstAliveNode(partFirstNode_) : kNil;
+        // Every node the part had was cut off (the usual end): nothing to look for.
+        const NodeId alive = ok() && killed_ < partNodes_ ? firstAliveNode(partFirstNode_) : kNil;
         if (alive != kNil) {
             Event f = begin(Action::Forbidden);
             forbid(f, Forbidden::LeftBehind, alive, kNil);
@@ -117,7 +118,7 @@ private:
     NodeId setUp(uint32_t part) {
         const Part& pa = poly_.parts[part];
         part_ = part;
-        partNodes_ = 0;
+        partNodes_ = killed_ = 0;
         partFirstNode_ = nodes_.end();
         for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
             const Point p = heights_.points()[v];
@@ -236,7 +237,7 @@ private:
     }
     static void mark(Event& e, Test t, bool r) {
         e.tested |= uint8_t(1u << int(t));
-        if (r) e.passed |= uint8_t(1u << int(t));
+        e.passed |= uint8_t(unsigned(r) << int(t));  // no branch: r is the test just decided
     }
 
     // ---- [SECTION] the decision tree (Fig. 9) ----------------------------------------------
@@ -292,6 +293,10 @@ private:
     void unlink(NodeId n) {
         nodes_[prev(n)].next = next(n);
         nodes_[next(n)].prev = prev(n);
+        kill(n);
+    }
+    void kill(NodeId n) {  // counted, so that the left-behind check can tell none is left
+        killed_ += nodes_[n].alive;
         nodes_[n].alive = false;
     }
 
@@ -444,10 +449,11 @@ private:
         for (NodeId c = left_; c != right_;) {
             NodeId n = next(c);
             cutTriangle(apex, c, n);
-            nodes_[c].alive = false;
+            kill(c);
             c = n;
         }
-        nodes_[right_].alive = nodes_[apex].alive = false;
+        kill(right_);
+        kill(apex);
         left_ = right_ = water_ = kNil;
         takeNextGorge(e);
         emit(e);
@@ -518,7 +524,7 @@ private:
     Stretches& walked_ = b_.walked;          // spill walks remembered (stretches.h)
     std::vector<uint32_t>& todo_ = b_.todo;  // pending gorges (ids), last pushed first
     NodeId left_ = kNil, right_ = kNil, water_ = kNil, partFirstNode_ = NodeId(0);
-    uint32_t part_ = 0, partNodes_ = 0, cut_ = 0, step_ = 0;
+    uint32_t part_ = 0, partNodes_ = 0, killed_ = 0, cut_ = 0, step_ = 0;  // killed_: of the part
     uint64_t budget_ = 0;
     FloodResult& result_;
 };

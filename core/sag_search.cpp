@@ -46,6 +46,7 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
 
 NodeId SagSearch::find(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
                        Event& e) {
+    if (unused_ == 0) return kNil;  // every sag bridged already (or none): nothing to count
     WorkCounters& w = work();
     const uint64_t before = w.nodeVisits + w.sagTests + w.orientCalls;  // not all ten counters
     NodeId s = search(left, right, water, next, partNodes, e);

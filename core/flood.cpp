@@ -33,6 +33,7 @@
 //                           are in triangulate.cpp
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include "machine.h"
 #include "predicates.h"
@@ -42,7 +43,23 @@
 namespace flood {
 namespace {
 
+// An event nobody records: every field takes any value and keeps none, so a run without a
+// listener decides exactly as a recorded one and stores nothing (see flood() below).
+struct QuietEvent {
+    struct Sink {
+        template <class T>
+        void operator=(const T&) {}
+    };
+#define FLOOD_X(kind, type, name, initial) Sink name;
+    FLOOD_EVENT_FIELDS(FLOOD_X)
+#undef FLOOD_X
+};
+
+// kRecording: events are built (for the listener, or for the failure event); else QuietEvent.
+template <bool kRecording>
 class Machine {
+    using Ev = std::conditional_t<kRecording, Event, QuietEvent>;
+
 public:
     Machine(const Polygon& poly, Listener* listener, const Options& opt, FloodResult& out,
             MachineBuffers* keep)
@@ -56,6 +73,8 @@ public:
 
     Machine(const Machine&) = delete;
     Machine& operator=(const Machine&) = delete;
+
+    bool refused() const { return refused_; }
 
     void run() {
         nodes_.clear();
@@ -92,7 +111,7 @@ private:
     void floodPart(uint32_t part) {
         const NodeId start = setUp(part);
         if (!ok()) return;
-        Event e = begin(Action::Start);
+        Ev e = begin(Action::Start);
         if (!isMinimum(start) || turn(prev(start), start, next(start)) <= 0)
             return forbid(e, Forbidden::StartNotBottom, start, kNil);
         startGorge(start);
@@ -100,7 +119,7 @@ private:
         emit(e);
         while (ok() && left_ != kNil) {
             if (budget_-- == 0) {
-                Event f = begin(Action::Forbidden);
+                Ev f = begin(Action::Forbidden);
                 return forbid(f, Forbidden::NoProgress, left_, right_);
             }
             step();
@@ -108,7 +127,7 @@ private:
         // Every node the part had was cut off (the usual end): nothing to look for.
         const NodeId alive = ok() && killed_ < partNodes_ ? firstAliveNode(partFirstNode_) : kNil;
         if (alive != kNil) {
-            Event f = begin(Action::Forbidden);
+            Ev f = begin(Action::Forbidden);
             forbid(f, Forbidden::LeftBehind, alive, kNil);
         }
     }
@@ -123,7 +142,7 @@ private:
         for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
             const Point p = heights_.points()[v];
             if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
-                Event f = begin(Action::Forbidden);
+                Ev f = begin(Action::Forbidden);
                 forbid(f, Forbidden::NotFinite, kNil, kNil, v);
                 return kNil;
             }
@@ -132,7 +151,7 @@ private:
             const Ring& ring = poly_.rings[r];
             bool steiner = ring.count == 1 && r != pa.firstRing;  // a point hole
             if (ring.count < 3 && !steiner) {
-                Event f = begin(Action::Forbidden);
+                Ev f = begin(Action::Forbidden);
                 forbid(f, Forbidden::ShortLoop, kNil, kNil, ring.count ? ring.first : kNone, r);
                 return kNil;
             }
@@ -192,13 +211,17 @@ private:
         if (left_ == kNil) return {};
         return {nodes_[left_].v, nodes_[right_].v, nodes_[prev(left_)].v, nodes_[next(right_)].v};
     }
-    Event begin(Action a) {
-        Event e;
-        e.action = a;
-        e.part = part_;
-        if (listener_) e.before = fingers();
-        e.firstTriangle = uint32_t(result_.triangles.size());
-        return e;
+    Ev begin(Action a) {
+        if constexpr (!kRecording) {
+            return Ev{};
+        } else {
+            Ev e;
+            e.action = a;
+            e.part = part_;
+            if (listener_) e.before = fingers();
+            e.firstTriangle = uint32_t(result_.triangles.size());
+            return e;
+        }
     }
     void emit(Event& e) {
         e.step = step_++;
@@ -235,6 +258,15 @@ private:
         }
         left_ = right_ = kNil;
     }
+    // Unrecorded, an event only counts its step; a forbidden state stops the run, and flood()
+    // runs it again recording, for the failure event and its diagnostic.
+    void emit(QuietEvent&) { ++step_; }
+    void forbid(QuietEvent&, Forbidden, NodeId, NodeId, Index = kNone, Index = kNone) {
+        refused_ = true;
+        result_.diagnostic.status = Status::Forbidden;
+        left_ = right_ = kNil;
+    }
+    static void mark(QuietEvent&, Test, bool) {}
     static void mark(Event& e, Test t, bool r) {
         e.tested |= uint8_t(1u << int(t));
         e.passed |= uint8_t(unsigned(r) << int(t));  // no branch: r is the test just decided
@@ -244,7 +276,7 @@ private:
     void step() {
         work().nodeVisits += 4;  // Left, Right and the fingers
         NodeId nl = prev(left_), nr = next(right_);
-        Event e = begin(Action::Raise);
+        Ev e = begin(Action::Raise);
         bool same = nl == nr;
         mark(e, Test::SameNext, same);
         if (same) {
@@ -281,8 +313,12 @@ private:
 
     // The lowest unused sag above the water and below Next inside the quadrangle
     // Left, Right, NextRight, NextLeft (§4, §5): sag_search.h.
-    NodeId findSag(NodeId nx, Event& e) {
-        return sags_.find(left_, right_, water_, nx, partNodes_, e);
+    NodeId findSag(NodeId nx, Ev& e) {
+        if constexpr (kRecording) {
+            return sags_.find(left_, right_, water_, nx, partNodes_, e);
+        } else {
+            return sags_.find(left_, right_, water_, nx, partNodes_, uncounted_);
+        }
     }
 
     // ---- [SECTION] the five actions ----------------------------------------------------------
@@ -319,7 +355,7 @@ private:
     }
 
     // Raise: Next joins the chain; the wedge of chain nodes it sees is cut off (Fig. 2).
-    void raise(Event& e, Side side) {
+    void raise(Ev& e, Side side) {
         uint32_t guard = partNodes_ + 2;  // a walk longer than the part means broken loops
         const bool left = side == Side::Left;
         NodeId& end = left ? left_ : right_;
@@ -340,7 +376,7 @@ private:
     // A Steiner point (a one-node loop) bounds nothing, so it splits nothing: the diagonal is
     // an antenna c -> s -> c' into the gorge, s stays inside the chain as the water node
     // (reflex: the whole gorge above it is open), and no gorge is pushed.
-    void bridge(Event& e, NodeId s) {
+    void bridge(Ev& e, NodeId s) {
         e.action = Action::Bridge;
         NodeId c = water_;
         e.sag = nodes_[s].v;
@@ -386,7 +422,7 @@ private:
     // set to the other bank, and the water runs down the far side of the top to the next
     // bottom, skipping the sags it drips from (Fig. 5). A pending gorge met on the way
     // is the one that collects the water: it is taken off the to-do list.
-    void spill(Event& e, Side side, NodeId t) {
+    void spill(Ev& e, Side side, NodeId t) {
         e.action = Action::Spill;
         NodeId other = side == Side::Left ? right_ : left_;
         nodes_[t].jump = other;
@@ -416,7 +452,7 @@ private:
 
     // Jump: the water reached a held top from its far side; the chain continues on the
     // other bank, where the jump pointer leads (Fig. 6). The two chains meet at the top.
-    void jump(Event& e, Side side, NodeId t) {
+    void jump(Ev& e, Side side, NodeId t) {
         e.action = Action::Jump;
         uint32_t g = side == Side::Left ? nodes_[t].gorgeRight : nodes_[t].gorgeLeft;
         e.top = nodes_[t].v;
@@ -434,7 +470,7 @@ private:
 
     // Fill: NextLeft and NextRight are one node: the fan from it closes the loop (Fig. 3).
     // Then the next pending gorge on the to-do list becomes active.
-    void fill(Event& e) {
+    void fill(Ev& e) {
         e.action = Action::Fill;
         NodeId apex = prev(left_);
         if (left_ == right_) return forbid(e, Forbidden::FillOpen, apex, left_);
@@ -462,7 +498,7 @@ private:
     // ---- [SECTION] the to-do list and the gorges -------------------------------------------
     // The next gorge to flood: the last pending gorge on the to-do list, else the lowest
     // bottom the water has not reached. False when neither exists.
-    bool takeNextGorge(Event& e) {
+    bool takeNextGorge(Ev& e) {
         while (!todo_.empty()) {
             uint32_t g = todo_.back();
             todo_.pop_back();
@@ -527,13 +563,21 @@ private:
     uint32_t part_ = 0, partNodes_ = 0, killed_ = 0, cut_ = 0, step_ = 0;  // killed_: of the part
     uint64_t budget_ = 0;
     FloodResult& result_;
+    bool refused_ = false;  // quiet: a forbidden state was reached
+    Event uncounted_;       // quiet: the sag search counts its tests into an event; this one
 };
 
 }  // namespace
 
+// With nobody listening no event is built. A run that ends in a forbidden state is then run
+// again recording (as before: the same decisions, on the same buffers), so that its result
+// carries the failure event and the diagnostic that names it, exactly as a recorded run would.
 void flood(const Polygon& poly, Listener* listener, const Options& options, FloodResult& out,
            MachineBuffers* keep) {
-    Machine(poly, listener, options, out, keep).run();
+    if (listener) return Machine<true>(poly, listener, options, out, keep).run();
+    Machine<false> quiet(poly, nullptr, options, out, keep);
+    quiet.run();
+    if (quiet.refused()) Machine<true>(poly, nullptr, options, out, keep).run();
 }
 
 }  // namespace flood

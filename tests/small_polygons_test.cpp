@@ -163,6 +163,42 @@ TEST(SmallPolygons, WorkPerCallIsAFewStepsPerVertex) {
     }
 }
 
+// Without a listener no event is built; a run that ends in a forbidden state is flooded again,
+// recording, for its failure event. That event is the one a listener sees last, and the run
+// cuts the same triangles in the same steps.
+TEST(SmallPolygons, AnUnrecordedRefusalCarriesTheRecordedFailure) {
+    struct Last : Listener {
+        Event last;
+        void onEvent(const Event& e) override { last = e; }
+    };
+    std::vector<Polygon> invalid;
+    for (const std::string& family : invalidFamilyNames())
+        for (uint64_t seed = 1; seed <= 3; ++seed)
+            invalid.push_back(generateInvalid(family, seed, 40));
+    size_t refused = 0;
+    Triangulator t;
+    for (const Polygon& p : invalid) {
+        Last heard;
+        const FloodResult recorded = triangulate(p, &heard);
+        for (const FloodResult& quiet : {triangulate(p), t.run(p)}) {
+            EXPECT_EQ(quiet.diagnostic.status, recorded.diagnostic.status);
+            EXPECT_EQ(quiet.triangles, recorded.triangles);
+            EXPECT_EQ(quiet.steps, recorded.steps);
+            if (recorded.diagnostic.status != Status::Forbidden) continue;
+            EXPECT_FALSE(quiet.diagnostic.message.empty());
+            EXPECT_EQ(quiet.failure.action, Action::Forbidden);
+            EXPECT_EQ(quiet.failure.reason, heard.last.reason);
+            EXPECT_EQ(quiet.failure.step, heard.last.step);
+            EXPECT_EQ(quiet.failure.culprit, heard.last.culprit);
+            EXPECT_EQ(quiet.failure.culprit2, heard.last.culprit2);
+            EXPECT_EQ(quiet.failure.tested, heard.last.tested);
+            EXPECT_EQ(quiet.failure.passed, heard.last.passed);
+        }
+        refused += recorded.diagnostic.status == Status::Forbidden;
+    }
+    EXPECT_GT(refused, invalid.size() / 4);  // the machine itself refuses many of them
+}
+
 TEST(SmallPolygons, TriangulateAllocatesOnlyItsResult) {
     Polygon p = validated(sourcePath("polygons/holes.json"));
     triangulate(p);  // this thread's buffers grow once

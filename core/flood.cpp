@@ -163,34 +163,41 @@ private:
         const PartLoops loops =
             buildLoops(poly_, heights_.points(), pa, nodes_, partVertices, points, b_.loops);
         partNodes_ = nodes_.end() - partFirstNode_;
-        findSags(partVertices, points, loops.touching);
+        NodeId start = findSags(partVertices, points, loops);
         gorges_.clear();
         todo_.clear();
         budget_ = 8ull * partNodes_ + 64;
-        NodeId start = kNil;
-        for (uint32_t i = 0; i < loops.outerNodes; ++i) {
-            NodeId n = partVertices[i];
-            if (start == kNil || lower(n, start)) start = n;
+        if (loops.touching) {  // merged loops: the outer ring's lowest node may not be a minimum
+            start = kNil;
+            for (uint32_t i = 0; i < loops.outerNodes; ++i) {
+                NodeId n = partVertices[i];
+                if (start == kNil || lower(n, start)) start = n;
+            }
         }
         return start;
     }
 
     // The sags of the part, sorted by height (§4), and its bottoms, both taken from its minima
     // (kept in the bottoms' list until the bottoms are sorted out of them: no node is
-    // classified twice).
-    void findSags(const std::vector<NodeId>& partVertices, const std::vector<NodeId>& points,
-                  bool touching) {
+    // classified twice). Returns the lowest minimum of the outer ring's nodes: unless loops
+    // were merged, the outer loop is that ring, and its lowest node is one of its minima.
+    NodeId findSags(const std::vector<NodeId>& partVertices, const std::vector<NodeId>& points,
+                    const PartLoops& loops) {
         std::vector<NodeId>& sags = sags_.sags();
         std::vector<NodeId>& bottoms = bottoms_.reset();
         sags.clear();
         for (NodeId n : partVertices)
             if (isMinimum(n)) bottoms.push_back(n);
-        for (NodeId n : bottoms)
+        const NodeId outerEnd = partFirstNode_ + loops.outerNodes;  // the outer ring's nodes
+        NodeId lowest = kNil;
+        for (NodeId n : bottoms) {
+            if (n < outerEnd && (lowest == kNil || lower(n, lowest))) lowest = n;
             if (turn(prev(n), n, next(n)) <= 0) sags.push_back(n);
+        }
         // A point hole is a hole whose lowest vertex is its only one: a sag.
         sags.insert(sags.end(), points.begin(), points.end());
         sags_.index(heights_, partFirstNode_, poly_.rings[poly_.parts[part_].firstRing].first,
-                    touching);
+                    loops.touching);
         // The bottoms, lowest first: every one of them starts a gorge unless the water
         // reaches it first. They are the to-do list of last resort (dry_bottoms.h).
         size_t kept = 0;
@@ -198,6 +205,7 @@ private:
             if (turn(prev(n), n, next(n)) > 0) bottoms[kept++] = n;
         bottoms.resize(kept);
         walked_.clear(partFirstNode_);
+        return lowest;
     }
 
     NodeId firstAliveNode(NodeId from) const {

@@ -16,7 +16,7 @@ NodeId DryBottoms::lowest(const Heights& heights) {
         size_t kept = 0;
         work().nodeVisits += bottoms_.size();
         for (NodeId b : bottoms_) {
-            if (nodes[b].wet || !nodes[b].alive) continue;
+            if (nodes.wet(b) || !nodes.alive(b)) continue;
             bottoms_[kept++] = b;
             if (best == kNil || heights.lower(b, best)) best = b;
         }
@@ -27,7 +27,7 @@ NodeId DryBottoms::lowest(const Heights& heights) {
     for (; cursor_ < bottoms_.size(); ++cursor_) {
         ++work().nodeVisits;
         NodeId b = bottoms_[cursor_];
-        if (!nodes[b].wet && nodes[b].alive) return b;
+        if (!nodes.wet(b) && nodes.alive(b)) return b;
     }
     return kNil;
 }

@@ -182,7 +182,7 @@ private:
 
     NodeId firstAliveNode(NodeId from) const {
         for (NodeId n = from; n < nodes_.end(); n = n + 1)
-            if (nodes_[n].alive) return n;
+            if (nodes_.alive(n)) return n;
         return kNil;
     }
 
@@ -272,7 +272,7 @@ private:
         bool top = turn(prev(c), c, next(c)) <= 0;
         mark(e, Test::CIsTop, top);
         if (!top) return forbid(e, Forbidden::CeilingAsEnd, c, nx);
-        bool jumpSet = nodes_[c].jump != kNil;
+        bool jumpSet = nodes_.ends(c).jump != kNil;
         mark(e, Test::JumpSet, jumpSet);
         if (jumpSet) return jump(e, side, c);
         spill(e, side, c);
@@ -292,7 +292,7 @@ private:
     void unlink(NodeId n) {
         nodes_[prev(n)].next = next(n);
         nodes_[next(n)].prev = prev(n);
-        nodes_[n].alive = false;
+        nodes_.kill(n);
     }
 
     // Cuts off the wedge of chain nodes that `apex` sees (a Raise, each half of a Bridge): from
@@ -304,7 +304,7 @@ private:
             const NodeId along = forward ? next(c) : prev(c);
             const NodeId a = forward ? apex : along, b = forward ? along : apex;
             if (turn(a, c, b) <= 0) return true;
-            if (guard-- == 0 || !nodes_[c].alive) return false;
+            if (guard-- == 0 || !nodes_.alive(c)) return false;
             ++work().nodeVisits;
             cutTriangle(a, c, b);
             unlink(c);
@@ -384,7 +384,7 @@ private:
     void spill(Event& e, Side side, NodeId t) {
         e.action = Action::Spill;
         NodeId other = side == Side::Left ? right_ : left_;
-        nodes_[t].jump = other;
+        nodes_.editEnds(t, [&](Ends& x) { x.jump = other; });
         e.top = nodes_[t].v;
         e.jumpTarget = nodes_[other].v;
         e.gorgePushed = pushGorge(left_, right_, water_, true, nodes_[t].v);
@@ -413,16 +413,17 @@ private:
     // other bank, where the jump pointer leads (Fig. 6). The two chains meet at the top.
     void jump(Event& e, Side side, NodeId t) {
         e.action = Action::Jump;
-        uint32_t g = side == Side::Left ? nodes_[t].gorgeRight : nodes_[t].gorgeLeft;
+        const Ends ends = nodes_.ends(t);
+        uint32_t g = side == Side::Left ? ends.gorgeRight : ends.gorgeLeft;
         e.top = nodes_[t].v;
-        e.jumpTarget = nodes_[nodes_[t].jump].v;
+        e.jumpTarget = nodes_[ends.jump].v;
         if (g == kNoGorge || gorges_[g].done || !gorges_[g].held)
-            return forbid(e, Forbidden::JumpWrongSide, t, nodes_[t].jump);
+            return forbid(e, Forbidden::JumpWrongSide, t, ends.jump);
         e.gorgePopped = g;
         const GorgeRec& rec = retireGorge(g);
         if (side == Side::Left) left_ = rec.left;
         else right_ = rec.right;
-        nodes_[t].jump = kNil;
+        nodes_.editEnds(t, [](Ends& x) { x.jump = kNil; });
         water_ = t;
         emit(e);
     }
@@ -444,10 +445,11 @@ private:
         for (NodeId c = left_; c != right_;) {
             NodeId n = next(c);
             cutTriangle(apex, c, n);
-            nodes_[c].alive = false;
+            nodes_.kill(c);
             c = n;
         }
-        nodes_[right_].alive = nodes_[apex].alive = false;
+        nodes_.kill(right_);
+        nodes_.kill(apex);
         left_ = right_ = water_ = kNil;
         takeNextGorge(e);
         emit(e);
@@ -477,15 +479,15 @@ private:
         makeWet(bottom);
     }
     void makeWet(NodeId n) {
-        nodes_[n].wet = true;
+        nodes_.wetten(n);
         walked_.markWet(n);
     }
 
     uint32_t pushGorge(NodeId l, NodeId r, NodeId w, bool held, Index top) {
         uint32_t id = uint32_t(gorges_.size());
         gorges_.push_back({l, r, w, held, false, top});
-        nodes_[l].gorgeLeft = id;
-        nodes_[r].gorgeRight = id;
+        nodes_.editEnds(l, [id](Ends& x) { x.gorgeLeft = id; });
+        nodes_.editEnds(r, [id](Ends& x) { x.gorgeRight = id; });
         if (!held) todo_.push_back(id);
         return id;
     }
@@ -493,8 +495,8 @@ private:
     const GorgeRec& retireGorge(uint32_t g) {
         GorgeRec& rec = gorges_[g];
         rec.done = true;
-        nodes_[rec.left].gorgeLeft = kNoGorge;
-        nodes_[rec.right].gorgeRight = kNoGorge;
+        nodes_.editEnds(rec.left, [](Ends& x) { x.gorgeLeft = kNoGorge; });
+        nodes_.editEnds(rec.right, [](Ends& x) { x.gorgeRight = kNoGorge; });
         return rec;
     }
     void resumeGorge(uint32_t g) {

@@ -69,7 +69,17 @@ public:
             return;
         }
         if (heights_.general()) heights_.rank();
-        nodes_.reserve(poly_.vertices.size() * 3 / 2 + 16);  // bridges add two nodes per sag
+        // Room for every node and gorge of the run, so that neither array moves (a move holds
+        // the old and the new array at once): a node per vertex and T-junction, and the two
+        // copies a Bridge adds per sag, at most one sag a minimum of a ring (merged loops may
+        // need more, and get them); a gorge per Bridge or Spill (no more tops than minima).
+        // Counted only when the buffers lent may be short.
+        const size_t loopNodes = poly_.vertices.size() + poly_.splits.size();
+        if (nodes_.capacity() < 2 * loopNodes + 16) {
+            const size_t minima = heights_.ringMinima();
+            nodes_.reserve(loopNodes + 2 * minima + 16);
+            gorges_.reserve(2 * minima + 16);
+        }
         result_.triangles.reserve(poly_.vertices.size() + 2 * poly_.rings.size());
         for (uint32_t part = 0; part < poly_.parts.size() && ok(); ++part) floodPart(part);
         result_.steps = step_;
@@ -368,7 +378,7 @@ private:
         if (point) {
             right_ = right2;
         } else {
-            e.gorgePushed = pushGorge(s2, right2, s2, false, kNone);
+            e.gorgePushed = pushGorge(s2, right2, s2, false);
             right_ = s;
         }
         water_ = s;
@@ -387,7 +397,7 @@ private:
         nodes_.editEnds(t, [&](Ends& x) { x.jump = other; });
         e.top = nodes_[t].v;
         e.jumpTarget = nodes_[other].v;
-        e.gorgePushed = pushGorge(left_, right_, water_, true, nodes_[t].v);
+        e.gorgePushed = pushGorge(left_, right_, water_, true);
         const Landing land =
             walkDown(heights_, gorges_, walked_, t, side == Side::Left, partNodes_);
         if (land.gorge != kNoGorge) {
@@ -483,9 +493,9 @@ private:
         walked_.markWet(n);
     }
 
-    uint32_t pushGorge(NodeId l, NodeId r, NodeId w, bool held, Index top) {
+    uint32_t pushGorge(NodeId l, NodeId r, NodeId w, bool held) {
         uint32_t id = uint32_t(gorges_.size());
-        gorges_.push_back({l, r, w, held, false, top});
+        gorges_.push_back({l, r, w, held, false});
         nodes_.editEnds(l, [id](Ends& x) { x.gorgeLeft = id; });
         nodes_.editEnds(r, [id](Ends& x) { x.gorgeRight = id; });
         if (!held) todo_.push_back(id);

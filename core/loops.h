@@ -48,6 +48,7 @@ public:
         ends_.clear();
         free_.clear();
     }
+    size_t capacity() const { return nodes_.capacity(); }
     void reserve(size_t n) {
         nodes_.reserve(n);
         flags_.reserve(n);

@@ -47,12 +47,11 @@ uint32_t SagHeights::below(const HeightKey& k) const {
     return uint32_t(a);
 }
 
-void SagIndex::build(const std::vector<Point>& pointOfRank) {
-    const uint32_t n = uint32_t(pointOfRank.size());
+void SagIndex::build() {
+    const uint32_t n = uint32_t(byRank_.size());
     used_.assign(n, 0);
     items_.resize(n);
-    byRank_ = pointOfRank;
-    for (uint32_t r = 0; r < n; ++r) items_[r] = {pointOfRank[r], r};
+    for (uint32_t r = 0; r < n; ++r) items_[r] = {byRank_[r], r};
     nodes_.clear();
     if (n == 0) return;
     depth_ = 0;

@@ -16,9 +16,10 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
     heights.sort(sags_, heightsOf_.keys());
     // The sags' points for the plane index, and their heights for the ranks.
     const size_t count = sags_.size();
-    pointOfRank_.resize(count);
-    for (size_t k = 0; k < count; ++k) pointOfRank_[k] = heights.at(sags_[k]);
-    index_.build(pointOfRank_);
+    std::vector<Point>& points = index_.points();
+    points.resize(count);
+    for (size_t k = 0; k < count; ++k) points[k] = heights.at(sags_[k]);
+    index_.build();
     heightsOf_.index();
     unused_ = uint32_t(count);
     // Indexed from the part's first node: per-part work stays proportional to the part.
@@ -135,8 +136,8 @@ NodeId SagSearch::use(int64_t rank) {
 
 void SagSearch::buildBanks() {
     banksTried_ = true;
-    std::vector<Point> point(initialNodes_);
-    for (uint32_t i = 0; i < initialNodes_; ++i) point[i] = heights_->at(partFirstNode_ + i);
+    // Without shared points the part's initial nodes are its vertices, in order (inputEdge()).
+    const Point* point = heights_->points() + partFirstVertex_;
     std::vector<uint32_t> sagOfRank(sags_.size());
     for (size_t k = 0; k < sags_.size(); ++k) sagOfRank[k] = sags_[k] - partFirstNode_;
     if (!banks_.build(point, initialNext_, sagOfRank,

@@ -37,9 +37,8 @@ private:
     static constexpr int64_t kProbes = 4;  // ranks tested before the sag tree
     const Heights* heights_ = nullptr;     // the run's, from index() on
     std::vector<NodeId> sags_;             // by height rank
-    std::vector<Point> pointOfRank_;
-    SagIndex index_;        // the sags by height rank, searchable by x
-    SagHeights heightsOf_;  // the sags' heights by rank
+    SagIndex index_;                       // the sags by height rank, searchable by x
+    SagHeights heightsOf_;                 // the sags' heights by rank
     // Per node of the part (from partFirstNode_): sags below it, kNone until asked.
     std::vector<uint32_t> sagsBelow_;
     SagBanks banks_;  // the sags each input edge sees, once the plane index is costly

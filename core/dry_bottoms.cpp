@@ -21,7 +21,10 @@ NodeId DryBottoms::lowest(const Heights& heights) {
             if (best == kNil || heights.lower(b, best)) best = b;
         }
         bottoms_.resize(kept);
-        if (scans_ == kScans) heights.sort(bottoms_, keys_);
+        if (scans_ == kScans) {
+            heights.sort(bottoms_, keys_);
+            giveBackIfLarge(keys_);  // sorted: the keys are not needed again
+        }
         return best;
     }
     for (; cursor_ < bottoms_.size(); ++cursor_) {

@@ -162,6 +162,14 @@ private:
             NodeId n = partVertices[i];
             if (start == kNil || lower(n, start)) start = n;
         }
+        // The set-up's scratch is dead from here on (loops.h).
+        giveBackIfLarge(partVertices);
+        giveBackIfLarge(points);
+        RepeatedPointsScratch& repeats = b_.loops.repeats;
+        for (auto* v : {&repeats.start, &repeats.fill, &repeats.table}) giveBackIfLarge(*v);
+        giveBackIfLarge(repeats.hash);
+        giveBackIfLarge(repeats.byBucket);
+        giveBackIfLarge(repeats.copies);
         return start;
     }
 

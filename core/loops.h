@@ -46,7 +46,7 @@ public:
         nodes_.clear();
         flags_.clear();
         ends_.clear();
-        free_.clear();
+        free_ = kNone;
     }
     size_t capacity() const { return nodes_.capacity(); }
     void reserve(size_t n) {
@@ -69,16 +69,17 @@ public:
     void editEnds(NodeId n, Edit edit) {
         uint32_t& at = nodes_[size_t(n)].ends;
         if (at == kNone) {
-            if (free_.empty()) {
+            if (free_ == kNone) {
                 at = uint32_t(ends_.size());
                 ends_.emplace_back();
             } else {
-                at = free_.back();
-                free_.pop_back();
+                at = free_;
+                free_ = ends_[at].gorgeLeft;
+                ends_[at] = Ends{};
             }
         }
         edit(ends_[at]);
-        if (ends_[at].empty()) free_.push_back(at), at = kNone;
+        if (ends_[at].empty()) ends_[at].gorgeLeft = free_, free_ = at, at = kNone;
     }
 
 private:
@@ -87,8 +88,16 @@ private:
     std::vector<Node> nodes_;
     std::vector<uint8_t> flags_;  // per node: kAlive, kWet
     std::vector<Ends> ends_;      // the records of the nodes that hold one, and free ones
-    std::vector<uint32_t> free_;  // records given back (empty), to be used again
+    uint32_t free_ = kNone;       // the first free record; each links the next by its gorgeLeft
 };
+
+// Scratch arrays are lent from run to run up to this many elements; a larger one is given back
+// once its step is done, rather than held resident under the rest of the run.
+constexpr size_t kLentScratch = size_t(1) << 16;
+template <class T>
+void giveBackIfLarge(std::vector<T>& v) {
+    if (v.capacity() > kLentScratch) std::vector<T>().swap(v);
+}
 
 // What loop building allocates, kept from run to run with the machine's buffers.
 struct LoopScratch {

@@ -22,11 +22,7 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
     index_.build();
     heightsOf_.index();
     unused_ = uint32_t(count);
-    // Indexed from the part's first node: per-part work stays proportional to the part.
-    sagsBelow_.assign(nodes.end() - partFirstNode_, kNone);
-    work().nodeVisits += sagsBelow_.size();
-    for (size_t k = 0; k < count; ++k)
-        sagsBelow_[sags_[k] - partFirstNode_] = uint32_t(k);  // a sag's rank
+    for (Recent& r : recent_) r = {};
     // The bank lists are built once the plane index has visited more than half a box per
     // node of the part: a part whose gorges it prunes well never pays the sweep. Labels are
     // only sound on loops whose edges are the input's and meet only at their ends; where
@@ -54,14 +50,15 @@ NodeId SagSearch::find(NodeId left, NodeId right, NodeId water, NodeId next, uin
     return s;
 }
 
-// Number of sags strictly below node n, by binary search on the contiguous height keys,
-// remembered per node: the water is usually the previous step's Next.
+// Number of sags strictly below node n, by binary search on the contiguous height keys. The
+// last two answers are kept (the water is usually the previous step's Next): no array per node.
 uint32_t SagSearch::sagsBelow(NodeId n) {
-    if (n - partFirstNode_ >= sagsBelow_.size())
-        sagsBelow_.resize(heights_->nodes().end() - partFirstNode_, kNone);
-    uint32_t& r = sagsBelow_[n - partFirstNode_];
-    if (r == kNone) r = heightsOf_.below(heights_->key(n));
-    return r;
+    for (const Recent& r : recent_)
+        if (r.node == n) return r.below;
+    const uint32_t below = heightsOf_.below(heights_->key(n));
+    recent_[oldest_] = {n, below};
+    oldest_ ^= 1;
+    return below;
 }
 
 // Sags are sorted, so the search starts at the water level and stops at Next.

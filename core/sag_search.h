@@ -39,8 +39,12 @@ private:
     std::vector<NodeId> sags_;             // by height rank
     SagIndex index_;                       // the sags by height rank, searchable by x
     SagHeights heightsOf_;                 // the sags' heights by rank
-    // Per node of the part (from partFirstNode_): sags below it, kNone until asked.
-    std::vector<uint32_t> sagsBelow_;
+    struct Recent {                        // a node and the number of sags below it (sagsBelow())
+        NodeId node = kNil;
+        uint32_t below = 0;
+    };
+    Recent recent_[2];
+    uint32_t oldest_ = 0;
     SagBanks banks_;  // the sags each input edge sees, once the plane index is costly
     bool banksTried_ = false;
     uint64_t treeWork_ = 0;  // box visits of the plane index in this part

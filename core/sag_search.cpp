@@ -22,7 +22,10 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
     index_.build();
     heightsOf_.index();
     unused_ = uint32_t(count);
-    for (Recent& r : recent_) r = {};
+    // Node ids grow from part to part within a run, so the entries of an earlier part never
+    // match; those of an earlier run might.
+    if (partFirstNode == NodeId(0))
+        for (Recent& r : recent_) r = {};
     // The bank lists are built once the plane index has visited more than half a box per
     // node of the part: a part whose gorges it prunes well never pays the sweep. Labels are
     // only sound on loops whose edges are the input's and meet only at their ends; where
@@ -51,14 +54,12 @@ NodeId SagSearch::find(NodeId left, NodeId right, NodeId water, NodeId next, uin
 }
 
 // Number of sags strictly below node n, by binary search on the contiguous height keys. The
-// last two answers are kept (the water is usually the previous step's Next): no array per node.
+// answers for recent nodes are kept, by node id modulo kRecent (the water is usually a recent
+// step's Next, and the chain's nodes have neighbouring ids): no array over every node.
 uint32_t SagSearch::sagsBelow(NodeId n) {
-    for (const Recent& r : recent_)
-        if (r.node == n) return r.below;
-    const uint32_t below = heightsOf_.below(heights_->key(n));
-    recent_[oldest_] = {n, below};
-    oldest_ ^= 1;
-    return below;
+    Recent& r = recent_[uint32_t(n) % kRecent];
+    if (r.node != n) r = {n, heightsOf_.below(heights_->key(n))};
+    return r.below;
 }
 
 // Sags are sorted, so the search starts at the water level and stops at Next.
@@ -128,7 +129,9 @@ NodeId SagSearch::search(NodeId left, NodeId right, NodeId water, NodeId nx, uin
 NodeId SagSearch::use(int64_t rank) {
     index_.markUsed(uint32_t(rank));
     --unused_;
-    return sags_[size_t(rank)];
+    const NodeId s = sags_[size_t(rank)];
+    recent_[uint32_t(s) % kRecent] = {s, uint32_t(rank)};  // the bridged sag is the next water
+    return s;
 }
 
 void SagSearch::buildBanks() {

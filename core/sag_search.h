@@ -43,8 +43,8 @@ private:
         NodeId node = kNil;
         uint32_t below = 0;
     };
-    Recent recent_[2];
-    uint32_t oldest_ = 0;
+    static constexpr uint32_t kRecent = 64;
+    Recent recent_[kRecent];
     SagBanks banks_;  // the sags each input edge sees, once the plane index is costly
     bool banksTried_ = false;
     uint64_t treeWork_ = 0;  // box visits of the plane index in this part

@@ -88,7 +88,17 @@ public:
             return;
         }
         if (heights_.general()) heights_.rank();
-        nodes_.reserve(poly_.vertices.size() * 3 / 2 + 16);  // bridges add two nodes per sag
+        // Room for every node and gorge of the run, so that neither array moves (a move holds
+        // the old and the new array at once): a node per vertex and T-junction, and the two
+        // copies a Bridge adds per sag, at most one sag a minimum of a ring (merged loops may
+        // need more, and get them); a gorge per Bridge or Spill (no more tops than minima).
+        // Counted only when the buffers lent may be short.
+        const size_t loopNodes = poly_.vertices.size() + poly_.splits.size();
+        if (nodes_.capacity() < 2 * loopNodes + 16) {
+            const size_t minima = heights_.ringMinima();
+            nodes_.reserve(loopNodes + 2 * minima + 16);
+            gorges_.reserve(2 * minima + 16);
+        }
         result_.triangles.reserve(poly_.vertices.size() + 2 * poly_.rings.size());
         for (uint32_t part = 0; part < poly_.parts.size() && ok(); ++part) floodPart(part);
         result_.steps = step_;
@@ -174,6 +184,14 @@ private:
                 if (start == kNil || lower(n, start)) start = n;
             }
         }
+        // The set-up's scratch is dead from here on (loops.h).
+        giveBackIfLarge(partVertices);
+        giveBackIfLarge(points);
+        RepeatedPointsScratch& repeats = b_.loops.repeats;
+        for (auto* v : {&repeats.start, &repeats.fill, &repeats.table}) giveBackIfLarge(*v);
+        giveBackIfLarge(repeats.hash);
+        giveBackIfLarge(repeats.byBucket);
+        giveBackIfLarge(repeats.copies);
         return start;
     }
 
@@ -210,7 +228,7 @@ private:
 
     NodeId firstAliveNode(NodeId from) const {
         for (NodeId n = from; n < nodes_.end(); n = n + 1)
-            if (nodes_[n].alive) return n;
+            if (nodes_.alive(n)) return n;
         return kNil;
     }
 
@@ -313,7 +331,7 @@ private:
         bool top = turn(prev(c), c, next(c)) <= 0;
         mark(e, Test::CIsTop, top);
         if (!top) return forbid(e, Forbidden::CeilingAsEnd, c, nx);
-        bool jumpSet = nodes_[c].jump != kNil;
+        bool jumpSet = nodes_.ends(c).jump != kNil;
         mark(e, Test::JumpSet, jumpSet);
         if (jumpSet) return jump(e, side, c);
         spill(e, side, c);
@@ -340,8 +358,8 @@ private:
         kill(n);
     }
     void kill(NodeId n) {  // counted, so that the left-behind check can tell none is left
-        killed_ += nodes_[n].alive;
-        nodes_[n].alive = false;
+        killed_ += nodes_.alive(n);
+        nodes_.kill(n);
     }
 
     // Cuts off the wedge of chain nodes that `apex` sees (a Raise, each half of a Bridge): from
@@ -353,7 +371,7 @@ private:
             const NodeId along = forward ? next(c) : prev(c);
             const NodeId a = forward ? apex : along, b = forward ? along : apex;
             if (turn(a, c, b) <= 0) return true;
-            if (guard-- == 0 || !nodes_[c].alive) return false;
+            if (guard-- == 0 || !nodes_.alive(c)) return false;
             ++work().nodeVisits;
             cutTriangle(a, c, b);
             unlink(c);
@@ -417,7 +435,7 @@ private:
         if (point) {
             right_ = right2;
         } else {
-            e.gorgePushed = pushGorge(s2, right2, s2, false, kNone);
+            e.gorgePushed = pushGorge(s2, right2, s2, false);
             right_ = s;
         }
         water_ = s;
@@ -433,10 +451,10 @@ private:
     void spill(Ev& e, Side side, NodeId t) {
         e.action = Action::Spill;
         NodeId other = side == Side::Left ? right_ : left_;
-        nodes_[t].jump = other;
+        nodes_.editEnds(t, [&](Ends& x) { x.jump = other; });
         e.top = nodes_[t].v;
         e.jumpTarget = nodes_[other].v;
-        e.gorgePushed = pushGorge(left_, right_, water_, true, nodes_[t].v);
+        e.gorgePushed = pushGorge(left_, right_, water_, true);
         const Landing land =
             walkDown(heights_, gorges_, walked_, t, side == Side::Left, partNodes_);
         if (land.gorge != kNoGorge) {
@@ -462,16 +480,17 @@ private:
     // other bank, where the jump pointer leads (Fig. 6). The two chains meet at the top.
     void jump(Ev& e, Side side, NodeId t) {
         e.action = Action::Jump;
-        uint32_t g = side == Side::Left ? nodes_[t].gorgeRight : nodes_[t].gorgeLeft;
+        const Ends ends = nodes_.ends(t);
+        uint32_t g = side == Side::Left ? ends.gorgeRight : ends.gorgeLeft;
         e.top = nodes_[t].v;
-        e.jumpTarget = nodes_[nodes_[t].jump].v;
+        e.jumpTarget = nodes_[ends.jump].v;
         if (g == kNoGorge || gorges_[g].done || !gorges_[g].held)
-            return forbid(e, Forbidden::JumpWrongSide, t, nodes_[t].jump);
+            return forbid(e, Forbidden::JumpWrongSide, t, ends.jump);
         e.gorgePopped = g;
         const GorgeRec& rec = retireGorge(g);
         if (side == Side::Left) left_ = rec.left;
         else right_ = rec.right;
-        nodes_[t].jump = kNil;
+        nodes_.editEnds(t, [](Ends& x) { x.jump = kNil; });
         water_ = t;
         emit(e);
     }
@@ -527,15 +546,15 @@ private:
         makeWet(bottom);
     }
     void makeWet(NodeId n) {
-        nodes_[n].wet = true;
+        nodes_.wetten(n);
         walked_.markWet(n);
     }
 
-    uint32_t pushGorge(NodeId l, NodeId r, NodeId w, bool held, Index top) {
+    uint32_t pushGorge(NodeId l, NodeId r, NodeId w, bool held) {
         uint32_t id = uint32_t(gorges_.size());
-        gorges_.push_back({l, r, w, held, false, top});
-        nodes_[l].gorgeLeft = id;
-        nodes_[r].gorgeRight = id;
+        gorges_.push_back({l, r, w, held, false});
+        nodes_.editEnds(l, [id](Ends& x) { x.gorgeLeft = id; });
+        nodes_.editEnds(r, [id](Ends& x) { x.gorgeRight = id; });
         if (!held) todo_.push_back(id);
         return id;
     }
@@ -543,8 +562,8 @@ private:
     const GorgeRec& retireGorge(uint32_t g) {
         GorgeRec& rec = gorges_[g];
         rec.done = true;
-        nodes_[rec.left].gorgeLeft = kNoGorge;
-        nodes_[rec.right].gorgeRight = kNoGorge;
+        nodes_.editEnds(rec.left, [](Ends& x) { x.gorgeLeft = kNoGorge; });
+        nodes_.editEnds(rec.right, [](Ends& x) { x.gorgeRight = kNoGorge; });
         return rec;
     }
     void resumeGorge(uint32_t g) {

@@ -50,6 +50,31 @@ void Heights::rank() {
     work().nodeVisits += order.size();
 }
 
+bool Heights::lowerVertex(Index a, Index b) const {
+    if (general_) return rank_[a] < rank_[b];
+    const Point pa = pts_[a], pb = pts_[b];
+    if (pa.y != pb.y) return pa.y < pb.y;
+    if (pa.x != pb.x) return pa.x < pb.x;
+    return a < b;
+}
+
+size_t Heights::ringMinima() const {
+    size_t minima = 0;
+    for (const Ring& r : poly_.rings) {
+        if (r.count < 3) {
+            minima += r.count == 1;  // a point hole: a sag
+            continue;
+        }
+        Index before = r.first + r.count - 1;
+        for (Index v = r.first, end = r.first + r.count; v < end; before = v++) {
+            const Index after = v + 1 == end ? r.first : v + 1;
+            minima += lowerVertex(v, before) && lowerVertex(v, after);
+        }
+    }
+    work().nodeVisits += poly_.vertices.size();
+    return minima;
+}
+
 void Heights::sort(std::vector<NodeId>& ns, std::vector<HeightKey>& keys) const {
     keys.resize(ns.size());
     for (size_t i = 0; i < ns.size(); ++i) keys[i] = key(ns[i]);

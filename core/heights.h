@@ -45,6 +45,9 @@ public:
         if (nodes_[a].v != nodes_[b].v) return nodes_[a].v < nodes_[b].v;
         return a < b;
     }
+    // The vertices lower than both their neighbours along their ring: at least the sags of
+    // the machine's loops unless rings touch (merged loops have other neighbours there).
+    size_t ringMinima() const;
     // The same order as lower(), as a value (sag_index.h).
     HeightKey key(NodeId n) const {
         if (general_) return {double(rank_[nodes_[n].v]), 0, nodes_[n].v, n};
@@ -55,6 +58,7 @@ public:
     void sort(std::vector<NodeId>& ns, std::vector<HeightKey>& keys) const;
 
 private:
+    bool lowerVertex(Index a, Index b) const;  // lower() on two distinct vertices
     const Polygon& poly_;
     const Nodes& nodes_;
     const Up up_;

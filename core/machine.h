@@ -18,7 +18,6 @@ struct GorgeRec {
     NodeId left, right, water;
     bool held = false;  // held at a top (Spill) rather than pending (Bridge)
     bool done = false;
-    Index top = kNone;
 };
 
 // What the machine allocates, lent by a Triangulator (or the thread, for small inputs)

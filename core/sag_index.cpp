@@ -50,16 +50,15 @@ uint32_t SagHeights::below(const HeightKey& k) const {
     return uint32_t(a);
 }
 
-void SagIndex::build(const std::vector<Point>& pointOfRank) {
-    const uint32_t n = uint32_t(pointOfRank.size());
+void SagIndex::build() {
+    const uint32_t n = uint32_t(byRank_.size());
     used_.assign(n, 0);
-    byRank_ = pointOfRank;
     nodes_.clear();
     items_.clear();
     // lowest() scans a bracket of at most kScanLimit sags: so few sags need no tree.
     if (n <= kScanLimit) return;
     items_.resize(n);
-    for (uint32_t r = 0; r < n; ++r) items_[r] = {pointOfRank[r], r};
+    for (uint32_t r = 0; r < n; ++r) items_[r] = {byRank_[r], r};
     depth_ = 0;
     while ((uint64_t(n) >> depth_) > kLeafSize) ++depth_;
     firstLeaf_ = (1u << depth_) - 1;

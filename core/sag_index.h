@@ -62,8 +62,9 @@ public:
         int lineCount = 0;
     };
 
-    // pointOfRank[r]: the sag of height rank r (ranks: sags sorted by height).
-    void build(const std::vector<Point>& pointOfRank);
+    // The sags' points by height rank (ranks: sags sorted by height), filled before build().
+    std::vector<Point>& points() { return byRank_; }
+    void build();
     size_t size() const { return used_.size(); }
     bool used(uint32_t rank) const { return used_[rank]; }
     Point point(uint32_t rank) const { return byRank_[rank]; }

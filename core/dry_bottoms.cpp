@@ -16,18 +16,21 @@ NodeId DryBottoms::lowest(const Heights& heights) {
         size_t kept = 0;
         work().nodeVisits += bottoms_.size();
         for (NodeId b : bottoms_) {
-            if (nodes[b].wet || !nodes[b].alive) continue;
+            if (nodes.wet(b) || !nodes.alive(b)) continue;
             bottoms_[kept++] = b;
             if (best == kNil || heights.lower(b, best)) best = b;
         }
         bottoms_.resize(kept);
-        if (scans_ == kScans) heights.sort(bottoms_, keys_);
+        if (scans_ == kScans) {
+            heights.sort(bottoms_, keys_);
+            giveBackIfLarge(keys_);  // sorted: the keys are not needed again
+        }
         return best;
     }
     for (; cursor_ < bottoms_.size(); ++cursor_) {
         ++work().nodeVisits;
         NodeId b = bottoms_[cursor_];
-        if (!nodes[b].wet && nodes[b].alive) return b;
+        if (!nodes.wet(b) && nodes.alive(b)) return b;
     }
     return kNil;
 }

@@ -33,6 +33,7 @@
 //                           are in triangulate.cpp
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include "machine.h"
 #include "predicates.h"
@@ -42,7 +43,23 @@
 namespace flood {
 namespace {
 
+// An event nobody records: every field takes any value and keeps none, so a run without a
+// listener decides exactly as a recorded one and stores nothing (see flood() below).
+struct QuietEvent {
+    struct Sink {
+        template <class T>
+        void operator=(const T&) {}
+    };
+#define FLOOD_X(kind, type, name, initial) Sink name;
+    FLOOD_EVENT_FIELDS(FLOOD_X)
+#undef FLOOD_X
+};
+
+// kRecording: events are built (for the listener, or for the failure event); else QuietEvent.
+template <bool kRecording>
 class Machine {
+    using Ev = std::conditional_t<kRecording, Event, QuietEvent>;
+
 public:
     Machine(const Polygon& poly, Listener* listener, const Options& opt, FloodResult& out,
             MachineBuffers* keep)
@@ -51,11 +68,13 @@ public:
           own_(keep ? nullptr : new MachineBuffers),
           b_(keep ? *keep : *own_),
           up_(opt.up),
-          heights_(poly, opt.up, b_.nodes, b_.rotated),
+          heights_(poly, opt.up, b_.nodes, b_.rotated, b_.ranks, b_.rankOrder),
           result_(out) {}
 
     Machine(const Machine&) = delete;
     Machine& operator=(const Machine&) = delete;
+
+    bool refused() const { return refused_; }
 
     void run() {
         nodes_.clear();
@@ -69,7 +88,17 @@ public:
             return;
         }
         if (heights_.general()) heights_.rank();
-        nodes_.reserve(poly_.vertices.size() * 3 / 2 + 16);  // bridges add two nodes per sag
+        // Room for every node and gorge of the run, so that neither array moves (a move holds
+        // the old and the new array at once): a node per vertex and T-junction, and the two
+        // copies a Bridge adds per sag, at most one sag a minimum of a ring (merged loops may
+        // need more, and get them); a gorge per Bridge or Spill (no more tops than minima).
+        // Counted only when the buffers lent may be short.
+        const size_t loopNodes = poly_.vertices.size() + poly_.splits.size();
+        if (nodes_.capacity() < 2 * loopNodes + 16) {
+            const size_t minima = heights_.ringMinima();
+            nodes_.reserve(loopNodes + 2 * minima + 16);
+            gorges_.reserve(2 * minima + 16);
+        }
         result_.triangles.reserve(poly_.vertices.size() + 2 * poly_.rings.size());
         for (uint32_t part = 0; part < poly_.parts.size() && ok(); ++part) floodPart(part);
         result_.steps = step_;
@@ -92,7 +121,7 @@ private:
     void floodPart(uint32_t part) {
         const NodeId start = setUp(part);
         if (!ok()) return;
-        Event e = begin(Action::Start);
+        Ev e = begin(Action::Start);
         if (!isMinimum(start) || turn(prev(start), start, next(start)) <= 0)
             return forbid(e, Forbidden::StartNotBottom, start, kNil);
         startGorge(start);
@@ -100,14 +129,15 @@ private:
         emit(e);
         while (ok() && left_ != kNil) {
             if (budget_-- == 0) {
-                Event f = begin(Action::Forbidden);
+                Ev f = begin(Action::Forbidden);
                 return forbid(f, Forbidden::NoProgress, left_, right_);
             }
             step();
         }
-        const NodeId alive = ok() ? firstAliveNode(partFirstNode_) : kNil;
+        // Every node the part had was cut off (the usual end): nothing to look for.
+        const NodeId alive = ok() && killed_ < partNodes_ ? firstAliveNode(partFirstNode_) : kNil;
         if (alive != kNil) {
-            Event f = begin(Action::Forbidden);
+            Ev f = begin(Action::Forbidden);
             forbid(f, Forbidden::LeftBehind, alive, kNil);
         }
     }
@@ -117,12 +147,12 @@ private:
     NodeId setUp(uint32_t part) {
         const Part& pa = poly_.parts[part];
         part_ = part;
-        partNodes_ = 0;
+        partNodes_ = killed_ = 0;
         partFirstNode_ = nodes_.end();
         for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
             const Point p = heights_.points()[v];
             if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
-                Event f = begin(Action::Forbidden);
+                Ev f = begin(Action::Forbidden);
                 forbid(f, Forbidden::NotFinite, kNil, kNil, v);
                 return kNil;
             }
@@ -131,7 +161,7 @@ private:
             const Ring& ring = poly_.rings[r];
             bool steiner = ring.count == 1 && r != pa.firstRing;  // a point hole
             if (ring.count < 3 && !steiner) {
-                Event f = begin(Action::Forbidden);
+                Ev f = begin(Action::Forbidden);
                 forbid(f, Forbidden::ShortLoop, kNil, kNil, ring.count ? ring.first : kNone, r);
                 return kNil;
             }
@@ -143,34 +173,49 @@ private:
         const PartLoops loops =
             buildLoops(poly_, heights_.points(), pa, nodes_, partVertices, points, b_.loops);
         partNodes_ = nodes_.end() - partFirstNode_;
-        findSags(partVertices, points, loops.touching);
+        NodeId start = findSags(partVertices, points, loops);
         gorges_.clear();
         todo_.clear();
         budget_ = 8ull * partNodes_ + 64;
-        NodeId start = kNil;
-        for (uint32_t i = 0; i < loops.outerNodes; ++i) {
-            NodeId n = partVertices[i];
-            if (start == kNil || lower(n, start)) start = n;
+        if (loops.touching) {  // merged loops: the outer ring's lowest node may not be a minimum
+            start = kNil;
+            for (uint32_t i = 0; i < loops.outerNodes; ++i) {
+                NodeId n = partVertices[i];
+                if (start == kNil || lower(n, start)) start = n;
+            }
         }
+        // The set-up's scratch is dead from here on (loops.h).
+        giveBackIfLarge(partVertices);
+        giveBackIfLarge(points);
+        RepeatedPointsScratch& repeats = b_.loops.repeats;
+        for (auto* v : {&repeats.start, &repeats.fill, &repeats.table}) giveBackIfLarge(*v);
+        giveBackIfLarge(repeats.hash);
+        giveBackIfLarge(repeats.byBucket);
+        giveBackIfLarge(repeats.copies);
         return start;
     }
 
     // The sags of the part, sorted by height (§4), and its bottoms, both taken from its minima
     // (kept in the bottoms' list until the bottoms are sorted out of them: no node is
-    // classified twice).
-    void findSags(const std::vector<NodeId>& partVertices, const std::vector<NodeId>& points,
-                  bool touching) {
+    // classified twice). Returns the lowest minimum of the outer ring's nodes: unless loops
+    // were merged, the outer loop is that ring, and its lowest node is one of its minima.
+    NodeId findSags(const std::vector<NodeId>& partVertices, const std::vector<NodeId>& points,
+                    const PartLoops& loops) {
         std::vector<NodeId>& sags = sags_.sags();
         std::vector<NodeId>& bottoms = bottoms_.reset();
         sags.clear();
         for (NodeId n : partVertices)
             if (isMinimum(n)) bottoms.push_back(n);
-        for (NodeId n : bottoms)
+        const NodeId outerEnd = partFirstNode_ + loops.outerNodes;  // the outer ring's nodes
+        NodeId lowest = kNil;
+        for (NodeId n : bottoms) {
+            if (n < outerEnd && (lowest == kNil || lower(n, lowest))) lowest = n;
             if (turn(prev(n), n, next(n)) <= 0) sags.push_back(n);
+        }
         // A point hole is a hole whose lowest vertex is its only one: a sag.
         sags.insert(sags.end(), points.begin(), points.end());
         sags_.index(heights_, partFirstNode_, poly_.rings[poly_.parts[part_].firstRing].first,
-                    touching);
+                    loops.touching);
         // The bottoms, lowest first: every one of them starts a gorge unless the water
         // reaches it first. They are the to-do list of last resort (dry_bottoms.h).
         size_t kept = 0;
@@ -178,11 +223,12 @@ private:
             if (turn(prev(n), n, next(n)) > 0) bottoms[kept++] = n;
         bottoms.resize(kept);
         walked_.clear(partFirstNode_);
+        return lowest;
     }
 
     NodeId firstAliveNode(NodeId from) const {
         for (NodeId n = from; n < nodes_.end(); n = n + 1)
-            if (nodes_[n].alive) return n;
+            if (nodes_.alive(n)) return n;
         return kNil;
     }
 
@@ -191,13 +237,17 @@ private:
         if (left_ == kNil) return {};
         return {nodes_[left_].v, nodes_[right_].v, nodes_[prev(left_)].v, nodes_[next(right_)].v};
     }
-    Event begin(Action a) {
-        Event e;
-        e.action = a;
-        e.part = part_;
-        if (listener_) e.before = fingers();
-        e.firstTriangle = uint32_t(result_.triangles.size());
-        return e;
+    Ev begin(Action a) {
+        if constexpr (!kRecording) {
+            return Ev{};
+        } else {
+            Ev e;
+            e.action = a;
+            e.part = part_;
+            if (listener_) e.before = fingers();
+            e.firstTriangle = uint32_t(result_.triangles.size());
+            return e;
+        }
     }
     void emit(Event& e) {
         e.step = step_++;
@@ -234,16 +284,25 @@ private:
         }
         left_ = right_ = kNil;
     }
+    // Unrecorded, an event only counts its step; a forbidden state stops the run, and flood()
+    // runs it again recording, for the failure event and its diagnostic.
+    void emit(QuietEvent&) { ++step_; }
+    void forbid(QuietEvent&, Forbidden, NodeId, NodeId, Index = kNone, Index = kNone) {
+        refused_ = true;
+        result_.diagnostic.status = Status::Forbidden;
+        left_ = right_ = kNil;
+    }
+    static void mark(QuietEvent&, Test, bool) {}
     static void mark(Event& e, Test t, bool r) {
         e.tested |= uint8_t(1u << int(t));
-        if (r) e.passed |= uint8_t(1u << int(t));
+        e.passed |= uint8_t(unsigned(r) << int(t));  // no branch: r is the test just decided
     }
 
     // ---- [SECTION] the decision tree (Fig. 9) ----------------------------------------------
     void step() {
         work().nodeVisits += 4;  // Left, Right and the fingers
         NodeId nl = prev(left_), nr = next(right_);
-        Event e = begin(Action::Raise);
+        Ev e = begin(Action::Raise);
         bool same = nl == nr;
         mark(e, Test::SameNext, same);
         if (same) {
@@ -272,7 +331,7 @@ private:
         bool top = turn(prev(c), c, next(c)) <= 0;
         mark(e, Test::CIsTop, top);
         if (!top) return forbid(e, Forbidden::CeilingAsEnd, c, nx);
-        bool jumpSet = nodes_[c].jump != kNil;
+        bool jumpSet = nodes_.ends(c).jump != kNil;
         mark(e, Test::JumpSet, jumpSet);
         if (jumpSet) return jump(e, side, c);
         spill(e, side, c);
@@ -280,8 +339,12 @@ private:
 
     // The lowest unused sag above the water and below Next inside the quadrangle
     // Left, Right, NextRight, NextLeft (§4, §5): sag_search.h.
-    NodeId findSag(NodeId nx, Event& e) {
-        return sags_.find(left_, right_, water_, nx, partNodes_, e);
+    NodeId findSag(NodeId nx, Ev& e) {
+        if constexpr (kRecording) {
+            return sags_.find(left_, right_, water_, nx, partNodes_, e);
+        } else {
+            return sags_.find(left_, right_, water_, nx, partNodes_, uncounted_);
+        }
     }
 
     // ---- [SECTION] the five actions ----------------------------------------------------------
@@ -292,7 +355,11 @@ private:
     void unlink(NodeId n) {
         nodes_[prev(n)].next = next(n);
         nodes_[next(n)].prev = prev(n);
-        nodes_[n].alive = false;
+        kill(n);
+    }
+    void kill(NodeId n) {  // counted, so that the left-behind check can tell none is left
+        killed_ += nodes_.alive(n);
+        nodes_.kill(n);
     }
 
     // Cuts off the wedge of chain nodes that `apex` sees (a Raise, each half of a Bridge): from
@@ -304,7 +371,7 @@ private:
             const NodeId along = forward ? next(c) : prev(c);
             const NodeId a = forward ? apex : along, b = forward ? along : apex;
             if (turn(a, c, b) <= 0) return true;
-            if (guard-- == 0 || !nodes_[c].alive) return false;
+            if (guard-- == 0 || !nodes_.alive(c)) return false;
             ++work().nodeVisits;
             cutTriangle(a, c, b);
             unlink(c);
@@ -314,7 +381,7 @@ private:
     }
 
     // Raise: Next joins the chain; the wedge of chain nodes it sees is cut off (Fig. 2).
-    void raise(Event& e, Side side) {
+    void raise(Ev& e, Side side) {
         uint32_t guard = partNodes_ + 2;  // a walk longer than the part means broken loops
         const bool left = side == Side::Left;
         NodeId& end = left ? left_ : right_;
@@ -335,7 +402,7 @@ private:
     // A Steiner point (a one-node loop) bounds nothing, so it splits nothing: the diagonal is
     // an antenna c -> s -> c' into the gorge, s stays inside the chain as the water node
     // (reflex: the whole gorge above it is open), and no gorge is pushed.
-    void bridge(Event& e, NodeId s) {
+    void bridge(Ev& e, NodeId s) {
         e.action = Action::Bridge;
         NodeId c = water_;
         e.sag = nodes_[s].v;
@@ -368,7 +435,7 @@ private:
         if (point) {
             right_ = right2;
         } else {
-            e.gorgePushed = pushGorge(s2, right2, s2, false, kNone);
+            e.gorgePushed = pushGorge(s2, right2, s2, false);
             right_ = s;
         }
         water_ = s;
@@ -381,13 +448,13 @@ private:
     // set to the other bank, and the water runs down the far side of the top to the next
     // bottom, skipping the sags it drips from (Fig. 5). A pending gorge met on the way
     // is the one that collects the water: it is taken off the to-do list.
-    void spill(Event& e, Side side, NodeId t) {
+    void spill(Ev& e, Side side, NodeId t) {
         e.action = Action::Spill;
         NodeId other = side == Side::Left ? right_ : left_;
-        nodes_[t].jump = other;
+        nodes_.editEnds(t, [&](Ends& x) { x.jump = other; });
         e.top = nodes_[t].v;
         e.jumpTarget = nodes_[other].v;
-        e.gorgePushed = pushGorge(left_, right_, water_, true, nodes_[t].v);
+        e.gorgePushed = pushGorge(left_, right_, water_, true);
         const Landing land =
             walkDown(heights_, gorges_, walked_, t, side == Side::Left, partNodes_);
         if (land.gorge != kNoGorge) {
@@ -411,25 +478,26 @@ private:
 
     // Jump: the water reached a held top from its far side; the chain continues on the
     // other bank, where the jump pointer leads (Fig. 6). The two chains meet at the top.
-    void jump(Event& e, Side side, NodeId t) {
+    void jump(Ev& e, Side side, NodeId t) {
         e.action = Action::Jump;
-        uint32_t g = side == Side::Left ? nodes_[t].gorgeRight : nodes_[t].gorgeLeft;
+        const Ends ends = nodes_.ends(t);
+        uint32_t g = side == Side::Left ? ends.gorgeRight : ends.gorgeLeft;
         e.top = nodes_[t].v;
-        e.jumpTarget = nodes_[nodes_[t].jump].v;
+        e.jumpTarget = nodes_[ends.jump].v;
         if (g == kNoGorge || gorges_[g].done || !gorges_[g].held)
-            return forbid(e, Forbidden::JumpWrongSide, t, nodes_[t].jump);
+            return forbid(e, Forbidden::JumpWrongSide, t, ends.jump);
         e.gorgePopped = g;
         const GorgeRec& rec = retireGorge(g);
         if (side == Side::Left) left_ = rec.left;
         else right_ = rec.right;
-        nodes_[t].jump = kNil;
+        nodes_.editEnds(t, [](Ends& x) { x.jump = kNil; });
         water_ = t;
         emit(e);
     }
 
     // Fill: NextLeft and NextRight are one node: the fan from it closes the loop (Fig. 3).
     // Then the next pending gorge on the to-do list becomes active.
-    void fill(Event& e) {
+    void fill(Ev& e) {
         e.action = Action::Fill;
         NodeId apex = prev(left_);
         if (left_ == right_) return forbid(e, Forbidden::FillOpen, apex, left_);
@@ -444,10 +512,11 @@ private:
         for (NodeId c = left_; c != right_;) {
             NodeId n = next(c);
             cutTriangle(apex, c, n);
-            nodes_[c].alive = false;
+            kill(c);
             c = n;
         }
-        nodes_[right_].alive = nodes_[apex].alive = false;
+        kill(right_);
+        kill(apex);
         left_ = right_ = water_ = kNil;
         takeNextGorge(e);
         emit(e);
@@ -456,7 +525,7 @@ private:
     // ---- [SECTION] the to-do list and the gorges -------------------------------------------
     // The next gorge to flood: the last pending gorge on the to-do list, else the lowest
     // bottom the water has not reached. False when neither exists.
-    bool takeNextGorge(Event& e) {
+    bool takeNextGorge(Ev& e) {
         while (!todo_.empty()) {
             uint32_t g = todo_.back();
             todo_.pop_back();
@@ -477,15 +546,15 @@ private:
         makeWet(bottom);
     }
     void makeWet(NodeId n) {
-        nodes_[n].wet = true;
+        nodes_.wetten(n);
         walked_.markWet(n);
     }
 
-    uint32_t pushGorge(NodeId l, NodeId r, NodeId w, bool held, Index top) {
+    uint32_t pushGorge(NodeId l, NodeId r, NodeId w, bool held) {
         uint32_t id = uint32_t(gorges_.size());
-        gorges_.push_back({l, r, w, held, false, top});
-        nodes_[l].gorgeLeft = id;
-        nodes_[r].gorgeRight = id;
+        gorges_.push_back({l, r, w, held, false});
+        nodes_.editEnds(l, [id](Ends& x) { x.gorgeLeft = id; });
+        nodes_.editEnds(r, [id](Ends& x) { x.gorgeRight = id; });
         if (!held) todo_.push_back(id);
         return id;
     }
@@ -493,8 +562,8 @@ private:
     const GorgeRec& retireGorge(uint32_t g) {
         GorgeRec& rec = gorges_[g];
         rec.done = true;
-        nodes_[rec.left].gorgeLeft = kNoGorge;
-        nodes_[rec.right].gorgeRight = kNoGorge;
+        nodes_.editEnds(rec.left, [](Ends& x) { x.gorgeLeft = kNoGorge; });
+        nodes_.editEnds(rec.right, [](Ends& x) { x.gorgeRight = kNoGorge; });
         return rec;
     }
     void resumeGorge(uint32_t g) {
@@ -518,16 +587,24 @@ private:
     Stretches& walked_ = b_.walked;          // spill walks remembered (stretches.h)
     std::vector<uint32_t>& todo_ = b_.todo;  // pending gorges (ids), last pushed first
     NodeId left_ = kNil, right_ = kNil, water_ = kNil, partFirstNode_ = NodeId(0);
-    uint32_t part_ = 0, partNodes_ = 0, cut_ = 0, step_ = 0;
+    uint32_t part_ = 0, partNodes_ = 0, killed_ = 0, cut_ = 0, step_ = 0;  // killed_: of the part
     uint64_t budget_ = 0;
     FloodResult& result_;
+    bool refused_ = false;  // quiet: a forbidden state was reached
+    Event uncounted_;       // quiet: the sag search counts its tests into an event; this one
 };
 
 }  // namespace
 
+// With nobody listening no event is built. A run that ends in a forbidden state is then run
+// again recording (as before: the same decisions, on the same buffers), so that its result
+// carries the failure event and the diagnostic that names it, exactly as a recorded run would.
 void flood(const Polygon& poly, Listener* listener, const Options& options, FloodResult& out,
            MachineBuffers* keep) {
-    Machine(poly, listener, options, out, keep).run();
+    if (listener) return Machine<true>(poly, listener, options, out, keep).run();
+    Machine<false> quiet(poly, nullptr, options, out, keep);
+    quiet.run();
+    if (quiet.refused()) Machine<true>(poly, nullptr, options, out, keep).run();
 }
 
 }  // namespace flood

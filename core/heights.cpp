@@ -20,8 +20,9 @@ Point toUp(Point p, Up up) {
 
 }  // namespace
 
-Heights::Heights(const Polygon& poly, Up up, const Nodes& nodes, std::vector<Point>& rotated)
-    : poly_(poly), nodes_(nodes), up_(up), general_(!up.axis()) {
+Heights::Heights(const Polygon& poly, Up up, const Nodes& nodes, std::vector<Point>& rotated,
+                 std::vector<uint32_t>& rank, std::vector<Index>& order)
+    : poly_(poly), nodes_(nodes), up_(up), general_(!up.axis()), rank_(rank), order_(order) {
     if (general_ || (up.x == 0 && up.y > 0)) {  // heights are the input's or ranks: no copy
         pts_ = poly.vertices.data();
         return;
@@ -33,7 +34,8 @@ Heights::Heights(const Polygon& poly, Up up, const Nodes& nodes, std::vector<Poi
 }
 
 void Heights::rank() {
-    std::vector<Index> order(poly_.vertices.size());
+    std::vector<Index>& order = order_;
+    order.resize(poly_.vertices.size());
     std::iota(order.begin(), order.end(), Index(0));
     auto finite = [&](Index v) { return std::isfinite(pts_[v].x) && std::isfinite(pts_[v].y); };
     std::sort(order.begin(), order.end(), [&](Index a, Index b) {
@@ -46,6 +48,31 @@ void Heights::rank() {
     rank_.resize(order.size());
     for (size_t k = 0; k < order.size(); ++k) rank_[order[k]] = uint32_t(k);
     work().nodeVisits += order.size();
+}
+
+bool Heights::lowerVertex(Index a, Index b) const {
+    if (general_) return rank_[a] < rank_[b];
+    const Point pa = pts_[a], pb = pts_[b];
+    if (pa.y != pb.y) return pa.y < pb.y;
+    if (pa.x != pb.x) return pa.x < pb.x;
+    return a < b;
+}
+
+size_t Heights::ringMinima() const {
+    size_t minima = 0;
+    for (const Ring& r : poly_.rings) {
+        if (r.count < 3) {
+            minima += r.count == 1;  // a point hole: a sag
+            continue;
+        }
+        Index before = r.first + r.count - 1;
+        for (Index v = r.first, end = r.first + r.count; v < end; before = v++) {
+            const Index after = v + 1 == end ? r.first : v + 1;
+            minima += lowerVertex(v, before) && lowerVertex(v, after);
+        }
+    }
+    work().nodeVisits += poly_.vertices.size();
+    return minima;
 }
 
 void Heights::sort(std::vector<NodeId>& ns, std::vector<HeightKey>& keys) const {

@@ -16,8 +16,11 @@ namespace flood {
 class Heights {
 public:
     // The vertices of `poly` as the machine sees them: turned into `rotated` when `up` is an
-    // axis other than +y, else as given. Off the axes rank() must run before any comparison.
-    Heights(const Polygon& poly, Up up, const Nodes& nodes, std::vector<Point>& rotated);
+    // axis other than +y, else as given. Off the axes rank() must run before any comparison;
+    // it fills `rank` (per vertex) using `order` as scratch: both lent, so a warm run off the
+    // axes allocates nothing either.
+    Heights(const Polygon& poly, Up up, const Nodes& nodes, std::vector<Point>& rotated,
+            std::vector<uint32_t>& rank, std::vector<Index>& order);
     // Off the axes no coordinate is a height: the vertices are sorted once by the exact
     // comparison along the direction (ties along its perpendicular, then by index, as
     // lower()) and compared by rank from then on. Non-finite vertices go last.
@@ -42,6 +45,9 @@ public:
         if (nodes_[a].v != nodes_[b].v) return nodes_[a].v < nodes_[b].v;
         return a < b;
     }
+    // The vertices lower than both their neighbours along their ring: at least the sags of
+    // the machine's loops unless rings touch (merged loops have other neighbours there).
+    size_t ringMinima() const;
     // The same order as lower(), as a value (sag_index.h).
     HeightKey key(NodeId n) const {
         if (general_) return {double(rank_[nodes_[n].v]), 0, nodes_[n].v, n};
@@ -52,12 +58,14 @@ public:
     void sort(std::vector<NodeId>& ns, std::vector<HeightKey>& keys) const;
 
 private:
+    bool lowerVertex(Index a, Index b) const;  // lower() on two distinct vertices
     const Polygon& poly_;
     const Nodes& nodes_;
     const Up up_;
     const bool general_;
     const Point* pts_ = nullptr;
-    std::vector<uint32_t> rank_;  // per vertex, off the axes: its rank by height along up_
+    std::vector<uint32_t>& rank_;  // per vertex, off the axes: its rank by height along up_
+    std::vector<Index>& order_;    // rank()'s scratch
 };
 
 }  // namespace flood

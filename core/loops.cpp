@@ -48,9 +48,12 @@ public:
                 nd.prev = reverse ? q : p;
                 nd.next = reverse ? p : q;
                 nodes_.push(nd);
-                if (count > 1) partVertices.push_back(base + i);
-                else points.push_back(base + i);
             }
+            // The loop's nodes are consecutive ids: listed in one go.
+            std::vector<NodeId>& list = count > 1 ? partVertices : points;
+            const size_t at = list.size();
+            list.resize(at + count);
+            for (uint32_t i = 0; i < count; ++i) list[at + i] = base + i;
             work().nodeVisits += count;
             if (r == pa.firstRing) out.outerNodes = count;
         }

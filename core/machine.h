@@ -18,13 +18,14 @@ struct GorgeRec {
     NodeId left, right, water;
     bool held = false;  // held at a top (Spill) rather than pending (Bridge)
     bool done = false;
-    Index top = kNone;
 };
 
 // What the machine allocates, lent by a Triangulator (or the thread, for small inputs)
 // from run to run, so that a run on an input no larger than the last one allocates nothing.
 struct MachineBuffers {
     std::vector<Point> rotated;
+    std::vector<uint32_t> ranks;  // off the axes (heights.h)
+    std::vector<Index> rankOrder;
     Nodes nodes;
     std::vector<NodeId> partVertices, points;
     std::vector<uint32_t> todo;

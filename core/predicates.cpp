@@ -170,6 +170,10 @@ int orient(Point a, Point b, Point c) {
     ++work().orientCalls;
     double det;
     if (int s = orientFilter(a, b, c, det)) return s;
+    // Both products have a factor that is exactly zero (points on one vertical or horizontal
+    // line, or a repeated point: common in rectilinear input): the area is exactly zero, no
+    // expansion needed. A difference of two finite doubles is zero only when they are equal.
+    if ((a.x == c.x || b.y == c.y) && (a.y == c.y || b.x == c.x)) return 0;
     Stage stage;
     return exactSign(orientProducts(a, b, c), stage);
 }
@@ -195,7 +199,9 @@ int heightSign(Up d, Point a, Point b) {
     return exactSign(Products<4>{{{d.x, b.x}, {-d.x, a.x}, {d.y, b.y}, {-d.y, a.y}}}, stage);
 }
 
-// The same stages as orient(), saying which decided; not counted as the machine's work.
+// The same stages as orient(), saying which decided; not counted as the machine's work. (orient()
+// answers the exactly-zero products of axis-collinear points without stage 2; this reports the
+// stage that would decide them.)
 OrientReport orientExplained(Point a, Point b, Point c) {
     OrientReport r;
     if ((r.sign = orientFilter(a, b, c, r.det))) return r;

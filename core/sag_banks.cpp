@@ -16,7 +16,7 @@ constexpr uint32_t kNoEdge = UINT32_MAX;
 // sweep line: the order of the edges along it as long as no two of them meet below it, and
 // the sweep stops at the first pair that meets (Shamos–Hoey: that pair is adjacent before).
 struct Sweep {
-    const std::vector<Point>& point;
+    const Point* point;
     const std::vector<uint32_t>& next;
     Up vertical;
     bool up(uint32_t t) const { return belowToward(vertical, point[t], point[next[t]]); }
@@ -120,10 +120,10 @@ void SagBanks::Side::group(const std::vector<uint32_t>& label, size_t edges) {
     begin.pop_back();
 }
 
-bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t>& next,
+bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
                      const std::vector<uint32_t>& sagOfRank, Up up) {
     clear();
-    const uint32_t n = uint32_t(point.size());
+    const uint32_t n = uint32_t(next.size());
     std::vector<uint32_t> prev(n), rankOf(n, kNoEdge), order(n);
     for (uint32_t i = 0; i < n; ++i) prev[next[i]] = i, order[i] = i;
     for (uint32_t r = 0; r < sagOfRank.size(); ++r) rankOf[sagOfRank[r]] = r;

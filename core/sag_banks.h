@@ -18,12 +18,17 @@ namespace flood {
 
 class SagBanks {
 public:
-    // Loops of `point.size()` nodes (next[i]: the node after i; next[i] == i for a point
+    // Loops of `next.size()` nodes at `point` (next[i]: the node after i; next[i] == i for a point
     // hole), no two at the same point; sagOfRank: the sags' nodes by height rank. False, and
     // nothing built, when two edges touch or cross, or a sag lies on an edge (unvalidated
     // input): the sweep stops at the first such pair, before its order could be wrong.
-    bool build(const std::vector<Point>& point, const std::vector<uint32_t>& next,
+    bool build(const Point* point, const std::vector<uint32_t>& next,
                const std::vector<uint32_t>& sagOfRank, Up up = Up::PlusY);
+    // The same, the points in a vector of one per node.
+    bool build(const std::vector<Point>& point, const std::vector<uint32_t>& next,
+               const std::vector<uint32_t>& sagOfRank, Up up = Up::PlusY) {
+        return build(point.data(), next, sagOfRank, up);
+    }
     bool built() const { return built_; }
     void clear();
 

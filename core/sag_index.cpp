@@ -24,6 +24,7 @@ size_t SagHeights::bucket(double y) const {
 
 void SagHeights::index() {
     const size_t count = keys_.size();
+    if (count <= kSearchLimit) return;  // below() searches the keys themselves
     y_.resize(count);
     for (size_t k = 0; k < count; ++k) y_[k] = keys_[k].y;
     const size_t buckets = count / 2 + 1;
@@ -37,6 +38,8 @@ void SagHeights::index() {
 }
 
 uint32_t SagHeights::below(const HeightKey& k) const {
+    if (keys_.size() <= kSearchLimit)
+        return uint32_t(std::lower_bound(keys_.begin(), keys_.end(), k) - keys_.begin());
     size_t b = bucket(k.y);
     auto first = y_.begin() + long(buckets_[b]), last = y_.begin() + long(buckets_[b + 1]);
     size_t a = size_t(std::lower_bound(first, last, k.y) - y_.begin());
@@ -47,14 +50,15 @@ uint32_t SagHeights::below(const HeightKey& k) const {
     return uint32_t(a);
 }
 
-void SagIndex::build(const std::vector<Point>& pointOfRank) {
-    const uint32_t n = uint32_t(pointOfRank.size());
+void SagIndex::build() {
+    const uint32_t n = uint32_t(byRank_.size());
     used_.assign(n, 0);
-    items_.resize(n);
-    byRank_ = pointOfRank;
-    for (uint32_t r = 0; r < n; ++r) items_[r] = {pointOfRank[r], r};
     nodes_.clear();
-    if (n == 0) return;
+    items_.clear();
+    // lowest() scans a bracket of at most kScanLimit sags: so few sags need no tree.
+    if (n <= kScanLimit) return;
+    items_.resize(n);
+    for (uint32_t r = 0; r < n; ++r) items_[r] = {byRank_[r], r};
     depth_ = 0;
     while ((uint64_t(n) >> depth_) > kLeafSize) ++depth_;
     firstLeaf_ = (1u << depth_) - 1;
@@ -100,6 +104,7 @@ void SagIndex::buildNode(uint32_t id, uint32_t begin, uint32_t end, int depth) {
 void SagIndex::markUsed(uint32_t rank) {
     if (used_[rank]) return;
     used_[rank] = 1;
+    if (nodes_.empty()) return;  // no tree (build())
     for (uint32_t id = leafOfRank_[rank];; id = (id - 1) / 2) {
         --nodes_[id].unused;
         if (id == 0) break;

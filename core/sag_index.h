@@ -46,6 +46,7 @@ public:
 
 private:
     size_t bucket(double y) const;
+    static constexpr size_t kSearchLimit = 16;  // up to this many sags: no buckets, one search
     std::vector<HeightKey> keys_;
     std::vector<double> y_;          // keys_[k].y
     std::vector<uint32_t> buckets_;  // first rank of each height bucket (bucket())
@@ -61,8 +62,9 @@ public:
         int lineCount = 0;
     };
 
-    // pointOfRank[r]: the sag of height rank r (ranks: sags sorted by height).
-    void build(const std::vector<Point>& pointOfRank);
+    // The sags' points by height rank (ranks: sags sorted by height), filled before build().
+    std::vector<Point>& points() { return byRank_; }
+    void build();
     size_t size() const { return used_.size(); }
     bool used(uint32_t rank) const { return used_[rank]; }
     Point point(uint32_t rank) const { return byRank_[rank]; }
@@ -104,7 +106,7 @@ private:
     static bool leftOf(const Line& l, double px, double py);
     static bool outside(const Node& n, const Region& r, const Frame& f);
     static bool mayContain(const Region& r, const Frame& f, Point p);
-    std::vector<Node> nodes_;
+    std::vector<Node> nodes_;                   // empty when there are kScanLimit sags or fewer
     static constexpr uint32_t kScanLimit = 48;  // brackets up to this many sags are scanned
     std::vector<Item> items_;
     std::vector<Point> byRank_;         // the sags' points by rank, for the scan
@@ -126,11 +128,12 @@ inline bool SagIndex::leftOf(const Line& l, double px, double py) {
 
 template <class Inside>
 int64_t SagIndex::lowest(int64_t lo, int64_t hi, const Region& region, Inside&& inside) {
-    if (items_.empty() || hi <= lo + 1) return -1;
+    if (used_.empty() || hi <= lo + 1) return -1;
     const Frame frame = frameOf(region);
     int64_t best = hi;  // candidates must beat this
-    if (hi - lo - 1 <= int64_t(kScanLimit)) {
-        // A thin band holds few sags: scan them in rank order, as the paper does (§4).
+    if (nodes_.empty() || hi - lo - 1 <= int64_t(kScanLimit)) {
+        // A thin band (or a list too short for a tree) holds few sags: scan them in rank order,
+        // as the paper does (§4).
         for (int64_t r = std::max<int64_t>(lo + 1, 0); r < hi && r < int64_t(used_.size()); ++r) {
             ++work().nodeVisits;
             if (!used_[size_t(r)] && mayContain(region, frame, byRank_[size_t(r)]) &&

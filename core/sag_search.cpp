@@ -16,16 +16,16 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
     heights.sort(sags_, heightsOf_.keys());
     // The sags' points for the plane index, and their heights for the ranks.
     const size_t count = sags_.size();
-    pointOfRank_.resize(count);
-    for (size_t k = 0; k < count; ++k) pointOfRank_[k] = heights.at(sags_[k]);
-    index_.build(pointOfRank_);
+    std::vector<Point>& points = index_.points();
+    points.resize(count);
+    for (size_t k = 0; k < count; ++k) points[k] = heights.at(sags_[k]);
+    index_.build();
     heightsOf_.index();
     unused_ = uint32_t(count);
-    // Indexed from the part's first node: per-part work stays proportional to the part.
-    sagsBelow_.assign(nodes.end() - partFirstNode_, kNone);
-    work().nodeVisits += sagsBelow_.size();
-    for (size_t k = 0; k < count; ++k)
-        sagsBelow_[sags_[k] - partFirstNode_] = uint32_t(k);  // a sag's rank
+    // Node ids grow from part to part within a run, so the entries of an earlier part never
+    // match; those of an earlier run might.
+    if (partFirstNode == NodeId(0))
+        for (Recent& r : recent_) r = {};
     // The bank lists are built once the plane index has visited more than half a box per
     // node of the part: a part whose gorges it prunes well never pays the sweep. Labels are
     // only sound on loops whose edges are the input's and meet only at their ends; where
@@ -46,6 +46,7 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
 
 NodeId SagSearch::find(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
                        Event& e) {
+    if (unused_ == 0) return kNil;  // every sag bridged already (or none): nothing to count
     WorkCounters& w = work();
     const uint64_t before = w.nodeVisits + w.sagTests + w.orientCalls;  // not all ten counters
     NodeId s = search(left, right, water, next, partNodes, e);
@@ -53,14 +54,13 @@ NodeId SagSearch::find(NodeId left, NodeId right, NodeId water, NodeId next, uin
     return s;
 }
 
-// Number of sags strictly below node n, by binary search on the contiguous height keys,
-// remembered per node: the water is usually the previous step's Next.
+// Number of sags strictly below node n, by binary search on the contiguous height keys. The
+// answers for recent nodes are kept, by node id modulo kRecent (the water is usually a recent
+// step's Next, and the chain's nodes have neighbouring ids): no array over every node.
 uint32_t SagSearch::sagsBelow(NodeId n) {
-    if (n - partFirstNode_ >= sagsBelow_.size())
-        sagsBelow_.resize(heights_->nodes().end() - partFirstNode_, kNone);
-    uint32_t& r = sagsBelow_[n - partFirstNode_];
-    if (r == kNone) r = heightsOf_.below(heights_->key(n));
-    return r;
+    Recent& r = recent_[uint32_t(n) % kRecent];
+    if (r.node != n) r = {n, heightsOf_.below(heights_->key(n))};
+    return r.below;
 }
 
 // Sags are sorted, so the search starts at the water level and stops at Next.
@@ -130,13 +130,15 @@ NodeId SagSearch::search(NodeId left, NodeId right, NodeId water, NodeId nx, uin
 NodeId SagSearch::use(int64_t rank) {
     index_.markUsed(uint32_t(rank));
     --unused_;
-    return sags_[size_t(rank)];
+    const NodeId s = sags_[size_t(rank)];
+    recent_[uint32_t(s) % kRecent] = {s, uint32_t(rank)};  // the bridged sag is the next water
+    return s;
 }
 
 void SagSearch::buildBanks() {
     banksTried_ = true;
-    std::vector<Point> point(initialNodes_);
-    for (uint32_t i = 0; i < initialNodes_; ++i) point[i] = heights_->at(partFirstNode_ + i);
+    // Without shared points the part's initial nodes are its vertices, in order (inputEdge()).
+    const Point* point = heights_->points() + partFirstVertex_;
     std::vector<uint32_t> sagOfRank(sags_.size());
     for (size_t k = 0; k < sags_.size(); ++k) sagOfRank[k] = sags_[k] - partFirstNode_;
     if (!banks_.build(point, initialNext_, sagOfRank,

@@ -37,11 +37,14 @@ private:
     static constexpr int64_t kProbes = 4;  // ranks tested before the sag tree
     const Heights* heights_ = nullptr;     // the run's, from index() on
     std::vector<NodeId> sags_;             // by height rank
-    std::vector<Point> pointOfRank_;
-    SagIndex index_;        // the sags by height rank, searchable by x
-    SagHeights heightsOf_;  // the sags' heights by rank
-    // Per node of the part (from partFirstNode_): sags below it, kNone until asked.
-    std::vector<uint32_t> sagsBelow_;
+    SagIndex index_;                       // the sags by height rank, searchable by x
+    SagHeights heightsOf_;                 // the sags' heights by rank
+    struct Recent {                        // a node and the number of sags below it (sagsBelow())
+        NodeId node = kNil;
+        uint32_t below = 0;
+    };
+    static constexpr uint32_t kRecent = 64;
+    Recent recent_[kRecent];
     SagBanks banks_;  // the sags each input edge sees, once the plane index is costly
     bool banksTried_ = false;
     uint64_t treeWork_ = 0;  // box visits of the plane index in this part

@@ -22,17 +22,18 @@ Landing walkDown(const Heights& h, const std::vector<GorgeRec>& gorges, Stretche
     size_t run = pos.size();  // first position of the stretch this walk records
     for (uint32_t guard = 0; guard <= partNodes; ++guard, x = goPrev ? prev(x) : next(x)) {
         ++work().nodeVisits;
-        const Node& nd = nodes[x];
-        uint32_t g = goPrev ? nd.gorgeRight : nd.gorgeLeft;
+        const Ends& ends = nodes.ends(x);
+        const bool wet = nodes.wet(x);
+        uint32_t g = goPrev ? ends.gorgeRight : ends.gorgeLeft;
         if (g != kNoGorge && !gorges[g].done && !gorges[g].held) {
             walked.close(run);
             return {g, kNil};
         }
-        if (nd.gorgeLeft != kNoGorge || nd.gorgeRight != kNoGorge || x == t) break;
+        if (ends.gorgeLeft != kNoGorge || ends.gorgeRight != kNoGorge || x == t) break;
         // Only extremes matter to the walk; the orientation test is spent on them alone
         // (and on every maximum of a stretch being recorded: a later walk may need it).
         const uint32_t at = walked.recordedAt(dir, x);
-        const bool fresh = at == kNone && !nd.wet;
+        const bool fresh = at == kNone && !wet;
         bool minimum = h.lower(x, prev(x)) && h.lower(x, next(x));
         bool maximum = !minimum && h.lower(prev(x), x) && h.lower(next(x), x);
         bool convexHere = (minimum || (maximum && (drops > 0 || fresh))) &&
@@ -50,11 +51,11 @@ Landing walkDown(const Heights& h, const std::vector<GorgeRec>& gorges, Stretche
             ++drops;
         } else if (sensitive && drops > 0) {
             --drops;  // a bottom beyond a top, or a ceiling roofing the basin under the last sag
-        } else if (minimum && sensitive && !nd.wet) {
+        } else if (minimum && sensitive && !wet) {
             walked.close(run);
             return {kNoGorge, x};
         }
-        if (!fresh && at != kNone && !nd.wet) {
+        if (!fresh && at != kNone && !wet) {
             // Cross the stretch beyond x in one step, up to the node before the first one
             // that got wet since (its links may have changed) and before the first bottom
             // or ceiling the count would reach at zero (it may be the landing): none of
@@ -67,7 +68,7 @@ Landing walkDown(const Heights& h, const std::vector<GorgeRec>& gorges, Stretche
                              rec.start;
                 // One past the last node crossed: a wet node (or the stretch's end) is not
                 // reached, nor the node before it; a zero-count node is reached live.
-                uint32_t b = f == rec.end || nodes[pos[f].node].wet ? f - 1 : f;
+                uint32_t b = f == rec.end || nodes.wet(pos[f].node) ? f - 1 : f;
                 if (b > a && guard + (b - a) <= partNodes) {
                     drops += pos[b].drops - pos[a].drops;
                     guard += b - a;

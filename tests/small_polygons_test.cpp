@@ -5,12 +5,14 @@
 #include <gtest/gtest.h>
 
 #include <cstdlib>
+#include <fstream>
 #include <new>
 #include <string>
 #include <vector>
 
 #include "generate.h"
 #include "test_support.h"
+#include "up.h"
 #include "work.h"
 
 // Allocations made by this thread, counted by the replaced global operator new (it forwards
@@ -115,6 +117,86 @@ TEST(SmallPolygons, TriangulatorAllocatesNothingOnceWarm) {
         for (int i = 0; i < 3; ++i) EXPECT_EQ(t.run(p).triangles.size(), triangles);
         EXPECT_EQ(tAllocations - before, 0u) << name;
     }
+}
+
+// Off the axes the machine ranks the vertices by height: that order is lent too.
+TEST(SmallPolygons, TriangulatorAllocatesNothingOnceWarmAlongAnyDirection) {
+    std::vector<std::string> files = {sourcePath("polygons/holes.json"),
+                                      sourcePath("polygons/touching-hole.json"),
+                                      sourcePath("polygons/steiner.json")};
+    const std::string building = sharedPath("peers/earcut/fixtures/building.json");
+    if (std::ifstream(building)) files.push_back(building);
+    for (const std::string& name : files) {
+        Polygon p = validated(name);
+        for (Up up : {Up::MinusY, Up::PlusX, upFromDegrees(30), upFromDegrees(200)}) {
+            Options o;
+            o.up = up;
+            Triangulator t;
+            const size_t triangles = t.run(p, nullptr, o).triangles.size();
+            ASSERT_TRUE(t.run(p, nullptr, o).diagnostic.ok()) << name;
+            const uint64_t before = tAllocations;
+            for (int i = 0; i < 3; ++i) EXPECT_EQ(t.run(p, nullptr, o).triangles.size(), triangles);
+            EXPECT_EQ(tAllocations - before, 0u) << name << " along " << upName(up);
+        }
+    }
+}
+
+// The per-call work on a small polygon stays a few steps per vertex: no search for features
+// the input does not have (touching rings when validation saw no repeated point, heights
+// ranked along an axis), counted by the machine's work counters (work.h), not by a clock.
+TEST(SmallPolygons, WorkPerCallIsAFewStepsPerVertex) {
+    Triangulator t;
+    for (const Polygon& p : inputs()) {
+        if (p.vertices.size() > 200) continue;
+        t.run(p);
+        work() = {};
+        ASSERT_TRUE(t.run(p).diagnostic.ok());
+        const uint64_t n = p.vertices.size();
+        const WorkCounters w = work();
+        if (p.pointsDistinct) {
+            EXPECT_EQ(w.touchSearchNodes, 0u) << n;
+        }
+        EXPECT_EQ(w.heightCalls, 0u) << n;  // along +y heights are coordinates
+        // At most 13.6 and 8.5 a vertex today (touching-holes 82 and 160, earcut's fixtures).
+        EXPECT_LE(w.nodeVisits, 16 * n + 16) << n;
+        EXPECT_LE(w.orientCalls, 10 * n + 16) << n;
+    }
+}
+
+// Without a listener no event is built; a run that ends in a forbidden state is flooded again,
+// recording, for its failure event. That event is the one a listener sees last, and the run
+// cuts the same triangles in the same steps.
+TEST(SmallPolygons, AnUnrecordedRefusalCarriesTheRecordedFailure) {
+    struct Last : Listener {
+        Event last;
+        void onEvent(const Event& e) override { last = e; }
+    };
+    std::vector<Polygon> invalid;
+    for (const std::string& family : invalidFamilyNames())
+        for (uint64_t seed = 1; seed <= 3; ++seed)
+            invalid.push_back(generateInvalid(family, seed, 40));
+    size_t refused = 0;
+    Triangulator t;
+    for (const Polygon& p : invalid) {
+        Last heard;
+        const FloodResult recorded = triangulate(p, &heard);
+        for (const FloodResult& quiet : {triangulate(p), t.run(p)}) {
+            EXPECT_EQ(quiet.diagnostic.status, recorded.diagnostic.status);
+            EXPECT_EQ(quiet.triangles, recorded.triangles);
+            EXPECT_EQ(quiet.steps, recorded.steps);
+            if (recorded.diagnostic.status != Status::Forbidden) continue;
+            EXPECT_FALSE(quiet.diagnostic.message.empty());
+            EXPECT_EQ(quiet.failure.action, Action::Forbidden);
+            EXPECT_EQ(quiet.failure.reason, heard.last.reason);
+            EXPECT_EQ(quiet.failure.step, heard.last.step);
+            EXPECT_EQ(quiet.failure.culprit, heard.last.culprit);
+            EXPECT_EQ(quiet.failure.culprit2, heard.last.culprit2);
+            EXPECT_EQ(quiet.failure.tested, heard.last.tested);
+            EXPECT_EQ(quiet.failure.passed, heard.last.passed);
+        }
+        refused += recorded.diagnostic.status == Status::Forbidden;
+    }
+    EXPECT_GT(refused, invalid.size() / 4);  // the machine itself refuses many of them
 }
 
 TEST(SmallPolygons, TriangulateAllocatesOnlyItsResult) {

@@ -102,6 +102,36 @@ struct EdgeLess {
     bool operator()(Point p, const Active& e) const { return sweep->side(e.lo, e.hi, p) > 0; }
 };
 
+// The nodes lowest first (belowToward). Along an axis the order is a comparison of two
+// coordinates, sorted as contiguous keys (negation is exact) rather than through the node's
+// point on every comparison; the points are distinct, so the order is the same either way.
+void sweepOrder(const std::vector<Point>& point, Up up, std::vector<uint32_t>& order) {
+    const uint32_t n = uint32_t(order.size());
+    if (!up.axis()) {
+        for (uint32_t i = 0; i < n; ++i) order[i] = i;
+        std::sort(order.begin(), order.end(),
+                  [&](uint32_t a, uint32_t b) { return belowToward(up, point[a], point[b]); });
+        return;
+    }
+    struct Key {
+        double h, across;  // the height, then the tie-break along the tilted level line
+        uint32_t node;
+    };
+    // belowToward's four axis cases: +y (y, x), -y (-y, -x), +x (x, -y), -x (-x, y).
+    const bool alongX = up.y == 0, negative = alongX ? up.x < 0 : up.y < 0;
+    std::vector<Key> keys(n);
+    for (uint32_t i = 0; i < n; ++i) {
+        const Point p = point[i];
+        double h = alongX ? p.x : p.y, across = alongX ? -p.y : p.x;
+        if (negative) h = -h, across = -across;
+        keys[i] = {h, across, i};
+    }
+    std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+        return a.h < b.h || (a.h == b.h && a.across < b.across);
+    });
+    for (uint32_t i = 0; i < n; ++i) order[i] = keys[i].node;
+}
+
 }  // namespace
 
 void SagBanks::clear() {
@@ -121,14 +151,13 @@ void SagBanks::Side::group(const std::vector<uint32_t>& label, size_t edges) {
 }
 
 bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t>& next,
-                     const std::vector<uint32_t>& sagOfRank, Up up) {
+                     const std::vector<uint32_t>& sagOfRank, Up up, bool simple) {
     clear();
     const uint32_t n = uint32_t(point.size());
     std::vector<uint32_t> prev(n), rankOf(n, kNoEdge), order(n);
-    for (uint32_t i = 0; i < n; ++i) prev[next[i]] = i, order[i] = i;
+    for (uint32_t i = 0; i < n; ++i) prev[next[i]] = i;
     for (uint32_t r = 0; r < sagOfRank.size(); ++r) rankOf[sagOfRank[r]] = r;
-    std::sort(order.begin(), order.end(),
-              [&](uint32_t a, uint32_t b) { return belowToward(up, point[a], point[b]); });
+    sweepOrder(point, up, order);
 
     Sweep sweep{point, next, up};
     using Set = std::set<Active, EdgeLess>;
@@ -137,7 +166,7 @@ bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t
     std::vector<uint32_t> label[2] = {std::vector<uint32_t>(sagOfRank.size(), kNoEdge),
                                       std::vector<uint32_t>(sagOfRank.size(), kNoEdge)};
     auto meetsBefore = [&](Set::iterator it) {  // it and the edge before it meet
-        return it != active.begin() && it != active.end() &&
+        return !simple && it != active.begin() && it != active.end() &&
                sweep.meet(std::prev(it)->tail, it->tail);
     };
     for (uint32_t p : order) {
@@ -154,6 +183,7 @@ bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t
             at[starts] = it;
             // The end of the edge that left, hence strictly between the neighbours (the
             // sweep has found no meeting so far): one orientation each clears the new edge.
+            if (simple) continue;
             if (it != active.begin() && sweep.meetFrom(std::prev(it)->tail, starts, -1))
                 return false;
             if (std::next(it) != active.end() && sweep.meetFrom(std::next(it)->tail, starts, 1))
@@ -192,6 +222,7 @@ bool SagBanks::build(const std::vector<Point>& point, const std::vector<uint32_t
         sweep.known[1] = kNoEdge;
         if (ia->tail != a || ib->tail != b || std::next(ia) != ib) return false;
         at[a] = ia, at[b] = ib;
+        if (simple) continue;
         if (ia != active.begin() && sweep.meetFrom(std::prev(ia)->tail, a, -1)) return false;
         if (std::next(ib) != active.end() && sweep.meetFrom(std::next(ib)->tail, b, 1))
             return false;

@@ -215,7 +215,7 @@ private:
         // A point hole is a hole whose lowest vertex is its only one: a sag.
         sags.insert(sags.end(), points.begin(), points.end());
         sags_.index(heights_, partFirstNode_, poly_.rings[poly_.parts[part_].firstRing].first,
-                    loops.touching);
+                    loops.touching, poly_.pointsDistinct);
         // The bottoms, lowest first: every one of them starts a gorge unless the water
         // reaches it first. They are the to-do list of last resort (dry_bottoms.h).
         size_t kept = 0;

@@ -1,6 +1,7 @@
 #include "sag_banks.h"
 
 #include <algorithm>
+#include <memory>
 #include <set>
 
 #include "predicates.h"
@@ -102,6 +103,101 @@ struct EdgeLess {
     bool operator()(Point p, const Active& e) const { return sweep->side(e.lo, e.hi, p) > 0; }
 };
 
+// The sweep's set allocates one node per edge inserted and frees it when the edge ends: a free
+// list of node-sized slots, carved from chunks freed together, spares malloc that pair of calls
+// (a tenth of the sweep's instructions) and keeps the live nodes close in memory.
+class NodePool {
+public:
+    void* get(size_t bytes) {
+        if (bytes != slot_) return ::operator new(bytes);  // not the set's node (first fixes it)
+        if (free_) {
+            void* p = free_;
+            free_ = *static_cast<void**>(p);
+            return p;
+        }
+        if (left_ == 0) {
+            chunks_.emplace_back(new Slot[kChunk]);
+            next_ = chunks_.back().get(), left_ = kChunk;
+        }
+        --left_;
+        return next_++;
+    }
+    void put(void* p, size_t bytes) {
+        if (bytes != slot_) return ::operator delete(p);
+        *static_cast<void**>(p) = free_;
+        free_ = p;
+    }
+    void fix(size_t bytes) {
+        if (slot_ == 0 && bytes <= sizeof(Slot)) slot_ = bytes;
+    }
+
+private:
+    struct alignas(16) Slot {
+        unsigned char bytes[80];
+    };
+    static constexpr size_t kChunk = 1024;
+    std::vector<std::unique_ptr<Slot[]>> chunks_;
+    Slot* next_ = nullptr;
+    size_t left_ = 0, slot_ = 0;
+    void* free_ = nullptr;
+};
+
+template <class T>
+struct PoolAllocator {
+    using value_type = T;
+    NodePool* pool;
+    explicit PoolAllocator(NodePool* p) : pool(p) {}
+    template <class U>
+    PoolAllocator(const PoolAllocator<U>& o) : pool(o.pool) {}  // NOLINT: rebinding
+    T* allocate(size_t n) {
+        if (n != 1) return std::allocator<T>().allocate(n);
+        pool->fix(sizeof(T));
+        return static_cast<T*>(pool->get(sizeof(T)));
+    }
+    void deallocate(T* p, size_t n) {
+        if (n != 1) return std::allocator<T>().deallocate(p, n);
+        pool->put(p, sizeof(T));
+    }
+    template <class U>
+    bool operator==(const PoolAllocator<U>& o) const {
+        return pool == o.pool;
+    }
+    template <class U>
+    bool operator!=(const PoolAllocator<U>& o) const {
+        return pool != o.pool;
+    }
+};
+
+// The nodes lowest first (belowToward). Along an axis the order is a comparison of two
+// coordinates, sorted as contiguous keys (negation is exact) rather than through the node's
+// point on every comparison; the points are distinct, so the order is the same either way.
+void sweepOrder(const Point* point, Up up, std::vector<uint32_t>& order) {
+    const uint32_t n = uint32_t(order.size());
+    if (!up.axis()) {
+        for (uint32_t i = 0; i < n; ++i) order[i] = i;
+        std::sort(order.begin(), order.end(),
+                  [&](uint32_t a, uint32_t b) { return belowToward(up, point[a], point[b]); });
+        return;
+    }
+    struct Key {
+        double h, across;  // the height, then the tie-break along the tilted level line
+        uint32_t node;
+    };
+    // belowToward's four axis cases: +y (y, x), -y (-y, -x), +x (x, -y), -x (-x, y).
+    const bool alongX = up.y == 0, negative = alongX ? up.x < 0 : up.y < 0;
+    std::vector<Key> keys(n);
+    for (uint32_t i = 0; i < n; ++i) {
+        const Point p = point[i];
+        double h = alongX ? p.x : p.y, across = alongX ? -p.y : p.x;
+        if (negative) h = -h, across = -across;
+        keys[i] = {h, across, i};
+    }
+    std::sort(keys.begin(), keys.end(), [](const Key& a, const Key& b) {
+        return a.h < b.h || (a.h == b.h && a.across < b.across);
+    });
+    for (uint32_t i = 0; i < n; ++i) order[i] = keys[i].node;
+}
+
 }  // namespace
 
 void SagBanks::clear() {
@@ -121,23 +217,23 @@ void SagBanks::Side::group(const std::vector<uint32_t>& label, size_t edges) {
 }
 
 bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
-                     const std::vector<uint32_t>& sagOfRank, Up up) {
+                     const std::vector<uint32_t>& sagOfRank, Up up, bool simple) {
     clear();
     const uint32_t n = uint32_t(next.size());
     std::vector<uint32_t> prev(n), rankOf(n, kNoEdge), order(n);
-    for (uint32_t i = 0; i < n; ++i) prev[next[i]] = i, order[i] = i;
+    for (uint32_t i = 0; i < n; ++i) prev[next[i]] = i;
     for (uint32_t r = 0; r < sagOfRank.size(); ++r) rankOf[sagOfRank[r]] = r;
-    std::sort(order.begin(), order.end(),
-              [&](uint32_t a, uint32_t b) { return belowToward(up, point[a], point[b]); });
+    sweepOrder(point, up, order);
 
     Sweep sweep{point, next, up};
-    using Set = std::set<Active, EdgeLess>;
-    Set active(EdgeLess{&sweep});
+    NodePool pool;  // outlives the set
+    using Set = std::set<Active, EdgeLess, PoolAllocator<Active>>;
+    Set active(EdgeLess{&sweep}, PoolAllocator<Active>(&pool));
     std::vector<Set::iterator> at(n, active.end());
     std::vector<uint32_t> label[2] = {std::vector<uint32_t>(sagOfRank.size(), kNoEdge),
                                       std::vector<uint32_t>(sagOfRank.size(), kNoEdge)};
     auto meetsBefore = [&](Set::iterator it) {  // it and the edge before it meet
-        return it != active.begin() && it != active.end() &&
+        return !simple && it != active.begin() && it != active.end() &&
                sweep.meet(std::prev(it)->tail, it->tail);
     };
     for (uint32_t p : order) {
@@ -154,6 +250,7 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
             at[starts] = it;
             // The end of the edge that left, hence strictly between the neighbours (the
             // sweep has found no meeting so far): one orientation each clears the new edge.
+            if (simple) continue;
             if (it != active.begin() && sweep.meetFrom(std::prev(it)->tail, starts, -1))
                 return false;
             if (std::next(it) != active.end() && sweep.meetFrom(std::next(it)->tail, starts, 1))
@@ -192,6 +289,7 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
         sweep.known[1] = kNoEdge;
         if (ia->tail != a || ib->tail != b || std::next(ia) != ib) return false;
         at[a] = ia, at[b] = ib;
+        if (simple) continue;
         if (ia != active.begin() && sweep.meetFrom(std::prev(ia)->tail, a, -1)) return false;
         if (std::next(ib) != active.end() && sweep.meetFrom(std::next(ib)->tail, b, 1))
             return false;

@@ -22,12 +22,14 @@ public:
     // hole), no two at the same point; sagOfRank: the sags' nodes by height rank. False, and
     // nothing built, when two edges touch or cross, or a sag lies on an edge (unvalidated
     // input): the sweep stops at the first such pair, before its order could be wrong.
+    // `simple`: the caller knows that no two edges meet (validate() passed), so the sweep
+    // skips those checks, a third of its work.
     bool build(const Point* point, const std::vector<uint32_t>& next,
-               const std::vector<uint32_t>& sagOfRank, Up up = Up::PlusY);
+               const std::vector<uint32_t>& sagOfRank, Up up = Up::PlusY, bool simple = false);
     // The same, the points in a vector of one per node.
     bool build(const std::vector<Point>& point, const std::vector<uint32_t>& next,
-               const std::vector<uint32_t>& sagOfRank, Up up = Up::PlusY) {
-        return build(point.data(), next, sagOfRank, up);
+               const std::vector<uint32_t>& sagOfRank, Up up = Up::PlusY, bool simple = false) {
+        return build(point.data(), next, sagOfRank, up, simple);
     }
     bool built() const { return built_; }
     void clear();

@@ -9,8 +9,9 @@
 namespace flood {
 
 void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFirstVertex,
-                      bool touching) {
+                      bool touching, bool simple) {
     heights_ = &heights;
+    simple_ = simple;
     partFirstNode_ = partFirstNode;
     const Nodes& nodes = heights.nodes();
     heights.sort(sags_, heightsOf_.keys());
@@ -142,7 +143,7 @@ void SagSearch::buildBanks() {
     std::vector<uint32_t> sagOfRank(sags_.size());
     for (size_t k = 0; k < sags_.size(); ++k) sagOfRank[k] = sags_[k] - partFirstNode_;
     if (!banks_.build(point, initialNext_, sagOfRank,
-                      heights_->general() ? heights_->up() : Up::PlusY))
+                      heights_->general() ? heights_->up() : Up::PlusY, simple_))
         banks_.clear();  // crossing edges
 }
 

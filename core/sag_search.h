@@ -20,8 +20,10 @@ public:
     std::vector<NodeId>& sags() { return sags_; }
     // Sorts the part's sags by height and indexes them. The part's nodes run from
     // `partFirstNode` to the last node, its vertices from `partFirstVertex`; `touching`:
-    // some loops share a point (the bank lists are then never built).
-    void index(const Heights& heights, NodeId partFirstNode, Index partFirstVertex, bool touching);
+    // some loops share a point (the bank lists are then never built); `simple`: validate()
+    // passed and no point is shared (Polygon::pointsDistinct), so no two edges meet.
+    void index(const Heights& heights, NodeId partFirstNode, Index partFirstVertex, bool touching,
+               bool simple = false);
     // The sag sought, now used; kNil if none. `partNodes`: the part's nodes so far.
     NodeId find(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes, Event& e);
 
@@ -47,6 +49,7 @@ private:
     Recent recent_[kRecent];
     SagBanks banks_;  // the sags each input edge sees, once the plane index is costly
     bool banksTried_ = false;
+    bool simple_ = false;    // index()'s: the bank sweep need not check that edges meet
     uint64_t treeWork_ = 0;  // box visits of the plane index in this part
     NodeId partFirstNode_ = NodeId(0);
     uint32_t partFirstVertex_ = 0, initialNodes_ = 0;

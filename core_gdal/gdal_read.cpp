@@ -13,7 +13,7 @@
 #include <memory>
 #include <mutex>
 
-#include "gdal_io.h"
+#include "gdal_module.h"
 #include "io_util.h"
 
 namespace flood {
@@ -23,7 +23,7 @@ void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Poi
                   bool outer);
 }  // namespace io_detail
 
-namespace gdal {
+namespace gdal::direct {
 namespace {
 
 void registerOnce() {
@@ -187,30 +187,6 @@ struct Reader {
 
 }  // namespace
 
-namespace {
-std::string extension(const std::string& path) {
-    size_t dot = path.find_last_of("./");
-    std::string ext = dot == std::string::npos || path[dot] == '/' ? "" : path.substr(dot + 1);
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
-}  // namespace
-
-bool handles(const std::string& path, const Selection& s) {
-    if (s.any()) return true;
-    if (path == "-") return false;
-    std::string ext = extension(path);
-    return !ext.empty() && ext != "json" && ext != "geojson" && ext != "wkt";
-}
-
-bool gisFile(const std::string& path) {
-    static const char* const known[] = {"shp", "gpkg", "fgb",    "geojsonl", "geojsons",
-                                        "gml", "kml",  "sqlite", "tab",      "mif"};
-    std::string ext = extension(path);
-    return std::find(std::begin(known), std::end(known), ext) != std::end(known);
-}
-
 DatasetRead readFeatures(const std::string& path, const Selection& s) {
     Reader r;
     r.name = path;
@@ -228,7 +204,7 @@ DatasetRead readFeatures(const std::string& path, const Selection& s) {
 }
 
 ReadResult readPolygon(const std::string& path, const Selection& s) {
-    DatasetRead d = readFeatures(path, s);
+    DatasetRead d = direct::readFeatures(path, s);
     ReadResult rr;
     for (const std::string& w : d.skipped) rr.warn([&] { return w; });
     for (FeatureRead& f : d.features) {
@@ -252,5 +228,5 @@ ReadResult readPolygon(const std::string& path, const Selection& s) {
     return rr;
 }
 
-}  // namespace gdal
+}  // namespace gdal::direct
 }  // namespace flood

@@ -9,9 +9,9 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "gdal_io.h"
+#include "gdal_module.h"
 
-namespace flood::gdal {
+namespace flood::gdal::direct {
 
 Diagnostic writeTriangles(const std::string& path, const std::string& format, const Polygon& p,
                           const std::vector<Triangle>& triangles) {
@@ -82,4 +82,4 @@ Diagnostic writeTriangles(const std::string& path, const std::string& format, co
     return {};
 }
 
-}  // namespace flood::gdal
+}  // namespace flood::gdal::direct

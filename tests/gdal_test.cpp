@@ -265,5 +265,33 @@ TEST_F(Gdal, TrianglesWrittenAsGeoPackageAndFlatGeobufReadBack) {
     EXPECT_NE(info.find("Feature Count: 16"), std::string::npos) << info;
 }
 
+// GDAL is a module loaded on first use (core_gdal/gdal_module.h): the command is not linked to
+// it, so a run that reads no GIS dataset never loads its ~110 libraries.
+TEST_F(Gdal, TheCommandLoadsGdalOnlyForGisDatasets) {
+    RunResult ldd = runShell(std::string("ldd ") + FLOOD_CLI + " 2>&1");
+    ASSERT_EQ(ldd.code, 0) << ldd.out;
+    EXPECT_EQ(ldd.out.find("libgdal"), std::string::npos) << ldd.out;
+    RunResult r = runCli("triangulate " + path("source.gpkg") + " --feature 1 -o " +
+                         path("module-loaded.json"));
+    EXPECT_EQ(r.code, 0) << r.out;
+}
+
+// A module that cannot be loaded: one message naming the dataset and where it was looked for,
+// the exit code of an unreadable file; Flood's own formats are unaffected.
+TEST_F(Gdal, AMissingModuleIsNamedNotACrash) {
+    const std::string env = "FLOOD_GDAL_MODULE=" + path("no-such-module.so") + " ";
+    RunResult r = runShell(env + FLOOD_CLI + " triangulate " + path("source.gpkg") + " -o " +
+                           path("never.json") + " 2>&1");
+    EXPECT_EQ(r.code, int(Status::Malformed)) << r.out;
+    EXPECT_NE(r.out.find(path("source.gpkg") + ": GIS datasets need Flood's GDAL module"),
+              std::string::npos)
+        << r.out;
+    EXPECT_NE(r.out.find("no-such-module.so"), std::string::npos) << r.out;
+    EXPECT_FALSE(fs::exists(path("never.json")));
+    RunResult own = runShell(env + FLOOD_CLI + " triangulate " + sourcePath("polygons/hole.json") +
+                             " -o " + path("own.json") + " 2>&1");
+    EXPECT_EQ(own.code, 0) << own.out;
+}
+
 }  // namespace
 }  // namespace flood::testing

@@ -128,25 +128,22 @@ PartsOverlap partsOverlap(const std::vector<Point>& V, const std::vector<Index>&
         segs.push_back({up ? e.a : e.b, up ? e.b : e.a, partOfVertex[e.a], up ? 1 : -1});
     }
     boundary = {};
-    // An edge's end: its point kept beside it for the sort (24 bytes), the edge and whether
-    // it starts there in one word.
+    // An edge's end: its vertex, the edge and whether it starts there in one word (8 bytes;
+    // the sort reads the point through the vertex).
     struct End {
-        Point p;
         Index vertex;
         uint32_t segAndStart;  // seg << 1 | start
         Index seg() const { return segAndStart >> 1; }
         bool start() const { return segAndStart & 1; }
     };
-    static_assert(sizeof(End) == 24);
     std::vector<End> ends;
     ends.reserve(2 * segs.size());
     for (Index s = 0; s < segs.size(); ++s) {
-        const Segment& g = segs[s];
-        ends.push_back({V[g.lo], g.lo, s << 1 | 1});
-        ends.push_back({V[g.hi], g.hi, s << 1});
+        ends.push_back({segs[s].lo, s << 1 | 1});
+        ends.push_back({segs[s].hi, s << 1});
     }
     std::sort(ends.begin(), ends.end(),
-              [](const End& e, const End& f) { return lexLess(e.p, f.p); });
+              [&V](const End& e, const End& f) { return lexLess(V[e.vertex], V[f.vertex]); });
 
     using Status = std::set<Index, Below>;
     Status status(Below{&edges});
@@ -171,10 +168,10 @@ PartsOverlap partsOverlap(const std::vector<Point>& V, const std::vector<Index>&
         return PartsOverlap{o.str(), {vertex}, covering};
     };
     for (size_t e0 = 0, e1; e0 < ends.size(); e0 = e1) {
-        const Point p = ends[e0].p;
+        const Point p = V[ends[e0].vertex];
         const Index vertex = ends[e0].vertex;
         fan.clear();
-        for (e1 = e0; e1 < ends.size() && ends[e1].p == p; ++e1)
+        for (e1 = e0; e1 < ends.size() && V[ends[e1].vertex] == p; ++e1)
             if (ends[e1].start()) fan.push_back(ends[e1].seg());
         // The edges at p, contiguous in the status: those ending there, and those passing
         // through, to be cut at p.

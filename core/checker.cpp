@@ -468,13 +468,17 @@ struct Checker {
     // Rule 8: parts do not overlap. A single part has nothing to overlap.
     CheckResult partsDisjoint() {
         if (polygon.parts.size() <= 1) return kPass;
+        // Rules 2-7's edge lists and canonical copies are not needed any more: the sweep's
+        // arrays take their place instead of adding to them.
+        edges.reset();
+        C = {};
         std::vector<BoundaryEdge> boundaryEdges;
         boundaryEdges.reserve(n + polygon.splits.size());
         eachBoundaryEdge([&](BoundaryEdge e) {
             boundaryEdges.push_back(e);
             return true;
         });
-        PartsOverlap overlap = partsOverlap(V, partOfVertex, boundaryEdges);
+        PartsOverlap overlap = partsOverlap(V, partOfVertex, std::move(boundaryEdges));
         if (overlap.reason.empty()) return kPass;
         std::vector<uint32_t> rings;  // the overlapping parts' outer rings
         for (Index p : overlap.parts)

@@ -23,6 +23,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <set>
 #include <sstream>
@@ -36,19 +37,38 @@ namespace {
 
 bool lexLess(Point p, Point q) { return p.x < q.x || (p.x == q.x && p.y < q.y); }
 
+// An edge by its ends' vertex indices, its points read from the polygon: 16 bytes, where
+// the points themselves took 48 (with the edge's ends for messages) and were the checker's
+// peak on polygons of many parts.
 struct Segment {
-    Point lo, hi;  // the lexicographically lower and higher end
-    Index a, b;    // the directed boundary edge, for messages
+    Index lo, hi;  // the lexicographically lower and higher end
     Index part;
-    int sign;  // +1: the part's interior lies above the edge (a is lo); -1: below
+    int sign;  // +1: the part's interior lies above the edge (lo is its start); -1: below
+    Index a() const { return sign > 0 ? lo : hi; }  // the directed boundary edge, for messages
+    Index b() const { return sign > 0 ? hi : lo; }
 };
 
-// Where t lies relative to s's line: from t's start, or along t when t starts on that line.
-// +1 above, -1 below, 0 collinear.
-int side(const Segment& s, const Segment& t) {
-    int o = orient(s.lo, s.hi, t.lo);
-    return o != 0 ? o : orient(s.lo, s.hi, t.hi);
-}
+// The sweep's edges and the points their ends index.
+struct Edges {
+    const std::vector<Point>& V;
+    std::vector<Segment> segs;
+    Point lo(Index s) const { return V[segs[s].lo]; }
+    Point hi(Index s) const { return V[segs[s].hi]; }
+    int orientTo(Index s, Point p) const { return orient(lo(s), hi(s), p); }
+    // Where t lies relative to s's line: from t's start, or along t when t starts on that
+    // line. +1 above, -1 below, 0 collinear.
+    int side(Index s, Index t) const {
+        int o = orientTo(s, lo(t));
+        return o != 0 ? o : orientTo(s, hi(t));
+    }
+    // The two edges cross at a single point inside both.
+    bool crossProperly(Index s, Index t) const {
+        int o1 = orientTo(s, lo(t)), o2 = orientTo(s, hi(t));
+        if (o1 == 0 || o2 == 0 || o1 == o2) return false;
+        int o3 = orientTo(t, lo(s)), o4 = orientTo(t, hi(s));
+        return o3 != 0 && o4 != 0 && o3 != o4;
+    }
+};
 
 struct At {
     Point p;  // a lookup key: the event point
@@ -58,35 +78,22 @@ struct At {
 // within the other edge's span), and of such edges against the event point.
 struct Below {
     using is_transparent = void;
-    const std::vector<Segment>* segs;
+    const Edges* edges;
     bool operator()(Index i, Index j) const {
         if (i == j) return false;
-        const Segment &s = (*segs)[i], &t = (*segs)[j];
-        int o = lexLess(t.lo, s.lo) ? -side(t, s) : side(s, t);  // > 0: t above s
+        const Edges& e = *edges;
+        int o = lexLess(e.lo(j), e.lo(i)) ? -e.side(j, i) : e.side(i, j);  // > 0: j above i
         if (o != 0) return o > 0;
+        const Segment &s = e.segs[i], &t = e.segs[j];
         return s.sign != t.sign ? s.sign < t.sign : i < j;  // collinear: interior-below first
     }
-    bool operator()(Index i, At k) const {
-        const Segment& s = (*segs)[i];
-        return orient(s.lo, s.hi, k.p) > 0;
-    }
-    bool operator()(At k, Index i) const {
-        const Segment& s = (*segs)[i];
-        return orient(s.lo, s.hi, k.p) < 0;
-    }
+    bool operator()(Index i, At k) const { return edges->orientTo(i, k.p) > 0; }
+    bool operator()(At k, Index i) const { return edges->orientTo(i, k.p) < 0; }
 };
-
-// The two edges cross at a single point inside both.
-bool crossProperly(const Segment& s, const Segment& t) {
-    int o1 = orient(s.lo, s.hi, t.lo), o2 = orient(s.lo, s.hi, t.hi);
-    if (o1 == 0 || o2 == 0 || o1 == o2) return false;
-    int o3 = orient(t.lo, t.hi, s.lo), o4 = orient(t.lo, t.hi, s.hi);
-    return o3 != 0 && o4 != 0 && o3 != o4;
-}
 
 std::string edgeName(const Segment& s) {
     std::ostringstream o;
-    o << "edge (" << s.a << ", " << s.b << ") of part " << s.part;
+    o << "edge (" << s.a() << ", " << s.b() << ") of part " << s.part;
     return o.str();
 }
 
@@ -99,43 +106,47 @@ std::string vertexName(const std::vector<Point>& V, Index v) {
 
 PartsOverlap crossing(const Segment& s, const Segment& t, const std::string& where) {
     return {"parts-overlap: " + edgeName(s) + " crosses " + edgeName(t) + where,
-            {s.a, s.b, t.a, t.b},
+            {s.a(), s.b(), t.a(), t.b()},
             {s.part, t.part}};
 }
 
 }  // namespace
 
 PartsOverlap partsOverlap(const std::vector<Point>& V, const std::vector<Index>& partOfVertex,
-                          const std::vector<BoundaryEdge>& boundary) {
+                          std::vector<BoundaryEdge> boundary) {
     for (Index v = 0; v < V.size(); ++v)
         if (!std::isfinite(V[v].x) || !std::isfinite(V[v].y))
             return {"non-finite-coordinate: " + vertexName(V, v) + " cannot be swept", {v}, {}};
 
-    std::vector<Segment> segs;
+    Edges edges{V, {}};
+    std::vector<Segment>& segs = edges.segs;
     segs.reserve(boundary.size());
     for (const BoundaryEdge& e : boundary) {
         Point pa = V[e.a], pb = V[e.b];
         if (pa == pb) continue;  // no extent, no side (rule 3 already refuses such edges)
         bool up = lexLess(pa, pb);
-        segs.push_back({up ? pa : pb, up ? pb : pa, e.a, e.b, partOfVertex[e.a], up ? 1 : -1});
+        segs.push_back({up ? e.a : e.b, up ? e.b : e.a, partOfVertex[e.a], up ? 1 : -1});
     }
+    boundary = {};
+    // An edge's end: its vertex, the edge and whether it starts there in one word (8 bytes;
+    // the sort reads the point through the vertex).
     struct End {
-        Point p;
-        Index vertex, seg;
-        bool start;
+        Index vertex;
+        uint32_t segAndStart;  // seg << 1 | start
+        Index seg() const { return segAndStart >> 1; }
+        bool start() const { return segAndStart & 1; }
     };
     std::vector<End> ends;
     ends.reserve(2 * segs.size());
     for (Index s = 0; s < segs.size(); ++s) {
-        const Segment& g = segs[s];
-        ends.push_back({g.lo, g.sign > 0 ? g.a : g.b, s, true});
-        ends.push_back({g.hi, g.sign > 0 ? g.b : g.a, s, false});
+        ends.push_back({segs[s].lo, s << 1 | 1});
+        ends.push_back({segs[s].hi, s << 1});
     }
     std::sort(ends.begin(), ends.end(),
-              [](const End& e, const End& f) { return lexLess(e.p, f.p); });
+              [&V](const End& e, const End& f) { return lexLess(V[e.vertex], V[f.vertex]); });
 
     using Status = std::set<Index, Below>;
-    Status status(Below{&segs});
+    Status status(Below{&edges});
     std::vector<int> above(segs.size(), 0);  // winding sum of the gap just above each edge
     std::vector<Index> fan;                  // the edges leaving the event point
     auto overlapAbove = [&](Status::iterator top, Index vertex) {
@@ -157,24 +168,23 @@ PartsOverlap partsOverlap(const std::vector<Point>& V, const std::vector<Index>&
         return PartsOverlap{o.str(), {vertex}, covering};
     };
     for (size_t e0 = 0, e1; e0 < ends.size(); e0 = e1) {
-        const Point p = ends[e0].p;
+        const Point p = V[ends[e0].vertex];
         const Index vertex = ends[e0].vertex;
         fan.clear();
-        for (e1 = e0; e1 < ends.size() && ends[e1].p == p; ++e1)
-            if (ends[e1].start) fan.push_back(ends[e1].seg);
+        for (e1 = e0; e1 < ends.size() && V[ends[e1].vertex] == p; ++e1)
+            if (ends[e1].start()) fan.push_back(ends[e1].seg());
         // The edges at p, contiguous in the status: those ending there, and those passing
         // through, to be cut at p.
         const size_t starting = fan.size();
         auto first = status.lower_bound(At{p}), last = first;
-        for (; last != status.end() && orient(segs[*last].lo, segs[*last].hi, p) == 0; ++last) {
+        for (; last != status.end() && edges.orientTo(*last, p) == 0; ++last) {
             ++work().checkerSteps;
-            if (segs[*last].hi != p) fan.push_back(*last);
+            if (edges.hi(*last) != p) fan.push_back(*last);
         }
         // Edges passing through one point cross there unless they are collinear.
         for (size_t k = starting + 1; k < fan.size(); ++k) {
-            const Segment &s = segs[fan[k - 1]], &t = segs[fan[k]];
-            if (orient(s.lo, s.hi, t.hi) != 0)
-                return crossing(s, t, " at " + vertexName(V, vertex));
+            if (edges.orientTo(fan[k - 1], edges.hi(fan[k])) != 0)
+                return crossing(segs[fan[k - 1]], segs[fan[k]], " at " + vertexName(V, vertex));
         }
         int count = first == status.begin() ? 0 : above[*std::prev(first)];
         status.erase(first, last);
@@ -194,7 +204,7 @@ PartsOverlap partsOverlap(const std::vector<Point>& V, const std::vector<Index>&
         // New neighbours: below and above the fan (inside it, edges meet only at p).
         for (auto upper : {lowest, next})
             if (upper != status.begin() && upper != status.end() &&
-                crossProperly(segs[*std::prev(upper)], segs[*upper]))
+                edges.crossProperly(*std::prev(upper), *upper))
                 return crossing(segs[*std::prev(upper)], segs[*upper], "");
     }
     return {};

@@ -26,6 +26,6 @@ struct PartsOverlap {
 };
 PartsOverlap partsOverlap(const std::vector<Point>& vertices,
                           const std::vector<Index>& partOfVertex,
-                          const std::vector<BoundaryEdge>& boundary);
+                          std::vector<BoundaryEdge> boundary);  // freed once read
 
 }  // namespace flood

@@ -54,6 +54,12 @@ namespace {
 
 using io_detail::formatPoint;
 
+// An edge as the sweep sees it: its lower and upper vertex (both the vertex of a point hole).
+// Vertex indices, not points: 8 bytes an edge.
+struct Segment {
+    Index lo, hi;
+};
+
 // The closed bounding box of an edge.
 struct EdgeBox {
     double x0, x1, y0, y1;
@@ -81,13 +87,14 @@ struct Scratch {
     std::vector<Index> ringOfV, partOfRing, enclosing, groupOf;
     std::vector<int> ringSign;
     std::vector<Point> ringPoints;  // check 2's distinct-point count
-    std::vector<EdgeBox> boxes;     // pairsClear()'s
+    std::vector<Segment> segs;
+    std::vector<EdgeBox> boxes;  // pairsClear()'s
     std::vector<EventKey> keys;
     std::vector<Index> bucketStart;  // the event sort's buckets
     std::vector<Index> events, ending, starting, points, newRings, leftmostOf;
     std::vector<char> ringSeen;
     std::vector<std::pair<Index, Index>> leftmost, copies;
-    SweepTreeLinks links;  // each edge's tree links, lower and upper vertex (the sweep's)
+    SweepTreeLinks links;
     std::vector<std::vector<Occurrence>> touchPoints;
 };
 
@@ -344,13 +351,13 @@ Diagnostic Validator::checkRings() {
 // it (the edge just left of the ring's lowest vertex tells), used by check 6.
 
 struct SweepOrder {
-    const SweepNode* segs;  // each edge's lower and upper vertex (lo, hi)
-    const Point* at;        // the polygon's vertices
+    const std::vector<Segment>* segs;
+    const Point* at;  // the polygon's vertices
     // a before b along the sweep line (a left of b), both active at the current event.
     bool operator()(Index ia, Index ib) const {
         if (ia == ib) return false;
-        const Point alo = at[segs[ia].lo], ahi = at[segs[ia].hi];
-        const Point blo = at[segs[ib].lo], bhi = at[segs[ib].hi];
+        const Point alo = at[(*segs)[ia].lo], ahi = at[(*segs)[ia].hi];
+        const Point blo = at[(*segs)[ib].lo], bhi = at[(*segs)[ib].hi];
         if (!below(alo, blo)) {  // a starts at or after b: place a.lo against b
             int o = orientAxisFirst(blo, bhi, alo);
             if (o == 0) o = orientAxisFirst(blo, bhi, ahi);
@@ -449,21 +456,17 @@ void Validator::touchOnEdge(Index vertex, Index edge) {
 // T-junctions and enclosing[] are the full sweep's (the tree's shape is that of its order);
 // otherwise checkEdges() runs the full sweep.
 bool Validator::sweepEdges(bool minimal) {
-    // An edge as the sweep sees it: its lower and upper vertex (both the vertex of a point hole),
-    // in its tree record, where a search reads them.
-    SweepTreeLinks& segs = s.links;
+    std::vector<Segment>& segs = s.segs;
     segs.resize(n);
-    SweepTree<SweepOrder> active(n, SweepOrder{segs.data(), P.vertices.data()}, segs);
     for (Index v = 0; v < n; ++v) {
         Index w = next(v);
-        const bool rises = below(pt(v), pt(w));
-        segs[v].lo = rises ? v : w, segs[v].hi = rises ? w : v;
+        segs[v] = below(pt(v), pt(w)) ? Segment{v, w} : Segment{w, v};
     }
     // classifyMeeting(), skipped for edges whose boxes are apart (it would find nothing):
     // the box read off segs, without the ring lookups that edge ends cost there.
     const Point* V = P.vertices.data();
     auto meet = [&](Index e, Index f) {
-        const SweepNode &g = segs[e], &h = segs[f];
+        const Segment g = segs[e], h = segs[f];
         if (boxesApart(V[g.lo], V[g.hi], V[h.lo], V[h.hi])) ++work().validatorSteps;
         else classifyMeeting(e, f);
     };
@@ -471,6 +474,7 @@ bool Validator::sweepEdges(bool minimal) {
     auto up = [&](Index e) { return segs[e].lo == e && segs[e].hi != e; };
     std::vector<Index>& events = s.events;
     sortVerticesBelow(P.vertices, s.keys, events, s.bucketStart);
+    SweepTree<SweepOrder> active(n, SweepOrder{&segs, P.vertices.data()}, s.links);
     enclosing.assign(P.rings.size(), kNone);
     std::vector<char>& ringSeen = s.ringSeen;
     ringSeen.assign(P.rings.size(), 0);
@@ -506,7 +510,8 @@ bool Validator::sweepEdges(bool minimal) {
                 points.push_back(v);
                 continue;
             }
-            // An edge ends at p when v is its upper end (check 2 left no edge of zero length).
+            // An edge ends at p when v is its upper end (check 2 left no edge of zero length):
+            // no read of the other end's point, which lies anywhere in memory.
             for (Index e : {prev(v), v}) (segs[e].hi == v ? ending : starting).push_back(e);
             if (!ringSeen[r]) ringSeen[r] = 1, newRings.push_back(r);  // 2 once placed
         }

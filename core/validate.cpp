@@ -510,7 +510,9 @@ bool Validator::sweepEdges(bool minimal) {
                 points.push_back(v);
                 continue;
             }
-            for (Index e : {prev(v), v}) (pt(segs[e].hi) == p ? ending : starting).push_back(e);
+            // An edge ends at p when v is its upper end (check 2 left no edge of zero length):
+            // no read of the other end's point, which lies anywhere in memory.
+            for (Index e : {prev(v), v}) (segs[e].hi == v ? ending : starting).push_back(e);
             if (!ringSeen[r]) ringSeen[r] = 1, newRings.push_back(r);  // 2 once placed
         }
         i = j;

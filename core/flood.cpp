@@ -55,6 +55,9 @@ struct QuietEvent {
 #undef FLOOD_X
 };
 
+// Inputs of at most this many loop nodes reserve as if every node were a minimum.
+constexpr size_t kUncountedMinima = 256;
+
 // kRecording: events are built (for the listener, or for the failure event); else QuietEvent.
 template <bool kRecording>
 class Machine {
@@ -92,10 +95,11 @@ public:
         // the old and the new array at once): a node per vertex and T-junction, and the two
         // copies a Bridge adds per sag, at most one sag a minimum of a ring (merged loops may
         // need more, and get them); a gorge per Bridge or Spill (no more tops than minima).
-        // Counted only when the buffers lent may be short.
+        // Counted only when the buffers lent may be short; a small input takes the bound
+        // minima <= nodes uncounted (a few KB at most), so a warm call skips the count.
         const size_t loopNodes = poly_.vertices.size() + poly_.splits.size();
         if (nodes_.capacity() < 2 * loopNodes + 16) {
-            const size_t minima = heights_.ringMinima();
+            const size_t minima = loopNodes <= kUncountedMinima ? loopNodes : heights_.ringMinima();
             nodes_.reserve(loopNodes + 2 * minima + 16);
             gorges_.reserve(2 * minima + 16);
         }

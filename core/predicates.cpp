@@ -31,12 +31,9 @@ namespace flood {
 
 namespace {
 
-constexpr double kEpsilon = 0x1p-53;  // half an ulp of 1: the unit roundoff
-constexpr double kCcwErrBoundA = (3.0 + 16.0 * kEpsilon) * kEpsilon;
-constexpr double kFilterMin = 0x1p-800;  // below this, underflow could matter: go exact
-constexpr double kSafeMin = 0x1p-450;    // expansion arithmetic is exact for |coordinates|
-constexpr double kSafeMax = 0x1p450;     //   in [kSafeMin, kSafeMax] (or zero)
-constexpr double kTermMax = 0x1p1000;    // ExactSum terms stay below this (no overflow)
+constexpr double kSafeMin = 0x1p-450;  // expansion arithmetic is exact for |coordinates|
+constexpr double kSafeMax = 0x1p450;   //   in [kSafeMin, kSafeMax] (or zero)
+constexpr double kTermMax = 0x1p1000;  // ExactSum terms stay below this (no overflow)
 
 // x + y = s + e exactly (Knuth's two-sum; needs round-to-nearest and no fp contraction).
 inline void twoSum(double a, double b, double& s, double& e) {
@@ -76,17 +73,6 @@ inline int growExpansion(double* h, int len, double b) {
 // coordinates: the exact stages read only these terms, so each predicate states them once.
 template <size_t N>
 using Products = std::array<std::array<double, 2>, N>;
-
-// Stage 1 on a determinant `det` whose error is below kCcwErrBoundA * `sum`: +1 or -1 when it
-// decides, 0 when it cannot.
-inline int filterSign(double det, double sum) {
-    if (std::isfinite(det) && std::isfinite(sum) && sum >= kFilterMin) {
-        double bound = kCcwErrBoundA * sum;
-        if (det > bound) return 1;
-        if (-det > bound) return -1;
-    }
-    return 0;
-}
 
 // Stage 2 applies when every factor is in the safe exponent range, stage 3 otherwise.
 template <size_t N>
@@ -153,23 +139,15 @@ Products<6> orientProducts(Point a, Point b, Point c) {
     return {{{a.x, b.y}, {-a.y, b.x}, {b.x, c.y}, {-b.y, c.x}, {c.x, a.y}, {-c.y, a.x}}};
 }
 
-// Stage 1 for orient: `det` gets the filter's value.
-inline int orientFilter(Point a, Point b, Point c, double& det) {
-    double detLeft = (a.x - c.x) * (b.y - c.y);
-    double detRight = (a.y - c.y) * (b.x - c.x);
-    det = detLeft - detRight;
-    return filterSign(det, std::fabs(detLeft) + std::fabs(detRight));
-}
+using predicates_detail::filterSign;  // stage 1 (predicates.h)
+using predicates_detail::orientFilter;
 
 }  // namespace
 
-int orient(Point a, Point b, Point c) {
+int predicates_detail::orientBeyondFilter(Point a, Point b, Point c) {
     assert(std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(b.x) && std::isfinite(b.y) &&
            std::isfinite(c.x) && std::isfinite(c.y) &&
            "orient() needs finite coordinates; validate the input first");
-    ++work().orientCalls;
-    double det;
-    if (int s = orientFilter(a, b, c, det)) return s;
     // Both products have a factor that is exactly zero (points on one vertical or horizontal
     // line, or a repeated point: common in rectilinear input): the area is exactly zero, no
     // expansion needed. A difference of two finite doubles is zero only when they are equal.

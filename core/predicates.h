@@ -3,18 +3,53 @@
 // Every predicate is exact for any finite double input: a fast floating-point filter,
 // then exact expansion arithmetic, then GMP rationals for extreme exponents. No epsilon.
 #pragma once
+#include <cmath>
 #include <cstdint>
 #include <memory>
 
 #include "polygon.h"
 #include "up.h"
+#include "work.h"
 
 namespace flood {
+
+// Stage 1, the floating-point filter, inline so that the machine's many orient() calls cost a
+// few instructions when it decides; the exact stages are in predicates.cpp.
+namespace predicates_detail {
+constexpr double kEpsilon = 0x1p-53;  // half an ulp of 1: the unit roundoff
+constexpr double kCcwErrBoundA = (3.0 + 16.0 * kEpsilon) * kEpsilon;
+constexpr double kFilterMin = 0x1p-800;  // below this, underflow could matter: go exact
+
+// A determinant `det` whose error is below kCcwErrBoundA * `sum`: +1 or -1 when it decides, 0
+// when it cannot. A NaN or infinite det or sum fails every comparison (an infinite bound
+// exceeds everything): 0, so no finiteness test is needed.
+inline int filterSign(double det, double sum) {
+    if (sum >= kFilterMin) {
+        const double bound = kCcwErrBoundA * sum;
+        if (det > bound) return 1;
+        if (-det > bound) return -1;
+    }
+    return 0;
+}
+// Stage 1 for orient: `det` gets the filter's value.
+inline int orientFilter(Point a, Point b, Point c, double& det) {
+    const double detLeft = (a.x - c.x) * (b.y - c.y);
+    const double detRight = (a.y - c.y) * (b.x - c.x);
+    det = detLeft - detRight;
+    return filterSign(det, std::fabs(detLeft) + std::fabs(detRight));
+}
+int orientBeyondFilter(Point a, Point b, Point c);  // stages 2 and 3, when stage 1 cannot tell
+}  // namespace predicates_detail
 
 // Sign of the doubled signed area of triangle (a, b, c):
 // +1 when c lies left of the directed line a->b (counter-clockwise turn),
 // -1 when it lies right (clockwise), 0 when the three points are collinear.
-int orient(Point a, Point b, Point c);
+inline int orient(Point a, Point b, Point c) {
+    ++work().orientCalls;
+    double det;
+    if (int s = predicates_detail::orientFilter(a, b, c, det)) return s;
+    return predicates_detail::orientBeyondFilter(a, b, c);
+}
 
 // orient()'s first stage alone: the sign when the floating-point filter decides it, 0 when it
 // cannot. For tests that only prune (touches.cpp's box test), where a 0 costs a slower path and

@@ -17,4 +17,6 @@ const char* statusName(Status s) {
     return "unknown";
 }
 
+Diagnostic::~Diagnostic() = default;
+
 }  // namespace flood

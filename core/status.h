@@ -46,6 +46,13 @@ struct Diagnostic {
     // Not an aggregate, so the many {status, message} diagnostics need no culprits spelled out.
     Diagnostic(Status s, std::string m, Culprits c = {})
         : status(s), message(std::move(m)), culprits(std::move(c)) {}
+    // Out of line (status.cpp): clang 14 left the implicit destructor undefined in the machine's
+    // templated code (core/flood.cpp) of the fuzz build, so one definition is given here.
+    ~Diagnostic();
+    Diagnostic(const Diagnostic&) = default;
+    Diagnostic(Diagnostic&&) = default;
+    Diagnostic& operator=(const Diagnostic&) = default;
+    Diagnostic& operator=(Diagnostic&&) = default;
     bool ok() const { return status == Status::Ok; }
 };
 

@@ -156,11 +156,6 @@ int predicates_detail::orientBeyondFilter(Point a, Point b, Point c) {
     return exactSign(orientProducts(a, b, c), stage);
 }
 
-int orientFiltered(Point a, Point b, Point c) {
-    double det;
-    return orientFilter(a, b, c, det);
-}
-
 namespace {
 // d·(b − a) by the filter. Each term is a product of an exact component and one rounded
 // difference, so orient's error bound covers it.

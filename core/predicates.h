@@ -54,7 +54,10 @@ inline int orient(Point a, Point b, Point c) {
 // orient()'s first stage alone: the sign when the floating-point filter decides it, 0 when it
 // cannot. For tests that only prune (touches.cpp's box test), where a 0 costs a slower path and
 // never a wrong answer. Not counted as orient work.
-int orientFiltered(Point a, Point b, Point c);
+inline int orientFiltered(Point a, Point b, Point c) {
+    double det;
+    return predicates_detail::orientFilter(a, b, c, det);
+}
 
 // below(a, b): a is lower than b. Heights are y; equal heights are ordered by x, as if
 // every horizontal line were tilted slightly (the paper's lexicographic tie-break).

@@ -95,14 +95,14 @@ public:
         // the old and the new array at once): a node per vertex and T-junction, and the two
         // copies a Bridge adds per sag, at most one sag a minimum of a ring (merged loops may
         // need more, and get them); a gorge per Bridge or Spill (no more tops than minima).
-        // Counted only when the buffers lent may be short; a small input takes the bound
-        // minima <= nodes uncounted (a few KB at most), so a warm call skips the count.
+        // A small input takes the bound minima <= nodes uncounted (a few KB at most), so a
+        // warm call skips the count; a large one counts them (one pass, cheap beside the
+        // run) and reserves what it asks, so a warm call on it reserves nothing.
         const size_t loopNodes = poly_.vertices.size() + poly_.splits.size();
-        if (nodes_.capacity() < 2 * loopNodes + 16) {
-            const size_t minima = loopNodes <= kUncountedMinima ? loopNodes : heights_.ringMinima();
+        const size_t minima = loopNodes <= kUncountedMinima ? loopNodes : heights_.ringMinima();
+        if (nodes_.capacity() < loopNodes + 2 * minima + 16)
             nodes_.reserve(loopNodes + 2 * minima + 16);
-            gorges_.reserve(2 * minima + 16);
-        }
+        if (gorges_.capacity() < 2 * minima + 16) gorges_.reserve(2 * minima + 16);
         result_.triangles.reserve(poly_.vertices.size() + 2 * poly_.rings.size());
         for (uint32_t part = 0; part < poly_.parts.size() && ok(); ++part) floodPart(part);
         result_.steps = step_;

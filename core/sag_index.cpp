@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "heights.h"
+
 namespace flood {
 
 namespace {
@@ -22,11 +24,13 @@ size_t SagHeights::bucket(double y) const {
     return b < double(last) ? size_t(b) : last;
 }
 
-void SagHeights::index() {
-    const size_t count = keys_.size();
+void SagHeights::index(const Heights& heights, const std::vector<NodeId>& sags) {
+    heights_ = &heights, sags_ = &sags;
+    const size_t count = count_ = keys_.size();
     if (count <= kSearchLimit) return;  // below() searches the keys themselves
     y_.resize(count);
     for (size_t k = 0; k < count; ++k) y_[k] = keys_[k].y;
+    giveBackIfLarge(keys_);  // below() then rebuilds a tie's keys from the sags
     const size_t buckets = count / 2 + 1;
     y0_ = count ? y_.front() : 0;
     double span = count ? y_.back() - y0_ : 0;
@@ -38,15 +42,25 @@ void SagHeights::index() {
 }
 
 uint32_t SagHeights::below(const HeightKey& k) const {
-    if (keys_.size() <= kSearchLimit)
+    if (count_ <= kSearchLimit)
         return uint32_t(std::lower_bound(keys_.begin(), keys_.end(), k) - keys_.begin());
     size_t b = bucket(k.y);
     auto first = y_.begin() + long(buckets_[b]), last = y_.begin() + long(buckets_[b + 1]);
     size_t a = size_t(std::lower_bound(first, last, k.y) - y_.begin());
-    if (a < y_.size() && y_[a] == k.y)
+    if (a < y_.size() && y_[a] == k.y && !keys_.empty()) {
         a = size_t(
             std::lower_bound(keys_.begin() + long(a), keys_.begin() + long(buckets_[b + 1]), k) -
             keys_.begin());
+    } else if (a < y_.size() && y_[a] == k.y) {
+        // Among the sags of height k.y (all in this bucket), the first whose key is not below
+        // k's: the keys rise with the rank.
+        size_t end = buckets_[b + 1];
+        while (a < end) {
+            size_t m = a + (end - a) / 2;
+            if (heights_->key((*sags_)[m]) < k) a = m + 1;
+            else end = m;
+        }
+    }
     return uint32_t(a);
 }
 
@@ -57,14 +71,18 @@ void SagIndex::build() {
     items_.clear();
     // lowest() scans a bracket of at most kScanLimit sags: so few sags need no tree.
     if (n <= kScanLimit) return;
-    items_.resize(n);
-    for (uint32_t r = 0; r < n; ++r) items_[r] = {byRank_[r], r};
+    build_.resize(n);
+    for (uint32_t r = 0; r < n; ++r) build_[r] = {byRank_[r], r};
     depth_ = 0;
     while ((uint64_t(n) >> depth_) > kLeafSize) ++depth_;
     firstLeaf_ = (1u << depth_) - 1;
     nodes_.resize((2u << depth_) - 1);
     leafOfRank_.resize(n);
     buildNode(0, 0, n, 0);
+    // The search reads the leaves' ranks alone (4 bytes a sag, not 24): the points are byRank_'s.
+    items_.resize(n);
+    for (uint32_t i = 0; i < n; ++i) items_[i] = build_[i].rank;
+    giveBackIfLarge(build_);
 }
 
 void SagIndex::buildNode(uint32_t id, uint32_t begin, uint32_t end, int depth) {
@@ -74,7 +92,7 @@ void SagIndex::buildNode(uint32_t id, uint32_t begin, uint32_t end, int depth) {
     double xMin = INFINITY, yMin = INFINITY, xMax = -INFINITY, yMax = -INFINITY;
     uint32_t rankMin = UINT32_MAX, rankMax = 0;
     for (uint32_t i = begin; i < end; ++i) {
-        const Item& it = items_[i];
+        const Item& it = build_[i];
         xMin = std::min(xMin, it.p.x), xMax = std::max(xMax, it.p.x);
         yMin = std::min(yMin, it.p.y), yMax = std::max(yMax, it.p.y);
         rankMin = std::min(rankMin, it.rank), rankMax = std::max(rankMax, it.rank);
@@ -88,14 +106,14 @@ void SagIndex::buildNode(uint32_t id, uint32_t begin, uint32_t end, int depth) {
     n.xMin = xMin, n.yMin = yMin, n.xMax = xMax, n.yMax = yMax;
     n.rankMin = rankMin, n.rankMax = rankMax;
     if (depth == depth_) {
-        for (uint32_t i = begin; i < end; ++i) leafOfRank_[items_[i].rank] = id;
+        for (uint32_t i = begin; i < end; ++i) leafOfRank_[build_[i].rank] = id;
         return;
     }
     // Split the wider side of the box at the median.
     bool byX = (xMax - xMin) >= (yMax - yMin);
     uint32_t mid = begin + (end - begin) / 2;
     std::nth_element(
-        items_.begin() + begin, items_.begin() + mid, items_.begin() + end,
+        build_.begin() + begin, build_.begin() + mid, build_.begin() + end,
         [byX](const Item& a, const Item& b) { return byX ? a.p.x < b.p.x : a.p.y < b.p.y; });
     buildNode(2 * id + 1, begin, mid, depth + 1);
     buildNode(2 * id + 2, mid, end, depth + 1);

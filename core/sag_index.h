@@ -20,6 +20,8 @@
 
 namespace flood {
 
+class Heights;  // heights.h
+
 // The order of heights the flood machine uses (below(), ties by vertex index, then node id),
 // as a value: what the sorted sag list is searched with. Off the axes y is the vertex's height
 // rank and x is 0.
@@ -37,18 +39,24 @@ struct HeightKey {
 
 // The sorted sag list's ranks (§4): how many sags lie strictly below a height, by a binary
 // search within one bucket of an equal-height span over the sags' heights, on their y alone (a
-// denser array) and on the full keys only to break a tie.
+// denser array) and on the full keys only to break a tie. Large sorted keys (24 bytes a sag) are
+// given back once their heights are taken (giveBackIfLarge()): a tie's keys are then rebuilt
+// from the sags' nodes (Heights::key()), which give the same order.
 class SagHeights {
 public:
     std::vector<HeightKey>& keys() { return keys_; }  // the sags' keys, sorted; then index()
-    void index();
+    // `sags`: the sags' nodes by rank, read by below() as long as it is called.
+    void index(const Heights& heights, const std::vector<NodeId>& sags);
     uint32_t below(const HeightKey& k) const;
 
 private:
     size_t bucket(double y) const;
     static constexpr size_t kSearchLimit = 16;  // up to this many sags: no buckets, one search
-    std::vector<HeightKey> keys_;
-    std::vector<double> y_;          // keys_[k].y
+    std::vector<HeightKey> keys_;               // empty after index() when large
+    size_t count_ = 0;                          // sags, from index() on
+    const Heights* heights_ = nullptr;
+    const std::vector<NodeId>* sags_ = nullptr;
+    std::vector<double> y_;          // the sags' keys' y, by rank
     std::vector<uint32_t> buckets_;  // first rank of each height bucket (bucket())
     double y0_ = 0, scale_ = 0;
 };
@@ -84,10 +92,6 @@ private:
         uint32_t rankMin, rankMax;
         uint32_t begin, unused;  // first item; sags of the subtree not used yet
     };
-    struct Item {
-        Point p;
-        uint32_t rank;
-    };
     // A search's bank lines, prepared once, in coordinates multiplied by `scale`: a power of
     // two (exact, bar underflow) that brings the region's largest |coordinate| into
     // [2^-51, 2^-50). Every point tested lies in the region's box, so differences stay below
@@ -102,15 +106,20 @@ private:
         int lineCount = 0;
     };
     static Frame frameOf(const Region& r);
+    struct Item {  // build()'s: a sag's point beside its rank, for the splits
+        Point p;
+        uint32_t rank;
+    };
     void buildNode(uint32_t id, uint32_t begin, uint32_t end, int depth);
     static bool leftOf(const Line& l, double px, double py);
     static bool outside(const Node& n, const Region& r, const Frame& f);
     static bool mayContain(const Region& r, const Frame& f, Point p);
     std::vector<Node> nodes_;                   // empty when there are kScanLimit sags or fewer
     static constexpr uint32_t kScanLimit = 48;  // brackets up to this many sags are scanned
-    std::vector<Item> items_;
-    std::vector<Point> byRank_;         // the sags' points by rank, for the scan
-    std::vector<uint32_t> leafOfRank_;  // rank -> leaf node id
+    std::vector<Item> build_;                   // build()'s scratch
+    std::vector<uint32_t> items_;               // ranks, leaf after leaf; their points in byRank_
+    std::vector<Point> byRank_;                 // the sags' points by rank
+    std::vector<uint32_t> leafOfRank_;          // rank -> leaf node id
     std::vector<uint8_t> used_;
     std::vector<uint32_t> stack_;  // scratch, reused by every search
     int depth_ = 0;
@@ -155,10 +164,10 @@ int64_t SagIndex::lowest(int64_t lo, int64_t hi, const Region& region, Inside&& 
         if (id >= firstLeaf_) {
             uint32_t end = id + 1 < nodes_.size() ? nodes_[id + 1].begin : uint32_t(items_.size());
             for (uint32_t i = n.begin; i < end; ++i) {
-                uint32_t r = items_[i].rank;
+                uint32_t r = items_[i];
                 ++work().nodeVisits;
                 if (int64_t(r) <= lo || int64_t(r) >= best || used_[r]) continue;
-                if (!mayContain(region, frame, items_[i].p)) continue;
+                if (!mayContain(region, frame, byRank_[r])) continue;
                 if (inside(r)) best = r;
             }
             continue;

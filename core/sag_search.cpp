@@ -15,13 +15,14 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
     partFirstNode_ = partFirstNode;
     const Nodes& nodes = heights.nodes();
     heights.sort(sags_, heightsOf_.keys());
-    // The sags' points for the plane index, and their heights for the ranks.
+    // The sags' heights for the ranks (the sorted keys given back before the plane index is
+    // built), and their points for the plane index.
+    heightsOf_.index(heights, sags_);
     const size_t count = sags_.size();
     std::vector<Point>& points = index_.points();
     points.resize(count);
     for (size_t k = 0; k < count; ++k) points[k] = heights.at(sags_[k]);
     index_.build();
-    heightsOf_.index();
     unused_ = uint32_t(count);
     // Node ids grow from part to part within a run, so the entries of an earlier part never
     // match; those of an earlier run might.

@@ -47,17 +47,14 @@ uint32_t SagHeights::below(const HeightKey& k) const {
     size_t b = bucket(k.y);
     auto first = y_.begin() + long(buckets_[b]), last = y_.begin() + long(buckets_[b + 1]);
     size_t a = size_t(std::lower_bound(first, last, k.y) - y_.begin());
-    if (a < y_.size() && y_[a] == k.y && !keys_.empty()) {
-        a = size_t(
-            std::lower_bound(keys_.begin() + long(a), keys_.begin() + long(buckets_[b + 1]), k) -
-            keys_.begin());
-    } else if (a < y_.size() && y_[a] == k.y) {
+    if (a < y_.size() && y_[a] == k.y) {
         // Among the sags of height k.y (all in this bucket), the first whose key is not below
-        // k's: the keys rise with the rank.
+        // k's: the keys rise with the rank. Given back, a key is rebuilt from its sag's node.
         size_t end = buckets_[b + 1];
         while (a < end) {
             size_t m = a + (end - a) / 2;
-            if (heights_->key((*sags_)[m]) < k) a = m + 1;
+            const HeightKey km = keys_.empty() ? heights_->key((*sags_)[m]) : keys_[m];
+            if (km < k) a = m + 1;
             else end = m;
         }
     }

@@ -11,6 +11,7 @@ namespace flood {
 namespace {
 
 constexpr uint32_t kNoEdge = UINT32_MAX;
+constexpr uint32_t kKeptScratchNodes = 1u << 16;  // as the sag heights' keys (giveBackIfLarge)
 
 // The edges crossing the sweep line, left to right. An edge is named by its tail node t (the
 // edge t -> next[t]). Edges are compared where the later-starting one begins, which is on the
@@ -199,6 +200,7 @@ void sweepOrder(const Point* point, Up up, std::vector<uint32_t>& order,
         return a.h < b.h || (a.h == b.h && a.across < b.across);
     });
     for (uint32_t i = 0; i < n; ++i) order[i] = keys[i].node;
+    if (n > kKeptScratchNodes) std::vector<SweepKey>().swap(keys);  // not through the sweep
 }
 
 using Set = std::set<Active, EdgeLess, PoolAllocator<Active>>;
@@ -321,6 +323,8 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
     side_[0].group(label[0], n);
     side_[1].group(label[1], n);
     built_ = true;
+    // Large loops give the scratch back (it would add to the run's peak); small ones keep it.
+    if (n > kKeptScratchNodes) scratch_.reset();
     return true;
 }
 

@@ -11,6 +11,7 @@ namespace flood {
 namespace {
 
 constexpr uint32_t kNoEdge = UINT32_MAX;
+constexpr uint32_t kKeptScratchNodes = 1u << 16;  // as the sag heights' keys (giveBackIfLarge)
 
 // The edges crossing the sweep line, left to right. An edge is named by its tail node t (the
 // edge t -> next[t]). Edges are compared where the later-starting one begins, which is on the
@@ -171,7 +172,13 @@ struct PoolAllocator {
 // The nodes lowest first (belowToward). Along an axis the order is a comparison of two
 // coordinates, sorted as contiguous keys (negation is exact) rather than through the node's
 // point on every comparison; the points are distinct, so the order is the same either way.
-void sweepOrder(const Point* point, Up up, std::vector<uint32_t>& order) {
+struct SweepKey {
+    double h, across;  // the height, then the tie-break along the tilted level line
+    uint32_t node;
+};
+
+void sweepOrder(const Point* point, Up up, std::vector<uint32_t>& order,
+                std::vector<SweepKey>& keys) {
     const uint32_t n = uint32_t(order.size());
     if (!up.axis()) {
         for (uint32_t i = 0; i < n; ++i) order[i] = i;
@@ -179,13 +186,10 @@ void sweepOrder(const Point* point, Up up, std::vector<uint32_t>& order) {
                   [&](uint32_t a, uint32_t b) { return belowToward(up, point[a], point[b]); });
         return;
     }
-    struct Key {
-        double h, across;  // the height, then the tie-break along the tilted level line
-        uint32_t node;
-    };
+    using Key = SweepKey;
     // belowToward's four axis cases: +y (y, x), -y (-y, -x), +x (x, -y), -x (-x, y).
     const bool alongX = up.y == 0, negative = alongX ? up.x < 0 : up.y < 0;
-    std::vector<Key> keys(n);
+    keys.resize(n);
     for (uint32_t i = 0; i < n; ++i) {
         const Point p = point[i];
         double h = alongX ? p.x : p.y, across = alongX ? -p.y : p.x;
@@ -196,9 +200,29 @@ void sweepOrder(const Point* point, Up up, std::vector<uint32_t>& order) {
         return a.h < b.h || (a.h == b.h && a.across < b.across);
     });
     for (uint32_t i = 0; i < n; ++i) order[i] = keys[i].node;
+    if (n > kKeptScratchNodes) std::vector<SweepKey>().swap(keys);  // not through the sweep
 }
 
+using Set = std::set<Active, EdgeLess, PoolAllocator<Active>>;
+
 }  // namespace
+
+struct SagBanks::Scratch {
+    std::vector<uint32_t> prev, rankOf, order, label[2];
+    std::vector<SweepKey> keys;
+    std::vector<Set::iterator> at;
+    NodePool pool;  // outlives every build's set: its nodes go back to the free list
+};
+
+SagBanks::SagBanks() = default;
+SagBanks::~SagBanks() = default;
+SagBanks::SagBanks(const SagBanks& o) : side_{o.side_[0], o.side_[1]}, built_(o.built_) {}
+SagBanks& SagBanks::operator=(const SagBanks& o) {
+    side_[0] = o.side_[0], side_[1] = o.side_[1], built_ = o.built_;
+    return *this;
+}
+SagBanks::SagBanks(SagBanks&&) noexcept = default;
+SagBanks& SagBanks::operator=(SagBanks&&) noexcept = default;
 
 void SagBanks::clear() {
     built_ = false;
@@ -220,18 +244,20 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
                      const std::vector<uint32_t>& sagOfRank, Up up, bool simple) {
     clear();
     const uint32_t n = uint32_t(next.size());
-    std::vector<uint32_t> prev(n), rankOf(n, kNoEdge), order(n);
+    if (!scratch_) scratch_ = std::make_unique<Scratch>();
+    Scratch& s = *scratch_;
+    std::vector<uint32_t>&prev = s.prev, &rankOf = s.rankOf, &order = s.order;
+    prev.resize(n), rankOf.assign(n, kNoEdge), order.resize(n);
     for (uint32_t i = 0; i < n; ++i) prev[next[i]] = i;
     for (uint32_t r = 0; r < sagOfRank.size(); ++r) rankOf[sagOfRank[r]] = r;
-    sweepOrder(point, up, order);
+    sweepOrder(point, up, order, s.keys);
 
     Sweep sweep{point, next, up};
-    NodePool pool;  // outlives the set
-    using Set = std::set<Active, EdgeLess, PoolAllocator<Active>>;
-    Set active(EdgeLess{&sweep}, PoolAllocator<Active>(&pool));
-    std::vector<Set::iterator> at(n, active.end());
-    std::vector<uint32_t> label[2] = {std::vector<uint32_t>(sagOfRank.size(), kNoEdge),
-                                      std::vector<uint32_t>(sagOfRank.size(), kNoEdge)};
+    Set active(EdgeLess{&sweep}, PoolAllocator<Active>(&s.pool));
+    std::vector<Set::iterator>& at = s.at;
+    at.assign(n, active.end());
+    std::vector<uint32_t>* label = s.label;
+    for (int k = 0; k < 2; ++k) label[k].assign(sagOfRank.size(), kNoEdge);
     auto meetsBefore = [&](Set::iterator it) {  // it and the edge before it meet
         return !simple && it != active.begin() && it != active.end() &&
                sweep.meet(std::prev(it)->tail, it->tail);
@@ -297,6 +323,8 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
     side_[0].group(label[0], n);
     side_[1].group(label[1], n);
     built_ = true;
+    // Large loops give the scratch back (it would add to the run's peak); small ones keep it.
+    if (n > kKeptScratchNodes) scratch_.reset();
     return true;
 }
 

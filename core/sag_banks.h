@@ -8,6 +8,7 @@
 // test stays exact (belowToward and orient).
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "polygon.h"
@@ -18,6 +19,13 @@ namespace flood {
 
 class SagBanks {
 public:
+    SagBanks();
+    ~SagBanks();
+    SagBanks(const SagBanks& o);  // the lists, not the scratch
+    SagBanks& operator=(const SagBanks& o);
+    SagBanks(SagBanks&&) noexcept;
+    SagBanks& operator=(SagBanks&&) noexcept;
+
     // Loops of `next.size()` nodes at `point` (next[i]: the node after i; next[i] == i for a point
     // hole), no two at the same point; sagOfRank: the sags' nodes by height rank. False, and
     // nothing built, when two edges touch or cross, or a sag lies on an edge (unvalidated
@@ -47,6 +55,10 @@ private:
     };
     Side side_[2];  // 0: rays to the left, 1: to the right
     bool built_ = false;
+    // The sweep's working memory (its arrays and the set's nodes), kept from build to build so
+    // that a warm build on loops no larger than before allocates nothing.
+    struct Scratch;
+    std::unique_ptr<Scratch> scratch_;
 };
 
 template <class Used>

@@ -141,9 +141,10 @@ void SagSearch::buildBanks() {
     banksTried_ = true;
     // Without shared points the part's initial nodes are its vertices, in order (inputEdge()).
     const Point* point = heights_->points() + partFirstVertex_;
-    std::vector<uint32_t> sagOfRank(sags_.size());
+    std::vector<uint32_t>& sagOfRank = sagOfRank_;
+    sagOfRank.resize(sags_.size());
     for (size_t k = 0; k < sags_.size(); ++k) sagOfRank[k] = sags_[k] - partFirstNode_;
-    if (!banks_.build(point, initialNext_, sagOfRank,
+    if (!banks_.build(point, initialNext_, sagOfRank_,
                       heights_->general() ? heights_->up() : Up::PlusY, simple_))
         banks_.clear();  // crossing edges
 }

@@ -54,6 +54,7 @@ private:
     NodeId partFirstNode_ = NodeId(0);
     uint32_t partFirstVertex_ = 0, initialNodes_ = 0;
     std::vector<uint32_t> initialNext_;  // per initial node of the part (local ids): next
+    std::vector<uint32_t> sagOfRank_;    // buildBanks()'s, kept: a warm build allocates nothing
     uint32_t unused_ = 0;                // sags of the part not bridged yet
 };
 

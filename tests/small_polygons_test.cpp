@@ -4,6 +4,7 @@
 // triangulate(): the same triangles, whatever was flooded before.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <fstream>
 #include <new>
@@ -11,6 +12,8 @@
 #include <vector>
 
 #include "generate.h"
+#include "predicates.h"
+#include "sag_banks.h"
 #include "test_support.h"
 #include "up.h"
 #include "work.h"
@@ -116,6 +119,48 @@ TEST(SmallPolygons, TriangulatorAllocatesNothingOnceWarm) {
         const uint64_t before = tAllocations;
         for (int i = 0; i < 3; ++i) EXPECT_EQ(t.run(p).triangles.size(), triangles);
         EXPECT_EQ(tAllocations - before, 0u) << name;
+    }
+}
+
+// The bank lists' sweep (core/sag_banks.h) keeps its arrays and its set's nodes: built again on
+// loops no larger than before, it allocates nothing, and labels the same.
+TEST(SmallPolygons, SagBanksAllocateNothingOnceWarm) {
+    for (const char* family : {"star", "circle-jagged"}) {
+        Polygon p = generate(family, 7, 5000);
+        const uint32_t n = uint32_t(p.vertices.size());
+        std::vector<uint32_t> next(n), sags;
+        for (uint32_t i = 0; i < n; ++i) next[i] = (i + 1) % n;
+        for (uint32_t i = 0; i < n; ++i)  // the local minima, lowest first
+            if (below(p.vertices[i], p.vertices[(i + n - 1) % n]) &&
+                below(p.vertices[i], p.vertices[next[i]]))
+                sags.push_back(i);
+        std::sort(sags.begin(), sags.end(),
+                  [&](uint32_t a, uint32_t b) { return below(p.vertices[a], p.vertices[b]); });
+        ASSERT_GT(sags.size(), 100u) << family;
+        SagBanks banks;
+        ASSERT_TRUE(banks.build(p.vertices, next, sags, Up::PlusY, true)) << family;
+        std::vector<int64_t> first;
+        auto none = [](uint32_t) { return false; };
+        for (uint32_t t = 0; t < n; ++t) first.push_back(banks.lowest(t % 2, t, -1, n, none));
+        const uint64_t before = tAllocations;
+        ASSERT_TRUE(banks.build(p.vertices, next, sags, Up::PlusY, true)) << family;
+        EXPECT_EQ(tAllocations - before, 0u) << family;
+        for (uint32_t t = 0; t < n; ++t)
+            EXPECT_EQ(banks.lowest(t % 2, t, -1, n, none), first[t]) << family << " edge " << t;
+    }
+}
+
+// A Triangulator on a polygon large enough that the sag search builds the bank lists.
+TEST(SmallPolygons, TriangulatorAllocatesNothingOnceWarmWithTheBanks) {
+    for (const char* family : {"star", "circle-jagged", "circle-smooth"}) {
+        Polygon p = generate(family, 7, 20000);
+        ASSERT_TRUE(validate(p, family).ok()) << family;
+        Triangulator t;
+        const size_t triangles = t.run(p).triangles.size();
+        ASSERT_TRUE(t.run(p).diagnostic.ok()) << family;
+        const uint64_t before = tAllocations;
+        EXPECT_EQ(t.run(p).triangles.size(), triangles) << family;
+        EXPECT_EQ(tAllocations - before, 0u) << family;
     }
 }
 

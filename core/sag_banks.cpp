@@ -324,6 +324,8 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
     side_[1].group(label[1], n);
     built_ = true;
     // Large loops give the scratch back (it would add to the run's peak); small ones keep it.
+    // The set is emptied first: its nodes live in the scratch's pool.
+    active.clear();
     if (n > kKeptScratchNodes) scratch_.reset();
     return true;
 }

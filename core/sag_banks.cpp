@@ -216,9 +216,9 @@ struct SagBanks::Scratch {
 
 SagBanks::SagBanks() = default;
 SagBanks::~SagBanks() = default;
-SagBanks::SagBanks(const SagBanks& o) : side_{o.side_[0], o.side_[1]}, built_(o.built_) {}
+SagBanks::SagBanks(const SagBanks& o) : side_(o.side_), built_(o.built_) {}
 SagBanks& SagBanks::operator=(const SagBanks& o) {
-    side_[0] = o.side_[0], side_[1] = o.side_[1], built_ = o.built_;
+    side_ = o.side_, built_ = o.built_;
     return *this;
 }
 SagBanks::SagBanks(SagBanks&&) noexcept = default;

@@ -7,6 +7,7 @@
 // along a direction `up` (up.h): off the axes the horizontal is the line across it, and every
 // test stays exact (belowToward and orient).
 #pragma once
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -53,7 +54,7 @@ private:
         std::vector<uint32_t> begin, ranks;
         void group(const std::vector<uint32_t>& label, size_t edges);
     };
-    Side side_[2];  // 0: rays to the left, 1: to the right
+    std::array<Side, 2> side_;  // 0: rays to the left, 1: to the right
     bool built_ = false;
     // The sweep's working memory (its arrays and the set's nodes), kept from build to build so
     // that a warm build on loops no larger than before allocates nothing.

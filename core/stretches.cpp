@@ -15,18 +15,23 @@ void Stretches::clear(NodeId firstNode) {
 }
 
 void Stretches::record(int dir, const Position& p, NodeId end) {
-    std::vector<uint32_t>& v = at_[dir];
-    if (p.node - first_ >= v.size()) v.resize(end - first_, kNone);
-    v[p.node - first_] = uint32_t(positions.size());
+    dir_ = dir, end_ = end;
     positions.push_back(p);
 }
 
 // The tree is a complete binary tree over the positions holding, for bottoms and ceilings, the
 // count's change before them (INT32_MAX elsewhere), each inner node the least of its two.
 void Stretches::close(size_t& run) {
-    const uint32_t start = uint32_t(run), end = uint32_t(positions.size());
+    const uint32_t start = uint32_t(run);
+    if (start + 1 == positions.size()) positions.pop_back();  // crosses nothing
+    const uint32_t end = uint32_t(positions.size());
     run = end;
     if (start == end) return;
+    // The walk that recorded the stretch did not meet its nodes again (it ends where it
+    // started at the latest), so they are looked up from here on only.
+    std::vector<uint32_t>& v = at_[dir_];
+    if (end_ - first_ > v.size()) v.resize(end_ - first_, kNone);
+    for (uint32_t k = start; k < end; ++k) v[positions[k].node - first_] = k;
     uint32_t leaves = 1;
     while (leaves < end - start) leaves <<= 1;
     const uint32_t tree = uint32_t(tree_.size());

@@ -40,7 +40,9 @@ public:
     }
     // Appends p to the stretch being recorded; `end`: the id the next node will get.
     void record(int dir, const Position& p, NodeId end);
-    // Ends the stretch a walk is recording (positions from `run` on) and builds its tree.
+    // Ends the stretch a walk is recording (positions from `run` on) and builds its tree. A
+    // stretch of one node is dropped: no walk could cross anything of it (its node is then
+    // recorded again by a later walk), and on jagged outlines most stretches are such.
     void close(size_t& run);
     // The first position from `from` on (relative to the stretch's start) whose tree value is
     // at most `limit`; the stretch's length if none.
@@ -52,6 +54,8 @@ private:
     std::vector<int32_t> tree_;
     std::vector<uint32_t> at_[2];  // per node of the part, per direction: its position
     NodeId first_{0};
+    int dir_ = 0;    // of the stretch being recorded
+    NodeId end_{0};  // record()'s last `end`
 };
 
 }  // namespace flood

@@ -24,30 +24,41 @@ size_t SagHeights::bucket(double y) const {
     return b < double(last) ? size_t(b) : last;
 }
 
-void SagHeights::index(const Heights& heights, const std::vector<NodeId>& sags) {
+void SagHeights::index(const Heights& heights, const std::vector<NodeId>& sags,
+                       const std::vector<Point>& points) {
     heights_ = &heights, sags_ = &sags;
     const size_t count = count_ = keys_.size();
     if (count <= kSearchLimit) return;  // below() searches the keys themselves
-    y_.resize(count);
-    for (size_t k = 0; k < count; ++k) y_[k] = keys_[k].y;
+    points_ = heights.general() ? nullptr : points.data();
+    y_.clear();
+    if (points_) {
+        giveBackIfLarge(y_);
+    } else {  // a key's y is its vertex's height rank
+        y_.resize(count);
+        for (size_t k = 0; k < count; ++k) y_[k] = keys_[k].y;
+    }
     giveBackIfLarge(keys_);  // below() then rebuilds a tie's keys from the sags
     const size_t buckets = count / 2 + 1;
-    y0_ = count ? y_.front() : 0;
-    double span = count ? y_.back() - y0_ : 0;
+    y0_ = count ? y(0) : 0;
+    double span = count ? y(count - 1) - y0_ : 0;
     scale_ = span > 0 && std::isfinite(span) ? double(buckets) / span : 0;
     buckets_.assign(buckets + 1, uint32_t(count));
     size_t filled = 0;
     for (size_t k = 0; k < count; ++k)
-        for (size_t b = bucket(y_[k]); filled <= b;) buckets_[filled++] = uint32_t(k);
+        for (size_t b = bucket(y(k)); filled <= b;) buckets_[filled++] = uint32_t(k);
 }
 
 uint32_t SagHeights::below(const HeightKey& k) const {
     if (count_ <= kSearchLimit)
         return uint32_t(std::lower_bound(keys_.begin(), keys_.end(), k) - keys_.begin());
     size_t b = bucket(k.y);
-    auto first = y_.begin() + long(buckets_[b]), last = y_.begin() + long(buckets_[b + 1]);
-    size_t a = size_t(std::lower_bound(first, last, k.y) - y_.begin());
-    if (a < y_.size() && y_[a] == k.y) {
+    size_t a = buckets_[b];
+    for (size_t last = buckets_[b + 1]; a < last;) {  // the first y not below k.y
+        size_t m = a + (last - a) / 2;
+        if (y(m) < k.y) a = m + 1;
+        else last = m;
+    }
+    if (a < count_ && y(a) == k.y) {
         // Among the sags of height k.y (all in this bucket), the first whose key is not below
         // k's: the keys rise with the rank. Given back, a key is rebuilt from its sag's node.
         size_t end = buckets_[b + 1];

@@ -38,25 +38,30 @@ struct HeightKey {
 };
 
 // The sorted sag list's ranks (§4): how many sags lie strictly below a height, by a binary
-// search within one bucket of an equal-height span over the sags' heights, on their y alone (a
-// denser array) and on the full keys only to break a tie. Large sorted keys (24 bytes a sag) are
+// search within one bucket of an equal-height span over the sags' heights, on their y alone
+// (the y of their points by rank on the axes, where a key's y is its point's; a copy of the
+// keys' y off them) and on the full keys only to break a tie. Large sorted keys (24 bytes a sag) are
 // given back once their heights are taken (giveBackIfLarge()): a tie's keys are then rebuilt
 // from the sags' nodes (Heights::key()), which give the same order.
 class SagHeights {
 public:
     std::vector<HeightKey>& keys() { return keys_; }  // the sags' keys, sorted; then index()
-    // `sags`: the sags' nodes by rank, read by below() as long as it is called.
-    void index(const Heights& heights, const std::vector<NodeId>& sags);
+    // `sags` and `points`: the sags' nodes and points by rank, read by below() as long as it
+    // is called.
+    void index(const Heights& heights, const std::vector<NodeId>& sags,
+               const std::vector<Point>& points);
     uint32_t below(const HeightKey& k) const;
 
 private:
     size_t bucket(double y) const;
+    double y(size_t rank) const { return points_ ? points_[rank].y : y_[rank]; }
     static constexpr size_t kSearchLimit = 16;  // up to this many sags: no buckets, one search
     std::vector<HeightKey> keys_;               // empty after index() when large
     size_t count_ = 0;                          // sags, from index() on
     const Heights* heights_ = nullptr;
     const std::vector<NodeId>* sags_ = nullptr;
-    std::vector<double> y_;          // the sags' keys' y, by rank
+    std::vector<double> y_;          // the sags' keys' y, by rank, off the axes only
+    const Point* points_ = nullptr;  // on the axes: the sags' points by rank
     std::vector<uint32_t> buckets_;  // first rank of each height bucket (bucket())
     double y0_ = 0, scale_ = 0;
 };

@@ -15,13 +15,13 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
     partFirstNode_ = partFirstNode;
     const Nodes& nodes = heights.nodes();
     heights.sort(sags_, heightsOf_.keys());
-    // The sags' heights for the ranks (the sorted keys given back before the plane index is
-    // built), and their points for the plane index.
-    heightsOf_.index(heights, sags_);
+    // The sags' points for the plane index, and their heights for the ranks (the sorted keys
+    // given back before the plane index is built).
     const size_t count = sags_.size();
     std::vector<Point>& points = index_.points();
     points.resize(count);
     for (size_t k = 0; k < count; ++k) points[k] = heights.at(sags_[k]);
+    heightsOf_.index(heights, sags_, points);
     index_.build();
     unused_ = uint32_t(count);
     // Node ids grow from part to part within a run, so the entries of an earlier part never
@@ -147,6 +147,7 @@ void SagSearch::buildBanks() {
     if (!banks_.build(point, initialNext_, sagOfRank_,
                       heights_->general() ? heights_->up() : Up::PlusY, simple_))
         banks_.clear();  // crossing edges
+    giveBackIfLarge(sagOfRank);  // read by the build alone
 }
 
 // The input edge from node a to node b, as its tail's initial node; kNone when a -> b is not

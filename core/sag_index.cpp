@@ -24,12 +24,13 @@ size_t SagHeights::bucket(double y) const {
     return b < double(last) ? size_t(b) : last;
 }
 
-void SagHeights::index(const Heights& heights, const std::vector<NodeId>& sags,
-                       const std::vector<Point>& points) {
+void SagHeights::index(const Heights& heights, const std::vector<NodeId>& sags, const Point* points,
+                       const std::vector<uint32_t>& vertices) {
     heights_ = &heights, sags_ = &sags;
     const size_t count = count_ = keys_.size();
     if (count <= kSearchLimit) return;  // below() searches the keys themselves
-    points_ = heights.general() ? nullptr : points.data();
+    points_ = heights.general() ? nullptr : points;
+    vertices_ = vertices.data();
     y_.clear();
     if (points_) {
         giveBackIfLarge(y_);
@@ -72,22 +73,23 @@ uint32_t SagHeights::below(const HeightKey& k) const {
     return uint32_t(a);
 }
 
-void SagIndex::build() {
-    const uint32_t n = uint32_t(byRank_.size());
+void SagIndex::build(const Point* points) {
+    points_ = points;
+    const uint32_t n = uint32_t(vertexOfRank_.size());
     used_.assign(n, 0);
     nodes_.clear();
     items_.clear();
     // lowest() scans a bracket of at most kScanLimit sags: so few sags need no tree.
     if (n <= kScanLimit) return;
     build_.resize(n);
-    for (uint32_t r = 0; r < n; ++r) build_[r] = {byRank_[r], r};
+    for (uint32_t r = 0; r < n; ++r) build_[r] = {point(r), r};
     depth_ = 0;
     while ((uint64_t(n) >> depth_) > kLeafSize) ++depth_;
     firstLeaf_ = (1u << depth_) - 1;
     nodes_.resize((2u << depth_) - 1);
     leafOfRank_.resize(n);
     buildNode(0, 0, n, 0);
-    // The search reads the leaves' ranks alone (4 bytes a sag, not 24): the points are byRank_'s.
+    // The search reads the leaves' ranks alone (4 bytes a sag, not 24), their points by point().
     items_.resize(n);
     for (uint32_t i = 0; i < n; ++i) items_[i] = build_[i].rank;
     giveBackIfLarge(build_);

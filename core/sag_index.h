@@ -46,22 +46,23 @@ struct HeightKey {
 class SagHeights {
 public:
     std::vector<HeightKey>& keys() { return keys_; }  // the sags' keys, sorted; then index()
-    // `sags` and `points`: the sags' nodes and points by rank, read by below() as long as it
-    // is called.
-    void index(const Heights& heights, const std::vector<NodeId>& sags,
-               const std::vector<Point>& points);
+    // `sags` and `vertices`: the sags' nodes and vertices by rank (their points in `points`),
+    // read by below() as long as it is called.
+    void index(const Heights& heights, const std::vector<NodeId>& sags, const Point* points,
+               const std::vector<uint32_t>& vertices);
     uint32_t below(const HeightKey& k) const;
 
 private:
     size_t bucket(double y) const;
-    double y(size_t rank) const { return points_ ? points_[rank].y : y_[rank]; }
+    double y(size_t rank) const { return points_ ? points_[vertices_[rank]].y : y_[rank]; }
     static constexpr size_t kSearchLimit = 16;  // up to this many sags: no buckets, one search
     std::vector<HeightKey> keys_;               // empty after index() when large
     size_t count_ = 0;                          // sags, from index() on
     const Heights* heights_ = nullptr;
     const std::vector<NodeId>* sags_ = nullptr;
     std::vector<double> y_;          // the sags' keys' y, by rank, off the axes only
-    const Point* points_ = nullptr;  // on the axes: the sags' points by rank
+    const Point* points_ = nullptr;  // on the axes: the points, read through vertices_
+    const uint32_t* vertices_ = nullptr;
     std::vector<uint32_t> buckets_;  // first rank of each height bucket (bucket())
     double y0_ = 0, scale_ = 0;
 };
@@ -75,12 +76,13 @@ public:
         int lineCount = 0;
     };
 
-    // The sags' points by height rank (ranks: sags sorted by height), filled before build().
-    std::vector<Point>& points() { return byRank_; }
-    void build();
+    // The sags' vertices by height rank (ranks: sags sorted by height), filled before build();
+    // `points`: the vertices' points, read by the searches until the next build().
+    std::vector<uint32_t>& vertices() { return vertexOfRank_; }
+    void build(const Point* points);
     size_t size() const { return used_.size(); }
     bool used(uint32_t rank) const { return used_[rank]; }
-    Point point(uint32_t rank) const { return byRank_[rank]; }
+    Point point(uint32_t rank) const { return points_[vertexOfRank_[rank]]; }
     void markUsed(uint32_t rank);
 
     // The lowest unused rank in (lo, hi) within `region` for which inside(rank) holds;
@@ -122,9 +124,10 @@ private:
     std::vector<Node> nodes_;                   // empty when there are kScanLimit sags or fewer
     static constexpr uint32_t kScanLimit = 48;  // brackets up to this many sags are scanned
     std::vector<Item> build_;                   // build()'s scratch
-    std::vector<uint32_t> items_;               // ranks, leaf after leaf; their points in byRank_
-    std::vector<Point> byRank_;                 // the sags' points by rank
-    std::vector<uint32_t> leafOfRank_;          // rank -> leaf node id
+    std::vector<uint32_t> items_;               // ranks, leaf after leaf; their points by point()
+    std::vector<uint32_t> vertexOfRank_;        // not their points: 12 bytes a sag less
+    const Point* points_ = nullptr;
+    std::vector<uint32_t> leafOfRank_;  // rank -> leaf node id
     std::vector<uint8_t> used_;
     std::vector<uint32_t> stack_;  // scratch, reused by every search
     int depth_ = 0;
@@ -150,7 +153,7 @@ int64_t SagIndex::lowest(int64_t lo, int64_t hi, const Region& region, Inside&& 
         // as the paper does (§4).
         for (int64_t r = std::max<int64_t>(lo + 1, 0); r < hi && r < int64_t(used_.size()); ++r) {
             ++work().nodeVisits;
-            if (!used_[size_t(r)] && mayContain(region, frame, byRank_[size_t(r)]) &&
+            if (!used_[size_t(r)] && mayContain(region, frame, point(uint32_t(r))) &&
                 inside(uint32_t(r)))
                 return r;
         }
@@ -172,7 +175,7 @@ int64_t SagIndex::lowest(int64_t lo, int64_t hi, const Region& region, Inside&& 
                 uint32_t r = items_[i];
                 ++work().nodeVisits;
                 if (int64_t(r) <= lo || int64_t(r) >= best || used_[r]) continue;
-                if (!mayContain(region, frame, byRank_[r])) continue;
+                if (!mayContain(region, frame, point(r))) continue;
                 if (inside(r)) best = r;
             }
             continue;

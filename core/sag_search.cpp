@@ -15,14 +15,14 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
     partFirstNode_ = partFirstNode;
     const Nodes& nodes = heights.nodes();
     heights.sort(sags_, heightsOf_.keys());
-    // The sags' points for the plane index, and their heights for the ranks (the sorted keys
+    // The sags' vertices for the plane index, and their heights for the ranks (the sorted keys
     // given back before the plane index is built).
     const size_t count = sags_.size();
-    std::vector<Point>& points = index_.points();
-    points.resize(count);
-    for (size_t k = 0; k < count; ++k) points[k] = heights.at(sags_[k]);
-    heightsOf_.index(heights, sags_, points);
-    index_.build();
+    std::vector<uint32_t>& vertices = index_.vertices();
+    vertices.resize(count);
+    for (size_t k = 0; k < count; ++k) vertices[k] = nodes[sags_[k]].v;
+    heightsOf_.index(heights, sags_, heights.points(), vertices);
+    index_.build(heights.points());
     unused_ = uint32_t(count);
     // Node ids grow from part to part within a run, so the entries of an earlier part never
     // match; those of an earlier run might.
@@ -146,7 +146,7 @@ void SagSearch::buildBanks() {
     for (size_t k = 0; k < sags_.size(); ++k) sagOfRank[k] = sags_[k] - partFirstNode_;
     if (!banks_.build(point, initialNext_, sagOfRank_,
                       heights_->general() ? heights_->up() : Up::PlusY, simple_))
-        banks_.clear();  // crossing edges
+        banks_.clear();          // crossing edges
     giveBackIfLarge(sagOfRank);  // read by the build alone
 }
 

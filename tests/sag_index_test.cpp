@@ -31,8 +31,9 @@ uint64_t agreesWithAScan(const std::function<double(double)>& coord, uint32_t se
         std::vector<Point> pts(n);
         for (Point& p : pts) p = {coord(double(rng() % 50)), coord(double(rng() % 50))};
         SagIndex index;
-        index.points() = pts;
-        index.build();
+        index.vertices().resize(n);
+        for (uint32_t k = 0; k < n; ++k) index.vertices()[k] = k;
+        index.build(pts.data());
         std::vector<uint8_t> used(n, 0);
         for (int q = 0; q < 50; ++q) {
             int64_t lo = int64_t(rng() % (n + 1)) - 1, hi = int64_t(rng() % (n + 2));

@@ -8,9 +8,7 @@
 namespace flood {
 
 namespace {
-// Sags a leaf holds at most: 16 halves the boxes (48 bytes each) of 8, and costs fewer
-// instructions too (a leaf scan of ranks is cheaper than a box test).
-constexpr uint32_t kLeafSize = 16;
+constexpr uint32_t kLeafSize = 8;
 }  // namespace
 
 // The bucket of y never decreases as y grows (rounding is monotone), so the sags of the

@@ -42,6 +42,13 @@ public:
         nodes_.push_back(n);
         flags_.push_back(kAlive);
     }
+    // `count` new alive nodes, to be filled in by the caller: a loop's nodes in one go.
+    Node* append(uint32_t count) {
+        const size_t at = nodes_.size();
+        nodes_.resize(at + count);
+        flags_.resize(at + count, kAlive);
+        return nodes_.data() + at;
+    }
     void clear() {
         nodes_.clear();
         flags_.clear();

@@ -64,17 +64,30 @@ NodeId SagSearch::counted(NodeId left, NodeId right, NodeId water, NodeId next, 
 // answers for recent nodes are kept, by node id modulo kRecent (the water is usually a recent
 // step's Next, and the chain's nodes have neighbouring ids): no array over every node.
 uint32_t SagSearch::sagsBelow(NodeId n) {
-    if (sags_.size() <= kCountedSags) {
-        const HeightKey k = heights_->key(n);
-        const std::vector<HeightKey>& keys = heightsOf_.keys();
-        uint32_t below = 0;
-        while (below < keys.size() && keys[below] < k) ++below;
-        return below;
-    }
     const uint32_t slot = uint32_t(n) % kRecent;
     Recent& r = recent_[slot];
     if (r.node != n) r = {n, heightsOf_.below(heights_->key(n))}, recentSet_ |= uint64_t(1) << slot;
     return r.below;
+}
+
+// The ranks the sought sag lies strictly between: `lo`, the last sag not above the water (the
+// water itself when it is a sag), and `hi`, the first sag not below Next.
+void SagSearch::bracket(NodeId water, NodeId nx, int64_t& lo, int64_t& hi) {
+    if (sags_.size() <= kCountedSags) {  // a few keys, counted in one pass each
+        const std::vector<HeightKey>& keys = heightsOf_.keys();
+        const HeightKey kw = heights_->key(water), kn = heights_->key(nx);
+        const uint32_t count = uint32_t(keys.size());
+        uint32_t a = 0, b = 0;
+        while (a < count && keys[a] < kw) ++a;
+        while (b < count && keys[b] < kn) ++b;
+        lo = a < count && sags_[a] == water ? a : int64_t(a) - 1;
+        hi = b;
+        return;
+    }
+    lo = int64_t(sagsBelow(water)) - 1;
+    if (lo + 1 < int64_t(sags_.size()) && sags_[size_t(lo + 1)] == water)
+        ++lo;  // the water is itself a sag
+    hi = sagsBelow(nx);
 }
 
 // Sags are sorted, so the search starts at the water level and stops at Next.
@@ -83,11 +96,8 @@ NodeId SagSearch::search(NodeId left, NodeId right, NodeId water, NodeId nx, uin
     if (unused_ == 0) return kNil;  // every sag bridged already (or none): no bracket to search
     const Heights& h = *heights_;
     const Nodes& nodes = h.nodes();
-    // Ranks bracketing the water and Next: the number of sags below each.
-    int64_t lo = int64_t(sagsBelow(water)) - 1;
-    if (lo + 1 < int64_t(sags_.size()) && sags_[size_t(lo + 1)] == water)
-        ++lo;  // the water is itself a sag
-    int64_t hi = sagsBelow(nx);
+    int64_t lo, hi;
+    bracket(water, nx, lo, hi);
     if (hi <= lo + 1) return kNil;
     Point l = h.at(left), r = h.at(right), nl = h.at(nodes[left].prev),
           nr = h.at(nodes[right].next);

@@ -38,6 +38,7 @@ private:
     NodeId search(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
                   Event& e);
     uint32_t sagsBelow(NodeId n);
+    void bracket(NodeId water, NodeId next, int64_t& lo, int64_t& hi);
     NodeId use(int64_t rank);
     void buildBanks();
     uint32_t inputEdge(NodeId a, NodeId b) const;
@@ -55,7 +56,7 @@ private:
     static constexpr uint32_t kRecent = 64;
     Recent recent_[kRecent];
     uint64_t recentSet_ = 0;  // bit i: recent_[i] was written since the last clearing
-    // Up to this many sags sagsBelow() counts them on their sorted keys, cheaper than the
+    // Up to this many sags bracket() counts them on their sorted keys, cheaper than the
     // cache's upkeep: recent_ is then left alone.
     static constexpr size_t kCountedSags = 8;
     SagBanks banks_;  // the sags each input edge sees, once the plane index is costly

@@ -103,7 +103,8 @@ public:
         if (nodes_.capacity() < loopNodes + 2 * minima + 16)
             nodes_.reserve(loopNodes + 2 * minima + 16);
         if (gorges_.capacity() < 2 * minima + 16) gorges_.reserve(2 * minima + 16);
-        result_.triangles.reserve(poly_.vertices.size() + 2 * poly_.rings.size());
+        const size_t triangles = poly_.vertices.size() + 2 * poly_.rings.size();
+        if (result_.triangles.capacity() < triangles) result_.triangles.reserve(triangles);
         for (uint32_t part = 0; part < poly_.parts.size() && ok(); ++part) floodPart(part);
         result_.steps = step_;
     }
@@ -153,7 +154,9 @@ private:
         part_ = part;
         partNodes_ = killed_ = 0;
         partFirstNode_ = nodes_.end();
-        for (Index v = poly_.rings[pa.firstRing].first; v < partEnd(pa); ++v) {
+        // validate() passed on a polygon whose points are distinct: its coordinates are finite.
+        const Index checkEnd = poly_.pointsDistinct ? 0 : partEnd(pa);
+        for (Index v = poly_.rings[pa.firstRing].first; v < checkEnd; ++v) {
             const Point p = heights_.points()[v];
             if (!std::isfinite(p.x) || !std::isfinite(p.y)) {
                 Ev f = begin(Action::Forbidden);
@@ -208,24 +211,22 @@ private:
         std::vector<NodeId>& sags = sags_.sags();
         std::vector<NodeId>& bottoms = bottoms_.reset();
         sags.clear();
-        for (NodeId n : partVertices)
-            if (isMinimum(n)) bottoms.push_back(n);
+        heights_.minima(partVertices, bottoms);
         const NodeId outerEnd = partFirstNode_ + loops.outerNodes;  // the outer ring's nodes
         NodeId lowest = kNil;
+        // The bottoms, lowest first: every one of them starts a gorge unless the water
+        // reaches it first. They are the to-do list of last resort (dry_bottoms.h).
+        size_t kept = 0;
         for (NodeId n : bottoms) {
             if (n < outerEnd && (lowest == kNil || lower(n, lowest))) lowest = n;
             if (turn(prev(n), n, next(n)) <= 0) sags.push_back(n);
+            else bottoms[kept++] = n;
         }
+        bottoms.resize(kept);
         // A point hole is a hole whose lowest vertex is its only one: a sag.
         sags.insert(sags.end(), points.begin(), points.end());
         sags_.index(heights_, partFirstNode_, poly_.rings[poly_.parts[part_].firstRing].first,
                     loops.touching, poly_.pointsDistinct);
-        // The bottoms, lowest first: every one of them starts a gorge unless the water
-        // reaches it first. They are the to-do list of last resort (dry_bottoms.h).
-        size_t kept = 0;
-        for (NodeId n : bottoms)
-            if (turn(prev(n), n, next(n)) > 0) bottoms[kept++] = n;
-        bottoms.resize(kept);
         walked_.clear(partFirstNode_);
         return lowest;
     }

@@ -78,6 +78,7 @@ size_t Heights::ringMinima() const {
 void Heights::sort(std::vector<NodeId>& ns, std::vector<HeightKey>& keys) const {
     keys.resize(ns.size());
     for (size_t i = 0; i < ns.size(); ++i) keys[i] = key(ns[i]);
+    if (ns.size() < 2) return;  // sorted already (a part with one sag is common)
     std::sort(keys.begin(), keys.end());
     for (size_t i = 0; i < ns.size(); ++i) ns[i] = keys[i].node;
 }

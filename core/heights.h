@@ -35,15 +35,18 @@ public:
     // The paper's below: coincident vertices (rings touching at a point, bridge copies) are
     // ordered by vertex index, then node id.
     bool lower(NodeId a, NodeId b) const {
-        if (general_) {
-            const Index va = nodes_[a].v, vb = nodes_[b].v;
-            return va != vb ? rank_[va] < rank_[vb] : a < b;
+        return lowerIn(&nodes_[NodeId(0)], general_ ? rank_.data() : nullptr, a, b);
+    }
+    // Appends to `out` the nodes of `ns` lower than both their neighbours, in the order given:
+    // the arrays read held in registers across the appends, which might alias them.
+    void minima(const std::vector<NodeId>& ns, std::vector<NodeId>& out) const {
+        if (ns.empty()) return;
+        const Node* node = &nodes_[NodeId(0)];
+        const uint32_t* rank = general_ ? rank_.data() : nullptr;
+        for (NodeId n : ns) {
+            const Node& x = node[uint32_t(n)];
+            if (lowerIn(node, rank, n, x.prev) && lowerIn(node, rank, n, x.next)) out.push_back(n);
         }
-        Point pa = at(a), pb = at(b);
-        if (pa.y != pb.y) return pa.y < pb.y;
-        if (pa.x != pb.x) return pa.x < pb.x;
-        if (nodes_[a].v != nodes_[b].v) return nodes_[a].v < nodes_[b].v;
-        return a < b;
     }
     // The vertices lower than both their neighbours along their ring: at least the sags of
     // the machine's loops unless rings touch (merged loops have other neighbours there).
@@ -58,6 +61,16 @@ public:
     void sort(std::vector<NodeId>& ns, std::vector<HeightKey>& keys) const;
 
 private:
+    // lower() over the node array `node` and, off the axes, the ranks `rank` (else null).
+    bool lowerIn(const Node* node, const uint32_t* rank, NodeId a, NodeId b) const {
+        const Index va = node[uint32_t(a)].v, vb = node[uint32_t(b)].v;
+        if (rank) return va != vb ? rank[va] < rank[vb] : a < b;
+        const Point pa = pts_[va], pb = pts_[vb];
+        if (pa.y != pb.y) return pa.y < pb.y;
+        if (pa.x != pb.x) return pa.x < pb.x;
+        if (va != vb) return va < vb;
+        return a < b;
+    }
     bool lowerVertex(Index a, Index b) const;  // lower() on two distinct vertices
     const Polygon& poly_;
     const Nodes& nodes_;

@@ -40,14 +40,13 @@ public:
                 ring.count >= 3 && (ringOrientation(pts_ + ring.first, ring.count) > 0) != wantCcw;
             const NodeId base = nodes_.end();
             const uint32_t count = plain ? ring.count : uint32_t(loop.size());
+            Node* nd = nodes_.append(count);
             for (uint32_t i = 0; i < count; ++i) {
-                Node nd;
-                nd.v = plain ? ring.first + i : loop[i];
+                nd[i].v = plain ? ring.first + i : loop[i];
                 NodeId p = base + (i == 0 ? count - 1 : i - 1);  // no division: set-up is most of
                 NodeId q = base + (i + 1 == count ? 0 : i + 1);  // a small run
-                nd.prev = reverse ? q : p;
-                nd.next = reverse ? p : q;
-                nodes_.push(nd);
+                nd[i].prev = reverse ? q : p;
+                nd[i].next = reverse ? p : q;
             }
             // The loop's nodes are consecutive ids: listed in one go.
             std::vector<NodeId>& list = count > 1 ? partVertices : points;

@@ -42,6 +42,17 @@ public:
         nodes_.push_back(n);
         flags_.push_back(kAlive);
     }
+    // `count` new alive nodes, to be filled in by the caller: a loop's nodes in one go.
+    Node* append(uint32_t count) {
+        const size_t at = nodes_.size();
+        if (count <= 8) {  // a point hole, a small hole: resize() is a call, push() inline
+            for (uint32_t i = 0; i < count; ++i) push(Node{});
+        } else {
+            nodes_.resize(at + count);
+            flags_.resize(at + count, kAlive);
+        }
+        return nodes_.data() + at;
+    }
     void clear() {
         nodes_.clear();
         flags_.clear();

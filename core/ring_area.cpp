@@ -17,8 +17,9 @@ namespace {
 template <class Below>
 int turnAtLowest(const Point* p, Index count, Below lower) {
     Index low = 0;
+    Point lowest = p[0];  // held, not read again through `low` on every vertex
     for (Index i = 1; i < count; ++i)
-        if (lower(p[i], p[low])) low = i;
+        if (lower(p[i], lowest)) low = i, lowest = p[i];
     int t = orient(p[low == 0 ? count - 1 : low - 1], p[low], p[low + 1 == count ? 0 : low + 1]);
     return t != 0 ? t : ringAreaSign(p, count);
 }

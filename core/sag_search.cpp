@@ -25,9 +25,13 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
     index_.build(heights.points());
     unused_ = uint32_t(count);
     // Node ids grow from part to part within a run, so the entries of an earlier part never
-    // match; those of an earlier run might.
-    if (partFirstNode == NodeId(0))
-        for (Recent& r : recent_) r = {};
+    // match; those of an earlier run might. Only the entries written are cleared: a small
+    // run writes a few.
+    if (partFirstNode == NodeId(0)) {
+        for (uint64_t set = recentSet_; set != 0; set &= set - 1)
+            recent_[__builtin_ctzll(set)] = {};
+        recentSet_ = 0;
+    }
     // The bank lists are built once the plane index has visited more than half a box per
     // node of the part: a part whose gorges it prunes well never pays the sweep. Labels are
     // only sound on loops whose edges are the input's and meet only at their ends; where
@@ -46,9 +50,9 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
         initialNext_[i] = nodes[partFirstNode_ + i].next - partFirstNode_;
 }
 
-NodeId SagSearch::find(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
-                       Event& e) {
-    if (unused_ == 0) return kNil;  // every sag bridged already (or none): nothing to count
+// The search, its work counted as the sag search's.
+NodeId SagSearch::counted(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
+                          Event& e) {
     WorkCounters& w = work();
     const uint64_t before = w.nodeVisits + w.sagTests + w.orientCalls;  // not all ten counters
     NodeId s = search(left, right, water, next, partNodes, e);
@@ -60,9 +64,30 @@ NodeId SagSearch::find(NodeId left, NodeId right, NodeId water, NodeId next, uin
 // answers for recent nodes are kept, by node id modulo kRecent (the water is usually a recent
 // step's Next, and the chain's nodes have neighbouring ids): no array over every node.
 uint32_t SagSearch::sagsBelow(NodeId n) {
-    Recent& r = recent_[uint32_t(n) % kRecent];
-    if (r.node != n) r = {n, heightsOf_.below(heights_->key(n))};
+    const uint32_t slot = uint32_t(n) % kRecent;
+    Recent& r = recent_[slot];
+    if (r.node != n) r = {n, heightsOf_.below(heights_->key(n))}, recentSet_ |= uint64_t(1) << slot;
     return r.below;
+}
+
+// The ranks the sought sag lies strictly between: `lo`, the last sag not above the water (the
+// water itself when it is a sag), and `hi`, the first sag not below Next.
+void SagSearch::bracket(NodeId water, NodeId nx, int64_t& lo, int64_t& hi) {
+    if (sags_.size() <= kCountedSags) {  // a few keys, counted in one pass each
+        const std::vector<HeightKey>& keys = heightsOf_.keys();
+        const HeightKey kw = heights_->key(water), kn = heights_->key(nx);
+        const uint32_t count = uint32_t(keys.size());
+        uint32_t a = 0, b = 0;
+        while (a < count && keys[a] < kw) ++a;
+        while (b < count && keys[b] < kn) ++b;
+        lo = a < count && sags_[a] == water ? a : int64_t(a) - 1;
+        hi = b;
+        return;
+    }
+    lo = int64_t(sagsBelow(water)) - 1;
+    if (lo + 1 < int64_t(sags_.size()) && sags_[size_t(lo + 1)] == water)
+        ++lo;  // the water is itself a sag
+    hi = sagsBelow(nx);
 }
 
 // Sags are sorted, so the search starts at the water level and stops at Next.
@@ -71,11 +96,8 @@ NodeId SagSearch::search(NodeId left, NodeId right, NodeId water, NodeId nx, uin
     if (unused_ == 0) return kNil;  // every sag bridged already (or none): no bracket to search
     const Heights& h = *heights_;
     const Nodes& nodes = h.nodes();
-    // Ranks bracketing the water and Next: the number of sags below each.
-    int64_t lo = int64_t(sagsBelow(water)) - 1;
-    if (lo + 1 < int64_t(sags_.size()) && sags_[size_t(lo + 1)] == water)
-        ++lo;  // the water is itself a sag
-    int64_t hi = sagsBelow(nx);
+    int64_t lo, hi;
+    bracket(water, nx, lo, hi);
     if (hi <= lo + 1) return kNil;
     Point l = h.at(left), r = h.at(right), nl = h.at(nodes[left].prev),
           nr = h.at(nodes[right].next);
@@ -133,7 +155,11 @@ NodeId SagSearch::use(int64_t rank) {
     index_.markUsed(uint32_t(rank));
     --unused_;
     const NodeId s = sags_[size_t(rank)];
-    recent_[uint32_t(s) % kRecent] = {s, uint32_t(rank)};  // the bridged sag is the next water
+    if (sags_.size() > kCountedSags) {  // the bridged sag is the next water
+        const uint32_t slot = uint32_t(s) % kRecent;
+        recent_[slot] = {s, uint32_t(rank)};
+        recentSet_ |= uint64_t(1) << slot;
+    }
     return s;
 }
 

@@ -25,12 +25,20 @@ public:
     void index(const Heights& heights, NodeId partFirstNode, Index partFirstVertex, bool touching,
                bool simple = false);
     // The sag sought, now used; kNil if none. `partNodes`: the part's nodes so far.
-    NodeId find(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes, Event& e);
+    // Inline up to the first test: once every sag is bridged, most steps ask.
+    NodeId find(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
+                Event& e) {
+        if (unused_ == 0) return kNil;  // every sag bridged already (or none): nothing to count
+        return counted(left, right, water, next, partNodes, e);
+    }
 
 private:
+    NodeId counted(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
+                   Event& e);
     NodeId search(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
                   Event& e);
     uint32_t sagsBelow(NodeId n);
+    void bracket(NodeId water, NodeId next, int64_t& lo, int64_t& hi);
     NodeId use(int64_t rank);
     void buildBanks();
     uint32_t inputEdge(NodeId a, NodeId b) const;
@@ -47,6 +55,10 @@ private:
     };
     static constexpr uint32_t kRecent = 64;
     Recent recent_[kRecent];
+    uint64_t recentSet_ = 0;  // bit i: recent_[i] was written since the last clearing
+    // Up to this many sags bracket() counts them on their sorted keys, cheaper than the
+    // cache's upkeep: recent_ is then left alone.
+    static constexpr size_t kCountedSags = 8;
     SagBanks banks_;  // the sags each input edge sees, once the plane index is costly
     bool banksTried_ = false;
     bool simple_ = false;    // index()'s: the bank sweep need not check that edges meet

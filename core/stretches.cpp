@@ -59,17 +59,12 @@ uint32_t Stretches::firstAtMost(const Stretch& s, uint32_t from, int64_t limit) 
 }
 
 // Its leaf and their ancestors in the stretch's tree get INT32_MIN, below any count.
-void Stretches::markWet(NodeId n) {
-    if (stretches.empty()) return;  // no spill walk recorded a stretch yet: no tree to update
-    for (int dir = 0; dir < 2; ++dir) {
-        uint32_t at = recordedAt(dir, n);
-        if (at == kNone) continue;
-        const Stretch& s = stretches[positions[at].stretch];
-        int32_t* t = tree_.data() + s.tree;
-        for (size_t i = s.leaves + at - s.start; i >= 1 && t[i] != INT32_MIN; i >>= 1) {
-            t[i] = INT32_MIN;
-            ++work().nodeVisits;
-        }
+void Stretches::markWetAt(uint32_t at) {
+    const Stretch& s = stretches[positions[at].stretch];
+    int32_t* t = tree_.data() + s.tree;
+    for (size_t i = s.leaves + at - s.start; i >= 1 && t[i] != INT32_MIN; i >>= 1) {
+        t[i] = INT32_MIN;
+        ++work().nodeVisits;
     }
 }
 

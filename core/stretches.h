@@ -47,10 +47,16 @@ public:
     // The first position from `from` on (relative to the stretch's start) whose tree value is
     // at most `limit`; the stretch's length if none.
     uint32_t firstAtMost(const Stretch& s, uint32_t from, int64_t limit) const;
-    // Node n got wet: a stretch holding it can no longer be crossed past it.
-    void markWet(NodeId n);
+    // Node n got wet: a stretch holding it can no longer be crossed past it. Inline up to
+    // the lookup: the machine calls it on every node that gets wet, and most are in no stretch.
+    void markWet(NodeId n) {
+        const uint32_t i = n - first_;
+        for (const std::vector<uint32_t>& at : at_)
+            if (i < at.size() && at[i] != kNone) markWetAt(at[i]);
+    }
 
 private:
+    void markWetAt(uint32_t position);
     std::vector<int32_t> tree_;
     std::vector<uint32_t> at_[2];  // per node of the part, per direction: its position
     NodeId first_{0};

@@ -16,6 +16,7 @@
 #include "sag_banks.h"
 #include "test_support.h"
 #include "up.h"
+#include "vertex_class.h"
 #include "work.h"
 
 // Allocations made by this thread, counted by the replaced global operator new (it forwards
@@ -251,6 +252,39 @@ TEST(SmallPolygons, TriangulateAllocatesOnlyItsResult) {
     FloodResult r = triangulate(p);
     EXPECT_TRUE(r.diagnostic.ok());
     EXPECT_EQ(tAllocations - before, 1u);  // the triangles returned
+}
+
+// A part with few sags has its sag ranks counted on their keys, one with more read through the
+// cache of recent answers (sag_search.h), cleared only where an earlier run wrote it. Parts on
+// both sides of that threshold, flooded in turn by one Triangulator along four directions, give
+// a fresh call's triangles, and those are a valid triangulation.
+TEST(SmallPolygons, FewAndManySagsGiveTheSameTriangles) {
+    std::vector<Polygon> all;
+    size_t few = 0, many = 0;
+    for (const char* family : {"circle-holes", "grid-holes", "comb", "star", "rooms"})
+        for (size_t size : {10, 20, 40, 80, 160, 320}) {
+            all.push_back(generate(family, 3, size));
+            ASSERT_TRUE(validate(all.back(), family).ok()) << family << " " << size;
+            const std::vector<VertexClass> c = classifyVertices(all.back());
+            const auto sags = std::count(c.begin(), c.end(), VertexClass::Sag);
+            few += sags >= 1 && sags <= 8;
+            many += sags > 8;
+        }
+    EXPECT_GE(few, 5u);
+    EXPECT_GE(many, 5u);
+    Triangulator t;
+    for (int pass = 0; pass < 2; ++pass)
+        for (size_t k = 0; k < all.size(); ++k) {
+            const Polygon& p = all[pass ? all.size() - 1 - k : k];
+            for (Up up : {Up::PlusY, Up::MinusY, Up::PlusX, Up{0.8660254037844387, 0.5}}) {
+                Options o;
+                o.up = up;
+                const FloodResult fresh = triangulate(p, nullptr, o);
+                ASSERT_TRUE(fresh.diagnostic.ok()) << k << ": " << fresh.diagnostic.message;
+                EXPECT_EQ(t.run(p, nullptr, o).triangles, fresh.triangles) << k;
+                EXPECT_TRUE(checkTriangulation(p, fresh.triangles).ok) << k;
+            }
+        }
 }
 
 TEST(SmallPolygons, ReusedBuffersGiveTheSameTriangles) {

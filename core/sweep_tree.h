@@ -80,6 +80,20 @@ public:
     }
 
     bool contains(Index e) const { return up_[e] != kNone || root_ == e; }
+    bool empty() const { return root_ == kNone; }
+
+    // The first node in the order for which notBefore(x) holds, kNone if none: a descent from
+    // the root, asking at each node, for a predicate false on a prefix of the order and true
+    // after it (a lower bound; the caller counts its own questions).
+    template <typename NotBefore>
+    Index firstWhere(NotBefore notBefore) const {
+        Index found = kNone;
+        for (Index x = root_; x != kNone;) {
+            if (notBefore(x)) found = x, x = left_[x];
+            else x = right_[x];
+        }
+        return found;
+    }
 
     // Removes e (present): rotated down to a leaf, then cut off.
     void erase(Index e) {

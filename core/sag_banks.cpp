@@ -155,11 +155,12 @@ public:
         (right == kNone ? last_ : slots_[right].left) = sb;
     }
 
-    // The edge `starts` takes the slot of the edge `ends`, which leaves the line.
-    void pass(uint32_t s, uint32_t ends, uint32_t starts) {
+    // The edge `starts`, from lo up to hi, takes the slot of the edge `ends`, which leaves the
+    // line at lo.
+    void pass(uint32_t s, uint32_t ends, uint32_t starts, Point lo, Point hi) {
         slotOf_[ends] = kNone, slotOf_[starts] = s;
         Slot& slot = slots_[s];
-        slot.tail = starts, slot.lo = sweep_.lo(starts), slot.hi = sweep_.hi(starts);
+        slot.tail = starts, slot.lo = lo, slot.hi = hi;
     }
 
     void close(uint32_t s) {
@@ -291,7 +292,7 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
             const uint32_t ends = inEnds ? in : out, starts = inEnds ? out : in;
             const uint32_t slot = active.slotOf(ends);
             if (slot == kNone) return false;
-            active.pass(slot, ends, starts);
+            active.pass(slot, ends, starts, point[p], point[inEnds ? next[p] : in]);
             // The end of the edge that left, hence strictly between the neighbours (the
             // sweep has found no meeting so far): one orientation each clears the new edge.
             if (simple) continue;
@@ -334,11 +335,13 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
         if (lone) continue;
         // Both edges start here; the one turning left of the other goes first. Collinear, they
         // overlap (both go up from p).
-        const int turn = orient(point[p], sweep.hi(out), sweep.hi(in));
+        const Point hiIn = point[in], hiOut = point[next[p]];  // both above p
+        const int turn = orient(point[p], hiOut, hiIn);
         if (turn == 0) return false;
         const bool inLeft = turn > 0;
         const uint32_t a = inLeft ? in : out, b = inLeft ? out : in;
-        active.open(a, b, point[p], sweep.hi(a), sweep.hi(b), right);  // no comparison
+        active.open(a, b, point[p], inLeft ? hiIn : hiOut, inLeft ? hiOut : hiIn,
+                    right);  // no comparison
         if (simple) continue;
         if (left != kNone && sweep.meetFrom(active[left].tail, a, -1)) return false;
         if (right != kNone && sweep.meetFrom(active[right].tail, b, 1)) return false;

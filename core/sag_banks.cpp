@@ -17,10 +17,10 @@ constexpr uint32_t kKeptScratchNodes = 1u << 16;  // as the sag heights' keys (g
 // units, star / circle-jagged): 1 step 996k / 1.08M, 2 891k / 1.11M, 3 843k / 977k, 8 790k / 956k.
 constexpr int kAround = 3;
 
-// The edges crossing the sweep line, left to right. An edge is named by its tail node t (the
-// edge t -> next[t]). Edges are compared where the later-starting one begins, which is on the
-// sweep line: the order of the edges along it as long as no two of them meet below it, and
-// the sweep stops at the first pair that meets (Shamos–Hoey: that pair is adjacent before).
+// The sweep's geometry. An edge is named by its tail node t (the edge t -> next[t]). A vertex
+// is placed among the edges crossing the line by its side of each edge compared; their order
+// along the line holds as long as no two of them meet below it, and the sweep stops at the
+// first pair that meets (Shamos–Hoey: that pair is adjacent before).
 struct Sweep {
     const Point* point;
     const std::vector<uint32_t>& next;
@@ -78,7 +78,8 @@ struct Sweep {
 // of the edge arriving there, in the same slot: no edge lies between them at that point (or the
 // checks before would have stopped the sweep), so the order holds without moving anything. The
 // slots are the nodes of a treap (sweep_tree.h), for a descent from the root, and of a list,
-// for steps to a neighbour; a closed slot's id is reused.
+// for steps to a neighbour; a closed slot's id is reused, so both grow with the most edges
+// crossing the line at once, not with the loops.
 struct Slot {
     uint32_t tail;         // the edge held: tail -> next[tail]
     uint32_t left, right;  // the neighbouring slots along the line (kNone at the ends)
@@ -98,7 +99,7 @@ struct StatusMemory {
 class Status {
 public:
     Status(const Sweep& sweep, uint32_t edges, StatusMemory& m)
-        : sweep_(sweep), slots_(m.slots), slotOf_(m.slotOf), tree_(edges, Unordered{}, m.links) {
+        : sweep_(sweep), slots_(m.slots), slotOf_(m.slotOf), tree_(0, Unordered{}, m.links) {
         slots_.clear();
         slotOf_.assign(edges, kNone);
     }
@@ -183,7 +184,7 @@ private:
     uint32_t take(uint32_t tail, Point lo, Point hi) {
         uint32_t s = free_;
         if (s != kNone) free_ = slots_[s].right;
-        else s = uint32_t(slots_.size()), slots_.emplace_back();
+        else s = uint32_t(slots_.size()), slots_.emplace_back(), tree_.grow(slots_.size());
         slots_[s].tail = tail, slots_[s].lo = lo, slots_[s].hi = hi;
         slotOf_[tail] = s;
         return s;

@@ -1,8 +1,9 @@
-// The ordered set of active edges of a sweep (core/validate.cpp): a treap whose nodes are the
-// edge indices themselves, its links arrays indexed by edge. Nothing is allocated per
-// insertion (a std::set allocates a 40-byte node each time), and an edge is erased or stepped
-// from by its index, without comparisons. Priorities are a hash of the index, so the shape is
-// that of a random treap whatever the input order: O(log n) expected per operation.
+// The ordered set of active edges of a sweep (core/validate.cpp; the bank sweep's slots,
+// core/sag_banks.cpp): a treap whose nodes are the edge indices themselves, its links arrays
+// indexed by edge. Nothing is allocated per insertion (a std::set allocates a 40-byte node
+// each time), and an edge is erased or stepped from by its index, without comparisons.
+// Priorities are a hash of the index, so the shape is that of a random treap whatever the
+// input order: O(log n) expected per operation.
 // Internal to core/, not a public API.
 #pragma once
 #include <cstdint>
@@ -28,6 +29,12 @@ public:
     }
 
     const Less& less() const { return less_; }
+    // Room for the nodes below `size` (those added absent), for a caller whose indices grow
+    // as it goes rather than up to a known bound.
+    void grow(size_t size) {
+        if (size <= left_.size()) return;
+        left_.resize(size, kNone), right_.resize(size, kNone), up_.resize(size, kNone);
+    }
     Index first() const {
         Index x = root_;
         while (x != kNone && left_[x] != kNone) x = left_[x];

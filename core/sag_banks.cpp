@@ -101,6 +101,8 @@ public:
     Status(const Sweep& sweep, uint32_t edges, StatusMemory& m)
         : sweep_(sweep), slots_(m.slots), slotOf_(m.slotOf), tree_(0, Unordered{}, m.links) {
         slots_.clear();
+        slots_.reserve(std::min<size_t>(edges, kFirstSlots));
+        tree_.grow(slots_.capacity());
         slotOf_.assign(edges, kNone);
     }
 
@@ -175,6 +177,7 @@ public:
 
 private:
     static constexpr int kReach = 4;
+    static constexpr size_t kFirstSlots = 1u << 14;  // room made at once, before any growth
 
     int sideOf(uint32_t s, Point p) const {
         ++work().nodeVisits;
@@ -184,7 +187,7 @@ private:
     uint32_t take(uint32_t tail, Point lo, Point hi) {
         uint32_t s = free_;
         if (s != kNone) free_ = slots_[s].right;
-        else s = uint32_t(slots_.size()), slots_.emplace_back(), tree_.grow(slots_.size());
+        else s = uint32_t(slots_.size()), slots_.emplace_back(), tree_.grow(slots_.capacity());
         slots_[s].tail = tail, slots_[s].lo = lo, slots_[s].hi = hi;
         slotOf_[tail] = s;
         return s;

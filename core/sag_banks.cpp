@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <memory>
-#include <set>
 
 #include "predicates.h"
+#include "sweep_tree.h"
 
 namespace flood {
 
@@ -12,11 +12,15 @@ namespace {
 
 constexpr uint32_t kNoEdge = UINT32_MAX;
 constexpr uint32_t kKeptScratchNodes = 1u << 16;  // as the sag heights' keys (giveBackIfLarge)
+// How far along its loop, each way, a minimum looks for an edge crossing the line to start its
+// search from; beyond, the search descends from the root. Measured at 10^5 (sag search work
+// units, star / circle-jagged): 1 step 996k / 1.08M, 2 891k / 1.11M, 3 843k / 977k, 8 790k / 956k.
+constexpr int kAround = 3;
 
-// The edges crossing the sweep line, left to right. An edge is named by its tail node t (the
-// edge t -> next[t]). Edges are compared where the later-starting one begins, which is on the
-// sweep line: the order of the edges along it as long as no two of them meet below it, and
-// the sweep stops at the first pair that meets (Shamos–Hoey: that pair is adjacent before).
+// The sweep's geometry. An edge is named by its tail node t (the edge t -> next[t]). A vertex
+// is placed among the edges crossing the line by its side of each edge compared; their order
+// along the line holds as long as no two of them meet below it, and the sweep stops at the
+// first pair that meets (Shamos–Hoey: that pair is adjacent before).
 struct Sweep {
     const Point* point;
     const std::vector<uint32_t>& next;
@@ -33,14 +37,6 @@ struct Sweep {
             if (p.x > lo.x && p.x > hi.x) return -1;
         }
         return orient(lo, hi, p);
-    }
-    // While a minimum's two edges are inserted where the search put the point: the edges
-    // around them, left to right (the ends may be kNoEdge), whose order is already known.
-    uint32_t known[4] = {kNoEdge, kNoEdge, kNoEdge, kNoEdge};
-    int knownAt(uint32_t t) const {
-        for (int k = 0; k < 4; ++k)
-            if (known[k] == t) return k;
-        return -1;
     }
     // Edges a and b share a point other than a common end, or overlap there. Exact; two
     // orientations decide the usual case (b wholly on one side of a's line).
@@ -77,96 +73,131 @@ struct Sweep {
     }
 };
 
-// An edge in the sweep's set, with its ends (lower first) at hand for the comparisons. It is
-// mutable: at a regular vertex the edge leaving it takes the place of the edge arriving there,
-// which keeps the order (no edge lies between them at that point, or the checks before would
-// have stopped the sweep).
-struct Active {
-    mutable uint32_t tail;
-    mutable Point lo, hi;
+// The edges crossing the sweep line, left to right, each in a slot. A slot opens with an edge
+// at a minimum and closes at a maximum; at a regular vertex the edge leaving it takes the place
+// of the edge arriving there, in the same slot: no edge lies between them at that point (or the
+// checks before would have stopped the sweep), so the order holds without moving anything. The
+// slots are the nodes of a treap (sweep_tree.h), for a descent from the root, and of a list,
+// for steps to a neighbour; a closed slot's id is reused, so both grow with the most edges
+// crossing the line at once, not with the loops.
+struct Slot {
+    uint32_t tail;         // the edge held: tail -> next[tail]
+    uint32_t left, right;  // the neighbouring slots along the line (kNone at the ends)
+    Point lo, hi;          // the edge's ends, lower first, at hand for the comparisons
 };
 
-struct EdgeLess {
-    using is_transparent = void;  // a point is looked up among the edges crossing the line
-    const Sweep* sweep;
-    // Edge a is left of edge b on the sweep line.
-    bool operator()(const Active& a, const Active& b) const {
-        if (a.tail == b.tail) return false;
-        if (sweep->known[1] != kNoEdge) {
-            int ka = sweep->knownAt(a.tail), kb = sweep->knownAt(b.tail);
-            if (ka >= 0 && kb >= 0) return ka < kb;
-        }
-        if (a.lo == b.lo) return orient(b.lo, b.hi, a.hi) > 0;  // both start here: by direction
-        if (belowToward(sweep->vertical, b.lo, a.lo)) return sweep->side(b.lo, b.hi, a.lo) > 0;
-        return sweep->side(a.lo, a.hi, b.lo) < 0;
-    }
-    bool operator()(const Active& e, Point p) const { return sweep->side(e.lo, e.hi, p) < 0; }
-    bool operator()(Point p, const Active& e) const { return sweep->side(e.lo, e.hi, p) > 0; }
+struct Unordered {  // the treap's own order is never asked: slots go in beside a known one
+    bool operator()(Index, Index) const { return false; }
 };
 
-// The sweep's set allocates one node per edge inserted and frees it when the edge ends: a free
-// list of node-sized slots, carved from chunks freed together, spares malloc that pair of calls
-// (a tenth of the sweep's instructions) and keeps the live nodes close in memory.
-class NodePool {
+struct StatusMemory {
+    std::vector<Slot> slots;
+    std::vector<uint32_t> slotOf;  // by edge: the slot holding it, or kNone
+    SweepTreeLinks links;
+};
+
+class Status {
 public:
-    void* get(size_t bytes) {
-        if (bytes != slot_) return ::operator new(bytes);  // not the set's node (first fixes it)
-        if (free_) {
-            void* p = free_;
-            free_ = *static_cast<void**>(p);
-            return p;
-        }
-        if (left_ == 0) {
-            chunks_.emplace_back(new Slot[kChunk]);
-            next_ = chunks_.back().get(), left_ = kChunk;
-        }
-        --left_;
-        return next_++;
+    Status(const Sweep& sweep, uint32_t edges, StatusMemory& m)
+        : sweep_(sweep), slots_(m.slots), slotOf_(m.slotOf), tree_(0, Unordered{}, m.links) {
+        slots_.clear();
+        slots_.reserve(std::min<size_t>(edges, kFirstSlots));
+        tree_.grow(slots_.capacity());
+        slotOf_.assign(edges, kNone);
     }
-    void put(void* p, size_t bytes) {
-        if (bytes != slot_) return ::operator delete(p);
-        *static_cast<void**>(p) = free_;
-        free_ = p;
+
+    const Slot& operator[](uint32_t s) const { return slots_[s]; }
+    uint32_t slotOf(uint32_t tail) const { return slotOf_[tail]; }
+    uint32_t last() const { return last_; }
+
+    // The first slot whose edge is not left of p, kNone if none; `side`: p's side of its edge
+    // (Sweep::side), 1 if none. The search starts from slot `near` when it is not kNone (a slot
+    // found near p along its loop), stepping along the list at most kReach slots, and from the
+    // root otherwise or beyond. Each slot compared with p is one node visit.
+    uint32_t search(Point p, uint32_t near, int& side) {
+        side = 1;
+        if (near != kNone) {
+            int s = sideOf(near, p);
+            if (s < 0) {  // near is left of p: the answer is further right
+                for (int k = 0; k < kReach; ++k) {
+                    const uint32_t r = slots_[near].right;
+                    if (r == kNone) return kNone;
+                    if ((s = sideOf(r, p)) >= 0) return side = s, r;
+                    near = r;
+                }
+            } else {  // near is not left of p: it is the answer, or one further left is
+                for (int k = 0; k < kReach; ++k) {
+                    const uint32_t l = slots_[near].left;
+                    if (l == kNone) return side = s, near;
+                    const int sl = sideOf(l, p);
+                    if (sl < 0) return side = s, near;
+                    near = l, s = sl;
+                }
+            }
+        }
+        return tree_.firstWhere([&](Index x) {
+            const int s = sideOf(x, p);
+            if (s < 0) return false;
+            side = s;  // the last slot answering true is the one returned
+            return true;
+        });
     }
-    void fix(size_t bytes) {
-        if (slot_ == 0 && bytes <= sizeof(Slot)) slot_ = bytes;
+
+    // Opens slots for the edges a and b (a left of b) that start at p, just before slot
+    // `right` (kNone: at the end of the line), without a comparison.
+    void open(uint32_t a, uint32_t b, Point p, Point hiA, Point hiB, uint32_t right) {
+        const uint32_t sa = take(a, p, hiA), sb = take(b, p, hiB);
+        const uint32_t left = right == kNone ? last_ : slots_[right].left;
+        if (tree_.empty()) tree_.insert(sa);
+        else if (right != kNone) tree_.insertBeside(sa, right, false);
+        else tree_.insertBeside(sa, left, true);
+        tree_.insertBeside(sb, sa, true);
+        slots_[sa].left = left, slots_[sa].right = sb;
+        slots_[sb].left = sa, slots_[sb].right = right;
+        if (left != kNone) slots_[left].right = sa;
+        (right == kNone ? last_ : slots_[right].left) = sb;
+    }
+
+    // The edge `starts`, from lo up to hi, takes the slot of the edge `ends`, which leaves the
+    // line at lo.
+    void pass(uint32_t s, uint32_t ends, uint32_t starts, Point lo, Point hi) {
+        slotOf_[ends] = kNone, slotOf_[starts] = s;
+        Slot& slot = slots_[s];
+        slot.tail = starts, slot.lo = lo, slot.hi = hi;
+    }
+
+    void close(uint32_t s) {
+        Slot& slot = slots_[s];
+        if (slot.left != kNone) slots_[slot.left].right = slot.right;
+        (slot.right == kNone ? last_ : slots_[slot.right].left) = slot.left;
+        tree_.erase(s);
+        slotOf_[slot.tail] = kNone;
+        slot.right = free_, free_ = s;
     }
 
 private:
-    struct alignas(16) Slot {
-        unsigned char bytes[80];
-    };
-    static constexpr size_t kChunk = 1024;
-    std::vector<std::unique_ptr<Slot[]>> chunks_;
-    Slot* next_ = nullptr;
-    size_t left_ = 0, slot_ = 0;
-    void* free_ = nullptr;
-};
+    static constexpr int kReach = 4;
+    static constexpr size_t kFirstSlots = 1u << 14;  // room made at once, before any growth
 
-template <class T>
-struct PoolAllocator {
-    using value_type = T;
-    NodePool* pool;
-    explicit PoolAllocator(NodePool* p) : pool(p) {}
-    template <class U>
-    PoolAllocator(const PoolAllocator<U>& o) : pool(o.pool) {}  // NOLINT: rebinding
-    T* allocate(size_t n) {
-        if (n != 1) return std::allocator<T>().allocate(n);
-        pool->fix(sizeof(T));
-        return static_cast<T*>(pool->get(sizeof(T)));
+    int sideOf(uint32_t s, Point p) const {
+        ++work().nodeVisits;
+        return sweep_.side(slots_[s].lo, slots_[s].hi, p);
     }
-    void deallocate(T* p, size_t n) {
-        if (n != 1) return std::allocator<T>().deallocate(p, n);
-        pool->put(p, sizeof(T));
+
+    uint32_t take(uint32_t tail, Point lo, Point hi) {
+        uint32_t s = free_;
+        if (s != kNone) free_ = slots_[s].right;
+        else s = uint32_t(slots_.size()), slots_.emplace_back(), tree_.grow(slots_.capacity());
+        slots_[s].tail = tail, slots_[s].lo = lo, slots_[s].hi = hi;
+        slotOf_[tail] = s;
+        return s;
     }
-    template <class U>
-    bool operator==(const PoolAllocator<U>& o) const {
-        return pool == o.pool;
-    }
-    template <class U>
-    bool operator!=(const PoolAllocator<U>& o) const {
-        return pool != o.pool;
-    }
+
+    const Sweep& sweep_;
+    std::vector<Slot>& slots_;
+    std::vector<uint32_t>& slotOf_;
+    SweepTree<Unordered> tree_;
+    uint32_t last_ = kNone, free_ = kNone;
 };
 
 // The nodes lowest first (belowToward). Along an axis the order is a comparison of two
@@ -203,15 +234,12 @@ void sweepOrder(const Point* point, Up up, std::vector<uint32_t>& order,
     if (n > kKeptScratchNodes) std::vector<SweepKey>().swap(keys);  // not through the sweep
 }
 
-using Set = std::set<Active, EdgeLess, PoolAllocator<Active>>;
-
 }  // namespace
 
 struct SagBanks::Scratch {
     std::vector<uint32_t> prev, rankOf, order, label[2];
     std::vector<SweepKey> keys;
-    std::vector<Set::iterator> at;
-    NodePool pool;  // outlives every build's set: its nodes go back to the free list
+    StatusMemory status;
 };
 
 SagBanks::SagBanks() = default;
@@ -253,14 +281,11 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
     sweepOrder(point, up, order, s.keys);
 
     Sweep sweep{point, next, up};
-    Set active(EdgeLess{&sweep}, PoolAllocator<Active>(&s.pool));
-    std::vector<Set::iterator>& at = s.at;
-    at.assign(n, active.end());
+    Status active(sweep, n, s.status);
     std::vector<uint32_t>* label = s.label;
     for (int k = 0; k < 2; ++k) label[k].assign(sagOfRank.size(), kNoEdge);
-    auto meetsBefore = [&](Set::iterator it) {  // it and the edge before it meet
-        return !simple && it != active.begin() && it != active.end() &&
-               sweep.meet(std::prev(it)->tail, it->tail);
+    auto meet = [&](uint32_t l, uint32_t r) {  // the edges of slots l and r (either may be kNone)
+        return l != kNone && r != kNone && sweep.meet(active[l].tail, active[r].tail);
     };
     for (uint32_t p : order) {
         ++work().nodeVisits;
@@ -269,63 +294,66 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
         const bool inEnds = !lone && sweep.up(in), outEnds = !lone && !sweep.up(out);
         if (inEnds != outEnds) {  // a regular vertex: one edge ends here, the other starts
             const uint32_t ends = inEnds ? in : out, starts = inEnds ? out : in;
-            if (at[ends] == active.end()) return false;
-            Set::iterator it = at[ends];
-            at[ends] = active.end();
-            it->tail = starts, it->lo = sweep.lo(starts), it->hi = sweep.hi(starts);
-            at[starts] = it;
+            const uint32_t slot = active.slotOf(ends);
+            if (slot == kNone) return false;
+            active.pass(slot, ends, starts, point[p], point[inEnds ? next[p] : in]);
             // The end of the edge that left, hence strictly between the neighbours (the
             // sweep has found no meeting so far): one orientation each clears the new edge.
             if (simple) continue;
-            if (it != active.begin() && sweep.meetFrom(std::prev(it)->tail, starts, -1))
-                return false;
-            if (std::next(it) != active.end() && sweep.meetFrom(std::next(it)->tail, starts, 1))
-                return false;
+            const uint32_t l = active[slot].left, r = active[slot].right;
+            if (l != kNone && sweep.meetFrom(active[l].tail, starts, -1)) return false;
+            if (r != kNone && sweep.meetFrom(active[r].tail, starts, 1)) return false;
             continue;
         }
         if (inEnds) {  // a maximum: both edges leave the line
-            if (at[in] == active.end() || at[out] == active.end()) return false;
-            active.erase(at[in]);
-            Set::iterator after = active.erase(at[out]);
-            at[in] = at[out] = active.end();
-            if (meetsBefore(after)) return false;
+            const uint32_t a = active.slotOf(in), b = active.slotOf(out);
+            if (a == kNone || b == kNone) return false;
+            active.close(a);
+            const uint32_t after = active[b].right;
+            active.close(b);
+            if (!simple && after != kNone && meet(active[after].left, after)) return false;
             continue;
         }
-        // A minimum (or a point hole): where p falls among the edges crossing the line.
-        Set::iterator right = active.lower_bound(point[p]);  // the first edge not left of p
-        if (right != active.end() && sweep.side(right->lo, right->hi, point[p]) == 0)
-            return false;            // p on an edge
+        // A minimum (or a point hole): where p falls among the edges crossing the line. The
+        // edges of its loop nearest to it that cross the line are most often its neighbours
+        // there (none can lie between the two unless it crosses the line between them under
+        // the chain that joins them, above the line): the search starts from the first found
+        // within kAround steps each way, one visit a step.
+        uint32_t near = kNone, back = prev[p], ahead = p;
+        auto crossing = [&](uint32_t t) {
+            ++work().nodeVisits;
+            return (near = active.slotOf(t)) != kNone;
+        };
+        for (int k = 0; !lone && k < kAround; ++k) {  // until the two ways meet, on a small loop
+            if ((back = prev[back]) == ahead || crossing(back)) break;
+            if ((ahead = next[ahead]) == back || crossing(ahead)) break;
+        }
+        int onRight = 1;
+        const uint32_t right = active.search(point[p], near, onRight);  // first not left of p
+        if (onRight == 0) return false;                                 // p on an edge
+        const uint32_t left = right == kNone ? active.last() : active[right].left;
         if (rankOf[p] != kNoEdge) {  // a sag: the edges just left and right of it
-            if (right != active.end()) label[1][rankOf[p]] = right->tail;
-            if (right != active.begin()) label[0][rankOf[p]] = std::prev(right)->tail;
+            if (right != kNone) label[1][rankOf[p]] = active[right].tail;
+            if (left != kNone) label[0][rankOf[p]] = active[left].tail;
         }
         if (lone) continue;
         // Both edges start here; the one turning left of the other goes first. Collinear, they
         // overlap (both go up from p).
-        const int turn = orient(point[p], sweep.hi(out), sweep.hi(in));
+        const Point hiIn = point[in], hiOut = point[next[p]];  // both above p
+        const int turn = orient(point[p], hiOut, hiIn);
         if (turn == 0) return false;
         const bool inLeft = turn > 0;
         const uint32_t a = inLeft ? in : out, b = inLeft ? out : in;
-        // Inserted beside the edges the search just compared p with, without comparing again.
-        sweep.known[0] = right == active.begin() ? kNoEdge : std::prev(right)->tail;
-        sweep.known[1] = a, sweep.known[2] = b;
-        sweep.known[3] = right == active.end() ? kNoEdge : right->tail;
-        Set::iterator ib = active.emplace_hint(right, Active{b, point[p], sweep.hi(b)});
-        Set::iterator ia = active.emplace_hint(ib, Active{a, point[p], sweep.hi(a)});
-        sweep.known[1] = kNoEdge;
-        if (ia->tail != a || ib->tail != b || std::next(ia) != ib) return false;
-        at[a] = ia, at[b] = ib;
+        active.open(a, b, point[p], inLeft ? hiIn : hiOut, inLeft ? hiOut : hiIn,
+                    right);  // no comparison
         if (simple) continue;
-        if (ia != active.begin() && sweep.meetFrom(std::prev(ia)->tail, a, -1)) return false;
-        if (std::next(ib) != active.end() && sweep.meetFrom(std::next(ib)->tail, b, 1))
-            return false;
+        if (left != kNone && sweep.meetFrom(active[left].tail, a, -1)) return false;
+        if (right != kNone && sweep.meetFrom(active[right].tail, b, 1)) return false;
     }
     side_[0].group(label[0], n);
     side_[1].group(label[1], n);
     built_ = true;
     // Large loops give the scratch back (it would add to the run's peak); small ones keep it.
-    // The set is emptied first: its nodes live in the scratch's pool.
-    active.clear();
     if (n > kKeptScratchNodes) scratch_.reset();
     return true;
 }

@@ -56,7 +56,7 @@ private:
     };
     std::array<Side, 2> side_;  // 0: rays to the left, 1: to the right
     bool built_ = false;
-    // The sweep's working memory (its arrays and the set's nodes), kept from build to build so
+    // The sweep's working memory (its arrays and its slots), kept from build to build so
     // that a warm build on loops no larger than before allocates nothing.
     struct Scratch;
     std::unique_ptr<Scratch> scratch_;

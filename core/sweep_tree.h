@@ -1,8 +1,9 @@
-// The ordered set of active edges of a sweep (core/validate.cpp): a treap whose nodes are the
-// edge indices themselves, its links arrays indexed by edge. Nothing is allocated per
-// insertion (a std::set allocates a 40-byte node each time), and an edge is erased or stepped
-// from by its index, without comparisons. Priorities are a hash of the index, so the shape is
-// that of a random treap whatever the input order: O(log n) expected per operation.
+// The ordered set of active edges of a sweep (core/validate.cpp; the bank sweep's slots,
+// core/sag_banks.cpp): a treap whose nodes are the edge indices themselves, its links arrays
+// indexed by edge. Nothing is allocated per insertion (a std::set allocates a 40-byte node
+// each time), and an edge is erased or stepped from by its index, without comparisons.
+// Priorities are a hash of the index, so the shape is that of a random treap whatever the
+// input order: O(log n) expected per operation.
 // Internal to core/, not a public API.
 #pragma once
 #include <cstdint>
@@ -28,6 +29,12 @@ public:
     }
 
     const Less& less() const { return less_; }
+    // Room for the nodes below `size` (those added absent), for a caller whose indices grow
+    // as it goes rather than up to a known bound.
+    void grow(size_t size) {
+        if (size <= left_.size()) return;
+        left_.resize(size, kNone), right_.resize(size, kNone), up_.resize(size, kNone);
+    }
     Index first() const {
         Index x = root_;
         while (x != kNone && left_[x] != kNone) x = left_[x];
@@ -80,6 +87,20 @@ public:
     }
 
     bool contains(Index e) const { return up_[e] != kNone || root_ == e; }
+    bool empty() const { return root_ == kNone; }
+
+    // The first node in the order for which notBefore(x) holds, kNone if none: a descent from
+    // the root, asking at each node, for a predicate false on a prefix of the order and true
+    // after it (a lower bound; the caller counts its own questions).
+    template <typename NotBefore>
+    Index firstWhere(NotBefore notBefore) const {
+        Index found = kNone;
+        for (Index x = root_; x != kNone;) {
+            if (notBefore(x)) found = x, x = left_[x];
+            else x = right_[x];
+        }
+        return found;
+    }
 
     // Removes e (present): rotated down to a leaf, then cut off.
     void erase(Index e) {

@@ -83,8 +83,8 @@ struct Sweep {
 struct Slot {
     uint32_t tail;         // the edge held: tail -> next[tail]
     uint32_t left, right;  // the neighbouring slots along the line (kNone at the ends)
-    Point lo, hi;          // the edge's ends, lower first, at hand for the comparisons
-};
+    uint32_t up;           // 1 when the edge goes up from its tail: its ends' order
+};  // 16 bytes, the ends read through the points: ~500,000 cross the line on ortho-spiral 10^6
 
 struct Unordered {  // the treap's own order is never asked: slots go in beside a known one
     bool operator()(Index, Index) const { return false; }
@@ -145,8 +145,9 @@ public:
 
     // Opens slots for the edges a and b (a left of b) that start at p, just before slot
     // `right` (kNone: at the end of the line), without a comparison.
-    void open(uint32_t a, uint32_t b, Point p, Point hiA, Point hiB, uint32_t right) {
-        const uint32_t sa = take(a, p, hiA), sb = take(b, p, hiB);
+    // `aUp`: edge a goes up from its tail (else b does: they share their lower end).
+    void open(uint32_t a, uint32_t b, bool aUp, uint32_t right) {
+        const uint32_t sa = take(a, aUp), sb = take(b, !aUp);
         const uint32_t left = right == kNone ? last_ : slots_[right].left;
         if (tree_.empty()) tree_.insert(sa);
         else if (right != kNone) tree_.insertBeside(sa, right, false);
@@ -160,10 +161,10 @@ public:
 
     // The edge `starts`, from lo up to hi, takes the slot of the edge `ends`, which leaves the
     // line at lo.
-    void pass(uint32_t s, uint32_t ends, uint32_t starts, Point lo, Point hi) {
+    void pass(uint32_t s, uint32_t ends, uint32_t starts, bool up) {
         slotOf_[ends] = kNone, slotOf_[starts] = s;
         Slot& slot = slots_[s];
-        slot.tail = starts, slot.lo = lo, slot.hi = hi;
+        slot.tail = starts, slot.up = up;
     }
 
     void close(uint32_t s) {
@@ -181,14 +182,16 @@ private:
 
     int sideOf(uint32_t s, Point p) const {
         ++work().nodeVisits;
-        return sweep_.side(slots_[s].lo, slots_[s].hi, p);
+        const Slot& x = slots_[s];
+        const Point a = sweep_.point[x.tail], b = sweep_.point[sweep_.next[x.tail]];
+        return x.up ? sweep_.side(a, b, p) : sweep_.side(b, a, p);
     }
 
-    uint32_t take(uint32_t tail, Point lo, Point hi) {
+    uint32_t take(uint32_t tail, bool up) {
         uint32_t s = free_;
         if (s != kNone) free_ = slots_[s].right;
         else s = uint32_t(slots_.size()), slots_.emplace_back(), tree_.grow(slots_.capacity());
-        slots_[s].tail = tail, slots_[s].lo = lo, slots_[s].hi = hi;
+        slots_[s].tail = tail, slots_[s].up = up;
         slotOf_[tail] = s;
         return s;
     }
@@ -237,7 +240,7 @@ void sweepOrder(const Point* point, Up up, std::vector<uint32_t>& order,
 }  // namespace
 
 struct SagBanks::Scratch {
-    std::vector<uint32_t> prev, rankOf, order, label[2];
+    std::vector<uint32_t> prev, order, label[2];
     std::vector<SweepKey> keys;
     StatusMemory status;
 };
@@ -274,10 +277,9 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
     const uint32_t n = uint32_t(next.size());
     if (!scratch_) scratch_ = std::make_unique<Scratch>();
     Scratch& s = *scratch_;
-    std::vector<uint32_t>&prev = s.prev, &rankOf = s.rankOf, &order = s.order;
-    prev.resize(n), rankOf.assign(n, kNoEdge), order.resize(n);
+    std::vector<uint32_t>&prev = s.prev, &order = s.order;
+    prev.resize(n), order.resize(n);
     for (uint32_t i = 0; i < n; ++i) prev[next[i]] = i;
-    for (uint32_t r = 0; r < sagOfRank.size(); ++r) rankOf[sagOfRank[r]] = r;
     sweepOrder(point, up, order, s.keys);
 
     Sweep sweep{point, next, up};
@@ -287,6 +289,10 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
     auto meet = [&](uint32_t l, uint32_t r) {  // the edges of slots l and r (either may be kNone)
         return l != kNone && r != kNone && sweep.meet(active[l].tail, active[r].tail);
     };
+    // The sags are ranked in the sweep's order (the heights' below()), so the sweep meets them
+    // by rank: the next rank's sag is the only one it can meet next.
+    const uint32_t sags = uint32_t(sagOfRank.size());
+    uint32_t rank = 0;
     for (uint32_t p : order) {
         ++work().nodeVisits;
         const uint32_t in = prev[p], out = p;  // the edges in -> p and p -> next[p]
@@ -296,7 +302,7 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
             const uint32_t ends = inEnds ? in : out, starts = inEnds ? out : in;
             const uint32_t slot = active.slotOf(ends);
             if (slot == kNone) return false;
-            active.pass(slot, ends, starts, point[p], point[inEnds ? next[p] : in]);
+            active.pass(slot, ends, starts, inEnds);  // out goes up from p when in ends
             // The end of the edge that left, hence strictly between the neighbours (the
             // sweep has found no meeting so far): one orientation each clears the new edge.
             if (simple) continue;
@@ -332,9 +338,10 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
         const uint32_t right = active.search(point[p], near, onRight);  // first not left of p
         if (onRight == 0) return false;                                 // p on an edge
         const uint32_t left = right == kNone ? active.last() : active[right].left;
-        if (rankOf[p] != kNoEdge) {  // a sag: the edges just left and right of it
-            if (right != kNone) label[1][rankOf[p]] = active[right].tail;
-            if (left != kNone) label[0][rankOf[p]] = active[left].tail;
+        if (rank < sags && sagOfRank[rank] == p) {  // a sag: the edges just left and right of it
+            if (right != kNone) label[1][rank] = active[right].tail;
+            if (left != kNone) label[0][rank] = active[left].tail;
+            ++rank;
         }
         if (lone) continue;
         // Both edges start here; the one turning left of the other goes first. Collinear, they
@@ -344,17 +351,25 @@ bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,
         if (turn == 0) return false;
         const bool inLeft = turn > 0;
         const uint32_t a = inLeft ? in : out, b = inLeft ? out : in;
-        active.open(a, b, point[p], inLeft ? hiIn : hiOut, inLeft ? hiOut : hiIn,
-                    right);  // no comparison
+        active.open(a, b, !inLeft, right);  // no comparison; out goes up from its tail p
         if (simple) continue;
         if (left != kNone && sweep.meetFrom(active[left].tail, a, -1)) return false;
         if (right != kNone && sweep.meetFrom(active[right].tail, b, 1)) return false;
     }
+    if (rank != sags) return false;  // not the sweep's order: no lists rather than wrong ones
+    // Large loops give the scratch back (it would add to the run's peak); small ones keep it.
+    // The sweep's part goes before the lists are grouped, which would otherwise sit on it.
+    const bool large = n > kKeptScratchNodes;
+    if (large) {
+        std::vector<Slot>().swap(s.status.slots);
+        SweepTreeLinks& links = s.status.links;
+        for (auto* v : {&prev, &order, &s.status.slotOf, &links.left, &links.right, &links.up})
+            std::vector<uint32_t>().swap(*v);
+    }
     side_[0].group(label[0], n);
     side_[1].group(label[1], n);
     built_ = true;
-    // Large loops give the scratch back (it would add to the run's peak); small ones keep it.
-    if (n > kKeptScratchNodes) scratch_.reset();
+    if (large) scratch_.reset();
     return true;
 }
 

@@ -49,8 +49,10 @@ TEST(CliMemory, TriangulatePeakPerVertex) {
     // circle-jagged, grid-holes, t-junctions: the spill walks' one-node stretches, kept before
     // (131.7, 122.6, 129.7 bytes a vertex; 109, 98, 112 once dropped and the sag index read
     // the points through the sags' vertices).
+    // comb: the bank sweep's edges across the line, 48-byte slots that held both ends' points,
+    // were the peak (119.1 bytes a vertex; 91.0 with 16-byte slots reading the points).
     for (const char* family : {"circle-holes", "circle-smooth", "islands", "staircase",
-                               "circle-jagged", "grid-holes", "t-junctions"}) {
+                               "circle-jagged", "grid-holes", "t-junctions", "comb"}) {
         SCOPED_TRACE(family);
         const std::string in = (dir / "in.json").string();
         size_t n = 0;

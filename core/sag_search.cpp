@@ -73,21 +73,19 @@ uint32_t SagSearch::sagsBelow(NodeId n) {
 // The ranks the sought sag lies strictly between: `lo`, the last sag not above the water (the
 // water itself when it is a sag), and `hi`, the first sag not below Next.
 void SagSearch::bracket(NodeId water, NodeId nx, int64_t& lo, int64_t& hi) {
+    uint32_t a, b;                       // the sags below the water and below Next
     if (sags_.size() <= kCountedSags) {  // a few keys, counted in one pass each
         const std::vector<HeightKey>& keys = heightsOf_.keys();
         const HeightKey kw = heights_->key(water), kn = heights_->key(nx);
         const uint32_t count = uint32_t(keys.size());
-        uint32_t a = 0, b = 0;
+        a = b = 0;
         while (a < count && keys[a] < kw) ++a;
         while (b < count && keys[b] < kn) ++b;
-        lo = a < count && sags_[a] == water ? a : int64_t(a) - 1;
-        hi = b;
-        return;
+    } else {
+        a = sagsBelow(water), b = sagsBelow(nx);
     }
-    lo = int64_t(sagsBelow(water)) - 1;
-    if (lo + 1 < int64_t(sags_.size()) && sags_[size_t(lo + 1)] == water)
-        ++lo;  // the water is itself a sag
-    hi = sagsBelow(nx);
+    lo = a < sags_.size() && sags_[a] == water ? int64_t(a) : int64_t(a) - 1;  // water a sag?
+    hi = b;
 }
 
 // Sags are sorted, so the search starts at the water level and stops at Next.

@@ -2,14 +2,16 @@
 # Runs the peer benchmarks (issues 4, 13) and writes docs/BENCHMARKS.md, docs/bench.svg and the
 # README's bench block: every family of the generator at 10^3..10^6 (10^7 for BENCH_LARGE), the
 # floor, and the peers side by side in one run (CGAL, GLU, GEOS in the C++ driver; earcut through
-# its Python binding; earcut, libtess and poly2tri under Node.js).
+# its Python binding; earcut, libtess and poly2tri under Node.js); then `flood triangulate` end to
+# end at 10^6 and 10^7 (bench/end_to_end.sh).
 #   scripts/bench.sh                  everything: deps, build, inputs, earcut, peers, memory, report
 #   scripts/bench.sh --report-only    rewrite the report from the last results in build-bench/bench
 # Environment: BENCH_TIMEOUT (seconds per input and triangulator, default 30),
 #              BENCH_MAX_SIZE (largest generated size, default 10000000), BENCH_SEED (default 1),
 #              BENCH_LARGE (families also run at 10^7, comma-separated; default three cheap ones).
-# About 25 minutes on 2 cores. Builds into build-bench with -DFLOOD_BENCH=ON; the npm peers are
-# installed from bench/node/package-lock.json into build-bench/node by `npm ci`.
+# About 70 minutes on 2 cores; run it with nothing else on the machine. Builds into build-bench
+# with -DFLOOD_BENCH=ON; the npm peers are installed from bench/node/package-lock.json into
+# build-bench/node by `npm ci`.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$root/build-bench"
@@ -53,6 +55,7 @@ if [ "${1:-}" != "--report-only" ]; then
       fi
     done
   done
+  echo "== end to end"; "$root/bench/end_to_end.sh" "$data" "$build/flood" "$seed" "$((4 * timeout))"
   echo "== machine"
   { echo "cpu: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')";
     echo "cores: $(nproc)"; echo "kernel: $(uname -r)";

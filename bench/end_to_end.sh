@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# The command line end to end (issue 13): `flood triangulate FILE -o OUT` on each generated
+# family at 10^6 and above, as a user runs it (read JSON, validate, flood, exact check, write),
+# beside Flood's triangulate() alone timed by `flood-bench run`. Writes DATA/e2e.tsv:
+# wall and user seconds (the best of two runs) and the peak resident size, less that of the same
+# command on an 8-vertex polygon (the program and its libraries), as tests/cli_memory_test.cpp
+# measures it.
+#   bench/end_to_end.sh DATA FLOOD SEED TIMEOUT
+set -euo pipefail
+data="$1" flood="$2" seed="$3" timeout="$4"
+tmp="$data/e2e"
+mkdir -p "$tmp"
+
+# peak_run FILE -> "wall user peak_kb" of one run, or "failed"
+peak_run() {
+  if /usr/bin/time -f '%e %U %M' -o "$tmp/time.txt" timeout "$timeout" \
+      "$flood" triangulate "$1" -o "$tmp/out.json" >/dev/null 2>"$tmp/stderr.txt"; then
+    tail -1 "$tmp/time.txt"
+  else
+    echo failed
+  fi
+}
+
+"$flood" generate circle-smooth 8 -o "$tmp/tiny.json"
+base=$(peak_run "$tmp/tiny.json" | cut -d' ' -f3)
+printf 'name\tvertices\tstatus\twall_s\tuser_s\tpeak_kb\tbase_kb\n' > "$data/e2e.tsv"
+tail -n +2 "$data/manifest.tsv" | while IFS=$'\t' read -r name family size vertices holes valid path verdict; do
+  [ "$family" = fixture ] || [ "$size" -lt 1000000 ] && continue
+  "$flood" generate "$family" "$size" --seed "$seed" -o "$tmp/in.json"
+  best=""
+  for run in 1 2; do
+    r=$(peak_run "$tmp/in.json")
+    [ "$r" = failed ] && { best=failed; break; }
+    # The faster run's wall time and its own user time; the larger peak of the two.
+    if [ -z "$best" ]; then best="$r"; else
+      best=$(echo "$best $r" | awk '{ w = $1 < $4 ? $1 " " $2 : $4 " " $5; m = $3 > $6 ? $3 : $6; print w, m }')
+    fi
+  done
+  if [ "$best" = failed ]; then
+    printf '%s\t%s\tfailed\t0\t0\t0\t%s\n' "$name" "$vertices" "$base" >> "$data/e2e.tsv"
+  else
+    read -r wall user peak <<< "$best"
+    printf '%s\t%s\tok\t%s\t%s\t%s\t%s\n' "$name" "$vertices" "$wall" "$user" "$peak" "$base" >> "$data/e2e.tsv"
+  fi
+  rm -f "$tmp/in.json" "$tmp/out.json"
+done

@@ -241,6 +241,7 @@ def goals(D):
     return out
 
 
+STEPS = ["read", "validate", "flood", "check", "write"]  # `flood bench`'s steps of the command
 ISSUE_CIRCLE_HOLES_S = 3.5  # issue 13: `flood triangulate` on circle-holes 10^6 took 3.5 s end to end
 
 
@@ -580,7 +581,9 @@ def markdown(D, svg_name):
                  "of two runs (wall clock) beside `triangulate()` alone from the table above; *peak* is "
                  "GNU time's maximum resident size less that of the same command on an 8-vertex polygon "
                  "(the program and its libraries), as `tests/cli_memory_test.cpp` measures it. The check "
-                 "and the writing run on two threads, so user time can exceed wall time.\n\n")
+                 "and the writing run on two threads, so user time can exceed wall time. Where the time "
+                 "goes, at 10⁶: `flood bench FILE --repeat 1`, the CPU time of each step of the same "
+                 "command in one process (*flood* is the step's own run, not the table's median).\n\n")
         rows = []
         for n in D.inputs:
             r = D.e2e.get(n)
@@ -590,10 +593,12 @@ def markdown(D, svg_name):
             if not e:
                 rows.append([n, r["vertices"], r["status"], "–", fmt(D.nsv(n, "flood")), "–", "–"])
                 continue
+            st = dict(kv.split("=", 1) for kv in r.get("steps", "").split(";") if "=" in kv)
             rows.append([n, r["vertices"], fmt(e[0]), fmt(float(r["user_s"]) * 1e9 / int(r["vertices"])),
-                         fmt(D.nsv(n, "flood")), "%.1f" % e[1] if e[1] else "–", fmt(e[2])])
+                         fmt(D.nsv(n, "flood")), "%.1f" % e[1] if e[1] else "–", fmt(e[2])] +
+                        [fmt(float(st[k])) if k in st else "–" for k in STEPS])
         s.append(table(["input", "n", "command ns/v (wall)", "command ns/v (user)", "triangulate() ns/v",
-                        "command / triangulate()", "peak B/vertex"], rows))
+                        "command / triangulate()", "peak B/vertex"] + ["%s ns/v" % k for k in STEPS], rows))
     s.append("\n## Every result that is not a valid triangulation\n\n")
     rows = []
     for r in D.rows:

@@ -273,21 +273,27 @@ void SagBanks::clear() {
 
 void SagBanks::Side::group(const std::vector<uint32_t>& label, size_t edgeCount) {
     edges = edgeCount;
-    listed.assign((edges + 63) / 64, 0);
+    begin.assign(edges + 2, 0);
     for (uint32_t t : label)
-        if (t != kNoEdge) listed[t / 64] |= uint64_t(1) << (t % 64);
-    before.resize(listed.size());
-    uint32_t lists = 0;
-    for (size_t w = 0; w < listed.size(); ++w)
-        before[w] = lists, lists += uint32_t(__builtin_popcountll(listed[w]));
-    begin.assign(size_t(lists) + 2, 0);
-    for (uint32_t t : label)
-        if (t != kNoEdge) ++begin[list(t) + 2];
+        if (t != kNoEdge) ++begin[t + 2];
     for (size_t k = 2; k < begin.size(); ++k) begin[k] += begin[k - 1];
     ranks.resize(begin.back());
     for (uint32_t r = 0; r < label.size(); ++r)  // ranks ascending within each edge
-        if (label[r] != kNoEdge) ranks[begin[list(label[r]) + 1]++] = r;
+        if (label[r] != kNoEdge) ranks[begin[label[r] + 1]++] = r;
     begin.pop_back();
+    // Edge t's list is begin[t] .. begin[t + 1]: the edges with one keep their begin, in place.
+    listed.assign((edges + 63) / 64, 0);
+    before.resize(listed.size());
+    uint32_t lists = 0;
+    for (uint32_t t = 0; t < edges; ++t) {
+        if (t % 64 == 0) before[t / 64] = lists;
+        if (begin[t + 1] == begin[t]) continue;
+        listed[t / 64] |= uint64_t(1) << (t % 64);
+        begin[lists++] = begin[t];
+    }
+    begin[lists] = begin[edges];
+    begin.resize(size_t(lists) + 1);
+    if (edges > kKeptScratchNodes) begin.shrink_to_fit();  // the array over every edge goes
 }
 
 bool SagBanks::build(const Point* point, const std::vector<uint32_t>& next,

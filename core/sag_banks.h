@@ -64,8 +64,13 @@ private:
             return t / 64 < listed.size() && (listed[t / 64] >> (t % 64) & 1) != 0;
         }
         uint32_t list(uint32_t t) const {  // for has(t)
-            const uint64_t below = listed[t / 64] & ((uint64_t(1) << (t % 64)) - 1);
-            return before[t / 64] + uint32_t(__builtin_popcountll(below));
+            return before[t / 64] + bitsSet(listed[t / 64] & ((uint64_t(1) << (t % 64)) - 1));
+        }
+        // Inline: without a popcount instruction in the target, the builtin is a library call.
+        static uint32_t bitsSet(uint64_t x) {
+            x -= (x >> 1) & 0x5555555555555555u;
+            x = (x & 0x3333333333333333u) + ((x >> 2) & 0x3333333333333333u);
+            return uint32_t((((x + (x >> 4)) & 0x0f0f0f0f0f0f0f0fu) * 0x0101010101010101u) >> 56);
         }
     };
     std::array<Side, 2> side_;  // 0: rays to the left, 1: to the right

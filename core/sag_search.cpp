@@ -49,10 +49,7 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
     initialStep_.resize(initialNodes_);
     for (uint32_t i = 0; i < initialNodes_; ++i) {
         const uint32_t next = nodes[partFirstNode_ + i].next - partFirstNode_;
-        const Step step = next == i + 1   ? kAfter
-                          : next + 1 == i ? kBefore
-                          : next == i     ? kItself
-                                          : kListed;
+        const int8_t step = next == i + 1 ? 1 : next + 1 == i ? -1 : next == i ? 0 : kListed;
         initialStep_[i] = step;
         if (step == kListed) initialListed_.push_back({i, next});
     }
@@ -60,15 +57,11 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
 
 // The initial link of the part's node t (local ids).
 uint32_t SagSearch::initialNext(uint32_t t) const {
-    switch (initialStep_[t]) {
-        case kAfter: return t + 1;
-        case kBefore: return t - 1;
-        case kItself: return t;
-        default:
-            return std::lower_bound(initialListed_.begin(), initialListed_.end(),
-                                    std::pair<uint32_t, uint32_t>(t, 0))
-                ->second;
-    }
+    const int8_t step = initialStep_[t];
+    if (step != kListed) return t + uint32_t(int32_t(step));
+    return std::lower_bound(initialListed_.begin(), initialListed_.end(),
+                            std::pair<uint32_t, uint32_t>(t, 0))
+        ->second;
 }
 
 // The search, its work counted as the sag search's.

@@ -71,8 +71,8 @@ private:
     // node after or before (a ring as given, or reversed) or to the node itself (a point hole),
     // a byte says which; the others (a ring's closing edge) are listed by tail, ascending. A
     // byte a node rather than 4: the links are held to the end of the run (steiner's peak).
-    enum Step : uint8_t { kAfter, kBefore, kItself, kListed };
-    std::vector<uint8_t> initialStep_;
+    static constexpr int8_t kListed = 2;  // else the step to the next node: +1, -1 or 0
+    std::vector<int8_t> initialStep_;
     std::vector<std::pair<uint32_t, uint32_t>> initialListed_;  // (tail, next)
     std::vector<uint32_t> initialNext_;  // buildBanks()'s, kept: a warm build allocates nothing
     std::vector<uint32_t> sagOfRank_;    // buildBanks()'s, kept: a warm build allocates nothing

@@ -241,9 +241,12 @@ void sweepOrder(const Point* point, Up up, std::vector<uint32_t>& order,
     for (uint32_t i = 0, j; i < n; i = j) {  // each run of one height, along the level line
         const double h = alongX ? point[order[i]].x : point[order[i]].y;
         for (j = i + 1; j < n && (alongX ? point[order[j]].x : point[order[j]].y) == h;) ++j;
-        if (j - i > 1)
+        if (j - i == 2) {  // the usual tie: a horizontal edge's ends
+            if (across(order[i + 1]) < across(order[i])) std::swap(order[i], order[i + 1]);
+        } else if (j - i > 2) {
             std::sort(order.begin() + i, order.begin() + j,
                       [&](uint32_t a, uint32_t b) { return across(a) < across(b); });
+        }
     }
 }
 

@@ -227,7 +227,7 @@ private:
         sags.insert(sags.end(), points.begin(), points.end());
         sags_.index(heights_, partFirstNode_, poly_.rings[poly_.parts[part_].firstRing].first,
                     loops.touching, poly_.pointsDistinct);
-        walked_.clear(partFirstNode_);
+        walked_.clear(partFirstNode_, nodes_.capacity() - size_t(partFirstNode_));
         return lowest;
     }
 

@@ -49,10 +49,29 @@ public:
     int64_t lowest(bool toLeft, uint32_t tail, int64_t lo, int64_t hi, Used&& used) const;
 
 private:
-    // Per side, the ranks labelled with each edge, ascending: ranks_[begin_[t] .. begin_[t+1]).
+    // Per side, the ranks labelled with each edge, ascending. Most edges have none (a bank
+    // sees a sag only across open water), so only the edges with some get a list: edge t has
+    // one when bit t of `listed` is set, the list(t)-th, ranks[begin[k] .. begin[k+1]), list(t)
+    // counted by the bits below it. An array over every edge, 4 bytes an edge a side, was held
+    // to the end of the run (steiner's peak).
     struct Side {
+        std::vector<uint64_t> listed;  // bit t: edge t has a list
+        std::vector<uint32_t> before;  // per word of `listed`: the bits set in the words before
         std::vector<uint32_t> begin, ranks;
+        size_t edges = 0;
         void group(const std::vector<uint32_t>& label, size_t edges);
+        bool has(uint32_t t) const {
+            return t / 64 < listed.size() && (listed[t / 64] >> (t % 64) & 1) != 0;
+        }
+        uint32_t list(uint32_t t) const {  // for has(t)
+            return before[t / 64] + bitsSet(listed[t / 64] & ((uint64_t(1) << (t % 64)) - 1));
+        }
+        // Inline: without a popcount instruction in the target, the builtin is a library call.
+        static uint32_t bitsSet(uint64_t x) {
+            x -= (x >> 1) & 0x5555555555555555u;
+            x = (x & 0x3333333333333333u) + ((x >> 2) & 0x3333333333333333u);
+            return uint32_t((((x + (x >> 4)) & 0x0f0f0f0f0f0f0f0fu) * 0x0101010101010101u) >> 56);
+        }
     };
     std::array<Side, 2> side_;  // 0: rays to the left, 1: to the right
     bool built_ = false;
@@ -65,8 +84,13 @@ private:
 template <class Used>
 int64_t SagBanks::lowest(bool toLeft, uint32_t tail, int64_t lo, int64_t hi, Used&& used) const {
     const Side& s = side_[toLeft ? 0 : 1];
-    if (tail + 1 >= s.begin.size()) return -1;
-    auto first = s.ranks.begin() + s.begin[tail], last = s.ranks.begin() + s.begin[tail + 1];
+    if (tail >= s.edges) return -1;
+    if (!s.has(tail)) {  // an empty list, counted as before
+        ++work().nodeVisits;
+        return -1;
+    }
+    const uint32_t k = s.list(tail);
+    auto first = s.ranks.begin() + s.begin[k], last = s.ranks.begin() + s.begin[k + 1];
     // The first rank above lo: a binary search (short: a bank sees few sags).
     while (first != last) {
         auto mid = first + (last - first) / 2;
@@ -74,8 +98,7 @@ int64_t SagBanks::lowest(bool toLeft, uint32_t tail, int64_t lo, int64_t hi, Use
         else last = mid;
     }
     ++work().nodeVisits;
-    for (last = s.ranks.begin() + s.begin[tail + 1]; first != last && int64_t(*first) < hi;
-         ++first) {
+    for (last = s.ranks.begin() + s.begin[k + 1]; first != last && int64_t(*first) < hi; ++first) {
         ++work().nodeVisits;
         if (!used(*first)) return *first;
     }

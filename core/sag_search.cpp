@@ -43,11 +43,25 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
     treeWork_ = 0;
     partFirstVertex_ = partFirstVertex;
     initialNodes_ = nodes.end() - partFirstNode_;
-    initialNext_.clear();
+    initialStep_.clear();
+    initialListed_.clear();
     if (banksTried_) return;
-    initialNext_.resize(initialNodes_);
-    for (uint32_t i = 0; i < initialNodes_; ++i)
-        initialNext_[i] = nodes[partFirstNode_ + i].next - partFirstNode_;
+    initialStep_.resize(initialNodes_);
+    for (uint32_t i = 0; i < initialNodes_; ++i) {
+        const uint32_t next = nodes[partFirstNode_ + i].next - partFirstNode_;
+        const int8_t step = next == i + 1 ? 1 : next + 1 == i ? -1 : next == i ? 0 : kListed;
+        initialStep_[i] = step;
+        if (step == kListed) initialListed_.push_back({i, next});
+    }
+}
+
+// The initial link of the part's node t (local ids).
+uint32_t SagSearch::initialNext(uint32_t t) const {
+    const int8_t step = initialStep_[t];
+    if (step != kListed) return t + uint32_t(int32_t(step));
+    return std::lower_bound(initialListed_.begin(), initialListed_.end(),
+                            std::pair<uint32_t, uint32_t>(t, 0))
+        ->second;
 }
 
 // The search, its work counted as the sag search's.
@@ -168,10 +182,16 @@ void SagSearch::buildBanks() {
     std::vector<uint32_t>& sagOfRank = sagOfRank_;
     sagOfRank.resize(sags_.size());
     for (size_t k = 0; k < sags_.size(); ++k) sagOfRank[k] = sags_[k] - partFirstNode_;
-    if (!banks_.build(point, initialNext_, sagOfRank_,
-                      heights_->general() ? heights_->up() : Up::PlusY, simple_))
+    std::vector<uint32_t>& next = initialNext_;
+    next.resize(initialNodes_);
+    for (uint32_t i = 0; i < initialNodes_; ++i)
+        next[i] = initialStep_[i] == kListed ? 0 : initialNext(i);
+    for (const auto& [tail, to] : initialListed_) next[tail] = to;
+    if (!banks_.build(point, next, sagOfRank_, heights_->general() ? heights_->up() : Up::PlusY,
+                      simple_))
         banks_.clear();          // crossing edges
     giveBackIfLarge(sagOfRank);  // read by the build alone
+    giveBackIfLarge(next);
 }
 
 // The input edge from node a to node b, as its tail's initial node; kNone when a -> b is not
@@ -179,7 +199,7 @@ void SagSearch::buildBanks() {
 uint32_t SagSearch::inputEdge(NodeId a, NodeId b) const {
     const Nodes& nodes = heights_->nodes();
     uint32_t t = nodes[a].v - partFirstVertex_;
-    if (t >= initialNodes_ || initialNext_[t] + partFirstVertex_ != nodes[b].v) return kNone;
+    if (t >= initialNodes_ || initialNext(t) + partFirstVertex_ != nodes[b].v) return kNone;
     return t;
 }
 

@@ -5,6 +5,7 @@
 // Internal to core/, not a public API.
 #pragma once
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "events.h"
@@ -42,6 +43,7 @@ private:
     NodeId use(int64_t rank);
     void buildBanks();
     uint32_t inputEdge(NodeId a, NodeId b) const;
+    uint32_t initialNext(uint32_t t) const;
     int64_t bankCandidate(NodeId left, NodeId right, int64_t lo, int64_t hi) const;
 
     static constexpr int64_t kProbes = 4;  // ranks tested before the sag tree
@@ -65,7 +67,14 @@ private:
     uint64_t treeWork_ = 0;  // box visits of the plane index in this part
     NodeId partFirstNode_ = NodeId(0);
     uint32_t partFirstVertex_ = 0, initialNodes_ = 0;
-    std::vector<uint32_t> initialNext_;  // per initial node of the part (local ids): next
+    // The part's initial links (local ids), for inputEdge() and the bank sweep: most go to the
+    // node after or before (a ring as given, or reversed) or to the node itself (a point hole),
+    // a byte says which; the others (a ring's closing edge) are listed by tail, ascending. A
+    // byte a node rather than 4: the links are held to the end of the run (steiner's peak).
+    static constexpr int8_t kListed = 2;  // else the step to the next node: +1, -1 or 0
+    std::vector<int8_t> initialStep_;
+    std::vector<std::pair<uint32_t, uint32_t>> initialListed_;  // (tail, next)
+    std::vector<uint32_t> initialNext_;  // buildBanks()'s, kept: a warm build allocates nothing
     std::vector<uint32_t> sagOfRank_;    // buildBanks()'s, kept: a warm build allocates nothing
     uint32_t unused_ = 0;                // sags of the part not bridged yet
 };

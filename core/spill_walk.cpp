@@ -20,6 +20,7 @@ Landing walkDown(const Heights& h, const std::vector<GorgeRec>& gorges, Stretche
     const int dir = goPrev ? 0 : 1;
     const std::vector<Stretches::Position>& pos = walked.positions;
     size_t run = pos.size();  // first position of the stretch this walk records
+    int32_t recorded = 0;     // its count's change so far, once it has a position
     for (uint32_t guard = 0; guard <= partNodes; ++guard, x = goPrev ? prev(x) : next(x)) {
         ++work().nodeVisits;
         const Ends& ends = nodes.ends(x);
@@ -40,9 +41,9 @@ Landing walkDown(const Heights& h, const std::vector<GorgeRec>& gorges, Stretche
                           orient(h.at(prev(x)), h.at(x), h.at(next(x))) > 0;
         bool sag = minimum && !convexHere, sensitive = convexHere;  // ceilings and bottoms
         if (fresh) {
-            int32_t before = pos.size() > run ? pos.back().drops + pos.back().delta : 0;
-            int8_t delta = sag ? 1 : sensitive ? -1 : 0;
-            walked.record(dir, {x, uint32_t(walked.stretches.size()), before, delta, sensitive},
+            int32_t before = pos.size() > run ? recorded : 0;
+            recorded = before + (sag ? 1 : sensitive ? -1 : 0);
+            walked.record(dir, {x, uint32_t(walked.stretches.size()), before}, sensitive,
                           nodes.end());
         } else {
             walked.close(run);

@@ -6,16 +6,19 @@
 
 namespace flood {
 
-void Stretches::clear(NodeId firstNode) {
+void Stretches::clear(NodeId firstNode, size_t nodes) {
     positions.clear();
+    // A node is in one stretch a direction at most: room made at once, never moved (a move
+    // holds the old and the new array together). Pages never written cost no memory.
+    if (positions.capacity() < 2 * nodes) positions.reserve(2 * nodes);
     stretches.clear();
     tree_.clear();
     for (auto& at : at_) at.clear();  // grown by the first spill walk (record())
     first_ = firstNode;
 }
 
-void Stretches::record(int dir, const Position& p, NodeId end) {
-    dir_ = dir, end_ = end;
+void Stretches::record(int dir, const Position& p, bool sensitive, NodeId end) {
+    dir_ = dir, end_ = end, lastSensitive_ = sensitive;
     positions.push_back(p);
 }
 
@@ -37,8 +40,11 @@ void Stretches::close(size_t& run) {
     const uint32_t tree = uint32_t(tree_.size());
     tree_.resize(tree + 2 * size_t(leaves), INT32_MAX);
     int32_t* t = tree_.data() + tree;
-    for (uint32_t k = start; k < end; ++k)
-        if (positions[k].sensitive) t[leaves + k - start] = positions[k].drops;
+    for (uint32_t k = start; k < end; ++k) {  // a bottom or ceiling takes one off the count
+        const bool sensitive =
+            k + 1 < end ? positions[k + 1].drops == positions[k].drops - 1 : lastSensitive_;
+        if (sensitive) t[leaves + k - start] = positions[k].drops;
+    }
     for (uint32_t i = leaves; i-- > 1;) t[i] = std::min(t[2 * i], t[2 * i + 1]);
     work().nodeVisits += 2 * size_t(leaves);
     stretches.push_back({start, end, tree, leaves});

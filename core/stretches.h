@@ -20,9 +20,8 @@ public:
         NodeId node;
         uint32_t stretch;  // its Stretch in stretches
         int32_t drops;     // the count's change from the stretch's start to just before here
-        int8_t delta;      // +1 a sag, -1 a bottom or ceiling (when the count is positive)
-        bool sensitive;    // a convex bottom or ceiling: where a zero count matters
-    };
+    };  // 12 bytes: a convex bottom or ceiling (where a zero count matters) is the one position
+        // whose next position's count is one less, so no flag says it (the last one: record())
     struct Stretch {
         uint32_t start, end;    // its positions in positions
         uint32_t tree, leaves;  // its tree in tree_ (firstAtMost()), leaves a power of two
@@ -30,16 +29,17 @@ public:
     std::vector<Position> positions;  // of every stretch recorded, stretch after stretch
     std::vector<Stretch> stretches;
 
-    // For a part whose nodes are numbered from firstNode on.
-    void clear(NodeId firstNode);
+    // For a part whose nodes are numbered from firstNode on, `nodes` of them at most.
+    void clear(NodeId firstNode, size_t nodes);
     // The position of node n in the stretches walked in direction dir (0 prev-wards, 1
     // next-wards); kNone if not recorded.
     uint32_t recordedAt(int dir, NodeId n) const {
         const std::vector<uint32_t>& v = at_[dir];
         return n - first_ < v.size() ? v[n - first_] : kNone;
     }
-    // Appends p to the stretch being recorded; `end`: the id the next node will get.
-    void record(int dir, const Position& p, NodeId end);
+    // Appends p to the stretch being recorded; `sensitive`: p is a convex bottom or ceiling;
+    // `end`: the id the next node will get.
+    void record(int dir, const Position& p, bool sensitive, NodeId end);
     // Ends the stretch a walk is recording (positions from `run` on) and builds its tree. A
     // stretch of one node is dropped: no walk could cross anything of it (its node is then
     // recorded again by a later walk), and on jagged outlines most stretches are such.
@@ -60,8 +60,9 @@ private:
     std::vector<int32_t> tree_;
     std::vector<uint32_t> at_[2];  // per node of the part, per direction: its position
     NodeId first_{0};
-    int dir_ = 0;    // of the stretch being recorded
-    NodeId end_{0};  // record()'s last `end`
+    int dir_ = 0;                 // of the stretch being recorded
+    NodeId end_{0};               // record()'s last `end`
+    bool lastSensitive_ = false;  // record()'s last `sensitive`
 };
 
 }  // namespace flood

@@ -51,7 +51,7 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
         const uint32_t next = nodes[partFirstNode_ + i].next - partFirstNode_;
         const int8_t step = next == i + 1 ? 1 : next + 1 == i ? -1 : next == i ? 0 : kListed;
         initialStep_[i] = step;
-        if (step == kListed) initialListed_.push_back({i, next});
+        if (step == kListed) initialListed_.emplace_back(i, next);
     }
 }
 

@@ -674,6 +674,9 @@ def readme_summary(D, svg_rel):
           next((l for l in D.machine if l.startswith("load")), "load –")), summary_table(D), "\n"]
     for t, detail, ok in targets(D):
         s.append("- %s: **%s**.\n" % (t, "met" if ok else "not met"))
+    s.append("\nBy how much each goal is missed, and where the time goes: the Targets table of "
+             "[docs/BENCHMARKS.md](docs/BENCHMARKS.md), its end-to-end section, and its kept section on "
+             "how the time grows with N.\n")
     s.append("\n![benchmark plot](%s)\n" % svg_rel)
     return "".join(s)
 

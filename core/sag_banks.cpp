@@ -270,8 +270,8 @@ SagBanks& SagBanks::operator=(SagBanks&&) noexcept = default;
 
 void SagBanks::clear() {
     built_ = false;
-    for (Side& s : side_) s.listed.clear(), s.before.clear(), s.begin.clear(), s.ranks.clear();
-    for (Side& s : side_) s.edges = 0;
+    for (Side& s : side_)  // capacity kept: a warm build allocates nothing
+        s.listed.clear(), s.before.clear(), s.begin.clear(), s.ranks.clear(), s.edges = 0;
 }
 
 void SagBanks::Side::group(const std::vector<uint32_t>& label, size_t edgeCount) {

@@ -184,9 +184,7 @@ void SagSearch::buildBanks() {
     for (size_t k = 0; k < sags_.size(); ++k) sagOfRank[k] = sags_[k] - partFirstNode_;
     std::vector<uint32_t>& next = initialNext_;
     next.resize(initialNodes_);
-    for (uint32_t i = 0; i < initialNodes_; ++i)
-        next[i] = initialStep_[i] == kListed ? 0 : initialNext(i);
-    for (const auto& [tail, to] : initialListed_) next[tail] = to;
+    for (uint32_t i = 0; i < initialNodes_; ++i) next[i] = initialNext(i);
     if (!banks_.build(point, next, sagOfRank_, heights_->general() ? heights_->up() : Up::PlusY,
                       simple_))
         banks_.clear();          // crossing edges

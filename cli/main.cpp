@@ -11,6 +11,7 @@
 //   Exit codes are flood::Status values. "-" means stdin for input, stdout for output.
 // Outputs are written whole or not at all (core/output.h; a failed write exits 8).
 #include <malloc.h>
+#include <unistd.h>
 
 #include <CLI/CLI.hpp>
 #include <algorithm>
@@ -334,9 +335,11 @@ int cmdGenerate(const std::string& family, size_t size, uint64_t seed, const std
     return code(o.commit());
 }
 
-// Shrinks a failing polygon (validation skipped; see core/shrink.h) and writes the result.
+// Shrinks a failing polygon (validation skipped; see core/shrink.h) and writes the repro: a
+// GeoJSON Feature that says where it came from. It is written only once its bytes, read back
+// as the user will read them, fail the same way; a file is read back from disk after writing.
 int cmdShrink(const std::string& in, const std::string& out, const std::string& up,
-              unsigned timeout, bool slipping) {
+              unsigned timeout, bool slipping, bool quiet) {
     Polygon polygon;
     Status s = prepare(in, polygon, false);
     if (s != Status::Ok) return code(s);
@@ -344,7 +347,21 @@ int cmdShrink(const std::string& in, const std::string& out, const std::string& 
     o.flood = makeOptions(up);
     o.timeoutSeconds = timeout;
     o.slipping = slipping;
+    // Progress on a terminal, a line rewritten at most five times a second.
+    const bool progress = !quiet && isatty(STDERR_FILENO);
+    const auto t0 = std::chrono::steady_clock::now();
+    auto shown = t0;
+    if (progress)
+        o.onTry = [&](size_t tries, size_t vertices) {
+            auto now = std::chrono::steady_clock::now();
+            if (now - shown < std::chrono::milliseconds(200)) return true;
+            shown = now;
+            std::fprintf(stderr, "\rshrink: %zu tries, %zu vertices, %.1f s\033[K", tries, vertices,
+                         std::chrono::duration<double>(now - t0).count());
+            return true;
+        };
     ShrinkResult r = shrink(polygon, o);
+    if (progress) std::fprintf(stderr, "\r\033[K");
     if (r.failure.kind == Failure::Kind::None && slipping) {
         std::cerr << "error: nothing to shrink: " << in
                   << " is valid, or the unvalidated verification catches it\n";
@@ -358,14 +375,37 @@ int cmdShrink(const std::string& in, const std::string& out, const std::string& 
     std::string kind = failureKindName(r.failure.kind);
     if (r.failure.kind == Failure::Kind::Forbidden)
         kind += std::string(" ") + forbiddenName(r.failure.reason);
-    std::cerr << "shrink: " << kind << (r.inputValid ? " (input valid, kept valid)" : "") << ": "
-              << polygon.vertices.size() << " vertices in " << polygon.rings.size() << " rings -> "
-              << r.polygon.vertices.size() << " vertices in " << r.polygon.rings.size()
-              << " rings (" << r.tries << " runs)\n";
-    if (!r.failure.message.empty()) std::cerr << "shrink: " << r.failure.message << "\n";
+    if (!r.reproduces) {
+        std::cerr << "error: " << in << " fails (" << kind
+                  << "), but not once written and read back: no repro written\n";
+        return code(Status::Internal);
+    }
+    // The direction only when it is not the default, so the command shown stays short.
+    ReproSource source{in, selection.feature >= 0 ? std::to_string(selection.feature) : "",
+                       o.flood.up == Up::PlusY ? "" : upName(o.flood.up), out};
+    const std::string text = reproJson(polygon, r, source);
+    if (!quiet) {
+        std::cerr << "shrink: " << kind << (r.inputValid ? " (input valid, kept valid)" : "")
+                  << ": " << polygon.vertices.size() << " vertices in " << polygon.rings.size()
+                  << " rings -> " << r.polygon.vertices.size() << " vertices in "
+                  << r.polygon.rings.size() << " rings (" << r.tries << " runs)\n";
+        if (!r.failure.message.empty()) std::cerr << "shrink: " << r.failure.message << "\n";
+    }
     Output file(out);
-    writePolygonJson(file.stream(), r.polygon);
-    return code(file.commit());
+    file.stream() << text;
+    Status written = file.commit();
+    if (written != Status::Ok) return code(written);
+    // Checked the way its user reads it: the file itself when there is one.
+    std::string back = text;
+    if (out != "-" && !readInputFile(out, back, kDefaultMaxInputBytes, "a polygon").ok())
+        back.clear();
+    if (!classifyText(back, o, r.inputValid).sameClass(r.failure)) {
+        std::cerr << "error: " << out << ": the repro written does not fail as " << kind
+                  << " when read back\n";
+        return code(Status::Internal);
+    }
+    if (!quiet) std::cerr << "shrink: reproduce with: " << reproduceCommand(r, source) << "\n";
+    return code(Status::Ok);
 }
 
 // CPU time of this thread, in nanoseconds: steadier than wall time on a loaded machine.
@@ -574,6 +614,8 @@ int run(int argc, char** argv) {
                     "Output file for the minimal polygon (- for stdout, the default)");
     shr->add_option("--timeout", timeout, "Seconds before a run counts as a hang (default 10)")
         ->check(CLI::Range(1u, 3600u));
+    bool quiet = false;
+    shr->add_flag("-q,--quiet", quiet, "No progress line and no summary on stderr (errors only)");
     shr->add_flag("--slipping", slipping,
                   "Shrink an invalid polygon that the unvalidated verification (verify "
                   "--no-validate) passes, keeping it so (docs/ALGORITHM.md §7)");
@@ -664,7 +706,7 @@ int run(int argc, char** argv) {
         if (trace->parsed()) return cmdTrace(in, out, up, !noValidate, !noExactCheck);
         if (tr->parsed()) return cmdTranscript(in, narrate, up, !noValidate);
         if (gen->parsed()) return cmdGenerate(family, size, seed, out);
-        if (shr->parsed()) return cmdShrink(in, out, up, timeout, slipping);
+        if (shr->parsed()) return cmdShrink(in, out, up, timeout, slipping, quiet);
         if (ver->parsed()) return cmdVerify(in, up, !noValidate);
         if (bench->parsed()) return cmdBench(in, repeat, up);
         if (chk->parsed()) {

@@ -11,7 +11,9 @@
 #include <csignal>
 #include <cstdlib>
 #include <cstring>
+#include <nlohmann/json.hpp>
 #include <ostream>
+#include <sstream>
 
 #include "checker.h"
 #include "io.h"
@@ -118,9 +120,18 @@ Failure classifyInChild(const Polygon& polygon, const ShrinkOptions& o) {
     return f;
 }
 
+void writeRings(std::ostream& out, const Polygon& p, const Part& part);
+
 // [SECTION] the polygon as editable rings -------------------------------------------------
 
-using Rings = std::vector<std::vector<Point>>;
+// A vertex and its index in the input, so the repro can say which input vertices remain.
+struct Vertex {
+    Point p;
+    Index origin = kNone;
+    bool operator==(const Vertex& o) const { return p == o.p && origin == o.origin; }
+    bool operator!=(const Vertex& o) const { return !(*this == o); }
+};
+using Rings = std::vector<std::vector<Vertex>>;
 using Parts = std::vector<Rings>;
 
 Parts toParts(const Polygon& p) {
@@ -129,18 +140,27 @@ Parts toParts(const Polygon& p) {
         Rings rings;
         for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) {
             const Ring& ring = p.rings[r];
-            rings.emplace_back(p.vertices.begin() + ring.first,
-                               p.vertices.begin() + ring.first + ring.count);
+            auto& out = rings.emplace_back();
+            for (Index v = ring.first; v < ring.first + ring.count; ++v)
+                out.push_back({p.vertices[v], v});
         }
         parts.push_back(std::move(rings));
     }
     return parts;
 }
 
-Polygon toPolygon(const Parts& parts) {
+Polygon toPolygon(const Parts& parts, std::vector<Index>* origin = nullptr) {
     Polygon p;
+    std::vector<Point> pts;
     for (const Rings& rings : parts)
-        for (size_t r = 0; r < rings.size(); ++r) p.addRing(rings[r], r == 0);
+        for (size_t r = 0; r < rings.size(); ++r) {
+            pts.clear();
+            for (const Vertex& v : rings[r]) {
+                pts.push_back(v.p);
+                if (origin) origin->push_back(v.origin);
+            }
+            p.addRing(pts, r == 0);
+        }
     return p;
 }
 
@@ -152,6 +172,50 @@ double roundBits(double x, int bits) {
     return std::ldexp(std::nearbyint(std::ldexp(x, bits - e)), e - bits);
 }
 
+// [SECTION] the repro as the user reads it back --------------------------------------------
+
+// The GeoJSON geometry of `p`: a Polygon for one part, a MultiPolygon for several.
+std::string geometryJson(const Polygon& p) {
+    std::ostringstream out;
+    out << (p.parts.size() == 1 ? "{\"type\":\"Polygon\",\"coordinates\":"
+                                : "{\"type\":\"MultiPolygon\",\"coordinates\":[");
+    for (size_t i = 0; i < p.parts.size(); ++i) {
+        if (i) out << ",\n";
+        writeRings(out, p, p.parts[i]);
+    }
+    out << (p.parts.size() == 1 ? "}" : "]}");
+    return out.str();
+}
+
+bool sameGeometry(const Polygon& a, const Polygon& b) {
+    if (a.vertices != b.vertices || a.rings.size() != b.rings.size() ||
+        a.parts.size() != b.parts.size())
+        return false;
+    for (size_t i = 0; i < a.rings.size(); ++i)
+        if (a.rings[i].first != b.rings[i].first || a.rings[i].count != b.rings[i].count)
+            return false;
+    for (size_t i = 0; i < a.parts.size(); ++i)
+        if (a.parts[i].firstRing != b.parts[i].firstRing ||
+            a.parts[i].ringCount != b.parts[i].ringCount)
+            return false;
+    return true;
+}
+
+// What `flood triangulate` does between reading and flooding: validate (which records the
+// T-junctions), or with --no-validate search for them alone. The slipping mode prepares its
+// own (classifySlip). False, with the reason, when validation refuses the polygon.
+bool prepareAsRead(Polygon& p, const ShrinkOptions& o, bool validated, std::string& why) {
+    if (o.slipping) return true;
+    if (validated) {
+        Diagnostic d = validate(p, "repro");
+        why = d.message;
+        return d.ok();
+    }
+    p.splits.clear();
+    findTouches(p);
+    return true;
+}
+
 class Shrinker {
 public:
     Shrinker(const Polygon& input, const ShrinkOptions& o) : o_(o) {
@@ -161,6 +225,7 @@ public:
         result_.failure = test(checked);
         result_.polygon = checked;
         best_ = toParts(input);
+        for (Index v = 0; v < input.vertices.size(); ++v) result_.origin.push_back(v);
     }
 
     ShrinkResult run() {
@@ -172,7 +237,11 @@ public:
             progress |= removeVertices();
             progress |= reducePrecision();
         }
-        result_.polygon = toPolygon(best_);
+        result_.origin.clear();
+        result_.polygon = toPolygon(best_, &result_.origin);
+        // The final word: the repro's own bytes, read back, fail the same way.
+        Failure back = classifyText(geometryJson(result_.polygon), o_, result_.inputValid);
+        result_.reproduces = back.sameClass(result_.failure);
         return result_;
     }
 
@@ -182,17 +251,28 @@ private:
         return o_.fork ? classifyInChild(p, o_) : classifyHere(p, o_);
     }
 
-    // Keeps `candidate` if it fails the same way (and stays valid when the input was).
+    size_t bestVertices() const {
+        size_t n = 0;
+        for (const Rings& rings : best_)
+            for (const auto& ring : rings) n += ring.size();
+        return n;
+    }
+
+    // Keeps `candidate` if, written and read back, it fails the same way (and stays valid when
+    // the input was).
     bool accept(const Parts& candidate) {
         if (stopped()) return false;
-        if (o_.onTry && !o_.onTry(result_.tries)) {
+        if (o_.onTry && !o_.onTry(result_.tries, bestVertices())) {
             result_.cancelled = true;
             return false;
         }
         Polygon p = toPolygon(candidate);
         if (p.rings.empty()) return false;
-        if (result_.inputValid && !validate(p, "shrink").ok()) return false;
-        Failure f = test(p);
+        ReadResult back = parsePolygon(geometryJson(p), "candidate");
+        if (!back.diagnostic.ok() || !sameGeometry(back.polygon, p)) return false;
+        std::string why;
+        if (!prepareAsRead(back.polygon, o_, result_.inputValid, why)) return false;
+        Failure f = test(back.polygon);
         if (!f.sameClass(result_.failure)) return false;
         best_ = candidate;
         result_.failure = f;
@@ -250,7 +330,7 @@ private:
         Parts c = best_;
         for (Rings& rings : c)
             for (auto& ring : rings)
-                for (Point& p : ring) p = {f(p.x), f(p.y)};
+                for (Vertex& v : ring) v.p = {f(v.p.x), f(v.p.y)};
         return c;
     }
 
@@ -272,12 +352,12 @@ private:
         for (size_t pi = 0; pi < best_.size(); ++pi)
             for (size_t r = 0; r < best_[pi].size(); ++r)
                 for (size_t v = 0; v < best_[pi][r].size() && !stopped(); ++v) {
-                    Point q = best_[pi][r][v];
+                    Point q = best_[pi][r][v].p;
                     if (!std::isfinite(q.x) || !std::isfinite(q.y)) continue;
                     Point rq{std::nearbyint(q.x), std::nearbyint(q.y)};
                     if (rq == q) continue;
                     Parts c = best_;
-                    c[pi][r][v] = rq;
+                    c[pi][r][v].p = rq;
                     any |= accept(c);
                 }
         return any;
@@ -325,6 +405,63 @@ Failure classify(const Polygon& polygon, const ShrinkOptions& options) {
 
 ShrinkResult shrink(const Polygon& polygon, const ShrinkOptions& options) {
     return Shrinker(polygon, options).run();
+}
+
+Failure classifyText(std::string_view text, const ShrinkOptions& options, bool validated) {
+    Failure f;
+    ReadResult r = parsePolygon(text, "repro");
+    if (!r.diagnostic.ok()) {
+        f.message = r.diagnostic.message;
+        return f;
+    }
+    if (!prepareAsRead(r.polygon, options, validated, f.message)) return f;
+    return classify(r.polygon, options);
+}
+
+std::string reproduceCommand(const ShrinkResult& result, const ReproSource& source) {
+    const std::string up = source.up.empty() ? "" : " --up " + source.up;
+    const std::string out =
+        source.output.empty() || source.output == "-" ? "REPRO.json" : source.output;
+    if (result.failure.kind == Failure::Kind::Slips)
+        return "flood verify --no-validate" + up + " " + out;
+    return std::string("flood triangulate") + (result.inputValid ? "" : " --no-validate") + up +
+           " " + out;
+}
+
+std::string reproJson(const Polygon& input, const ShrinkResult& result, const ReproSource& source) {
+    using json = nlohmann::ordered_json;
+    const Polygon& p = result.polygon;
+    json props = json::object();
+    props["source"] = source.file;
+    if (!source.feature.empty()) props["feature"] = source.feature;
+    if (!source.up.empty()) props["up"] = source.up;
+    std::string kind = failureKindName(result.failure.kind);
+    props["failure"] = kind;
+    if (result.failure.kind == Failure::Kind::Forbidden)
+        props["reason"] = forbiddenName(result.failure.reason);
+    props["message"] = result.failure.message;
+    props["reproduce"] = reproduceCommand(result, source);
+    // The input's vertex indices that remain, ring by ring, and where they were.
+    json rings = json::array();
+    double box[4] = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (const Ring& ring : p.rings) {
+        json ids = json::array();
+        for (Index v = ring.first; v < ring.first + ring.count; ++v) {
+            if (v >= result.origin.size() || result.origin[v] >= input.vertices.size()) continue;
+            Index o = result.origin[v];
+            ids.push_back(o);
+            const Point q = input.vertices[o];
+            box[0] = std::min(box[0], q.x), box[1] = std::min(box[1], q.y);
+            box[2] = std::max(box[2], q.x), box[3] = std::max(box[3], q.y);
+        }
+        rings.push_back(std::move(ids));
+    }
+    props["source_vertices"] = std::move(rings);
+    if (box[0] <= box[2]) props["source_bbox"] = {box[0], box[1], box[2], box[3]};
+    std::string text = "{\"type\":\"Feature\",\"properties\":";
+    text += props.dump(-1, ' ', false, json::error_handler_t::replace);
+    text += ",\n\"geometry\":" + geometryJson(p) + "}\n";
+    return text;
 }
 
 void writePolygonJson(std::ostream& out, const Polygon& polygon) {

@@ -8,6 +8,11 @@
 // failure has the same class (and the same forbidden reason) as the original and, when the
 // original was valid per validate(), the candidate is still valid.
 //
+// A candidate is judged as the user will meet it: its bytes as written, read back by the same
+// reader and prepared as `flood triangulate` prepares it (validated, or with --no-validate the
+// T-junction search). A candidate the reader would change (two vertices made equal by rounding,
+// then dropped as a repeated point) is refused: the repair could remove the very failure.
+//
 // A second mode (ShrinkOptions::slipping) shrinks an input that slips through the paper's
 // verification unvalidated (§6's open conjecture): the kept candidates are those validate()
 // refuses while verify() — the polygon and its complement flooded and checked, T-junctions
@@ -16,6 +21,7 @@
 #include <functional>
 #include <iosfwd>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "events.h"
@@ -51,24 +57,53 @@ struct ShrinkOptions {
     // can plant a checker failure. Null in normal use.
     std::function<void(std::vector<Triangle>&)> corrupt;
     bool slipping = false;  // classify as Slips or None instead (see above)
-    // Called before each classification with the tries made so far; returning false stops
-    // the shrink there (the viewer's Cancel), with the smallest polygon found until then.
-    std::function<bool(size_t tries)> onTry;
+    // Called before each classification with the tries made so far and the vertex count of
+    // the smallest failing polygon found until then; returning false stops the shrink there
+    // (the viewer's Cancel, the CLI's progress line).
+    std::function<bool(size_t tries, size_t vertices)> onTry;
 };
 
 // Runs the machine (validation skipped) and the exact checker on `polygon`.
 Failure classify(const Polygon& polygon, const ShrinkOptions& options);
 
 struct ShrinkResult {
-    Polygon polygon;          // the smallest failing polygon found (the input if none smaller)
-    Failure failure;          // its failure (same class as the input's)
-    bool inputValid = false;  // validate() accepted the input, so every candidate was kept valid
-    size_t tries = 0;         // classifications made
-    bool cancelled = false;   // onTry returned false
+    Polygon polygon;            // the smallest failing polygon found (the input if none smaller)
+    Failure failure;            // its failure (same class as the input's)
+    bool inputValid = false;    // validate() accepted the input, so every candidate was kept valid
+    size_t tries = 0;           // classifications made
+    bool cancelled = false;     // onTry returned false
+    std::vector<Index> origin;  // for each vertex of `polygon`, its index in the input
+    // The written repro (writePolygonJson), read back, fails as `failure` says. Every kept
+    // candidate does by construction; false only when the input itself does not survive being
+    // written (nothing smaller was found and its own bytes read back differently).
+    bool reproduces = false;
 };
 
 // Shrinks a failing polygon. If `polygon` does not fail, returns it with Failure::Kind::None.
 ShrinkResult shrink(const Polygon& polygon, const ShrinkOptions& options);
+
+// Reads `text` as `flood triangulate` does (validated when `validated`, else with the
+// T-junction search of --no-validate) and classifies what it reads. Malformed or refused
+// input is Kind::None with the reader's or validation's message: it does not fail the same way.
+Failure classifyText(std::string_view text, const ShrinkOptions& options, bool validated);
+
+// Where a repro came from, written into it so the engineer can find the spot in the full face.
+struct ReproSource {
+    std::string file;     // the input as named ("-" for stdin, "" when unknown)
+    std::string feature;  // the feature of a dataset (its FID), "" for a whole file
+    std::string up;       // the flood direction (--up), "" for the default
+    std::string output;   // where the repro is written, for the command that shows it
+};
+
+// The command that shows the repro's failure, as the shrinker read it back: `flood triangulate`
+// (with --no-validate when the input was invalid), or `flood verify --no-validate` (slipping).
+std::string reproduceCommand(const ShrinkResult& result, const ReproSource& source);
+
+// The repro as `flood shrink` writes it: a GeoJSON Feature whose geometry is the shrunk polygon
+// and whose properties say where it came from (source file and feature, the input's vertex
+// indices that remain, ring by ring, and their bounding box in the input's coordinates), what
+// fails and the command that shows it. `input` is the polygon that was shrunk.
+std::string reproJson(const Polygon& input, const ShrinkResult& result, const ReproSource& source);
 
 // Writes a polygon as a bare ring array [[[x,y],...],...] (one part) or a GeoJSON
 // MultiPolygon (several parts), coordinates in shortest round-trip form, rings closed.

@@ -254,6 +254,28 @@ TEST(Cli, OutputNamingTheInputIsRefused) {
     fs::remove_all(d);
 }
 
+// A repro is what the user reads back: `flood shrink` on this face once wrote a ring whose
+// rounding made two vertices equal; the reader dropped one and the "repro" triangulated.
+TEST(Cli, ShrinkWritesAReproThatFailsTheSameWayWhenRun) {
+    fs::path d = scratch("repro");
+    fs::path out = d / "s.json";
+    RunResult r =
+        run("shrink " + src("polygons/tutorial/crossing-face.json") + " -o " + out.string());
+    ASSERT_EQ(r.code, 0) << r.out;
+    EXPECT_TRUE(has(r.out, "reproduce with: flood triangulate --no-validate " + out.string()))
+        << r.out;
+    RunResult again = run("triangulate --no-validate " + out.string());
+    EXPECT_EQ(again.code, 5) << again.out;
+    EXPECT_FALSE(has(again.out, "warning")) << again.out;  // nothing repaired on reading
+    EXPECT_TRUE(has(slurp(out), "\"source_vertices\":[[")) << slurp(out);
+    // -q: errors only.
+    RunResult quiet =
+        run("shrink -q " + src("polygons/tutorial/crossing-face.json") + " -o " + out.string());
+    EXPECT_EQ(quiet.code, 0);
+    EXPECT_EQ(quiet.out, "");
+    fs::remove_all(d);
+}
+
 // --- Input limits and clear messages ---------------------------------------------------------
 
 TEST(Cli, InputLimitsAndWhatTheInputIs) {

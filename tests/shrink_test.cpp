@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "generate.h"
 #include "shrink.h"
 #include "test_support.h"
+#include "touches.h"
 
 using namespace flood;
 using namespace flood::testing;
@@ -98,4 +100,113 @@ TEST(Shrink, PrecisionIsReduced) {
         EXPECT_EQ(q.x, std::nearbyint(q.x));
         EXPECT_EQ(q.y, std::nearbyint(q.y));
     }
+}
+
+// [SECTION] the repro read back (issue 26): a repro is what the user reads, not what we hold
+
+namespace {
+
+// Reads `path` and prepares it as `flood shrink` does (the T-junction search, no validation).
+bool readForShrink(const std::string& path, Polygon& p) {
+    ReadResult r = readPolygonFile(path);
+    if (!r.diagnostic.ok()) return false;  // malformed samples: nothing to shrink
+    p = std::move(r.polygon);
+    findTouches(p);
+    return true;
+}
+
+// Shrinks `p`, then reads the written repro back as the user will and expects the same failure.
+// Returns the repro's text.
+std::string expectReproReadsBack(const Polygon& p, const std::string& what, size_t maxTries) {
+    ShrinkOptions o;
+    o.fork = false;  // the tests' failures are forbidden transitions and checker rejections
+    o.maxTries = maxTries;
+    ShrinkResult r = shrink(p, o);
+    if (r.failure.kind == Failure::Kind::None) return "";
+    EXPECT_TRUE(r.reproduces) << what;
+    std::string text = reproJson(p, r, {what, "", "", "s.json"});
+    Failure back = classifyText(text, o, r.inputValid);
+    EXPECT_TRUE(back.sameClass(r.failure))
+        << what << ": shrunk to " << failureKindName(r.failure.kind) << ", read back as "
+        << failureKindName(back.kind) << " (" << back.message << ")\n"
+        << text;
+    // The reader keeps every vertex: nothing was repaired on the way back.
+    ReadResult read = parsePolygon(text, "repro");
+    EXPECT_TRUE(read.warnings.empty()) << what << ": " << read.warnings.front();
+    EXPECT_EQ(read.polygon.vertices.size(), r.polygon.vertices.size()) << what;
+    return text;
+}
+
+}  // namespace
+
+TEST(ShrinkRepro, CrossingFaceReadsBackFailingTheSameWay) {
+    // Rounding made two vertices of this face's repro equal; the reader dropped one and the
+    // repro triangulated.
+    Polygon p;
+    ASSERT_TRUE(readForShrink(sourcePath("polygons/tutorial/crossing-face.json"), p));
+    std::string text = expectReproReadsBack(p, "crossing-face", 20000);
+    EXPECT_NE(text.find("\"reproduce\":\"flood triangulate --no-validate s.json\""),
+              std::string::npos)
+        << text;
+}
+
+TEST(ShrinkRepro, EveryInvalidSampleReadsBackFailingTheSameWay) {
+    size_t shrunk = 0;
+    for (const std::string& path : filesIn(sourcePath("polygons/invalid"), ".json")) {
+        Polygon p;
+        if (!readForShrink(path, p)) continue;
+        if (!expectReproReadsBack(p, path, 3000).empty()) ++shrunk;
+    }
+    EXPECT_GE(shrunk, 15u) << "most invalid samples fail unvalidated";
+}
+
+TEST(ShrinkRepro, EveryInvalidFamilyReadsBackFailingTheSameWayAtSeveralSizes) {
+    for (const std::string& family : invalidFamilyNames())
+        for (size_t size : {20, 200, 2000}) {
+            Polygon p = generateInvalid(family, 7, size);
+            findTouches(p);
+            expectReproReadsBack(p, family + " " + std::to_string(size), 600);
+        }
+}
+
+TEST(ShrinkRepro, RealSizeFaceWithTwoVerticesSwappedReadsBack) {
+    // A 20,000-vertex face with two neighbours swapped: a bow-tie buried in a large ring. The
+    // shrink is cut short; what it hands back must still reproduce.
+    Polygon star = generate("circle-jagged", 3, 20000);
+    std::vector<Point> ring(star.vertices.begin(), star.vertices.begin() + star.rings[0].count);
+    std::swap(ring[ring.size() / 3], ring[ring.size() / 3 + 1]);
+    Polygon p;
+    p.addRing(ring, true);
+    findTouches(p);
+    expectReproReadsBack(p, "swapped", 200);
+}
+
+TEST(ShrinkRepro, SaysWhereItCameFrom) {
+    Polygon p = buriedCrossing();
+    findTouches(p);
+    ShrinkOptions o;
+    o.fork = false;
+    ShrinkResult r = shrink(p, o);
+    ASSERT_EQ(r.failure.kind, Failure::Kind::Forbidden);
+    ASSERT_EQ(r.origin.size(), r.polygon.vertices.size());
+    std::string text = reproJson(p, r, {"star.json", "12", "", "s.json"});
+    for (const char* key : {"\"source\":\"star.json\"", "\"feature\":\"12\"", "\"failure\":",
+                            "\"reason\":", "\"source_vertices\":[[", "\"source_bbox\":["})
+        EXPECT_NE(text.find(key), std::string::npos) << key << "\n" << text;
+    // Each remaining vertex names a distinct input vertex, in the input's ring order, and the
+    // box is theirs, in the input's coordinates (precision reduction moved the repro's own).
+    ASSERT_FALSE(r.origin.empty());
+    double box[4] = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    for (size_t i = 0; i < r.origin.size(); ++i) {
+        ASSERT_LT(r.origin[i], p.vertices.size());
+        if (i) {
+            EXPECT_LT(r.origin[i - 1], r.origin[i]);
+        }
+        const Point q = p.vertices[r.origin[i]];
+        box[0] = std::min(box[0], q.x), box[1] = std::min(box[1], q.y);
+        box[2] = std::max(box[2], q.x), box[3] = std::max(box[3], q.y);
+    }
+    nlohmann::json props = nlohmann::json::parse(text)["properties"];
+    EXPECT_EQ(props["source_vertices"][0].get<std::vector<Index>>(), r.origin);
+    EXPECT_EQ(props["source_bbox"].get<std::vector<double>>(), std::vector<double>(box, box + 4));
 }

@@ -914,7 +914,7 @@ TEST(ViewerShrink, CancelStopsAtTheNextTry) {
     ShrinkJob job;
     size_t calls = 0;
     // The test's hook asks for the cancel at try 5, from the shrinking thread itself.
-    o.onTry = [&](size_t tries) {
+    o.onTry = [&](size_t tries, size_t) {
         ++calls;
         if (tries == 5) job.requestCancel();
         return true;

@@ -1038,9 +1038,9 @@ void Model::openOrigin() {
 void ShrinkJob::start(const Polygon& polygon, ShrinkOptions options) {
     reset();
     maxTries_ = options.maxTries;
-    options.onTry = [this, user = std::move(options.onTry)](size_t tries) {
+    options.onTry = [this, user = std::move(options.onTry)](size_t tries, size_t vertices) {
         tries_.store(tries, std::memory_order_relaxed);
-        if (user && !user(tries)) return false;
+        if (user && !user(tries, vertices)) return false;
         return !cancel_.load(std::memory_order_relaxed);
     };
     thread_ = std::thread([this, polygon, options] {

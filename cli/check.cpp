@@ -79,6 +79,14 @@ Status verdictStatus(Verdict v) {
     return statuses[int(v)];
 }
 
+// One problem of an invalid feature (validateAll()): where and why, and the point it is at.
+struct Finding {
+    std::string at, reason;
+    Index ring = kNone, vertex = kNone;  // vertex within its ring
+    bool located = false;                // x, y known (a crossing's is computed, not exact)
+    double x = 0, y = 0;
+};
+
 struct Row {
     std::string file;
     bool wholeFile = true;
@@ -87,9 +95,12 @@ struct Row {
     std::vector<std::pair<std::string, std::string>> attributes;  // the feature's properties
     size_t vertices = 0;
     Verdict verdict = Verdict::Ok;
-    std::string at;      // ring and vertex, or the forbidden transition
-    std::string reason;  // one line
-    std::string repro;   // --extract: GeoJSON text that fails the same way ("" = none)
+    std::string at;                 // ring and vertex, or the forbidden transition
+    std::string reason;             // one line
+    std::vector<Finding> findings;  // invalid: every finding, the first being at/reason
+    size_t findingsOmitted = 0;     // beyond --max-findings
+    bool findingsComplete = true;   // false: the search for crossings gave up
+    std::string repro;              // --extract: GeoJSON text that fails the same way ("" = none)
     std::string extracted;
 };
 
@@ -111,17 +122,31 @@ std::string oneLine(std::string s) {
     return s;
 }
 
-// validate()'s diagnostic split into where (from its culprits) and why; the ring's part is
-// added when the feature has several.
-void splitInvalid(Row& row, const Diagnostic& d, const std::string& name, const Polygon& p) {
+// A diagnostic split into where (from its culprits) and why; the ring's part is added when the
+// feature has several.
+Finding findingOf(const Diagnostic& d, const std::string& name, const Polygon& p) {
+    Finding f;
     Where where = whereOf(p, d.culprits);
-    row.at = where.text;
-    row.reason = reasonOf(d.message, name, where);
+    f.at = where.text;
+    f.reason = oneLine(reasonOf(d.message, name, where));
+    f.ring = where.ring, f.vertex = where.vertex;
+    Point q;
+    if (diagnosticPoint(p, d.culprits, q, true)) f.located = true, f.x = q.x, f.y = q.y;
     if (p.parts.size() > 1 && where.ring != kNone)
         for (size_t k = 0; k < p.parts.size(); ++k)
             if (where.ring >= p.parts[k].firstRing &&
                 where.ring < p.parts[k].firstRing + p.parts[k].ringCount)
-                row.at += " (part " + std::to_string(k) + ")";
+                f.at += " (part " + std::to_string(k) + ")";
+    return f;
+}
+
+// validate()'s verdict, and every other finding of the feature.
+void splitInvalid(Row& row, const std::string& name, const Polygon& p, size_t maxFindings) {
+    Findings all = validateAll(p, name, maxFindings);
+    for (const Diagnostic& d : all.list) row.findings.push_back(findingOf(d, name, p));
+    row.findingsOmitted = all.omitted;
+    row.findingsComplete = all.complete;
+    if (!row.findings.empty()) row.at = row.findings[0].at, row.reason = row.findings[0].reason;
 }
 
 // Numbered as describeForbidden() numbers them (steps from 1).
@@ -160,7 +185,7 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
             row.reason = reasonOf(f.read.diagnostic.message, name, {});  // the name has a column
         } else if (Diagnostic d = o.validate ? validate(p, name) : Diagnostic{}; !d.ok()) {
             row.verdict = Verdict::Invalid;
-            splitInvalid(row, d, name, p);
+            splitInvalid(row, name, p, o.maxFindings);
         } else {
             FloodResult r = triangulate(p);
             if (!r.diagnostic.ok()) {
@@ -383,6 +408,17 @@ void printTable(const std::vector<Row*>& rows) {
                          label.empty() ? "-" : label, std::to_string(r->vertices),
                          verdictName(r->verdict), r->at.empty() ? "-" : cell(r->at, 80),
                          r->reason.empty() ? "-" : cell(r->reason, 120)});
+        // The feature's other findings under it, in the AT and REASON columns.
+        for (size_t k = 1; k < r->findings.size(); ++k)
+            cells.push_back({"", "", "", "", "", cell(r->findings[k].at, 80),
+                             cell(r->findings[k].reason, 120)});
+        if (r->findingsOmitted)
+            cells.push_back(
+                {"", "", "", "", "", "\u2026",
+                 "and " + std::to_string(r->findingsOmitted) + " more findings (--max-findings)"});
+        if (!r->findingsComplete)
+            cells.push_back({"", "", "", "", "", "\u2026",
+                             "the search for further crossings gave up (work cap)"});
     }
     std::array<size_t, 7> w{};
     for (const auto& c : cells)
@@ -466,6 +502,26 @@ int runCheck(const CheckOptions& o) {
     }
     using json = nlohmann::ordered_json;  // fields in the order of the table
     auto orNull = [](const std::string& s) { return s.empty() ? json(nullptr) : json(s); };
+    // Locations as numbers, so a script needs not parse "(x, y)" out of the text.
+    auto findingX = [](const Row* r, size_t k) {
+        return k < r->findings.size() && r->findings[k].located ? json(r->findings[k].x)
+                                                                : json(nullptr);
+    };
+    auto findingY = [](const Row* r, size_t k) {
+        return k < r->findings.size() && r->findings[k].located ? json(r->findings[k].y)
+                                                                : json(nullptr);
+    };
+    auto findingsJson = [&](const Row& r) {
+        json list = json::array();
+        for (const Finding& f : r.findings)
+            list.push_back({{"ring", f.ring == kNone ? json(nullptr) : json(f.ring)},
+                            {"vertex", f.vertex == kNone ? json(nullptr) : json(f.vertex)},
+                            {"x", f.located ? json(f.x) : json(nullptr)},
+                            {"y", f.located ? json(f.y) : json(nullptr)},
+                            {"at", orNull(f.at)},
+                            {"reason", f.reason}});
+        return list;
+    };
     json records = json::array();
     for (const Row* r : rows) {
         json attributes = json::object();
@@ -480,6 +536,11 @@ int runCheck(const CheckOptions& o) {
                            {"code", int(verdictStatus(r->verdict))},
                            {"at", orNull(r->at)},
                            {"reason", orNull(r->reason)},
+                           {"x", findingX(r, 0)},
+                           {"y", findingY(r, 0)},
+                           {"findings", findingsJson(*r)},
+                           {"findings_omitted", r->findingsOmitted},
+                           {"findings_complete", r->findingsComplete},
                            {"extracted", orNull(r->extracted)}});
     }
     json counts = json::object();

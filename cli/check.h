@@ -23,6 +23,7 @@ struct CheckOptions {
     uint64_t maxInputBytes = 0;       // per file, as --max-input-bytes
     bool validate = true;             // false: --no-validate, the machine diagnoses
     Selection selection;              // GIS datasets only
+    size_t maxFindings = 100;         // an invalid feature's findings listed, the rest counted
 };
 
 // Returns the exit code: 0 when every feature passed, else the largest code of a failing

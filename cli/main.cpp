@@ -638,6 +638,10 @@ int run(int argc, char** argv) {
                     "Features checked in parallel (default: all cores)")
         ->type_name("N")
         ->check(CLI::Range(1u, 1024u));
+    chk->add_option("--max-findings", checkOptions.maxFindings,
+                    "An invalid feature's findings listed (default 100); the rest are counted")
+        ->type_name("N")
+        ->check(CLI::Range(size_t(1), size_t(1) << 30));
     addNoValidate(chk);
 
     for (CLI::App* cmd : {tri, trace, tr, ver, bench, shr, chk})

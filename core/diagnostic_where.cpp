@@ -1,5 +1,7 @@
 #include "diagnostic_where.h"
 
+#include <cmath>
+
 #include "io_util.h"
 
 namespace flood {
@@ -17,6 +19,42 @@ Where whereOf(const Polygon& polygon, const Culprits& c) {
         w.text = "ring " + std::to_string(w.ring);
     }
     return w;
+}
+
+bool diagnosticPoint(const Polygon& polygon, const Culprits& c, Point& p, bool anyVertex) {
+    const auto& V = polygon.vertices;
+    if (c.hasPoint) {
+        p = {c.x, c.y};
+        return true;
+    }
+    auto ends = [&](Index e, Point& a, Point& b) {
+        if (e >= V.size()) return false;
+        const Ring& r = polygon.rings[polygon.ringOf(e)];
+        a = V[e], b = V[e + 1 == r.first + r.count ? r.first : e + 1];
+        return true;
+    };
+    Point a, b, q, d;
+    if (c.edges.size() >= 2 && ends(c.edges[0], a, b) && ends(c.edges[1], q, d)) {
+        double den = (b.x - a.x) * (d.y - q.y) - (b.y - a.y) * (d.x - q.x);
+        if (den == 0 || !std::isfinite(den)) {  // collinear overlap: the middle of the ends
+            p = {(a.x + b.x + q.x + d.x) / 4, (a.y + b.y + q.y + d.y) / 4};
+            return true;
+        }
+        double t = ((q.x - a.x) * (d.y - q.y) - (q.y - a.y) * (d.x - q.x)) / den;
+        p = {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
+        return true;
+    }
+    if (!anyVertex) return false;
+    if (!c.vertices.empty() && c.vertices.front() < V.size()) {
+        p = V[c.vertices.front()];
+        return true;
+    }
+    if (!c.rings.empty() && c.rings.front() < polygon.rings.size() &&
+        polygon.rings[c.rings.front()].count > 0) {
+        p = V[polygon.rings[c.rings.front()].first];
+        return true;
+    }
+    return false;
 }
 
 namespace {

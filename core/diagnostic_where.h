@@ -15,6 +15,13 @@ struct Where {
 };
 Where whereOf(const Polygon& polygon, const Culprits& culprits);
 
+// The point a diagnostic is at: its exact point when it has one; where its two culprit edges
+// cross (in doubles: a display point, not exact; the middle of a collinear overlap). With
+// `anyVertex`, else its first culprit vertex, else its first ring's first vertex. False when
+// none of these is known.
+bool diagnosticPoint(const Polygon& polygon, const Culprits& culprits, Point& p,
+                     bool anyVertex = false);
+
 // The message without its leading "NAME: " and, when it comes next, "WHERE: " (validate()
 // puts the location first): what is wrong, the location being shown apart.
 std::string reasonOf(const std::string& message, const std::string& name, const Where& where);

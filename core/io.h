@@ -78,6 +78,18 @@ Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t ma
 // "NAME: ring R vertex V (x, y): reason" on the first problem found.
 Diagnostic validate(Polygon& polygon, const std::string& name);
 
+// Every problem validate() would find, not only the first (as QGIS's "Check validity" lists
+// them): the first is validate()'s own diagnostic, the verdict; the others follow, check by
+// check. Checks stop after the first check with findings, since each later check needs the
+// earlier ones clean (no crossing is looked for among non-finite points, no hole nesting
+// among crossing edges). Empty exactly when validate() accepts the polygon.
+struct Findings {
+    std::vector<Diagnostic> list;
+    size_t omitted = 0;    // found beyond maxFindings
+    bool complete = true;  // false: the search for crossings gave up at its work cap
+};
+Findings validateAll(const Polygon& polygon, const std::string& name, size_t maxFindings = 100);
+
 void writeJson(std::ostream& out, const Polygon& p, const std::vector<Triangle>& t);
 void writeSvg(std::ostream& out, const Polygon& p, const std::vector<Triangle>& t);
 void writeObj(std::ostream& out, const Polygon& p, const std::vector<Triangle>& t);

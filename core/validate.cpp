@@ -38,6 +38,7 @@
 // when that one finds a problem.
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -168,6 +169,12 @@ struct Validator {
         }
         return d;
     }
+    Diagnostic emptyRing(Index r) const {
+        Diagnostic d{Status::Invalid, name + ": ring " + std::to_string(r) +
+                                          ": ring is empty, it needs at least 3 distinct points"};
+        d.culprits.rings = {r};
+        return d;
+    }
     static Culprits ringsCulprits(std::vector<uint32_t> rings) {
         Culprits c;
         c.rings = std::move(rings);
@@ -189,7 +196,20 @@ struct Validator {
                formatPoint(pt(next(e)));
     }
 
+    // validateAll(): every finding goes to the sink and the checks go on; without a sink the
+    // first problem ends validation.
+    std::function<void(Diagnostic&&)> sink;
+    // True when validation stops at `d`; else `d` has gone to the sink.
+    bool stopAt(Diagnostic& d) {
+        if (!sink) return true;
+        sink(std::move(d));
+        return false;
+    }
+    void index();  // ringOfV, partOfRing
     Diagnostic run();
+    void collectAll(bool& complete);
+    bool collectRingFindings();
+    bool collectEdgeFindings(bool& complete);
     Diagnostic checkRings();
     Diagnostic checkEdges();        // sweepEdges(), then orderJunctions()
     bool sweepEdges(bool minimal);  // false: stopped at a problem (or by minimal's doubt)
@@ -301,13 +321,7 @@ Diagnostic Validator::checkRings() {
     std::vector<Point>& tmp = s.ringPoints;
     for (Index r = 0; r < P.rings.size(); ++r) {
         const Ring& ring = P.rings[r];
-        if (ring.count == 0) {
-            Diagnostic d{Status::Invalid,
-                         name + ": ring " + std::to_string(r) +
-                             ": ring is empty, it needs at least 3 distinct points"};
-            d.culprits.rings = {r};
-            return d;
-        }
+        if (ring.count == 0) return emptyRing(r);
         bool outer = P.parts[partOfRing[r]].firstRing == r;
         if (ring.count == 1 && !outer) continue;  // a Steiner point
         // Three distinct points are usually among the first few: then nothing is sorted.
@@ -790,16 +804,21 @@ Diagnostic Validator::checkSharedVertices() {
     std::vector<Index> chordAt;
     for (const std::vector<Occurrence>& occ : touchPoints) {
         Point p = pt(occ[0].owner);
+        bool pointHole = false;
         for (const Occurrence& o : occ)
             if (o.owner < n && isPoint(o.owner)) {
                 const Occurrence& other = o.owner == occ[0].owner ? occ[1] : occ[0];
                 Culprits c = atPoint(o.owner);
                 blame(c, other);
-                return fail(o.owner,
-                            "point hole coincides with " + occurrenceText(other) +
-                                " (a Steiner point must be strictly inside the polygon)",
-                            c);
+                Diagnostic d = fail(o.owner,
+                                    "point hole coincides with " + occurrenceText(other) +
+                                        " (a Steiner point must be strictly inside the polygon)",
+                                    c);
+                if (stopAt(d)) return d;
+                pointHole = true;
+                break;
             }
+        if (pointHole) continue;  // collecting: the wedges of a point hole mean nothing
         rays.clear();
         for (Index i = 0; i < occ.size(); ++i) {
             const Occurrence& o = occ[i];
@@ -828,10 +847,13 @@ Diagnostic Validator::checkSharedVertices() {
         if (c != kNone) {
             Culprits also = atPoint(vertexOf(c));
             blame(also, occ[d]);
-            return fail(vertexOf(c),
-                        "the boundary crosses itself " + here + " (" + occurrenceText(occ[d]) +
-                            " passes through to the other side)",
-                        also);
+            Diagnostic found =
+                fail(vertexOf(c),
+                     "the boundary crosses itself " + here + " (" + occurrenceText(occ[d]) +
+                         " passes through to the other side)",
+                     also);
+            if (stopAt(found)) return found;
+            continue;  // collecting: one finding a point
         }
         // Sectors between consecutive rays must alternate interior / exterior; otherwise two
         // loops overlap here (a loop nested in another with the same orientation, a hole
@@ -844,12 +866,15 @@ Diagnostic Validator::checkSharedVertices() {
                 Index u = std::min(a.occ, b.occ), w = std::max(a.occ, b.occ);
                 Culprits also = atPoint(vertexOf(u));
                 if (u != w) blame(also, occ[w]);
-                return fail(vertexOf(u),
-                            "the interior overlaps itself " + here + " (" +
-                                (u == w ? std::string("a ring") : occurrenceText(occ[w])) +
-                                " touches here from the inside, with the "
-                                "orientation of a nested loop or hole)",
-                            also);
+                Diagnostic found =
+                    fail(vertexOf(u),
+                         "the interior overlaps itself " + here + " (" +
+                             (u == w ? std::string("a ring") : occurrenceText(occ[w])) +
+                             " touches here from the inside, with the "
+                             "orientation of a nested loop or hole)",
+                         also);
+                if (stopAt(found)) return found;
+                break;  // collecting: one finding a point
             }
         }
     }
@@ -880,10 +905,13 @@ Diagnostic Validator::checkTouchTopology() {
             if (ringStamp[b.ring] == t) {
                 Culprits also = atPoint(at);
                 blame(also, occ[ringAt[b.ring]]);
-                return fail(at,
-                            "the ring touches itself here (it also passes through " +
-                                occurrenceText(occ[ringAt[b.ring]]) + "): a ring must be simple",
-                            also);
+                Diagnostic d =
+                    fail(at,
+                         "the ring touches itself here (it also passes through " +
+                             occurrenceText(occ[ringAt[b.ring]]) + "): a ring must be simple",
+                         also);
+                if (stopAt(d)) return d;
+                continue;
             }
             ringStamp[b.ring] = t, ringAt[b.ring] = i;
             Index part = partOfRing[b.ring];
@@ -895,10 +923,12 @@ Diagnostic Validator::checkTouchTopology() {
             if (ra == rb) {
                 Culprits also = atPoint(at);
                 also.rings = {partRing[part], b.ring};
-                return fail(at,
-                            "rings touching here and elsewhere enclose part of the interior: "
-                            "the interior is disconnected",
-                            also);
+                Diagnostic d = fail(at,
+                                    "rings touching here and elsewhere enclose part of the "
+                                    "interior: the interior is disconnected",
+                                    also);
+                if (stopAt(d)) return d;
+                continue;
             }
             parent[ra] = rb;
         }
@@ -917,33 +947,34 @@ Diagnostic Validator::checkHoles() {
         auto sameHole = [&](Index x) {
             return x != kNone && partOfRing[x] == partOfRing[r] && x != outer;
         };
+        Diagnostic d;
         if (r == outer) {
             if (e != kNone && P.parts[partOfRing[e]].firstRing == e)
-                return fail(v,
-                            "outer ring " + std::to_string(r) + " lies inside the outer ring " +
-                                std::to_string(e) + " of another part: parts overlap",
-                            ringsCulprits({r, e}));
-            continue;
+                d = fail(v,
+                         "outer ring " + std::to_string(r) + " lies inside the outer ring " +
+                             std::to_string(e) + " of another part: parts overlap",
+                         ringsCulprits({r, e}));
+        } else if (e == outer) {
+        } else if (sameHole(e)) {
+            d = fail(v,
+                     "hole (ring " + std::to_string(r) + ") lies inside another hole (ring " +
+                         std::to_string(e) + "): holes overlap",
+                     ringsCulprits({r, e}));
+        } else {
+            d = fail(v,
+                     "hole (ring " + std::to_string(r) + ") lies outside its outer ring (ring " +
+                         std::to_string(outer) + ")" +
+                         (e == kNone ? std::string()
+                                     : ", inside ring " + std::to_string(e) + " instead"),
+                     ringsCulprits(e == kNone ? std::vector<uint32_t>{r, outer}
+                                              : std::vector<uint32_t>{r, outer, e}));
         }
-        if (e == outer) continue;
-        if (sameHole(e))
-            return fail(v,
-                        "hole (ring " + std::to_string(r) + ") lies inside another hole (ring " +
-                            std::to_string(e) + "): holes overlap",
-                        ringsCulprits({r, e}));
-        return fail(
-            v,
-            "hole (ring " + std::to_string(r) + ") lies outside its outer ring (ring " +
-                std::to_string(outer) + ")" +
-                (e == kNone ? std::string() : ", inside ring " + std::to_string(e) + " instead"),
-            ringsCulprits(e == kNone ? std::vector<uint32_t>{r, outer}
-                                     : std::vector<uint32_t>{r, outer, e}));
+        if (!d.ok() && stopAt(d)) return d;
     }
     return {};
 }
 
-Diagnostic Validator::run() {
-    if (P.rings.empty()) return {Status::Invalid, name + ": polygon has no rings"};
+void Validator::index() {
     ringOfV.resize(n);
     partOfRing.resize(P.rings.size());
     for (Index k = 0; k < P.parts.size(); ++k)
@@ -952,6 +983,11 @@ Diagnostic Validator::run() {
     for (Index r = 0; r < P.rings.size(); ++r)
         for (Index v = P.rings[r].first; v < P.rings[r].first + P.rings[r].count; ++v)
             ringOfV[v] = r;
+}
+
+Diagnostic Validator::run() {
+    if (P.rings.empty()) return {Status::Invalid, name + ": polygon has no rings"};
+    index();
     Diagnostic d = checkRings();
     if (d.ok()) d = checkEdges();
     // A ring of zero area is reported as such unless the sweep found it crossing itself (a
@@ -960,6 +996,115 @@ Diagnostic Validator::run() {
     if (d.ok()) d = checkSharedVertices();
     if (d.ok()) d = checkHoles();
     return d;
+}
+
+// --- every finding (validateAll) ----------------------------------------------------------
+//
+// The checks above stop at the first problem: past a crossing the sweep's order means nothing.
+// Collecting goes check by check and stops after the first check that found anything, since
+// each later check needs the earlier ones clean: checks 1-2 on every vertex and ring; check 4
+// on every pair of edges whose boxes meet (a sweep over the boxes along x, no order needed);
+// zero areas; then, on a polygon whose edges are clean, the sweep as validate() runs it and
+// checks 5 and 6 going on past each finding.
+
+// Checks 1-2 on every vertex and ring; true when something was found.
+bool Validator::collectRingFindings() {
+    bool found = false;
+    for (Index v = 0; v < n; ++v)
+        if (!std::isfinite(pt(v).x) || !std::isfinite(pt(v).y)) {
+            sink(fail(v, "coordinate is not a finite number"));
+            found = true;
+        }
+    if (found) return true;  // the rings' points are not yet points
+    for (Index r = 0; r < P.rings.size(); ++r) {
+        const Ring& ring = P.rings[r];
+        if (ring.count == 0) {
+            sink(emptyRing(r));
+            found = true;
+            continue;
+        }
+        bool outer = P.parts[partOfRing[r]].firstRing == r;
+        if (ring.count == 1 && !outer) continue;
+        std::vector<Point> pts(P.vertices.begin() + ring.first,
+                               P.vertices.begin() + ring.first + ring.count);
+        std::sort(pts.begin(), pts.end(),
+                  [](Point a, Point b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+        size_t distinct = std::unique(pts.begin(), pts.end()) - pts.begin();
+        if (distinct < 3) {
+            sink(fail(ring.first, "ring has " + std::to_string(distinct) + " distinct point" +
+                                      (distinct == 1 ? "" : "s") + ", at least 3 are needed" +
+                                      (outer ? "" : " (or exactly one, a point hole)")));
+            found = true;
+            continue;
+        }
+        for (Index v = ring.first; v < ring.first + ring.count; ++v)
+            if (pt(v) == pt(next(v))) {
+                sink(fail(v, "repeated consecutive point (zero-length edge)", atPoint(v, {v})));
+                found = true;
+            }
+    }
+    return found;
+}
+
+// Check 4 on every pair of edges whose boxes meet, by a sweep of the boxes along x; the
+// findings in the order of the vertex each names. Gives up (`complete` false) past a work cap:
+// long edges over many others make the pairs quadratic.
+bool Validator::collectEdgeFindings(bool& complete) {
+    std::vector<EdgeBox> box(n);
+    std::vector<Index> order(n);
+    for (Index e = 0; e < n; ++e) {
+        Point a = pt(e), b = pt(next(e));
+        box[e] = {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
+        order[e] = e;
+    }
+    std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+        return box[a].x0 < box[b].x0 || (box[a].x0 == box[b].x0 && a < b);
+    });
+    std::vector<Diagnostic> found;
+    const uint64_t cap = 64 * uint64_t(n) + (uint64_t(1) << 22);
+    uint64_t pairs = 0;
+    std::vector<Index> active;
+    for (Index e : order) {
+        const EdgeBox a = box[e];
+        active.erase(
+            std::remove_if(active.begin(), active.end(), [&](Index f) { return box[f].x1 < a.x0; }),
+            active.end());
+        for (Index f : active) {
+            if (++pairs > cap) {
+                complete = false;
+                break;
+            }
+            if (box[f].y1 < a.y0 || a.y1 < box[f].y0) continue;
+            classifyMeeting(std::min(e, f), std::max(e, f));
+            if (!problem) continue;
+            found.push_back(fail(problem->first, problem->second, problemCulprits));
+            problem.reset(), problemCulprits = {};
+        }
+        if (!complete) break;
+        active.push_back(e);
+    }
+    junctions.clear();
+    std::stable_sort(found.begin(), found.end(), [](const Diagnostic& x, const Diagnostic& y) {
+        return x.culprits.vertices[0] < y.culprits.vertices[0];
+    });
+    for (Diagnostic& d : found) sink(std::move(d));
+    return !found.empty();
+}
+
+void Validator::collectAll(bool& complete) {
+    if (P.rings.empty()) return;
+    index();
+    if (collectRingFindings()) return;
+    checkRings();  // clean now: the rings' orientations and the first zero area
+    bool crossed = collectEdgeFindings(complete);
+    for (Index r = 0; r < P.rings.size(); ++r)
+        if (P.rings[r].count > 1 && ringSign[r] == 0 && !crossed)
+            sink(fail(P.rings[r].first, "ring has zero area"));
+    if (crossed || !complete) return;
+    // The edges are clean: the sweep gives the order, touches and nesting checks 5-6 read.
+    problem.reset(), junctions.clear(), copies.clear();
+    if (!checkEdges().ok()) return;  // cannot be: every pair was clean
+    if (checkSharedVertices().ok()) checkHoles();
 }
 
 // Small polygons reuse this thread's scratch; a large one gets its own, freed on return, so
@@ -984,6 +1129,24 @@ Diagnostic validateBySweep(Polygon& polygon, const std::string& name) {
 
 Diagnostic validate(Polygon& polygon, const std::string& name) {
     return validateIn(polygon, name, true);
+}
+
+Findings validateAll(const Polygon& polygon, const std::string& name, size_t maxFindings) {
+    Findings out;
+    Polygon copy = polygon;
+    Diagnostic first = validate(copy, name);
+    if (first.ok()) return out;
+    std::string verdict = first.message;
+    out.list.push_back(std::move(first));
+    Scratch fresh;
+    Validator v(polygon, name, fresh);
+    v.sink = [&](Diagnostic&& d) {
+        if (d.message == verdict) return;  // listed first already
+        if (out.list.size() < std::max<size_t>(1, maxFindings)) out.list.push_back(std::move(d));
+        else ++out.omitted;
+    };
+    v.collectAll(out.complete);
+    return out;
 }
 
 }  // namespace flood

@@ -407,3 +407,43 @@ TEST(Check, ExtractedNamesNeverCollide) {
     EXPECT_TRUE(names.count("mixed_feature1.json") && names.count("mixed-2_feature1.json")) << doc;
     fs::remove_all(d);
 }
+
+// Every finding of a feature (issue 26 §2): a face with three separate crossings lists three,
+// in the table under its row and in the JSON with their locations as numbers.
+TEST(Check, EveryFindingOfAFeatureIsListedWithItsLocation) {
+    fs::path d = scratch("findings");
+    fs::path in = d / "three.geojson";
+    std::string rings = "[[0,0],[100,0],[100,100],[0,100],[0,0]]";
+    for (int i = 0; i < 3; ++i) {
+        std::string x = std::to_string(2 + 3 * i), x1 = std::to_string(3 + 3 * i);
+        rings += ",[[" + x + ",2],[" + x1 + ",3],[" + x1 + ",2],[" + x + ",3],[" + x + ",2]]";
+    }
+    std::ofstream(in) << "{\"type\":\"FeatureCollection\",\"features\":[{\"type\":\"Feature\","
+                         "\"properties\":{\"name\":\"three\"},\"geometry\":{\"type\":"
+                         "\"Polygon\",\"coordinates\":["
+                      << rings << "]}}]}";
+    CheckRun table = cli("check " + in.string());
+    EXPECT_EQ(table.code, 4);
+    for (const char* crossing :
+         {"(2, 2)-(3, 3) crosses", "(5, 2)-(6, 3) crosses", "(8, 2)-(9, 3) crosses"})
+        EXPECT_TRUE(has(table.out, crossing)) << crossing << "\n" << table.out;
+    EXPECT_TRUE(has(table.out, "check: 1 feature in 1 file")) << table.out;
+
+    json doc = checkJson(in.string());
+    const json& f = doc["features"][0];
+    ASSERT_EQ(f["findings"].size(), 3u) << f.dump(1);
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_EQ(f["findings"][i]["x"], 2.5 + 3 * i);
+        EXPECT_EQ(f["findings"][i]["y"], 2.5);
+        EXPECT_EQ(f["findings"][i]["ring"], i + 1);
+    }
+    EXPECT_EQ(f["x"], 2.5);
+    EXPECT_EQ(f["findings_omitted"], 0);
+
+    json two = checkJson("--max-findings 2 " + in.string());
+    EXPECT_EQ(two["features"][0]["findings"].size(), 2u);
+    EXPECT_EQ(two["features"][0]["findings_omitted"], 1);
+    EXPECT_TRUE(has(cli("check --max-findings 2 " + in.string()).out,
+                    "and 1 more findings (--max-findings)"));
+    fs::remove_all(d);
+}

@@ -17,6 +17,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "diagnostic_where.h"
 #include "io.h"
 #include "predicates.h"
 #include "trace_io.h"
@@ -606,31 +607,7 @@ int Model::exitCode() const {
     return 0;
 }
 
-bool Model::errorPoint(Point& p) const {
-    const auto& V = trace_->polygon.vertices;
-    if (error_.hasPoint) {
-        p = {error_.x, error_.y};
-        return true;
-    }
-    if (error_.edges.size() < 2) return false;
-    // Two crossing edges: their intersection in doubles, for display only.
-    auto ends = [&](Index e, Point& a, Point& b) {
-        if (e >= V.size()) return false;
-        const Ring& r = trace_->polygon.rings[trace_->polygon.ringOf(e)];
-        a = V[e], b = V[e + 1 == r.first + r.count ? r.first : e + 1];
-        return true;
-    };
-    Point a, b, c, d;
-    if (!ends(error_.edges[0], a, b) || !ends(error_.edges[1], c, d)) return false;
-    double den = (b.x - a.x) * (d.y - c.y) - (b.y - a.y) * (d.x - c.x);
-    if (den == 0 || !std::isfinite(den)) {  // collinear overlap: the middle of the shared part
-        p = {(a.x + b.x + c.x + d.x) / 4, (a.y + b.y + c.y + d.y) / 4};
-        return true;
-    }
-    double t = ((c.x - a.x) * (d.y - c.y) - (c.y - a.y) * (d.x - c.x)) / den;
-    p = {a.x + t * (b.x - a.x), a.y + t * (b.y - a.y)};
-    return true;
-}
+bool Model::errorPoint(Point& p) const { return diagnosticPoint(trace_->polygon, error_, p); }
 
 bool Model::showError() {
     if (!failed()) return false;

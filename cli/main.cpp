@@ -76,7 +76,10 @@ std::string grouped(size_t n) {
 // With `check` false (--no-validate) validation is skipped, so the flood machine itself
 // diagnoses invalid input (docs/ERRORS.md, forbidden transitions); the T-junctions the machine
 // needs are then found by findTouches(), which is safe on invalid input.
-Status prepare(const std::string& path, Polygon& polygon, bool check = true) {
+// With `floodInvalid` an invalid polygon is still handed back, prepared as --no-validate
+// prepares it, with the status Invalid (`flood trace` floods it anyway).
+Status prepare(const std::string& path, Polygon& polygon, bool check = true,
+               bool floodInvalid = false) {
     ReadResult rr = readInput(path);
     for (const std::string& w : rr.warnings) std::cerr << "warning: " << w << "\n";
     if (rr.warningsOmitted)
@@ -89,13 +92,16 @@ Status prepare(const std::string& path, Polygon& polygon, bool check = true) {
     Diagnostic d = check ? validate(rr.polygon, path == "-" ? "<stdin>" : path) : Diagnostic{};
     if (!d.ok()) {
         std::cerr << "error: invalid polygon: " << d.message << "\n";
-        return d.status;
+        if (!floodInvalid) return d.status;
+        std::cerr << "note: flooding it anyway (as --no-validate), up to where the machine "
+                     "stops\n";
+        check = false;
     }
     if (!check && !findTouches(rr.polygon).complete)
         std::cerr << "warning: " << path << ": the search for T-junctions gave up (work cap): "
                   << "the polygon is flooded without them\n";
     polygon = std::move(rr.polygon);
-    return Status::Ok;
+    return d.status;
 }
 
 // Checks a finished run. Forbidden -> 5 (its explanation), checker rejects -> 6. The exact
@@ -249,13 +255,19 @@ int cmdTriangulate(const std::string& in, const std::string& out, std::string fo
     return code(o.commit());
 }
 
+// An invalid polygon is flooded anyway, as the viewer floods it: its trace, up to the
+// forbidden transition that proves it wrong, is what one wants to look at. The exit code is
+// still the verdict's (4 for invalid input).
 int cmdTrace(const std::string& in, const std::string& out, const std::string& up, bool check,
              bool exactCheck) {
     Polygon polygon;
-    Status s = prepare(in, polygon, check);
-    if (s != Status::Ok) return code(s);
+    Status s = prepare(in, polygon, check, true);
+    const Status verdict = s;
+    if (s != Status::Ok && s != Status::Invalid) return code(s);
+    const bool validated = check && verdict == Status::Ok;
     Trace t = record(polygon, makeOptions(up));
-    s = judge(polygon, t.triangles, t.diagnostic, check, exactCheck);
+    s = judge(polygon, t.triangles, t.diagnostic, validated, exactCheck);
+    if (verdict != Status::Ok) s = verdict;
     // A trace of a forbidden run is exactly what one wants to look at: write it anyway,
     // but still exit with the failure status.
     if (s == Status::Internal)

@@ -50,7 +50,13 @@ TEST(Cli, InvalidInputsGiveTheirExitCodeAndMessage) {
                 run(std::string(cmd) + " " + src(std::string("polygons/invalid/") + c.file));
             EXPECT_EQ(r.code, c.code) << cmd << " " << c.file << ": " << r.out;
             EXPECT_TRUE(has(r.out, c.message)) << cmd << " " << c.file << ": " << r.out;
-            EXPECT_FALSE(has(r.out, "\"triangles\"")) << "no output for invalid input: " << c.file;
+            // No output for invalid input, but for the trace of the flood run anyway (as the
+            // viewer runs it) up to where the machine stops.
+            if (std::string(cmd) == "trace" && c.code == 4)
+                EXPECT_TRUE(has(r.out, "\"format\":\"flood-trace\"")) << c.file << ": " << r.out;
+            else
+                EXPECT_FALSE(has(r.out, "\"triangles\""))
+                    << "no output for invalid input: " << c.file;
         }
     }
     EXPECT_GE(rows, 20u);
@@ -365,6 +371,28 @@ TEST(Cli, UnknownSubcommandIsNamed) {
                     "transcript, verify, bench, generate, shrink"))
         << r.out;
     EXPECT_FALSE(has(r.out, "A subcommand is required")) << r.out;
+}
+
+// `flood trace` on an invalid polygon floods it anyway, as the viewer does, and writes the
+// trace up to the forbidden transition; the exit code is still validation's verdict.
+TEST(Cli, TraceOfAnInvalidPolygonIsWrittenUpToTheForbiddenTransition) {
+    fs::path d = scratch("trace-invalid");
+    std::string t = (d / "t.jsonl").string();
+    RunResult r =
+        run("trace " + src("polygons/invalid/forbidden-ceiling-as-end.json") + " -o " + t);
+    EXPECT_EQ(r.code, 4) << r.out;
+    EXPECT_TRUE(has(r.out, "error: invalid polygon")) << r.out;
+    EXPECT_TRUE(has(r.out, "flooding it anyway")) << r.out;
+    flood::Trace back;
+    flood::Diagnostic dg = flood::readTraceFile(t, back);
+    ASSERT_TRUE(dg.ok()) << dg.message;
+    EXPECT_EQ(back.diagnostic.status, flood::Status::Forbidden);
+    ASSERT_FALSE(back.events.empty());
+    EXPECT_EQ(back.events.back().action, flood::Action::Forbidden);
+    // A malformed file is still refused: there is nothing to flood.
+    RunResult bad = run("trace " + src("polygons/invalid/malformed-json.json") + " -o " + t);
+    EXPECT_EQ(bad.code, 3) << bad.out;
+    fs::remove_all(d);
 }
 
 // A trace of an unvalidated run holds NaN: written as "NaN" (nlohmann wrote null, which the

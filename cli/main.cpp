@@ -288,9 +288,10 @@ int cmdTranscript(const std::string& in, bool narrate, const std::string& up, bo
     if (!narrate) {
         std::cout << transcript(t.events) << "\n";
     } else {
-        // One numbered sentence per event in the flood metaphor (core/narrate.h).
+        // One numbered sentence per event in the flood metaphor (core/narrate.h), numbered as
+        // the viewer's timeline and describeForbidden() number them: step N is the Nth event.
         for (const Event& e : t.events)
-            std::cout << "step " << e.step << ": " << actionName(e.action) << ": "
+            std::cout << "step " << e.step + 1 << ": " << actionName(e.action) << ": "
                       << flood::narrate(polygon, e) << "\n";
     }
     return code(j);

@@ -94,7 +94,9 @@ TEST(Cli, TranscriptTraceBenchAndUsage) {
     EXPECT_TRUE(has(t.out, "; ")) << t.out;
     RunResult n = run("transcript --narrate " + src("polygons/hole.json"));
     EXPECT_EQ(n.code, 0);
-    EXPECT_TRUE(has(n.out, "step 0: Start")) << n.out;
+    // One numbering everywhere: the Nth event is step N, as in the viewer and the messages.
+    EXPECT_TRUE(has(n.out, "step 1: Start")) << n.out;
+    EXPECT_FALSE(has(n.out, "step 0:")) << n.out;
     RunResult tr = run("trace " + src("polygons/hole.json"));
     EXPECT_EQ(tr.code, 0);
     EXPECT_TRUE(has(tr.out, "\"format\":\"flood-trace\"")) << tr.out.substr(0, 200);

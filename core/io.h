@@ -39,6 +39,14 @@ ReadResult parsePolygon(std::string_view text, const std::string& name);
 ReadResult readPolygonFile(const std::string& path,  // "-" reads stdin
                            uint64_t maxBytes = kDefaultMaxInputBytes);
 
+// Well-known binary, as GEOS, shapely, PostGIS and OGR hand it out (the Python module reads
+// it): ISO WKB and PostGIS EWKB, either byte order, a Polygon or a MultiPolygon, z and m
+// dropped, an SRID skipped; rings cleaned as every reader cleans them. Malformed, naming the
+// byte, when truncated or not a polygon. wkbLike(): a byte order then a known geometry type —
+// no text starts so.
+bool wkbLike(std::string_view bytes);
+ReadResult parseWkb(std::string_view bytes, const std::string& name);
+
 // One polygon of a dataset (`flood check`): a Feature of a FeatureCollection, or a whole file.
 struct FeatureRead {
     bool wholeFile = true;  // not a FeatureCollection's feature (any other document, or unreadable)

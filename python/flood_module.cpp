@@ -44,6 +44,11 @@ ReadResult readInput(py::handle input, const std::string& name) {
         py::gil_scoped_release unlocked;
         return parsePolygon(text, name);
     }
+    if (py::isinstance<py::bytes>(input)) {  // WKB (the Python side passes only WKB as bytes)
+        std::string bytes = input.cast<std::string>();
+        py::gil_scoped_release unlocked;
+        return parseWkb(bytes, name);
+    }
     ReadResult rr;
     for (py::handle part : input) {
         bool outer = true;
@@ -249,11 +254,14 @@ PYBIND11_MODULE(_flood, m) {
         if (names.size() != inputs.size()) throw py::value_error("one name per feature");
         std::vector<Outcome> outcomes(inputs.size());
         std::vector<std::string> texts(inputs.size());
-        std::vector<bool> isText(inputs.size());
+        // Texts and WKB are copied and read by the threads; arrays are read here.
+        enum class Kind : uint8_t { Arrays, Text, Wkb };
+        std::vector<Kind> kind(inputs.size(), Kind::Arrays);
         for (size_t i = 0; i < inputs.size(); ++i) {
             py::handle input = inputs[i];
-            isText[i] = py::isinstance<py::str>(input);
-            if (isText[i]) texts[i] = input.cast<std::string>();
+            if (py::isinstance<py::str>(input)) kind[i] = Kind::Text;
+            else if (py::isinstance<py::bytes>(input)) kind[i] = Kind::Wkb;
+            if (kind[i] != Kind::Arrays) texts[i] = input.cast<std::string>();
             else outcomes[i] = prepare(input, names[i]);
         }
         {
@@ -262,8 +270,9 @@ PYBIND11_MODULE(_flood, m) {
             auto worker = [&] {
                 for (size_t i; (i = nextFeature++) < outcomes.size();) {
                     Outcome& o = outcomes[i];
-                    if (isText[i]) {
-                        ReadResult rr = parsePolygon(texts[i], names[i]);
+                    if (kind[i] != Kind::Arrays) {
+                        ReadResult rr = kind[i] == Kind::Text ? parsePolygon(texts[i], names[i])
+                                                              : parseWkb(texts[i], names[i]);
                         o.diagnostic = rr.diagnostic;
                         o.polygon = std::move(rr.polygon);
                         std::string().swap(texts[i]);
@@ -314,6 +323,7 @@ PYBIND11_MODULE(_flood, m) {
         return parts;
     });
     m.def("families", &familyNames);
+    m.def("wkb_like", [](const py::bytes& b) { return wkbLike(std::string_view(b)); });
 
     py::class_<Fingers>(m, "Fingers")
         .def_readonly("left", &Fingers::left)

@@ -6,11 +6,16 @@ A *polygon* is any of:
   holes; a list of such ring lists is a multipolygon (one part per ring list);
 - numpy arrays: one (n, 2) array (a polygon without holes) or a list of them (outer ring, then
   holes); any real or integer dtype (converted to float64: integers beyond 2**53 round);
-- a shapely Polygon or MultiPolygon (z dropped), or a GeoJSON-like mapping of either;
-- a str: WKT or GeoJSON text, read by the same readers as the ``flood`` command.
+- a shapely Polygon or MultiPolygon (z dropped), anything with ``__geo_interface__`` (fiona
+  and geopandas features, shapely), or a GeoJSON-like mapping of a Polygon, a MultiPolygon or
+  a Feature holding one;
+- a str: WKT or GeoJSON text, read by the same readers as the ``flood`` command;
+- bytes: WKB (ISO or PostGIS EWKB, either byte order, z/m dropped; hex WKB as a str too), or
+  the text above encoded as UTF-8.
 
-Rings may be open or closed; repeated consecutive points are dropped with a warning, as the
-command-line reader does. Failures carry the command's exit-code classes (docs/ERRORS.md).
+Rings may be open or closed; repeated consecutive points are dropped with a FloodWarning
+(``warnings.warn``), as the command-line reader warns. Failures carry the command's exit-code
+classes (docs/ERRORS.md).
 
 - ``triangulate(polygon)`` returns ``Triangulation(vertices, triangles)``: vertices (m, 2)
   float64, triangles (n, 3) int64 indices into them, counter-clockwise, numbered in the order
@@ -29,16 +34,21 @@ The GIL is released while the core runs, so Python threads triangulate in parall
 
 from __future__ import annotations
 
+import re
+import warnings as _warnings
+from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any, List, NamedTuple, Optional, Sequence
 
 import numpy as np
 
 from . import _flood
+from ._version import __version__
 
 __all__ = [
-    "ACTIONS", "EVENT_DTYPE", "FORBIDDEN", "NONE", "TESTS",
-    "Diagnostic", "InternalError", "InvalidPolygon", "Replay", "Trace", "Triangulation",
+    "ACTIONS", "EVENT_DTYPE", "FORBIDDEN", "NONE", "TESTS", "__version__",
+    "Diagnostic", "FloodWarning", "InternalError", "InvalidPolygon", "Replay", "Trace",
+    "Triangulation",
     "Verdict", "check", "families", "generate", "trace", "triangulate", "validate",
 ]
 
@@ -96,6 +106,15 @@ class InvalidPolygon(ValueError):
         return getattr(self.diagnostic, name)
 
 
+class FloodWarning(UserWarning):
+    """What the reader repaired (a repeated point dropped), as the command warns on stderr."""
+
+
+def _warn(messages) -> None:
+    for message in messages:
+        _warnings.warn(message, FloodWarning, stacklevel=3)
+
+
 class InternalError(RuntimeError):
     """Exit code 6: the exact checker rejected Flood's own output (a bug: please report it)."""
 
@@ -145,32 +164,44 @@ def _ring(coords) -> np.ndarray:
     return np.ascontiguousarray(a, dtype=np.float64)
 
 
-def _shapely_parts(geom):
-    kind = geom.geom_type
-    if kind == "Polygon":
-        polys = [] if geom.is_empty else [geom]
-    elif kind == "MultiPolygon":
-        polys = list(geom.geoms)
-    else:
-        raise TypeError(f"flood triangulates Polygon and MultiPolygon geometries, not {kind}")
-    return [[_ring(p.exterior.coords)] + [_ring(h.coords) for h in p.interiors] for p in polys]
+_HEX_WKB = re.compile(r"0[01][0-9A-Fa-f]{8,}")
 
 
 def _normalize(polygon) -> Any:
     """Any accepted polygon as what the C++ side reads: a str, or parts of float64 rings."""
-    if isinstance(polygon, bytes):
-        return polygon.decode("utf-8")
+    if isinstance(polygon, (bytes, bytearray, memoryview)):
+        blob = bytes(polygon)
+        if _flood.wkb_like(blob):
+            return blob  # WKB: read by the core (core/io_wkb.cpp), on check()'s threads
+        return blob.decode("utf-8")
     if isinstance(polygon, str):
+        if len(polygon) % 2 == 0 and _HEX_WKB.fullmatch(polygon):
+            return bytes.fromhex(polygon)
         return polygon
-    if hasattr(polygon, "geom_type"):
-        return _shapely_parts(polygon)
-    if isinstance(polygon, dict):
-        kind, coords = polygon.get("type"), polygon.get("coordinates")
+    if hasattr(polygon, "geom_type") and hasattr(polygon, "wkb"):
+        if polygon.geom_type not in ("Polygon", "MultiPolygon"):
+            raise TypeError("flood triangulates Polygon and MultiPolygon geometries, not "
+                            f"{polygon.geom_type}")
+        return polygon.wkb  # one GEOS call; no Python object per coordinate
+    if not isinstance(polygon, Mapping) and hasattr(polygon, "__geo_interface__"):
+        polygon = polygon.__geo_interface__
+    if isinstance(polygon, Mapping):
+        kind = polygon.get("type")
+        if kind == "Feature":
+            geometry = polygon.get("geometry")
+            if geometry is None:
+                raise TypeError("a GeoJSON Feature without a geometry")
+            return _normalize(geometry)
+        coords = polygon.get("coordinates")
         if kind == "Polygon":
             return [[_ring(r) for r in coords]]
         if kind == "MultiPolygon":
             return [[_ring(r) for r in p] for p in coords]
-        raise TypeError(f"a GeoJSON mapping of a Polygon or MultiPolygon, not {kind!r}")
+        if kind == "FeatureCollection":
+            raise TypeError("a FeatureCollection holds many polygons: pass its features to "
+                            "flood.check()")
+        raise TypeError("a GeoJSON mapping of a Polygon, a MultiPolygon or a Feature, not "
+                        f"{kind!r}")
     if isinstance(polygon, np.ndarray) or isinstance(polygon, Sequence):
         depth = _depth(polygon)
         if depth == 2:
@@ -187,6 +218,7 @@ def _normalize(polygon) -> Any:
 def validate(polygon, *, name: str = "polygon") -> Diagnostic:
     """The validator's verdict (docs/ERRORS.md): ``.ok``, or the first problem found."""
     found, warnings = _flood.validate(_normalize(polygon), name)
+    _warn(warnings)
     return Diagnostic._from(found, warnings)
 
 
@@ -194,6 +226,7 @@ def triangulate(polygon, *, validate: bool = True, up: str = "+y",
                 name: str = "polygon") -> Triangulation:
     """Triangulates like ``flood triangulate``: validate, flood, check exactly."""
     found, warnings, vertices, triangles, _ = _flood.triangulate(_normalize(polygon), validate, up, name)
+    _warn(warnings)
     _raise_for(Diagnostic._from(found, warnings))
     return Triangulation(vertices, triangles)
 
@@ -225,6 +258,7 @@ class Trace:
         self.triangles: np.ndarray = handle.triangles
         self.diagnostic = Diagnostic._from(handle.diagnostic, handle.warnings)
         self.replay = Replay(handle)
+        _warn(handle.warnings)
 
 
 def trace(polygon, *, validate: bool = True, up: str = "+y", name: str = "polygon") -> Trace:

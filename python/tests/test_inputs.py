@@ -54,7 +54,8 @@ def test_wkt_and_geojson_mapping():
 
 
 def test_repeated_points_are_dropped_with_a_warning():
-    d = flood.validate([(0, 0), (10, 0), (10, 0), (10, 10), (0, 10)])
+    with pytest.warns(flood.FloodWarning):
+        d = flood.validate([(0, 0), (10, 0), (10, 0), (10, 10), (0, 10)])
     assert d.ok and len(d.warnings) == 1 and "repeated point dropped" in d.warnings[0]
 
 
@@ -66,3 +67,84 @@ def test_what_is_not_a_polygon_is_refused():
     with pytest.raises(flood.InvalidPolygon) as caught:
         flood.triangulate(np.zeros((4, 3, 1)))  # depth 3, but points of one coordinate
     assert caught.value.status == "malformed" and caught.value.code == 3
+
+
+# --- the doors of the Python ecosystem (issue 30 §2) ------------------------------------------
+
+class _Feature:
+    """A fiona/geopandas-style object: only __geo_interface__, a GeoJSON Feature mapping."""
+
+    def __init__(self, geometry):
+        self.__geo_interface__ = {"type": "Feature", "properties": {"name": "x"},
+                                  "geometry": geometry}
+
+
+def test_geo_interface_and_feature_mappings_read_as_the_geometry():
+    poly = sg.Polygon(OUTER, HOLES)
+    reference = flood.triangulate(poly).triangles.tolist()
+    feature = {"type": "Feature", "properties": {}, "geometry": sg.mapping(poly)}
+    assert flood.triangulate(feature).triangles.tolist() == reference
+    assert flood.triangulate(_Feature(sg.mapping(poly))).triangles.tolist() == reference
+    with pytest.raises(TypeError, match="Feature without a geometry"):
+        flood.triangulate({"type": "Feature", "geometry": None})
+    with pytest.raises(TypeError, match="flood.check"):
+        flood.triangulate({"type": "FeatureCollection", "features": [feature]})
+
+
+@pytest.mark.parametrize("geometry", [
+    sg.Polygon(OUTER, HOLES),
+    sg.MultiPolygon([sg.Polygon(OUTER, HOLES), sg.Polygon([(20, 0), (30, 0), (30, 10)])]),
+])
+def test_wkb_in_both_byte_orders_with_z_and_as_hex(geometry):
+    import shapely.wkb
+    reference = flood.triangulate(sg.mapping(geometry))
+    for big_endian in (False, True):
+        blob = shapely.wkb.dumps(geometry, big_endian=big_endian)
+        result = flood.triangulate(blob)
+        assert result.vertices.tolist() == reference.vertices.tolist()
+        assert result.triangles.tolist() == reference.triangles.tolist()
+    hexed = shapely.wkb.dumps(geometry, hex=True)
+    assert flood.triangulate(hexed).triangles.tolist() == reference.triangles.tolist()
+    # With z (EWKB's flag; shapely writes it so), the z is dropped.
+    lifted = shapely.wkb.loads(shapely.wkb.dumps(geometry))
+    from shapely.ops import transform
+    with_z = transform(lambda x, y, z=None: (x, y, np.full_like(np.asarray(x), 7.0)), lifted)
+    assert with_z.has_z
+    assert flood.triangulate(shapely.wkb.dumps(with_z)).triangles.tolist() == \
+        reference.triangles.tolist()
+
+
+def test_bad_wkb_is_malformed_and_says_what_is_wrong():
+    import shapely.wkb
+    blob = shapely.wkb.dumps(sg.Polygon(OUTER))
+    for bad, what in [(blob[:-5], "truncated"), (blob + b"\0", "left over"),
+                      (shapely.wkb.dumps(sg.LineString([(0, 0), (1, 1)])), "not LineString")]:
+        with pytest.raises(flood.InvalidPolygon, match=what) as e:
+            flood.triangulate(bad)
+        assert e.value.code == 3  # malformed, as the CLI says of a file it cannot read
+    # check() reads WKB on its threads, with the same verdicts.
+    verdicts = flood.check([blob, blob[:-5], shapely.wkb.dumps(sg.Polygon(OUTER, HOLES))])
+    assert [v.code for v in verdicts] == [0, 3, 0]
+
+
+def test_check_converts_shapely_in_one_pass():
+    polys = [sg.Polygon([(i, 0), (i + 1, 0), (i, 1)]) for i in range(300)]
+    assert all(v.ok and v.triangles == 1 for v in flood.check(polys))
+
+
+def test_repeated_points_warn_through_the_warnings_module():
+    with pytest.warns(flood.FloodWarning, match="repeated point dropped"):
+        flood.triangulate([(0, 0), (10, 0), (10, 0), (10, 10), (0, 10)])
+    with pytest.warns(flood.FloodWarning):
+        flood.validate([(0, 0), (10, 0), (10, 0), (10, 10), (0, 10)])
+
+
+def test_version_is_the_projects_and_the_package_is_typed():
+    import os
+    import re
+    root = os.environ.get("FLOOD_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+    cmake = open(os.path.join(root, "CMakeLists.txt")).read()
+    pyproject = open(os.path.join(root, "python", "pyproject.toml")).read()
+    assert re.search(r"project\(flood VERSION ([0-9.]+)", cmake).group(1) == flood.__version__
+    assert re.search(r'^version = "([0-9.]+)"', pyproject, re.M).group(1) == flood.__version__
+    assert os.path.exists(os.path.join(os.path.dirname(flood.__file__), "py.typed"))

@@ -552,6 +552,7 @@ int run(int argc, char** argv) {
     // temporary output is removed and the reason printed.
     std::signal(SIGXFSZ, SIG_IGN);
     CLI::App app{"flood: triangulate polygons with holes by flooding (Ronfard & Rossignac 1994)"};
+    app.set_version_flag("--version", std::string("flood ") + FLOOD_VERSION);
     app.require_subcommand(1);
     std::string in, out = "-", format, up = "+y";
     bool narrate = false, noValidate = false, slipping = false, noExactCheck = false;
@@ -700,6 +701,8 @@ int run(int argc, char** argv) {
     } catch (const CLI::CallForHelp& e) {
         return app.exit(e);
     } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForVersion& e) {
         return app.exit(e);
     } catch (const CLI::ParseError& e) {
         app.exit(e);

@@ -397,6 +397,12 @@ TEST(Cli, TraceOfAnInvalidPolygonIsWrittenUpToTheForbiddenTransition) {
     fs::remove_all(d);
 }
 
+TEST(Cli, VersionIsTheProjectsAndExitsZero) {
+    RunResult v = run("--version");
+    EXPECT_EQ(v.code, 0) << v.out;
+    EXPECT_EQ(v.out, std::string("flood ") + FLOOD_PROJECT_VERSION + "\n");
+}
+
 // A trace of an unvalidated run holds NaN: written as "NaN" (nlohmann wrote null, which the
 // reader refused), it reads back.
 TEST(Cli, TraceWithNaNReadsBack) {

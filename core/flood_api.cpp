@@ -7,8 +7,18 @@ namespace flood {
 
 Polygon makePolygon(const std::vector<Rings>& parts) {
     Polygon p;
+    std::vector<Point> open;
     for (const Rings& rings : parts)
-        for (size_t r = 0; r < rings.size(); ++r) p.addRing(rings[r], r == 0);
+        for (size_t r = 0; r < rings.size(); ++r) {
+            const std::vector<Point>& ring = rings[r];
+            // Closed as OGR, GEOS and WKT store it: the repeated first point is not a vertex.
+            if (ring.size() > 3 && ring.back() == ring.front()) {
+                open.assign(ring.begin(), ring.end() - 1);
+                p.addRing(open, r == 0);
+            } else {
+                p.addRing(ring, r == 0);
+            }
+        }
     return p;
 }
 

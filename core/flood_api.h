@@ -12,7 +12,8 @@
 namespace flood {
 
 // One polygon: its outer ring, then its holes. A ring lists its vertices in order, in either
-// orientation, without repeating the first at the end; a hole may be a single point.
+// orientation, open or closed (a last point equal to the first, as OGR, GEOS and WKT store
+// rings, is not a vertex); a hole may be a single point.
 using Rings = std::vector<std::vector<Point>>;
 
 // A MultiPolygon of `parts` as a Polygon. Vertices are numbered through all rings in order,

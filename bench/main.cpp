@@ -31,14 +31,14 @@
 #include <string>
 #include <vector>
 
-#include "checker.h"
-#include "flood.h"
+#include "check/checker.h"
 #include "floor.h"
+#include "geometry/work.h"
 #include "inputs.h"
-#include "io.h"
+#include "io/io.h"
+#include "log/replay.h"
+#include "machine/flood.h"
 #include "peers.h"
-#include "replay.h"
-#include "work.h"
 
 namespace fs = std::filesystem;
 using namespace flood;

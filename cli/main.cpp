@@ -28,20 +28,20 @@
 #include <thread>
 
 #include "check.h"
-#include "checker.h"
-#include "flood.h"
-#include "generate.h"
-#include "io.h"
-#include "narrate.h"
-#include "output.h"
-#include "replay.h"
-#include "shrink.h"
-#include "touches.h"
-#include "trace_io.h"
-#include "transcript.h"
-#include "verify.h"
+#include "check/checker.h"
+#include "check/touches.h"
+#include "check/verify.h"
+#include "io/io.h"
+#include "io/output.h"
+#include "log/replay.h"
+#include "log/trace_io.h"
+#include "machine/flood.h"
+#include "teach/narrate.h"
+#include "teach/transcript.h"
+#include "tools/generate.h"
+#include "tools/shrink.h"
 #ifdef FLOOD_GDAL
-#include "gdal_io.h"
+#include "io/gdal/gdal_io.h"
 #endif
 
 namespace {

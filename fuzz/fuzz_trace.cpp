@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "replay.h"
-#include "trace_io.h"
+#include "log/replay.h"
+#include "log/trace_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -16,12 +16,12 @@
 #include <thread>
 #include <type_traits>
 
-#include "checker.h"
-#include "diagnostic_where.h"
-#include "flood.h"
-#include "generate.h"
-#include "io.h"
-#include "replay.h"
+#include "check/checker.h"
+#include "check/diagnostic_where.h"
+#include "io/io.h"
+#include "log/replay.h"
+#include "machine/flood.h"
+#include "tools/generate.h"
 
 namespace py = pybind11;
 using namespace flood;

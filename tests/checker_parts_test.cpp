@@ -6,12 +6,12 @@
 #include <cmath>
 #include <random>
 
-#include "checker.h"
-#include "flood.h"
-#include "generate.h"
-#include "io.h"
-#include "predicates.h"
-#include "work.h"
+#include "check/checker.h"
+#include "geometry/predicates.h"
+#include "geometry/work.h"
+#include "io/io.h"
+#include "machine/flood.h"
+#include "tools/generate.h"
 
 using namespace flood;
 

@@ -6,10 +6,10 @@
 #include <future>
 #include <set>
 
-#include "checker.h"
-#include "flood.h"
-#include "generate.h"
-#include "io.h"
+#include "check/checker.h"
+#include "io/io.h"
+#include "machine/flood.h"
+#include "tools/generate.h"
 
 using flood::checkTriangulation;
 using flood::Point;

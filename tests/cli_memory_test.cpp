@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <string>
 
-#include "generate.h"
-#include "shrink.h"
 #include "test_support.h"
+#include "tools/generate.h"
+#include "tools/shrink.h"
 
 namespace {
 

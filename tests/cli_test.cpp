@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "invalid_catalogue.h"
-#include "trace_io.h"
+#include "log/trace_io.h"
 
 using namespace flood::testing;
 

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "coincident.h"
+#include "geometry/coincident.h"
 
 namespace {
 

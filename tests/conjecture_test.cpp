@@ -2,11 +2,11 @@
 // are invalid, and what the unvalidated verification sees of each kind of defect.
 #include <gtest/gtest.h>
 
-#include "generate.h"
-#include "shrink.h"
+#include "check/touches.h"
+#include "check/verify.h"
 #include "test_support.h"
-#include "touches.h"
-#include "verify.h"
+#include "tools/generate.h"
+#include "tools/shrink.h"
 
 using namespace flood;
 using namespace flood::testing;

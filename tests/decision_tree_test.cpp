@@ -7,11 +7,11 @@
 #include <algorithm>
 #include <set>
 
-#include "decision_tree.h"
-#include "generate.h"
-#include "io.h"
-#include "replay.h"
+#include "io/io.h"
+#include "log/replay.h"
+#include "teach/decision_tree.h"
 #include "test_support.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

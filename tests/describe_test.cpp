@@ -2,11 +2,11 @@
 // show it: the action, the vertices it moved, the triangles it cut.
 #include <gtest/gtest.h>
 
-#include "describe.h"
-#include "narrate.h"
-#include "replay.h"
+#include "log/replay.h"
+#include "teach/describe.h"
+#include "teach/narrate.h"
+#include "teach/transcript.h"
 #include "test_support.h"
-#include "transcript.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -5,7 +5,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "diagnostic_where.h"
+#include "check/diagnostic_where.h"
 #include "test_support.h"
 
 using namespace flood;

@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <string>
 
-#include "events.h"
+#include "machine/events.h"
 
 using namespace flood::testing;
 

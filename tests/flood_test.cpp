@@ -2,11 +2,11 @@
 // exact checker; small cases also have golden transcripts (the paper's Fig. 7 notation).
 #include <gtest/gtest.h>
 
-#include "generate.h"
 #include "golden_transcripts.h"
-#include "replay.h"
+#include "log/replay.h"
+#include "teach/transcript.h"
 #include "test_support.h"
-#include "transcript.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -9,12 +9,12 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "flood.h"
 #include "golden_transcripts.h"
-#include "io.h"
-#include "replay.h"
+#include "io/io.h"
+#include "log/replay.h"
+#include "machine/flood.h"
+#include "teach/transcript.h"
 #include "test_support.h"
-#include "transcript.h"
 
 using namespace flood;
 using namespace flood::testing;

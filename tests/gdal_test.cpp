@@ -7,7 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "gdal_io.h"
+#include "io/gdal/gdal_io.h"
 #include "test_support.h"
 
 namespace flood::testing {

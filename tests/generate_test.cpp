@@ -9,8 +9,8 @@
 #include <numeric>
 #include <sstream>
 
-#include "generate.h"
-#include "predicates.h"
+#include "geometry/predicates.h"
+#include "tools/generate.h"
 
 using flood::Index;
 using flood::orient;

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "polygon.h"
+#include "geometry/polygon.h"
 
 namespace flood::testing {
 

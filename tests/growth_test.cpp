@@ -15,11 +15,11 @@
 #include <string>
 #include <vector>
 
-#include "checker.h"
-#include "flood.h"
-#include "generate.h"
-#include "io.h"
-#include "work.h"
+#include "check/checker.h"
+#include "geometry/work.h"
+#include "io/io.h"
+#include "machine/flood.h"
+#include "tools/generate.h"
 
 namespace flood {
 namespace {

@@ -5,11 +5,11 @@
 
 #include <cstdio>
 
-#include "generate.h"
-#include "invariants.h"
-#include "replay.h"
+#include "check/invariants.h"
+#include "geometry/work.h"
+#include "log/replay.h"
 #include "test_support.h"
-#include "work.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -12,11 +12,11 @@
 #include <set>
 #include <sstream>
 
-#include "checker.h"
-#include "io.h"
-#include "replay.h"
+#include "check/checker.h"
+#include "io/io.h"
+#include "log/replay.h"
+#include "log/trace_io.h"
 #include "test_support.h"
-#include "trace_io.h"
 
 using namespace flood;
 using flood::testing::writtenAndRead;

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "generate.h"
 #include "test_support.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using flood::testing::filesIn;

@@ -5,11 +5,11 @@
 #include <cctype>
 #include <cmath>
 
-#include "generate.h"
-#include "io.h"
-#include "narrate.h"
-#include "replay.h"
+#include "io/io.h"
+#include "log/replay.h"
+#include "teach/narrate.h"
 #include "test_support.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -4,8 +4,8 @@
 
 #include <type_traits>
 
-#include "loops.h"
-#include "node_id.h"
+#include "machine/loops.h"
+#include "machine/node_id.h"
 
 using namespace flood;
 

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "output.h"
+#include "io/output.h"
 #include "test_support.h"
 
 using namespace flood;

@@ -7,8 +7,8 @@
 #include <limits>
 #include <random>
 
-#include "predicates.h"
-#include "work.h"
+#include "geometry/predicates.h"
+#include "geometry/work.h"
 
 using flood::ExactSum;
 using flood::inside;

@@ -15,8 +15,8 @@
 #include <iterator>
 
 #include "../fuzz/fuzz_poly.h"
-#include "shrink.h"
 #include "test_support.h"
+#include "tools/shrink.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "generate.h"
-#include "prefix_tree.h"
-#include "replay.h"
+#include "log/prefix_tree.h"
+#include "log/replay.h"
+#include "tools/generate.h"
 
 using namespace flood;
 

@@ -1,9 +1,9 @@
 // Replay rebuilds the machine-visible state from the event log alone, with keyframes.
 #include <gtest/gtest.h>
 
-#include "generate.h"
-#include "replay.h"
+#include "log/replay.h"
 #include "test_support.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstdint>
 
-#include "predicates.h"
-#include "ring_area.h"
+#include "geometry/predicates.h"
+#include "geometry/ring_area.h"
 
 namespace {
 

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "generate.h"
-#include "io.h"
-#include "predicates.h"
-#include "sag_banks.h"
-#include "work.h"
+#include "geometry/predicates.h"
+#include "geometry/work.h"
+#include "io/io.h"
+#include "machine/sags/sag_banks.h"
+#include "tools/generate.h"
 
 using namespace flood;
 

@@ -8,13 +8,13 @@
 #include <functional>
 #include <random>
 
-#include "flood.h"
-#include "generate.h"
-#include "io.h"
-#include "predicates.h"
-#include "sag_banks.h"
-#include "sag_index.h"
-#include "work.h"
+#include "geometry/predicates.h"
+#include "geometry/work.h"
+#include "io/io.h"
+#include "machine/flood.h"
+#include "machine/sags/sag_banks.h"
+#include "machine/sags/sag_index.h"
+#include "tools/generate.h"
 
 using namespace flood;
 

@@ -6,10 +6,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "generate.h"
-#include "shrink.h"
+#include "check/touches.h"
 #include "test_support.h"
-#include "touches.h"
+#include "tools/generate.h"
+#include "tools/shrink.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -11,13 +11,13 @@
 #include <string>
 #include <vector>
 
-#include "generate.h"
-#include "predicates.h"
-#include "sag_banks.h"
+#include "geometry/predicates.h"
+#include "geometry/up.h"
+#include "geometry/work.h"
+#include "machine/sags/sag_banks.h"
+#include "machine/vertex_class.h"
 #include "test_support.h"
-#include "up.h"
-#include "vertex_class.h"
-#include "work.h"
+#include "tools/generate.h"
 
 // Allocations made by this thread, counted by the replaced global operator new (it forwards
 // to malloc; the rest of the suite sees no difference).

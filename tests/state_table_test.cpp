@@ -2,11 +2,11 @@
 // counts add up to the run, and the cells say what the paper says of each state.
 #include <gtest/gtest.h>
 
-#include "generate.h"
-#include "io.h"
-#include "replay.h"
-#include "state_table.h"
+#include "io/io.h"
+#include "log/replay.h"
+#include "teach/state_table.h"
 #include "test_support.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

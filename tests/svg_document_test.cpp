@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "svg.h"
+#include "io/svg.h"
 
 using namespace flood;
 

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "io.h"
+#include "io/io.h"
 
 using namespace flood;
 

@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "checker.h"
-#include "flood.h"
-#include "io.h"
-#include "replay.h"
-#include "trace_io.h"
+#include "check/checker.h"
+#include "io/io.h"
+#include "log/replay.h"
+#include "log/trace_io.h"
+#include "machine/flood.h"
 
 namespace flood::testing {
 

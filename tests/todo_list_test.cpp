@@ -5,10 +5,10 @@
 
 #include <algorithm>
 
-#include "generate.h"
-#include "replay.h"
+#include "log/replay.h"
+#include "teach/todo_list.h"
 #include "test_support.h"
-#include "todo_list.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

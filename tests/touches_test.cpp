@@ -5,11 +5,11 @@
 
 #include <cmath>
 
-#include "generate.h"
-#include "predicates.h"
+#include "check/touches.h"
+#include "geometry/predicates.h"
+#include "geometry/work.h"
 #include "test_support.h"
-#include "touches.h"
-#include "work.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

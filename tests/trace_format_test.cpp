@@ -6,10 +6,10 @@
 #include <sstream>
 #include <string>
 
-#include "generate.h"
-#include "replay.h"
+#include "log/replay.h"
+#include "log/trace_io.h"
 #include "test_support.h"
-#include "trace_io.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using flood::testing::readOrFail;

@@ -7,8 +7,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "generate.h"
-#include "replay.h"
+#include "log/replay.h"
+#include "tools/generate.h"
 
 using namespace flood;
 

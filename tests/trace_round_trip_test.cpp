@@ -6,11 +6,11 @@
 #include <map>
 #include <sstream>
 
-#include "generate.h"
-#include "io.h"
-#include "replay.h"
+#include "io/io.h"
+#include "log/replay.h"
+#include "log/trace_io.h"
 #include "test_support.h"
-#include "trace_io.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

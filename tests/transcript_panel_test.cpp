@@ -4,11 +4,11 @@
 #if __has_include("model.h")
 #include <gtest/gtest.h>
 
-#include "generate.h"
+#include "log/replay.h"
 #include "model.h"
-#include "replay.h"
+#include "teach/transcript.h"
 #include "test_support.h"
-#include "transcript.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -3,11 +3,11 @@
 // are flood::transcript(), the golden transcripts where there are some.
 #include <gtest/gtest.h>
 
-#include "generate.h"
 #include "golden_transcripts.h"
-#include "replay.h"
+#include "log/replay.h"
+#include "teach/transcript.h"
 #include "test_support.h"
-#include "transcript.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -11,17 +11,17 @@
 
 #include <sstream>
 
-#include "generate.h"
-#include "invariants.h"
-#include "predicates.h"
-#include "replay.h"
+#include "check/invariants.h"
+#include "check/touches.h"
+#include "check/verify.h"
+#include "geometry/predicates.h"
+#include "geometry/work.h"
+#include "log/replay.h"
+#include "log/trace_io.h"
+#include "machine/vertex_class.h"
+#include "teach/transcript.h"
 #include "test_support.h"
-#include "touches.h"
-#include "trace_io.h"
-#include "transcript.h"
-#include "verify.h"
-#include "vertex_class.h"
-#include "work.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -7,8 +7,8 @@
 
 #include <functional>
 
+#include "geometry/work.h"
 #include "test_support.h"
-#include "work.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -8,10 +8,10 @@
 #include <cmath>
 #include <cstdint>
 
-#include "generate.h"
+#include "check/validate_paths.h"
+#include "geometry/work.h"
 #include "test_support.h"
-#include "validate_paths.h"
-#include "work.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

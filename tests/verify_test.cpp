@@ -5,10 +5,10 @@
 #include <cmath>
 #include <limits>
 
-#include "generate.h"
+#include "check/touches.h"
+#include "check/verify.h"
 #include "test_support.h"
-#include "touches.h"
-#include "verify.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

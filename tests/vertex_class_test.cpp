@@ -5,8 +5,8 @@
 
 #include <vector>
 
-#include "flood.h"
-#include "vertex_class.h"
+#include "machine/flood.h"
+#include "machine/vertex_class.h"
 
 using namespace flood;
 

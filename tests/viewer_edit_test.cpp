@@ -9,9 +9,9 @@
 
 #include "edit.h"
 #include "flood_api.h"
-#include "generate.h"
-#include "io.h"
+#include "io/io.h"
 #include "test_support.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::view;

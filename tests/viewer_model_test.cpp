@@ -12,16 +12,16 @@
 
 #include "canvas_geometry.h"
 #include "edit.h"
-#include "generate.h"
+#include "geometry/work.h"
 #include "gorge_focus.h"
-#include "io.h"
+#include "io/io.h"
 #include "key_queue.h"
+#include "log/trace_io.h"
 #include "model.h"
 #include "scene.h"
+#include "teach/transcript.h"
 #include "test_support.h"
-#include "trace_io.h"
-#include "transcript.h"
-#include "work.h"
+#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::view;

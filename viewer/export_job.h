@@ -9,8 +9,8 @@
 #include <string>
 
 #include "export.h"
+#include "geometry/status.h"
 #include "panels.h"
-#include "status.h"
 
 namespace flood::view {
 

@@ -17,11 +17,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "io.h"
-#include "predicates.h"
-#include "trace_io.h"
+#include "geometry/predicates.h"
+#include "io/io.h"
+#include "log/trace_io.h"
 #ifdef FLOOD_GDAL
-#include "gdal_io.h"
+#include "io/gdal/gdal_io.h"
 #endif
 
 #ifndef FLOOD_SOURCE_DIR

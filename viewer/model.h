@@ -14,20 +14,20 @@
 #include <string>
 #include <vector>
 
-#include "checker.h"
-#include "describe.h"
-#include "events.h"
-#include "flood.h"
+#include "check/checker.h"
+#include "check/invariants.h"
 #include "geometry.h"  // Vec2, Rect
-#include "invariants.h"
-#include "io.h"
-#include "polygon.h"
-#include "replay.h"
-#include "shrink.h"
-#include "state_table.h"
-#include "status.h"
-#include "transcript.h"
-#include "vertex_class.h"
+#include "geometry/polygon.h"
+#include "geometry/status.h"
+#include "io/io.h"
+#include "log/replay.h"
+#include "machine/events.h"
+#include "machine/flood.h"
+#include "machine/vertex_class.h"
+#include "teach/describe.h"
+#include "teach/state_table.h"
+#include "teach/transcript.h"
+#include "tools/shrink.h"
 
 #include <thread>
 

@@ -11,9 +11,9 @@
 #include <cstdio>
 #include <string>
 
-#include "decision_tree.h"
-#include "narrate.h"
 #include "panels.h"
+#include "teach/decision_tree.h"
+#include "teach/narrate.h"
 
 namespace flood::view {
 

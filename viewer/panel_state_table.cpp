@@ -6,7 +6,7 @@
 #include <string>
 
 #include "panels.h"
-#include "state_table.h"
+#include "teach/state_table.h"
 
 namespace flood::view {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "panels.h"
-#include "transcript.h"
+#include "teach/transcript.h"
 
 namespace flood::view {
 

@@ -5,8 +5,8 @@
 #include <imgui.h>
 
 #include "flood_api.h"
-#include "generate.h"
 #include "panels.h"
+#include "tools/generate.h"
 #include "windowless_imgui.h"
 
 using namespace flood;

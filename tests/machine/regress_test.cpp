@@ -14,7 +14,7 @@
 #include <fstream>
 #include <iterator>
 
-#include "../fuzz/fuzz_poly.h"
+#include "../../fuzz/fuzz_poly.h"
 #include "test_support.h"
 #include "tools/shrink.h"
 

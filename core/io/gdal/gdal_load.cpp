@@ -32,11 +32,11 @@ const Loaded& module() {
     std::call_once(once, [] {
         std::vector<std::string> places;
         if (const char* env = std::getenv("FLOOD_GDAL_MODULE"); env && *env) {
-            places.push_back(env);  // given: the only place
+            places.emplace_back(env);  // given: the only place
         } else {
             if (std::string dir = executableDir(); !dir.empty())
                 places.push_back(dir + "/../" FLOOD_GDAL_MODULE_LIBDIR "/flood/flood-gdal.so");
-            places.push_back(FLOOD_GDAL_MODULE_BUILT);
+            places.emplace_back(FLOOD_GDAL_MODULE_BUILT);
         }
         for (const std::string& place : places) {
             void* h = dlopen(place.c_str(), RTLD_NOW | RTLD_LOCAL);

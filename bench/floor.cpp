@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "predicates.h"
+#include "geometry/predicates.h"
 
 namespace bench {
 

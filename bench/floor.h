@@ -7,7 +7,7 @@
 #pragma once
 #include <cstdint>
 
-#include "polygon.h"
+#include "geometry/polygon.h"
 
 namespace bench {
 

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "generate.h"
+#include "tools/generate.h"
 
 namespace bench {
 

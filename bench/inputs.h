@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "polygon.h"
+#include "geometry/polygon.h"
 
 namespace bench {
 

@@ -31,14 +31,14 @@
 #include <string>
 #include <vector>
 
-#include "checker.h"
-#include "flood.h"
+#include "check/checker.h"
 #include "floor.h"
+#include "geometry/work.h"
 #include "inputs.h"
-#include "io.h"
+#include "io/io.h"
+#include "log/replay.h"
+#include "machine/flood.h"
 #include "peers.h"
-#include "replay.h"
-#include "work.h"
 
 namespace fs = std::filesystem;
 using namespace flood;
@@ -156,7 +156,8 @@ Row measure(const std::string& who, const Polygon& p, const CoordIndex& index) {
         else v = judge(p, result.triangles, 0, "");
         Polygon copy = p;  // validate() records the T-junctions it finds into its polygon
         Timing tv = timeRuns([&] { (void)validate(copy, "input"); });
-        // One more run counted (core/work.h): the sag search's share of the machine's work.
+        // One more run counted (core/geometry/work.h): the sag search's share of the
+        // machine's work.
         work() = {};
         (void)triangulate(p);
         const WorkCounters w = work();

@@ -13,7 +13,7 @@
 #include <GL/glu.h>
 #include <geos_c.h>
 
-#include "predicates.h"
+#include "geometry/predicates.h"
 
 namespace bench {
 

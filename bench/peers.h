@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "polygon.h"
+#include "geometry/polygon.h"
 
 namespace bench {
 

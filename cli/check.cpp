@@ -30,14 +30,14 @@
 #include <sstream>
 #include <thread>
 
-#include "checker.h"
-#include "diagnostic_where.h"
-#include "flood.h"
-#include "io.h"
-#include "output.h"
-#include "shrink.h"
+#include "check/checker.h"
+#include "check/diagnostic_where.h"
+#include "io/io.h"
+#include "io/output.h"
+#include "machine/flood.h"
+#include "tools/shrink.h"
 #ifdef FLOOD_GDAL
-#include "gdal_io.h"
+#include "io/gdal/gdal_io.h"
 #endif
 
 namespace flood::cli {
@@ -292,7 +292,7 @@ private:
         size_t file, feature;
     };
 
-    // GIS datasets through GDAL (core_gdal/), the rest by the core's readers.
+    // GIS datasets through GDAL (core/io/gdal/), the rest by the core's readers.
     DatasetRead readDataset(const std::string& path) {
 #ifdef FLOOD_GDAL
         const Selection& s = o_.selection;

@@ -1,7 +1,7 @@
 // The front door (flood_api.h): validation first, then the flood machine.
 #include "flood_api.h"
 
-#include "io.h"
+#include "io/io.h"
 
 namespace flood {
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "flood.h"   // Options, Triangle, Diagnostic, Status, triangulate() without validation
-#include "replay.h"  // Trace, Replay: seek to any step of a recorded flood
+#include "log/replay.h"     // Trace, Replay: seek to any step of a recorded flood
+#include "machine/flood.h"  // Options, Triangle, Diagnostic, Status, triangulate() without validation
 
 namespace flood {
 

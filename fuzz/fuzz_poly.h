@@ -14,8 +14,8 @@
 #include <cstring>
 #include <vector>
 
-#include "flood.h"
-#include "polygon.h"
+#include "geometry/polygon.h"
+#include "machine/flood.h"
 
 namespace fuzzpoly {
 

@@ -1,4 +1,4 @@
-// libFuzzer harness: parseTrace (core/trace_io.h) on arbitrary bytes, then a Replay of the
+// libFuzzer harness: parseTrace (core/log/trace_io.h) on arbitrary bytes, then a Replay of the
 // loaded trace seeking to pseudo-random steps (forward, backward, past the end).
 // A malformed trace must be a diagnostic; a loaded one must replay without crashing.
 #include <cstddef>
@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "replay.h"
-#include "trace_io.h"
+#include "log/replay.h"
+#include "log/trace_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -8,10 +8,14 @@ from setuptools import Extension, setup
 
 here = os.path.dirname(os.path.abspath(__file__))
 core = os.path.relpath(os.path.join(here, "..", "core"), here)
+# Every layer's sources (core/LAYERS) but core/io/gdal's, the GDAL module CMake builds apart.
+gdal = os.path.join(core, "io", "gdal") + os.sep
+core_sources = sorted(s for s in glob.glob(os.path.join(core, "**", "*.cpp"), root_dir=here,
+                                           recursive=True) if not s.startswith(gdal))
 
 setup(ext_modules=[Extension(
     "flood._flood",
-    sources=["flood_module.cpp"] + sorted(glob.glob(os.path.join(core, "*.cpp"), root_dir=here)),
+    sources=["flood_module.cpp"] + core_sources,
     include_dirs=[core],
     libraries=["gmp", "simdjson"],
     language="c++",

@@ -2,7 +2,7 @@
 // GEOS and WKT store them) give the same triangles; invalid input gets a diagnostic.
 #include <gtest/gtest.h>
 
-#include "checker.h"
+#include "check/checker.h"
 #include "flood_api.h"
 
 using namespace flood;

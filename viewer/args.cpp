@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "geometry/up.h"
 #include "platform_glfw.h"  // the --press keys
-#include "up.h"
 
 namespace flood::view {
 

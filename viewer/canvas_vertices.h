@@ -5,8 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "geometry/polygon.h"  // Point
 #include "palette.h"
-#include "polygon.h"  // Point
 
 namespace flood::view {
 

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <utility>
 
-#include "io.h"
-#include "predicates.h"
+#include "geometry/predicates.h"
+#include "io/io.h"
 
 namespace flood::view {
 

@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <cstring>
 
-#include "narrate.h"
 #include "presenter.h"
+#include "teach/narrate.h"
 
 namespace flood::view {
 

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <optional>
 
+#include "io/output.h"  // atomic files
 #include "offscreen.h"
-#include "output.h"  // atomic files
 #include "quantize.h"
 #ifdef FLOOD_GIF
 #include "gif_writer.h"

@@ -20,7 +20,7 @@
 #include "panels.h"
 #include "platform_glfw.h"
 #include "renderer.h"
-#include "transcript.h"
+#include "teach/transcript.h"
 
 using namespace flood;
 using namespace flood::view;

@@ -17,12 +17,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "diagnostic_where.h"
-#include "io.h"
-#include "predicates.h"
-#include "trace_io.h"
+#include "check/diagnostic_where.h"
+#include "geometry/predicates.h"
+#include "io/io.h"
+#include "log/trace_io.h"
 #ifdef FLOOD_GDAL
-#include "gdal_io.h"
+#include "io/gdal/gdal_io.h"
 #endif
 
 #ifndef FLOOD_SOURCE_DIR
@@ -34,7 +34,7 @@
 
 namespace flood::view {
 
-// [SECTION] vertex classes: core/vertex_class.cpp (the state table uses them too)
+// [SECTION] vertex classes: core/machine/vertex_class.cpp (the state table uses them too)
 
 // ========================================================================================
 // [SECTION] layout and camera
@@ -126,7 +126,8 @@ bool hits(const Breakpoints& b, const Event& e) {
     return false;
 }
 
-// [SECTION] text views: core/describe.cpp (an event in one line), core/transcript.cpp (items)
+// [SECTION] text views: core/teach/describe.cpp (an event in one line),
+// core/teach/transcript.cpp (items)
 
 // ========================================================================================
 // [SECTION] Predicate inspector
@@ -232,7 +233,7 @@ std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState&
     std::sort(sags.begin(), sags.end(),
               [&](Index a, Index b) { return compareHeight(p, trace.up, a, b) < 0; });
     // The one bridged is listed even when the cap cuts the rest. (Only a Bridge names a sag:
-    // in other events the field holds their own subject, core/events.h.)
+    // in other events the field holds their own subject, core/machine/events.h.)
     const Index bridging = e.action == Action::Bridge ? e.sag : kNone;
     if (bridging != kNone && std::find(sags.begin(), sags.end(), bridging) == sags.end())
         sags.insert(sags.begin(), bridging);

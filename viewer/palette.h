@@ -8,7 +8,7 @@
 #include <iterator>
 #include <utility>
 
-#include "events.h"
+#include "machine/events.h"
 
 namespace flood::view {
 

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "output.h"  // atomic files
+#include "io/output.h"  // atomic files
 #include "panels.h"
 
 namespace flood::view {

@@ -10,7 +10,7 @@
 
 #include "panels.h"
 #ifdef FLOOD_GDAL
-#include "gdal_io.h"
+#include "io/gdal/gdal_io.h"
 #endif
 
 namespace flood::view {

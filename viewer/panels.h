@@ -16,7 +16,7 @@
 #include "presenter.h"
 #include "renderer.h"
 #include "scene.h"
-#include "todo_list.h"
+#include "teach/todo_list.h"
 
 struct ImVec4;
 struct ImFont;

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "narrate.h"
+#include "teach/narrate.h"
 
 namespace flood::view {
 

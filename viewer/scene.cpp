@@ -4,7 +4,7 @@
 #include <cmath>
 #include <ostream>
 
-#include "svg.h"
+#include "io/svg.h"
 
 namespace flood::view {
 

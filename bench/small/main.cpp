@@ -18,8 +18,8 @@
 #include <cstring>
 #include <string>
 
-#include "flood.h"
-#include "io.h"
+#include "io/io.h"
+#include "machine/flood.h"
 
 using namespace flood;
 

@@ -1,0 +1,215 @@
+#include "check/verify.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+
+#include "check/touches.h"
+#include "geometry/predicates.h"
+
+namespace flood {
+namespace {
+
+// Sides lo' < lo and hi' > hi (exact) for coordinates in [lo, hi]: the next multiples of a
+// power of two w at least the span (and at least 2^-50 of the magnitude, so that hi / w + 1 is
+// exact), a margin as large as the polygon, clamped at +-DBL_MAX. False when no double lies
+// beyond (a coordinate is +-DBL_MAX).
+bool beyond(double lo, double hi, double& outLo, double& outHi) {
+    double big = std::max(std::fabs(lo), std::fabs(hi));
+    double w = big == 0 ? 1 : std::ldexp(1.0, std::ilogb(big) - 50);
+    while (w < hi - lo && std::isfinite(w)) w *= 2;  // hi - lo may be inf: w overflows too
+    if (!std::isfinite(w)) w = std::ldexp(1.0, DBL_MAX_EXP - 1);
+    outHi = (std::floor(hi / w) + 1) * w;
+    outLo = (std::ceil(lo / w) - 1) * w;
+    if (std::isinf(outHi)) outHi = DBL_MAX;
+    if (std::isinf(outLo)) outLo = -DBL_MAX;
+    return outHi > hi && outLo < lo;
+}
+
+enum class Side { Inside, Outside, Boundary };
+
+// Where p lies relative to the ring (exact crossing count of a ray to +x).
+Side locate(const Polygon& P, const Ring& ring, Point p) {
+    bool inside = false;
+    for (Index i = 0; i < ring.count; ++i) {
+        Point a = P.vertices[ring.first + i], b = P.vertices[ring.first + (i + 1) % ring.count];
+        if (p == a) return Side::Boundary;
+        if (std::min(a.y, b.y) <= p.y && p.y <= std::max(a.y, b.y) && insideSegment(a, b, p))
+            return Side::Boundary;
+        if ((a.y > p.y) != (b.y > p.y) && (orient(a, b, p) > 0) == (b.y > a.y)) inside = !inside;
+    }
+    return inside ? Side::Inside : Side::Outside;
+}
+
+struct Box {
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    void add(Point p) {
+        if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;  // the floods refuse those
+        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y),
+        y1 = std::max(y1, p.y);
+    }
+    bool empty() const { return x0 > x1; }
+    bool contains(const Box& b) const {
+        return x0 <= b.x0 && b.x1 <= x1 && y0 <= b.y0 && b.y1 <= y1;
+    }
+};
+
+Box ringBox(const Polygon& P, const Ring& r) {
+    Box b;
+    for (Index v = r.first; v < r.first + r.count; ++v) b.add(P.vertices[v]);
+    return b;
+}
+
+// The innermost hole of another part that each part lies in (kNone: none), by one exact
+// point location per part and hole whose boxes nest. On valid input the holes containing a
+// part form a chain; the innermost is the one whose own part lies in the most holes.
+std::vector<Index> innermostHoles(const Polygon& P) {
+    const size_t parts = P.parts.size();
+    std::vector<Index> partOfRing(P.rings.size());
+    std::vector<Index> holes;  // rings that bound an area and are not outer
+    for (Index k = 0; k < parts; ++k)
+        for (Index r = P.parts[k].firstRing; r < P.parts[k].firstRing + P.parts[k].ringCount; ++r) {
+            partOfRing[r] = k;
+            if (r != P.parts[k].firstRing && P.rings[r].count > 1) holes.push_back(r);
+        }
+    std::vector<std::vector<Index>> containing(parts);
+    if (holes.empty() || parts < 2) return std::vector<Index>(parts, kNone);
+    // A ring with a non-finite coordinate nests nowhere (the floods refuse it).
+    auto finite = [&](Index r) {
+        for (Index v = P.rings[r].first; v < P.rings[r].first + P.rings[r].count; ++v)
+            if (!std::isfinite(P.vertices[v].x) || !std::isfinite(P.vertices[v].y)) return false;
+        return true;
+    };
+    holes.erase(std::remove_if(holes.begin(), holes.end(), [&](Index h) { return !finite(h); }),
+                holes.end());
+    std::vector<Box> holeBox(P.rings.size()), partBox(parts);
+    for (Index h : holes) holeBox[h] = ringBox(P, P.rings[h]);
+    for (Index k = 0; k < parts; ++k) partBox[k] = ringBox(P, P.rings[P.parts[k].firstRing]);
+    // Sweep in x: holes enter at their left side; a part is tested against the active holes.
+    std::vector<Index> order(parts);
+    for (Index k = 0; k < parts; ++k) order[k] = k;
+    std::sort(order.begin(), order.end(),
+              [&](Index a, Index b) { return partBox[a].x0 < partBox[b].x0; });
+    std::sort(holes.begin(), holes.end(),
+              [&](Index a, Index b) { return holeBox[a].x0 < holeBox[b].x0; });
+    std::vector<Index> active;
+    size_t nextHole = 0;
+    for (Index k : order) {
+        const Box& pb = partBox[k];
+        if (pb.empty() || !finite(P.parts[k].firstRing)) continue;
+        while (nextHole < holes.size() && holeBox[holes[nextHole]].x0 <= pb.x0)
+            active.push_back(holes[nextHole++]);
+        active.erase(std::remove_if(active.begin(), active.end(),
+                                    [&](Index h) { return holeBox[h].x1 < pb.x0; }),
+                     active.end());
+        const Ring& outer = P.rings[P.parts[k].firstRing];
+        for (Index h : active) {
+            if (partOfRing[h] == k || !holeBox[h].contains(pb)) continue;
+            Side s = Side::Boundary;
+            for (Index v = outer.first; v < outer.first + outer.count && s == Side::Boundary; ++v)
+                s = locate(P, P.rings[h], P.vertices[v]);
+            if (s != Side::Outside) containing[k].push_back(h);  // all on its boundary: inside
+        }
+    }
+    std::vector<Index> innermost(parts, kNone);
+    for (Index k = 0; k < parts; ++k)
+        for (Index h : containing[k])
+            if (innermost[k] == kNone ||
+                containing[partOfRing[h]].size() > containing[partOfRing[innermost[k]]].size())
+                innermost[k] = h;
+    return innermost;
+}
+
+// The box's sides x0, y0, x1, y1 beyond the polygon; false when a side has no double beyond.
+bool boxAround(const Polygon& p, double side[4]) {
+    Box b;
+    for (Point q : p.vertices) b.add(q);
+    if (b.empty()) b = {0, 0, 0, 0};
+    bool x = beyond(b.x0, b.x1, side[0], side[2]);
+    return beyond(b.y0, b.y1, side[1], side[3]) && x;
+}
+
+}  // namespace
+
+Polygon complementOf(const Polygon& input) {
+    double side[4];
+    Polygon halved;
+    bool useHalved = false;
+    if (!boxAround(input, side)) {  // a coordinate is +-DBL_MAX: halve everything if that is exact
+        halved = input;
+        bool exact = true;
+        for (Point& p : halved.vertices) {
+            Point h{p.x * 0.5, p.y * 0.5};
+            exact &= h.x * 2 == p.x && h.y * 2 == p.y;
+            p = h;
+        }
+        // Otherwise the box touches the polygon at DBL_MAX (the floods then judge it).
+        if (exact) useHalved = boxAround(halved, side);
+    }
+    const Polygon& polygon = useHalved ? halved : input;
+    const double x0 = side[0], y0 = side[1], x1 = side[2], y1 = side[3];
+    auto ring = [&](Index r) {
+        const Ring& g = polygon.rings[r];
+        return std::vector<Point>(polygon.vertices.begin() + g.first,
+                                  polygon.vertices.begin() + g.first + g.count);
+    };
+    std::vector<Index> innermost = innermostHoles(polygon);
+    Polygon c;
+    c.addRing({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, true);
+    for (Index k = 0; k < polygon.parts.size(); ++k)
+        if (innermost[k] == kNone) c.addRing(ring(polygon.parts[k].firstRing), false);
+    // Each lake a part, the islands in it its holes; a point hole has no complement.
+    for (const Part& part : polygon.parts)
+        for (Index r = part.firstRing + 1; r < part.firstRing + part.ringCount; ++r) {
+            if (polygon.rings[r].count <= 1) continue;
+            c.addRing(ring(r), true);
+            for (Index k = 0; k < polygon.parts.size(); ++k)
+                if (innermost[k] == r) c.addRing(ring(polygon.parts[k].firstRing), false);
+        }
+    // Parts that touched at a T-junction are now rings of one part touching there.
+    findTouches(c);
+    return c;
+}
+
+const char* caughtName(Caught c) {
+    switch (c) {
+        case Caught::Nothing: return "nothing";
+        case Caught::Polygon: return "polygon";
+        case Caught::Complement: return "complement";
+        case Caught::Checker: return "checker";
+    }
+    return "?";
+}
+
+Caught Verification::caught() const {
+    if (!flood.diagnostic.ok()) return Caught::Polygon;
+    if (!complementFlood.diagnostic.ok()) return Caught::Complement;
+    if (!check.ok || !complementCheck.ok) return Caught::Checker;
+    return Caught::Nothing;
+}
+
+Verification verify(const Polygon& polygon, const Options& options) {
+    Verification v;
+    v.flood = triangulate(polygon, nullptr, options);
+    if (v.flood.diagnostic.ok()) v.check = checkTriangulation(polygon, v.flood.triangles);
+    Polygon complement = complementOf(polygon);
+    v.complementFlood = triangulate(complement, nullptr, options);
+    if (v.complementFlood.diagnostic.ok())
+        v.complementCheck = checkTriangulation(complement, v.complementFlood.triangles);
+    return v;
+}
+
+std::string Verification::summary() const {
+    auto side = [](const char* what, const FloodResult& f, const CheckResult& c) {
+        std::string s = what;
+        if (!f.diagnostic.ok()) return s + ": flooding stopped: " + f.diagnostic.message;
+        if (!c.ok)
+            return s + ": " + std::to_string(f.triangles.size()) +
+                   " triangles, NOT a triangulation: " + c.reason;
+        return s + ": " + std::to_string(f.triangles.size()) + " triangles, exact triangulation";
+    };
+    return side("polygon", flood, check) + "\n" +
+           side("complement", complementFlood, complementCheck);
+}
+
+}  // namespace flood

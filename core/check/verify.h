@@ -1,0 +1,49 @@
+// Verification as the paper does it (§6): "we triangulate both the polygon and its
+// complement". A valid polygon floods to an exact triangulation, and so does its complement in
+// a box around it; an invalid one shows up on one side or the other — the paper's open
+// conjecture, measured in docs/ALGORITHM.md §6 (scripts/conjecture.sh).
+#pragma once
+#include <string>
+
+#include "check/checker.h"
+#include "machine/flood.h"
+
+namespace flood {
+
+// The region between a box strictly containing `polygon` and the polygon: one part per face.
+// The box, its holes the outer rings of the parts that lie in no hole; and each hole of the
+// polygon (but point holes: they bound no area) as a part, its holes the outer rings of the
+// parts lying in that hole and in no hole nested inside it (an island in a lake). Nesting is
+// decided exactly by a vertex of the part that is not on the hole's boundary. The box's sides
+// are multiples of a power of two about the polygon's extent (clamped at +-DBL_MAX, never
+// overflowing), exact and strictly outside; when a coordinate is +-DBL_MAX itself no double
+// lies beyond it, so the complement is built from the polygon halved (exact unless that loses
+// a subnormal's last bit; then the box touches it there).
+// Its T-junctions are found by findTouches(), valid input or not.
+Polygon complementOf(const Polygon& polygon);
+
+// Which check of the verification caught an input (the first, in this order).
+enum class Caught : uint8_t {
+    Nothing,     // both sides flooded to exact triangulations
+    Polygon,     // the polygon's flood stopped in a forbidden state
+    Complement,  // only the complement's flood stopped in a forbidden state
+    Checker      // both floods finished; the exact checker rejects one side's triangles
+};
+const char* caughtName(Caught c);
+
+struct Verification {
+    FloodResult flood, complementFlood;
+    CheckResult check, complementCheck;
+    bool ok() const {
+        return flood.diagnostic.ok() && check.ok && complementFlood.diagnostic.ok() &&
+               complementCheck.ok;
+    }
+    Caught caught() const;
+    std::string summary() const;  // one line per side: what was checked and the verdict
+};
+
+// Floods and checks `polygon` (its splits as given: from validate(), or from findTouches() on
+// the unvalidated path) and its complement.
+Verification verify(const Polygon& polygon, const Options& options = {});
+
+}  // namespace flood

@@ -1,0 +1,32 @@
+// The GDAL module (flood-gdal.so) as its loader sees it. Linking GDAL and its ~110 libraries
+// cost every run of `flood` about 170 million instructions of loading and relocation before
+// main(), thousands of times a small triangulation, so only a run that opens or writes a GIS
+// dataset loads them: the module is opened with dlopen() on first use (gdal_load.cpp) and
+// gives this table.
+// Internal to core/io/gdal/.
+#pragma once
+#include "io/gdal/gdal_io.h"
+
+namespace flood::gdal {
+
+// The functions of gdal_io.h that need GDAL, defined in the module.
+namespace direct {
+DatasetRead readFeatures(const std::string& path, const Selection& s);
+ReadResult readPolygon(const std::string& path, const Selection& s);
+Diagnostic writeTriangles(const std::string& path, const std::string& format, const Polygon& p,
+                          const std::vector<Triangle>& triangles);
+}  // namespace direct
+
+struct ModuleTable {
+    int version;  // kModuleVersion: a module from another build is refused
+    DatasetRead (*readFeatures)(const std::string&, const Selection&);
+    ReadResult (*readPolygon)(const std::string&, const Selection&);
+    Diagnostic (*writeTriangles)(const std::string&, const std::string&, const Polygon&,
+                                 const std::vector<Triangle>&);
+};
+constexpr int kModuleVersion = 1;
+
+}  // namespace flood::gdal
+
+// The module's one exported symbol.
+extern "C" const flood::gdal::ModuleTable* flood_gdal_module();

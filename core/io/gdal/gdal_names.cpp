@@ -1,0 +1,32 @@
+// Which paths are GIS datasets: plain string tests, so they need neither GDAL nor its module.
+#include <algorithm>
+#include <cctype>
+
+#include "io/gdal/gdal_io.h"
+
+namespace flood::gdal {
+namespace {
+std::string extension(const std::string& path) {
+    size_t dot = path.find_last_of("./");
+    std::string ext = dot == std::string::npos || path[dot] == '/' ? "" : path.substr(dot + 1);
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+}  // namespace
+
+bool handles(const std::string& path, const Selection& s) {
+    if (s.any()) return true;
+    if (path == "-") return false;
+    std::string ext = extension(path);
+    return !ext.empty() && ext != "json" && ext != "geojson" && ext != "wkt";
+}
+
+bool gisFile(const std::string& path) {
+    static const char* const known[] = {"shp", "gpkg", "fgb",    "geojsonl", "geojsons",
+                                        "gml", "kml",  "sqlite", "tab",      "mif"};
+    std::string ext = extension(path);
+    return std::find(std::begin(known), std::end(known), ext) != std::end(known);
+}
+
+}  // namespace flood::gdal

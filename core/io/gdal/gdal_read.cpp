@@ -1,0 +1,232 @@
+// Reading OGR vector datasets. Coordinates are the doubles OGR gives, unchanged; curves are
+// linearised by OGR (getLinearGeometry) before they become rings. Every problem becomes a
+// Malformed diagnostic naming the file (and layer, feature), never an exception or a crash.
+#include <cpl_error.h>
+#include <gdal_priv.h>
+#include <ogrsf_frmts.h>
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
+#include <memory>
+#include <mutex>
+
+#include "io/gdal/gdal_module.h"
+#include "io/io_util.h"
+
+namespace flood {
+namespace io_detail {
+// Defined in core/io/io_read.cpp: the ring cleaning every reader shares.
+void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Point>& raw,
+                  bool outer);
+}  // namespace io_detail
+
+namespace gdal::direct {
+namespace {
+
+void registerOnce() {
+    static std::once_flag once;
+    std::call_once(once, [] {
+        GDALAllRegister();
+        // Errors are reported through our diagnostics, not printed by GDAL on stderr.
+        CPLSetErrorHandler(CPLQuietErrorHandler);
+    });
+}
+
+std::string lastError() {
+    std::string m = CPLGetLastErrorMsg();
+    return m.empty() ? "unknown GDAL error" : io_detail::echo(m);
+}
+
+struct DatasetCloser {
+    void operator()(GDALDataset* d) const { GDALClose(d); }
+};
+using DatasetPtr = std::unique_ptr<GDALDataset, DatasetCloser>;
+
+struct FeatureCloser {
+    void operator()(OGRFeature* f) const { OGRFeature::DestroyFeature(f); }
+};
+using FeaturePtr = std::unique_ptr<OGRFeature, FeatureCloser>;
+
+void addPolygon(ReadResult& rr, const std::string& name, const OGRPolygon& poly) {
+    auto ring = [&](const OGRLinearRing* r, bool outer) {
+        std::vector<Point> raw;
+        raw.reserve(size_t(r->getNumPoints()));
+        for (int i = 0; i < r->getNumPoints(); ++i) raw.push_back({r->getX(i), r->getY(i)});
+        io_detail::addCleanRing(rr, name, raw, outer);
+    };
+    if (poly.IsEmpty()) return;
+    ring(poly.getExteriorRing(), true);
+    for (int k = 0; k < poly.getNumInteriorRings(); ++k) ring(poly.getInteriorRing(k), false);
+}
+
+// Polygons, and collections of them (MultiPolygon parts, GeometryCollection members), after
+// linearisation. Returns false for anything else.
+bool addGeometry(ReadResult& rr, const std::string& name, const OGRGeometry& g) {
+    OGRwkbGeometryType t = wkbFlatten(g.getGeometryType());
+    if (t == wkbPolygon) {
+        addPolygon(rr, name, *g.toPolygon());
+        return true;
+    }
+    if (t == wkbMultiPolygon || t == wkbGeometryCollection) {
+        const OGRGeometryCollection* c = g.toGeometryCollection();
+        for (int k = 0; k < c->getNumGeometries(); ++k)
+            if (!addGeometry(rr, name, *c->getGeometryRef(k))) return false;
+        return true;
+    }
+    return false;
+}
+
+bool polygonalType(OGRwkbGeometryType t) {
+    t = wkbFlatten(t);
+    return OGR_GT_IsSurface(t) || OGR_GT_IsSubClassOf(t, wkbMultiSurface) ||
+           t == wkbGeometryCollection;
+}
+
+std::string fieldText(OGRFeature& f, const char* field) {
+    int i = f.GetFieldIndex(field);
+    if (i < 0 || !f.IsFieldSetAndNotNull(i)) return "";
+    return io_detail::echo(f.GetFieldAsString(i));
+}
+
+// The feature's geometry as a polygon; a whole-dataset failure is reported in `failure`.
+struct Reader {
+    std::string name;
+    DatasetRead out;
+    Diagnostic failure;
+
+    void malformed(const std::string& message) {
+        failure = {Status::Malformed, name + ": " + message};
+    }
+
+    void read(const std::string& path, const Selection& s) {
+        registerOnce();
+        CPLErrorReset();
+        DatasetPtr ds(static_cast<GDALDataset*>(GDALOpenEx(
+            path.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+        if (!ds) {
+            // GDAL says nothing of a missing file; GDAL's own names (/vsizip/..., PG:...) are
+            // not files, so only a plain path is checked.
+            struct stat st;
+            if (path.rfind("/vsi", 0) != 0 && path.find(':') == std::string::npos &&
+                ::stat(path.c_str(), &st) != 0)
+                return malformed(std::string("cannot open file: ") + std::strerror(errno));
+            return malformed("not a vector dataset GDAL can open: " + lastError());
+        }
+        OGRLayer* layer = nullptr;
+        if (!s.layer.empty()) {
+            layer = ds->GetLayerByName(s.layer.c_str());
+            if (!layer)
+                return malformed("no layer \"" + io_detail::echo(s.layer) + "\"" + layerList(*ds));
+        } else if (ds->GetLayerCount() == 1) {
+            layer = ds->GetLayer(0);
+        } else {
+            return malformed(std::to_string(ds->GetLayerCount()) +
+                             " layers: choose one with --layer" + layerList(*ds));
+        }
+        const std::string lname = layer->GetName();
+        if (!s.where.empty() && layer->SetAttributeFilter(s.where.c_str()) != OGRERR_NONE)
+            return malformed("layer " + lname + ": --where '" + io_detail::echo(s.where) +
+                             "' is not a valid attribute filter: " + lastError());
+        layer->ResetReading();
+        size_t index = 0;
+        for (FeaturePtr f(layer->GetNextFeature()); f; f.reset(layer->GetNextFeature()), ++index) {
+            if (s.feature >= 0 && f->GetFID() != s.feature) continue;
+            readOne(*f, index);
+        }
+        if (CPLGetLastErrorType() >= CE_Failure && out.features.empty() && out.skipped.empty())
+            return malformed("layer " + lname + ": " + lastError());
+        if (out.features.empty())
+            return malformed("layer " + lname + ": no polygon found" +
+                             (s.feature >= 0 ? " (FID " + std::to_string(s.feature) + ")" : "") +
+                             (s.where.empty() ? "" : " where " + io_detail::echo(s.where)));
+    }
+
+    static std::string layerList(GDALDataset& ds) {
+        std::string l;
+        for (int k = 0; k < ds.GetLayerCount(); ++k)
+            l += (k ? ", " : " (layers: ") + std::string(ds.GetLayer(k)->GetName());
+        return l.empty() ? l : l + ")";
+    }
+
+    void readOne(OGRFeature& f, size_t index) {
+        const std::string fid = std::to_string(f.GetFID());
+        const std::string ctx = "feature " + fid;
+        const OGRGeometry* g = f.GetGeometryRef();
+        if (!g || !polygonalType(g->getGeometryType())) {
+            out.skipped.push_back(name + ": " + ctx + ": not polygonal (" +
+                                  (g ? OGRGeometryTypeToName(g->getGeometryType()) : "null") +
+                                  "), skipped");
+            return;
+        }
+        FeatureRead r;
+        r.wholeFile = false;
+        r.index = index;
+        r.id = fid;
+        r.name = fieldText(f, "name");
+        for (int i = 0; i < f.GetFieldCount(); ++i)
+            if (f.IsFieldSetAndNotNull(i))
+                r.attributes.emplace_back(io_detail::echo(f.GetFieldDefnRef(i)->GetNameRef()),
+                                          io_detail::echo(f.GetFieldAsString(i)));
+        std::unique_ptr<OGRGeometry> linear;
+        if (g->hasCurveGeometry()) {
+            linear.reset(g->getLinearGeometry());
+            if (linear) g = linear.get();
+        }
+        if (!addGeometry(r.read, name, *g) || r.read.polygon.rings.empty()) {
+            r.read.polygon = Polygon{};
+            r.read.diagnostic = {Status::Malformed,
+                                 name + ": " + ctx + ": no polygon found (" +
+                                     OGRGeometryTypeToName(g->getGeometryType()) + ")"};
+        }
+        out.features.push_back(std::move(r));
+    }
+};
+
+}  // namespace
+
+DatasetRead readFeatures(const std::string& path, const Selection& s) {
+    Reader r;
+    r.name = path;
+    try {
+        r.read(path, s);
+    } catch (const std::exception& e) {
+        r.failure = {Status::Malformed, path + ": GDAL: " + e.what()};
+    }
+    if (r.failure.ok()) return std::move(r.out);
+    DatasetRead whole;
+    whole.skipped = std::move(r.out.skipped);
+    whole.features.emplace_back();
+    whole.features.back().read.diagnostic = r.failure;
+    return whole;
+}
+
+ReadResult readPolygon(const std::string& path, const Selection& s) {
+    DatasetRead d = direct::readFeatures(path, s);
+    ReadResult rr;
+    for (const std::string& w : d.skipped) rr.warn([&] { return w; });
+    for (FeatureRead& f : d.features) {
+        for (std::string& w : f.read.warnings) rr.warn([&] { return std::move(w); });
+        rr.warningsOmitted += f.read.warningsOmitted;
+        if (!f.read.diagnostic.ok()) {
+            rr.polygon = Polygon{};
+            rr.diagnostic = f.read.diagnostic;
+            return rr;
+        }
+        const Polygon& p = f.read.polygon;
+        for (size_t k = 0; k < p.parts.size(); ++k)
+            for (Index r = p.parts[k].firstRing; r < p.parts[k].firstRing + p.parts[k].ringCount;
+                 ++r) {
+                const Ring& ring = p.rings[r];
+                rr.polygon.addRing(
+                    {p.vertices.begin() + ring.first, p.vertices.begin() + ring.first + ring.count},
+                    r == p.parts[k].firstRing);
+            }
+    }
+    return rr;
+}
+
+}  // namespace gdal::direct
+}  // namespace flood

@@ -1,0 +1,448 @@
+// Reading polygons: format detection, GeoJSON and bare ring arrays (earcut fixtures).
+// WKT lives in io_wkt.cpp. Every problem becomes a Malformed diagnostic, never an exception
+// escaping to the caller and never a crash.
+//
+// JSON is read first by the fast reader (io_json_fast.cpp, simdjson, no document tree); what
+// it cannot read as this file would goes through nlohmann::json here: a Debian package
+// (nlohmann-json3-dev), header-only, whose parse errors carry the byte position, which we turn
+// into NAME:LINE:COL. So nlohmann stays as the reader that explains failures, and for datasets
+// (`flood check`), whose per-feature properties want a tree. Its parser is recursive, so
+// nesting depth is bounded by a cheap bracket scan first.
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstring>
+#include <new>
+#include <nlohmann/json.hpp>
+#include <optional>
+
+#include "io/io.h"
+#include "io/io_json.h"
+#include "io/io_util.h"
+
+namespace flood {
+
+// Defined in io_wkt.cpp.
+ReadResult parseWkt(std::string_view text, const std::string& name);
+
+namespace io_detail {
+
+// The ring's points as read are at `first`: repeated consecutive points are dropped with a warning, then a
+// closing point equal to the first is dropped silently.
+void cleanLastRing(ReadResult& rr, const std::string& name, Index first, bool outer) {
+    const size_t ring = rr.polygon.rings.size();
+    std::vector<Point>& v = rr.polygon.vertices;
+    const size_t count = v.size() - first;
+    size_t kept = 0;  // the cleaned points are v[first, first + kept): never ahead of the raw ones
+    for (size_t i = 0; i < count; ++i) {
+        const Point p = v[first + i];
+        if (kept && p == v[first + kept - 1]) {
+            // The last point repeating the first is a closing point, not a duplicate (also
+            // of a point hole, written [p, p]).
+            if (i + 1 == count && (kept > 1 || i == 1) && p == v[first]) continue;
+            rr.warn([&] {
+                return name + ": ring " + std::to_string(ring) + " vertex " + std::to_string(i) +
+                       " " + formatPoint(p) + ": repeated point dropped";
+            });
+            continue;
+        }
+        v[first + kept++] = p;
+    }
+    if (kept >= 2 && v[first + kept - 1] == v[first]) --kept;
+    v.resize(first + kept);
+    if (outer) rr.polygon.parts.push_back({Index(rr.polygon.rings.size()), 0});
+    rr.polygon.rings.push_back({first, Index(kept)});
+    rr.polygon.parts.back().ringCount++;
+}
+
+void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Point>& raw,
+                  bool outer) {
+    const Index first = Index(rr.polygon.vertices.size());
+    rr.polygon.vertices.insert(rr.polygon.vertices.end(), raw.begin(), raw.end());
+    cleanLastRing(rr, name, first, outer);
+}
+
+}  // namespace io_detail
+
+namespace {
+
+using io_detail::echo;
+using io_detail::jsonReason;
+using io_detail::kMaxJsonDepth;
+using io_detail::tooDeep;
+using io_detail::where;
+using nlohmann::json;
+
+struct BadStructure {
+    std::string message;
+};
+
+Point readVertex(const json& v, const std::string& ctx) {
+    if (!v.is_array() || v.size() < 2 || !v[0].is_number() || !v[1].is_number())
+        throw BadStructure{ctx + ": coordinate is not a pair of numbers (got " + echo(v.dump()) +
+                           ")"};
+    return {v[0].get<double>(), v[1].get<double>()};
+}
+
+void readRings(ReadResult& rr, const std::string& name, const json& rings, const std::string& ctx) {
+    if (!rings.is_array()) throw BadStructure{ctx + ": polygon is not an array of rings"};
+    if (rings.empty()) throw BadStructure{ctx + ": polygon has no rings"};
+    for (size_t r = 0; r < rings.size(); ++r) {
+        std::string rctx = ctx + " ring " + std::to_string(r);
+        const json& ring = rings[r];
+        if (!ring.is_array()) throw BadStructure{rctx + ": ring is not an array of points"};
+        std::vector<Point> raw;
+        raw.reserve(ring.size());
+        for (size_t v = 0; v < ring.size(); ++v)
+            raw.push_back(readVertex(ring[v], rctx + " vertex " + std::to_string(v)));
+        io_detail::addCleanRing(rr, name, raw, r == 0);
+    }
+}
+
+// Depth of nested arrays at the front of `j`: 1 for [x,...], 2 for a ring, 3 for a polygon.
+// An empty array ends the descent early ([] has no rings, [[]] is a ring with no points):
+// such a document is read as a polygon, so the message says what is missing.
+int arrayDepth(const json& j) {
+    int d = 0;
+    const json* p = &j;
+    while (p->is_array() && !p->empty()) {
+        ++d;
+        p = &(*p)[0];
+    }
+    return p->is_array() ? std::max(d, 3) : d;
+}
+
+void readGeometry(ReadResult& rr, const std::string& name, const json& g, const std::string& ctx,
+                  int& polygonCount);
+
+void readPolygonOrMulti(ReadResult& rr, const std::string& name, const json& coords, bool multi,
+                        const std::string& ctx, int& polygonCount) {
+    if (!multi) {
+        readRings(rr, name, coords, ctx + "polygon " + std::to_string(polygonCount++));
+        return;
+    }
+    if (!coords.is_array()) throw BadStructure{ctx + "multipolygon is not an array of polygons"};
+    for (const json& poly : coords)
+        readRings(rr, name, poly, ctx + "polygon " + std::to_string(polygonCount++));
+}
+
+void readGeometry(ReadResult& rr, const std::string& name, const json& g, const std::string& ctx,
+                  int& polygonCount) {
+    if (!g.is_object() || !g.contains("type") || !g["type"].is_string())
+        throw BadStructure{ctx + "GeoJSON object without a \"type\" string"};
+    const std::string type = g["type"].get<std::string>();
+    if (type == "Polygon" || type == "MultiPolygon") {
+        if (!g.contains("coordinates")) throw BadStructure{ctx + type + " without \"coordinates\""};
+        readPolygonOrMulti(rr, name, g["coordinates"], type == "MultiPolygon", ctx, polygonCount);
+    } else if (type == "Feature") {
+        if (!g.contains("geometry") || g["geometry"].is_null())
+            throw BadStructure{ctx + "Feature without geometry"};
+        readGeometry(rr, name, g["geometry"], ctx, polygonCount);
+    } else if (type == "FeatureCollection" || type == "GeometryCollection") {
+        const char* key = type == "FeatureCollection" ? "features" : "geometries";
+        if (!g.contains(key) || !g[key].is_array())
+            throw BadStructure{ctx + type + " without a \"" + key + "\" array"};
+        const json& items = g[key];
+        for (size_t i = 0; i < items.size(); ++i) {
+            const json& item = items[i];
+            const json* geom = &item;
+            if (type == "FeatureCollection") {
+                if (!item.is_object() || !item.contains("geometry"))
+                    throw BadStructure{ctx + "feature " + std::to_string(i) +
+                                       ": not a Feature with a geometry"};
+                geom = &item["geometry"];
+            }
+            std::string gtype =
+                geom->is_object() && geom->contains("type") && (*geom)["type"].is_string()
+                    ? echo((*geom)["type"].get<std::string>())
+                    : std::string();
+            bool polygonal = gtype == "Polygon" || gtype == "MultiPolygon" ||
+                             gtype == "GeometryCollection" || gtype == "Feature";
+            if (!polygonal) {
+                rr.warn([&] {
+                    return name + ": " + ctx +
+                           (type == "FeatureCollection" ? "feature " : "geometry ") +
+                           std::to_string(i) + ": not polygonal (" +
+                           (gtype.empty() ? "null" : gtype) + "), skipped";
+                });
+                continue;
+            }
+            readGeometry(rr, name, *geom,
+                         ctx + (type == "FeatureCollection" ? "feature " : "geometry ") +
+                             std::to_string(i) + " ",
+                         polygonCount);
+        }
+    } else {
+        throw BadStructure{ctx + "unsupported GeoJSON type \"" + echo(type) +
+                           "\" (expected Polygon, MultiPolygon, Feature or FeatureCollection)"};
+    }
+}
+
+}  // namespace
+
+ReadResult io_detail::parseJsonTree(std::string_view text, const std::string& name) {
+    ReadResult rr;
+    size_t deep = tooDeep(text);
+    if (deep != std::string_view::npos) {
+        rr.diagnostic = {Status::Malformed, where(name, text, deep) + ": JSON nested deeper than " +
+                                                std::to_string(kMaxJsonDepth) +
+                                                " levels; refusing to parse"};
+        return rr;
+    }
+    json doc;
+    try {
+        doc = json::parse(text.begin(), text.end());
+    } catch (const json::parse_error& e) {
+        // e.byte is the 1-based position of the last character read.
+        size_t off = e.byte > 0 ? e.byte - 1 : 0;
+        rr.diagnostic = {Status::Malformed,
+                         where(name, text, off) + ": JSON syntax error: " + jsonReason(e.what())};
+        return rr;
+    } catch (const json::out_of_range& e) {
+        // A number literal beyond the double range (e.g. 1e999): nlohmann gives no position,
+        // only the literal in quotes; find it in the text (found by fuzz_read).
+        std::string w = e.what();
+        size_t q1 = w.find('\''), q2 = q1 == std::string::npos ? q1 : w.find('\'', q1 + 1);
+        std::string literal = q2 == std::string::npos ? "" : w.substr(q1 + 1, q2 - q1 - 1);
+        size_t at = literal.empty() ? std::string_view::npos : text.find(literal);
+        rr.diagnostic = {Status::Malformed,
+                         (at == std::string_view::npos ? name : where(name, text, at)) +
+                             ": number out of range: " + echo(literal.empty() ? w : literal) +
+                             " does not fit a double"};
+        return rr;
+    } catch (const json::exception& e) {  // any other nlohmann failure: never escape
+        rr.diagnostic = {Status::Malformed, name + ": JSON error: " + jsonReason(e.what())};
+        return rr;
+    }
+    try {
+        int polygonCount = 0;
+        if (doc.is_object()) {
+            readGeometry(rr, name, doc, "", polygonCount);
+        } else {
+            int d = arrayDepth(doc);
+            if (d == 3) readRings(rr, name, doc, "polygon 0");
+            else if (d == 4) readPolygonOrMulti(rr, name, doc, true, "", polygonCount);
+            else
+                throw BadStructure{
+                    "expected an array of rings [[[x,y],...],...] or of polygons "
+                    "[[[[x,y],...],...],...], or a GeoJSON object"};
+        }
+        if (rr.polygon.rings.empty()) throw BadStructure{"no polygon found"};
+    } catch (const BadStructure& b) {
+        rr.polygon = Polygon{};
+        rr.diagnostic = {Status::Malformed, name + ": " + b.message};
+    } catch (const json::exception& e) {  // e.g. a number too large for the conversion
+        rr.polygon = Polygon{};
+        rr.diagnostic = {Status::Malformed, name + ": " + e.what()};
+    }
+    return rr;
+}
+
+namespace {
+
+// `capacity` is how many bytes from text.data() may be read (the fast reader reads ahead).
+ReadResult parseText(std::string_view text, size_t capacity, const std::string& name) {
+    size_t nul = text.find('\0');
+    if (nul != std::string_view::npos) {
+        ReadResult rr;
+        rr.diagnostic = {Status::Malformed, io_detail::binaryData(name, nul, "GeoJSON or WKT")};
+        return rr;
+    }
+    size_t i = 0;
+    if (text.substr(0, 3) == "\xEF\xBB\xBF") i = 3;  // UTF-8 byte order mark
+    while (i < text.size() && std::strchr(" \t\r\n", text[i])) ++i;
+    if (i == text.size()) {
+        ReadResult rr;
+        rr.diagnostic = {Status::Malformed, name + ":1:1: empty input, no polygon"};
+        return rr;
+    }
+    if (text[i] == '[' || text[i] == '{') {
+        if (std::optional<ReadResult> fast = io_detail::parseJsonFast(text, capacity, i, name))
+            return std::move(*fast);
+        return io_detail::parseJsonTree(text, name);
+    }
+    return parseWkt(text, name);
+}
+
+}  // namespace
+
+ReadResult parsePolygon(std::string_view text, const std::string& name) {
+    ReadResult rr = parseText(text, text.size(), name);
+    rr.polygon.vertices.shrink_to_fit();
+    return rr;
+}
+
+// POSIX reads, not iostreams: they give the system's reason (errno) for each failure.
+Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t maxBytes,
+                         const char* expected) {
+    text.clear();
+    const std::string name = path == "-" ? "<stdin>" : path;
+    const int fd = path == "-" ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) return {Status::Malformed, name + ": cannot open file: " + std::strerror(errno)};
+    struct Closer {
+        int fd;
+        ~Closer() {
+            if (fd != STDIN_FILENO) ::close(fd);
+        }
+    } closer{fd};
+    struct stat st = {};
+    if (::fstat(fd, &st) == 0) {
+        if (S_ISDIR(st.st_mode)) return {Status::Malformed, name + ": is a directory, not a file"};
+        if (S_ISREG(st.st_mode) && uint64_t(st.st_size) > maxBytes)
+            return {Status::Malformed, name + ": input is larger than the limit of " +
+                                           std::to_string(maxBytes) + " bytes (--max-input-bytes)"};
+    }
+    try {
+        // The padding lets the fast JSON reader read ahead without a copy of the text.
+        if (S_ISREG(st.st_mode)) text.reserve(size_t(st.st_size) + io_detail::kReadAhead);
+        char buf[1 << 16];
+        for (;;) {
+            ssize_t k = ::read(fd, buf, sizeof buf);
+            if (k < 0 && errno == EINTR) continue;
+            if (k < 0)
+                return {Status::Malformed, name + ": read error after " +
+                                               std::to_string(text.size()) +
+                                               " bytes: " + std::strerror(errno)};
+            if (k == 0) break;
+            if (const void* z = std::memchr(buf, 0, size_t(k)))
+                return {
+                    Status::Malformed,
+                    io_detail::binaryData(
+                        name, text.size() + size_t(static_cast<const char*>(z) - buf), expected)};
+            if (text.size() + uint64_t(k) > maxBytes)
+                return {Status::Malformed, name + ": input is larger than the limit of " +
+                                               std::to_string(maxBytes) +
+                                               " bytes (--max-input-bytes); stopped reading"};
+            text.append(buf, size_t(k));
+        }
+    } catch (const std::bad_alloc&) {
+        size_t got = text.size();
+        text = std::string();
+        return {Status::Malformed, name + ": out of memory after reading " + std::to_string(got) +
+                                       " bytes (a lower --max-input-bytes refuses it sooner)"};
+    }
+    return {};
+}
+
+ReadResult readPolygonFile(const std::string& path, uint64_t maxBytes) {
+    std::string text;
+    Diagnostic d = readInputFile(path, text, maxBytes, "GeoJSON or WKT");
+    if (!d.ok()) {
+        ReadResult rr;
+        rr.diagnostic = d;
+        return rr;
+    }
+    if (text.capacity() < text.size() + io_detail::kReadAhead)
+        text.reserve(text.size() + io_detail::kReadAhead);
+    ReadResult rr = parseText(text, text.capacity(), path == "-" ? "<stdin>" : path);
+    // The vertices' spare room is given back after the text, so the two copies of them that
+    // shrinking makes never coexist with it.
+    std::string().swap(text);
+    rr.polygon.vertices.shrink_to_fit();
+    return rr;
+}
+
+// Splitting a dataset for `flood check`. Only a document that mentions "FeatureCollection"
+// is parsed here; everything else (and any document that fails to parse) goes to
+// parsePolygon as a whole, so its messages are exactly those of the other commands.
+namespace {
+
+// A property echoed into the report: strings as they are, other values as JSON text.
+std::string propertyText(const json& v) {
+    return echo(v.is_string() ? v.get<std::string>() : v.dump());
+}
+
+FeatureRead readFeature(const std::string& name, const json& item, size_t i, bool keepSource) {
+    FeatureRead f;
+    f.wholeFile = false;
+    f.index = i;
+    const std::string ctx = "feature " + std::to_string(i);
+    try {
+        if (item.is_object() && item.contains("id") && !item["id"].is_null())
+            f.id = propertyText(item["id"]);
+        if (item.is_object() && item.contains("properties") && item["properties"].is_object() &&
+            item["properties"].contains("name") && !item["properties"]["name"].is_null())
+            f.name = propertyText(item["properties"]["name"]);
+        if (item.is_object() && item.contains("properties") && item["properties"].is_object())
+            for (const auto& [key, value] : item["properties"].items())
+                if (!value.is_null()) f.attributes.emplace_back(echo(key), propertyText(value));
+        if (keepSource) f.source = item.dump();
+        if (!item.is_object() || !item.contains("geometry"))
+            throw BadStructure{ctx + ": not a Feature with a geometry"};
+        int polygonCount = 0;
+        readGeometry(f.read, name, item["geometry"], ctx + " ", polygonCount);
+        if (f.read.polygon.rings.empty()) throw BadStructure{ctx + ": no polygon found"};
+    } catch (const BadStructure& b) {
+        f.read.polygon = Polygon{};
+        f.read.diagnostic = {Status::Malformed, name + ": " + b.message};
+    } catch (const json::exception& e) {
+        f.read.polygon = Polygon{};
+        f.read.diagnostic = {Status::Malformed, name + ": " + ctx + ": " + jsonReason(e.what())};
+    }
+    return f;
+}
+
+// As parsePolygon decides: a missing geometry is malformed (reported), a null or other one skipped.
+bool polygonal(const json& item) {
+    if (!item.is_object() || !item.contains("geometry")) return true;
+    const json& g = item["geometry"];
+    if (!g.is_object() || !g.contains("type") || !g["type"].is_string()) return false;
+    const std::string t = g["type"].get<std::string>();
+    return t == "Polygon" || t == "MultiPolygon" || t == "GeometryCollection" || t == "Feature";
+}
+
+}  // namespace
+
+DatasetRead parseFeatures(std::string_view text, const std::string& name, bool keepSource) {
+    DatasetRead out;
+    auto whole = [&] {
+        FeatureRead f;
+        f.read = parsePolygon(text, name);
+        out.features.push_back(std::move(f));
+        return std::move(out);
+    };
+    if (text.find("\"FeatureCollection\"") == std::string_view::npos ||
+        text.find('\0') != std::string_view::npos || tooDeep(text) != std::string_view::npos)
+        return whole();
+    json doc;
+    try {
+        doc = json::parse(text.begin(), text.end());
+    } catch (const json::exception&) {
+        return whole();  // parsePolygon says where and why
+    }
+    if (!doc.is_object() || !doc.contains("type") || doc["type"] != "FeatureCollection" ||
+        !doc.contains("features") || !doc["features"].is_array() || doc["features"].empty())
+        return whole();
+    const json& items = doc["features"];
+    for (size_t i = 0; i < items.size(); ++i) {
+        if (!polygonal(items[i])) {
+            const json& g = items[i]["geometry"];
+            std::string type = g.is_object() && g.contains("type") && g["type"].is_string()
+                                   ? echo(g["type"].get<std::string>())
+                                   : "null";
+            out.skipped.push_back(name + ": feature " + std::to_string(i) + ": not polygonal (" +
+                                  type + "), skipped");
+            continue;
+        }
+        out.features.push_back(readFeature(name, items[i], i, keepSource));
+    }
+    if (out.features.empty()) return whole();  // "no polygon found"
+    return out;
+}
+
+DatasetRead readFeaturesFile(const std::string& path, uint64_t maxBytes, bool keepSource) {
+    std::string text;
+    Diagnostic d = readInputFile(path, text, maxBytes, "GeoJSON or WKT");
+    if (!d.ok()) {
+        DatasetRead out;
+        out.features.emplace_back();
+        out.features.back().read.diagnostic = d;
+        return out;
+    }
+    return parseFeatures(text, path == "-" ? "<stdin>" : path, keepSource);
+}
+
+}  // namespace flood

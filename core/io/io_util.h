@@ -1,0 +1,125 @@
+// Small helpers shared by the file-format code (internal to core/, not a public API).
+#pragma once
+#include <algorithm>
+#include <charconv>
+#include <cstddef>
+#include <string>
+#include <string_view>
+
+#include "geometry/polygon.h"
+
+namespace flood::io_detail {
+
+// Shortest decimal text that reads back as the same double ("nan", "inf", "-inf" for the
+// non-finite values, which JSON cannot hold but messages and WKT can).
+// Writes it at `to` (room for kDoubleChars) and returns the end.
+constexpr size_t kDoubleChars = 32;
+inline char* writeDouble(char* to, double v) {
+    auto copy = [to](const char* s, size_t k) { return std::copy(s, s + k, to); };
+    if (v != v) return copy("nan", 3);
+    if (v == 1.0 / 0.0) return copy("inf", 3);
+    if (v == -1.0 / 0.0) return copy("-inf", 4);
+    return std::to_chars(to, to + kDoubleChars, v).ptr;
+}
+inline std::string formatDouble(double v) {
+    char buf[kDoubleChars];
+    return std::string(buf, writeDouble(buf, v));
+}
+
+inline std::string formatPoint(Point p) {
+    return "(" + formatDouble(p.x) + ", " + formatDouble(p.y) + ")";
+}
+
+// Input echoed into a message is cut to kEchoChars bytes and an ellipsis: a 10 MB literal
+// must not become a 10 MB message. The cut never splits a UTF-8 sequence.
+constexpr size_t kEchoChars = 60;
+inline std::string echo(std::string_view s) {
+    if (s.size() <= kEchoChars) return std::string(s);
+    size_t n = kEchoChars;
+    while (n > 0 && (static_cast<unsigned char>(s[n]) & 0xC0) == 0x80) --n;
+    return std::string(s.substr(0, n)) + "\u2026";
+}
+
+// nlohmann's what() reads "[json.exception.parse_error.101] parse error at line 1, column 5:
+// syntax error ...; last read: '<token>'"; keep only the part after the position, which we
+// print ourselves, with the echoed token cut.
+inline std::string jsonReason(const char* what) {
+    std::string s = what;
+    size_t col = s.find("column ");
+    size_t colon = col == std::string::npos ? col : s.find(": ", col);
+    size_t bracket = s.find("] ");
+    if (colon != std::string::npos) s = s.substr(colon + 2);
+    else if (bracket != std::string::npos) s = s.substr(bracket + 2);
+    const std::string lastRead = "last read: '";
+    size_t q = s.find(lastRead);
+    if (q != std::string::npos) {
+        q += lastRead.size();
+        size_t end = s.rfind('\'');
+        std::string_view token =
+            std::string_view(s).substr(q, end > q ? end - q : std::string::npos);
+        std::string echoed = echo(token) + "'";  // before the resize: token views s
+        s.resize(q);
+        s += echoed;
+    }
+    return s;
+}
+
+// A NUL byte never occurs in JSON, WKT or a trace: the input is binary.
+inline std::string binaryData(const std::string& name, size_t offset, const char* expected) {
+    return name + ": binary data (a NUL byte at byte " + std::to_string(offset) + "), not " +
+           expected;
+}
+
+// 1-based line and column of byte `offset` in `text` (columns count bytes).
+struct LineCol {
+    size_t line = 1, col = 1;
+};
+inline LineCol lineColAt(std::string_view text, size_t offset) {
+    LineCol lc;
+    if (offset > text.size()) offset = text.size();
+    for (size_t i = 0; i < offset; ++i) {
+        if (text[i] == '\n') {
+            ++lc.line;
+            lc.col = 1;
+        } else {
+            ++lc.col;
+        }
+    }
+    return lc;
+}
+
+inline std::string where(const std::string& name, std::string_view text, size_t offset) {
+    LineCol lc = lineColAt(text, offset);
+    return name + ":" + std::to_string(lc.line) + ":" + std::to_string(lc.col);
+}
+
+// Bytes the fast JSON reader may read past the end of its text (simdjson's SIMDJSON_PADDING,
+// checked in io_json_fast.cpp): readInputFile leaves that much spare capacity.
+constexpr size_t kReadAhead = 64;
+
+// nlohmann's parser recurses once per nesting level: deeper documents are refused up front.
+constexpr int kMaxJsonDepth = 64;
+
+// Scans brackets outside strings; returns the offset of the first bracket deeper than
+// kMaxJsonDepth, or npos. Linear time, no recursion.
+inline size_t tooDeep(std::string_view text) {
+    int depth = 0;
+    bool inString = false;
+    for (size_t i = 0; i < text.size(); ++i) {
+        char c = text[i];
+        if (inString) {
+            if (c == '\\') ++i;
+            else if (c == '"') inString = false;
+            continue;
+        }
+        if (c == '"') inString = true;
+        else if (c == '[' || c == '{') {
+            if (++depth > kMaxJsonDepth) return i;
+        } else if (c == ']' || c == '}') {
+            --depth;
+        }
+    }
+    return std::string_view::npos;
+}
+
+}  // namespace flood::io_detail

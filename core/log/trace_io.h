@@ -1,0 +1,32 @@
+// Saving and loading a Trace (replay.h) as JSON Lines, the file `flood trace` writes and the
+// viewer opens. Line 1 is a header:
+//   {"format":"flood-trace","version":kTraceFormatVersion,"vertices":[[x,y],...],
+//    "rings":[[first,count],...],"parts":[[firstRing,ringCount],...]}
+// plus "up":[x,y], the direction the water rose along, when it is not +y,
+// then one object per event with the fields of flood::Event its action uses (usesField()) that
+// differ from their initial values, always its action (action, side, reason by name; tested
+// and passed as lists of test names; fingers as objects; kNone written as null; version 1
+// wrote every field, and is still read),
+// then a last line {"triangles":[[a,b,c],...],"status":"ok","message":"..."}.
+// Coordinates are JSON numbers, or "NaN", "Infinity", "-Infinity" (JSON has none of these;
+// an unvalidated run can hold them).
+// Loading checks the format and version and every index; a malformed line becomes a
+// Malformed diagnostic naming the line, never a crash.
+#pragma once
+#include <iosfwd>
+#include <string>
+#include <string_view>
+
+#include "geometry/status.h"
+#include "log/replay.h"
+
+namespace flood {
+
+void writeTrace(std::ostream& out, const Trace& trace);
+
+// Parses a trace; on failure `trace` is left empty and the diagnostic reads
+// "NAME:LINE: what is wrong".
+Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& trace);
+Diagnostic readTraceFile(const std::string& path, Trace& trace);  // "-" reads stdin
+
+}  // namespace flood

@@ -1,0 +1,43 @@
+// The machine's own words for where it stopped (flood.h): defined here, beside the machine, so
+// that the machine depends on no layer above it (they were in teach/narrate.cpp).
+#include <algorithm>
+#include <sstream>
+
+#include "machine/flood.h"
+
+namespace flood {
+
+// Declared in flood.h (the public API): a forbidden state's diagnostic, in words and as data.
+Culprits forbiddenCulprits(const Polygon& polygon, const Event& e) {
+    Culprits c;
+    const Fingers& f = e.before;
+    for (Index v : {e.culprit, e.culprit2, f.left, f.right, f.nextLeft, f.nextRight})
+        if (v < polygon.vertices.size() &&
+            std::find(c.vertices.begin(), c.vertices.end(), v) == c.vertices.end()) {
+            c.vertices.push_back(v);
+            Index r = polygon.ringOf(v);
+            if (std::find(c.rings.begin(), c.rings.end(), r) == c.rings.end()) c.rings.push_back(r);
+        }
+    return c;
+}
+
+std::string describeForbidden(const Polygon& polygon, const Event& e) {
+    std::ostringstream os;
+    os.precision(17);
+    auto vertex = [&](const char* label, Index v) {
+        if (v == kNone || v >= polygon.vertices.size()) return;
+        Index r = polygon.ringOf(v);
+        Point p = polygon.vertices[v];
+        os << "; " << label << " = vertex " << v << " (ring " << r << " vertex "
+           << v - polygon.rings[r].first << ", " << p.x << ", " << p.y << ")";
+    };
+    os << "forbidden transition " << forbiddenName(e.reason) << " at step " << e.step + 1;
+    vertex("at", e.culprit);
+    vertex("and", e.culprit2);
+    vertex("Left", e.after.left);
+    vertex("Right", e.after.right);
+    os << ": " << forbiddenText(e.reason);
+    return os.str();
+}
+
+}  // namespace flood

@@ -1,0 +1,60 @@
+// The paper's Fig. 10, "Vertex combinations and states": for every event, the combination the
+// machine looked at (the classes of C and Next, and whether the fingers meet) against the state
+// it went to (raise, fill, bridge, spill, jump, forbidden), and how often each cell occurs over
+// a trace. GUI-free: the viewer's State table panel draws it with the current cell lit.
+#pragma once
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "geometry/polygon.h"
+#include "machine/events.h"
+#include "machine/vertex_class.h"
+
+namespace flood {
+
+// One class slot more than VertexClass: "no vertex", for events before there is a chain
+// (Start, and the forbidden states found before it: a short ring, a start that is no bottom).
+constexpr int kClassSlots = int(VertexClass::Count) + 1;
+constexpr int kNoClass = int(VertexClass::Count);
+
+// A row of the table. C is the end of the chain that acts (Event::side), Next its finger;
+// when the fingers meet, C is Left and Next the vertex where they meet.
+struct Combination {
+    int c = kNoClass, next = kNoClass;  // VertexClass values, or kNoClass
+    bool meet = false;
+    int row() const { return (c * kClassSlots + next) * 2 + int(meet); }
+    static Combination ofRow(int row);
+};
+
+// The columns, in the paper's order (R, F, B, S, J, X), then Start: the machine's entry,
+// not one of the paper's states, kept so that every event has a cell.
+constexpr std::array<Action, 7> kStateColumns = {Action::Raise, Action::Fill, Action::Bridge,
+                                                 Action::Spill, Action::Jump, Action::Forbidden,
+                                                 Action::Start};
+int columnOf(Action a);
+
+struct StateCell {
+    int row = 0, column = 0;
+};
+
+struct StateTable {
+    static constexpr int kRows = kClassSlots * kClassSlots * 2;
+    static constexpr int kColumns = int(kStateColumns.size());
+    std::array<uint64_t, size_t(kRows) * kColumns> counts{};
+    std::vector<StateCell> cellOf;  // per event, in log order
+
+    uint64_t count(int row, int column) const {
+        return counts[size_t(row) * kColumns + size_t(column)];
+    }
+    uint64_t rowTotal(int row) const;
+};
+
+// The combination of one event; `classes` from classifyVertices() of the traced polygon
+// (a vertex it does not hold has no class).
+Combination combinationOf(const Event& e, const std::vector<VertexClass>& classes);
+
+StateTable buildStateTable(const Polygon& polygon, const std::vector<Event>& events,
+                           Up up = Up::PlusY);
+
+}  // namespace flood

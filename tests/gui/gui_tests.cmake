@@ -1,0 +1,58 @@
+# The GUI tests, their sources here, their targets defined by viewer/CMakeLists.txt, which
+# includes this file when FLOOD_VIEWER and FLOOD_TESTS are on: in the viewer's directory
+# (CMAKE_CURRENT_SOURCE_DIR is viewer/) two of them compile panels with the shaders header
+# generated there, and all of them work in its build directory, as before they moved here.
+set(GUI_TESTS ${CMAKE_CURRENT_LIST_DIR})
+find_package(GTest REQUIRED)
+# The top level enables testing after adding the viewer's directory; add_test needs it now.
+enable_testing()
+
+# ---- a real screenshot, checked pixel by pixel --------------------------------------------
+add_executable(screenshot_test ${GUI_TESTS}/screenshot_test.cpp)
+target_link_libraries(screenshot_test PRIVATE floodviewmodel PkgConfig::IMGUI)
+target_compile_definitions(screenshot_test PRIVATE
+  FLOOD_VIEWER="$<TARGET_FILE:flood-viewer>"
+  FLOOD_CLI="$<TARGET_FILE:flood>"
+  FLOOD_WORK_DIR="${CMAKE_CURRENT_BINARY_DIR}"
+  FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+add_dependencies(screenshot_test flood-viewer flood)
+add_test(NAME viewer/screenshot_test COMMAND screenshot_test)
+# Mesa's unloaded driver looks like a leak to ASan; keep leak checks for the other tests.
+set_tests_properties(viewer/screenshot_test PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
+  ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+
+# ---- the exports: runs flood-viewer headless, reads what it wrote ------------------------
+add_executable(export_test ${GUI_TESTS}/export_test.cpp)
+target_link_libraries(export_test PRIVATE floodviewmodel PkgConfig::IMGUI GTest::gtest_main)
+target_compile_definitions(export_test PRIVATE FLOOD_VIEWER="$<TARGET_FILE:flood-viewer>"
+  FLOOD_WORK_DIR="${CMAKE_CURRENT_BINARY_DIR}")
+add_dependencies(export_test flood-viewer)
+add_test(NAME viewer/export_test COMMAND export_test)
+set_tests_properties(viewer/export_test PROPERTIES TIMEOUT 300 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+
+# ---- the Fig. 9 tree in the Decision panel, its path lit ---------------------------------
+add_executable(tree_screenshot_test ${GUI_TESTS}/tree_screenshot_test.cpp)
+target_link_libraries(tree_screenshot_test PRIVATE floodviewmodel PkgConfig::IMGUI)
+target_compile_definitions(tree_screenshot_test PRIVATE
+  FLOOD_VIEWER="$<TARGET_FILE:flood-viewer>"
+  FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
+  FLOOD_WORK_DIR="${CMAKE_CURRENT_BINARY_DIR}")
+add_dependencies(tree_screenshot_test flood-viewer)
+add_test(NAME viewer/tree_screenshot_test COMMAND tree_screenshot_test)
+set_tests_properties(viewer/tree_screenshot_test PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
+  ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+
+# ---- edit mode's mouse and keys, through a window-free ImGui context (no display needed) ----
+add_executable(edit_input_test ${GUI_TESTS}/edit_input_test.cpp panel_edit.cpp panel_common.cpp
+               renderer.cpp platform_glfw.cpp ${SHADER_HEADER})
+target_include_directories(edit_input_test PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
+target_link_libraries(edit_input_test PRIVATE floodviewmodel floodglad glfw PkgConfig::IMGUI GTest::gtest_main)
+add_test(NAME viewer/edit_input_test COMMAND edit_input_test)
+
+# ---- the panels' per-trace state, kept per Ui (window-free ImGui, no display needed) ----------
+add_executable(ui_state_test ${GUI_TESTS}/ui_state_test.cpp panel_transcript.cpp panel_timeline.cpp
+               panel_common.cpp panel_edit.cpp renderer.cpp platform_glfw.cpp ${SHADER_HEADER})
+target_include_directories(ui_state_test PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
+target_link_libraries(ui_state_test PRIVATE floodviewmodel floodglad glfw PkgConfig::IMGUI
+                      GTest::gtest_main)
+add_test(NAME viewer/ui_state_test COMMAND ui_state_test)

@@ -117,6 +117,12 @@ inline const CatalogueRow kInvalidCatalogue[] = {
      "/dev/full: cannot write: No space left on device"},
     {"", "triangulate " FLOOD_SOURCE_DIR "/polygons/hole.json -o /dev/full/x.json", 8,
      "/dev/full/x.json: cannot write: Not a directory"},
+#ifdef FLOOD_GDAL
+    // A GIS dataset cannot be written in place: a device or a FIFO is refused, untouched.
+    {"", "triangulate " FLOOD_SOURCE_DIR "/polygons/hole.json --format gpkg -o /dev/full", 8,
+     "/dev/full: cannot write: --format gpkg needs a regular file, and /dev/full is a character "
+     "device (it was left untouched; write to a file)"},
+#endif
 };
 
 }  // namespace flood::testing

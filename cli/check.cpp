@@ -16,6 +16,7 @@
 #include <array>
 #include <atomic>
 #include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
@@ -323,9 +324,13 @@ private:
     size_t active_ = 0;
 };
 
+// Names tried for one extracted feature before giving up (DIR/STEM_featureN-10000.json).
+constexpr int kMaxExtractNames = 10000;
+
 // Each failing feature as DIR/STEM_featureN.json (a second file of the same stem gets
 // STEM-2_...); a failing whole file is copied as DIR/STEM_feature0.EXT, its format kept (JSON
-// cannot hold the NaN of a WKT file). Returns false when one could not be written.
+// cannot hold the NaN of a WKT file). A name taken gets -2, -3, ... before the extension.
+// Returns false when one could not be written.
 bool extract(std::vector<Row*>& rows, const CheckOptions& o) {
     std::error_code ec;
     fs::create_directories(o.extractDir, ec);
@@ -351,13 +356,28 @@ bool extract(std::vector<Row*>& rows, const CheckOptions& o) {
             stem = base;
             for (int k = 2; !stems.insert(stem).second; ++k) stem = base + "-" + std::to_string(k);
         }
-        std::string path =
-            (fs::path(o.extractDir) / (stem + "_feature" + std::to_string(r->feature) + ext))
-                .string();
-        Output out(path);
-        out.stream() << text;
-        if (out.commit() == Status::Ok) r->extracted = path;
-        else ok = false;
+        // Never over an existing file (an earlier run's, or an input being checked): the
+        // first free name of STEM_featureN.EXT, STEM_featureN-2.EXT, ... (made atomically).
+        const std::string base =
+            (fs::path(o.extractDir) / (stem + "_feature" + std::to_string(r->feature))).string();
+        for (int k = 1;; ++k) {
+            std::string path = base + (k == 1 ? "" : "-" + std::to_string(k)) + ext;
+            Output out(path, Output::IfExists::Fail);
+            if (out.error() != EEXIST) out.stream() << text;
+            std::string message;
+            if (out.commit(&message) == Status::Ok) {
+                r->extracted = path;
+                break;
+            }
+            if (out.error() == EEXIST && k < kMaxExtractNames) continue;
+            std::cerr << (out.error() == EEXIST
+                              ? "error: " + base + ext + ": " + std::to_string(k) +
+                                    " names taken, nothing extracted"
+                              : message)
+                      << "\n";
+            ok = false;
+            break;
+        }
     }
     return ok;
 }

@@ -88,7 +88,8 @@ public:
     // (the system's reason), removes the temporary and returns WriteFailed. With `message`
     // the line goes there instead of stderr (the viewer shows it in its status line).
     Status commit(std::string* message = nullptr);
-    // The errno of the failure once commit() failed (EEXIST: IfExists::Fail found a file).
+    // The errno of the failure, 0 when none yet: what the constructor met (EEXIST when
+    // IfExists::Fail finds the name taken) is known at once, the rest once commit() failed.
     int error() const;
 
 private:

@@ -407,3 +407,45 @@ TEST(Check, ExtractedNamesNeverCollide) {
     EXPECT_TRUE(names.count("mixed_feature1.json") && names.count("mixed-2_feature1.json")) << doc;
     fs::remove_all(d);
 }
+
+// --extract used to replace whatever held an extracted name: an earlier run's repros, or an
+// input being checked. A taken name gets -2, -3, ... and "extracted" says which was written.
+TEST(Check, ExtractNeverOverwritesAFile) {
+    fs::path d = scratch("extract-no-overwrite");
+    const fs::path out = d / "out";
+    fs::create_directories(out);
+    // An input that is checked lives in the folder, under the name feature 1 would get.
+    const fs::path input = out / "mixed_feature1.json";
+    fs::copy_file(sourcePath("polygons/invalid/hole-outside.json"), input);
+    const std::string inputText = slurp(input);
+    json first = checkJson("--extract " + out.string() + " " + kMixed + " " + input.string());
+    EXPECT_EQ(slurp(input), inputText);
+    std::map<std::string, std::string> extracted;  // file#feature -> name
+    for (const json& r : first["features"])
+        if (r["extracted"].is_string())
+            extracted[r["file"].get<std::string>() + "#" + r["feature"].dump()] =
+                fs::path(r["extracted"].get<std::string>()).filename();
+    EXPECT_EQ(extracted[kMixed + "#1"], "mixed_feature1-2.json") << first;
+    EXPECT_EQ(extracted[input.string() + "#null"], "mixed_feature1_feature0.json") << first;
+    // Again: every name is taken now, none is replaced.
+    std::map<std::string, std::string> before;
+    for (auto& e : fs::directory_iterator(out)) before[e.path().filename()] = slurp(e.path());
+    for (auto& [name, text] : before) std::ofstream(out / name) << "precious " << name;
+    int code = -1;
+    json second =
+        checkJson("--extract " + out.string() + " " + kMixed + " " + input.string(), &code);
+    EXPECT_EQ(code, 4);
+    for (auto& [name, text] : before) EXPECT_EQ(slurp(out / name), "precious " + name) << name;
+    size_t fresh = 0;
+    for (const json& r : second["features"])
+        if (r["extracted"].is_string()) {
+            std::string name = fs::path(r["extracted"].get<std::string>()).filename();
+            EXPECT_EQ(before.count(name), 0u) << name;
+            EXPECT_TRUE(fs::exists(r["extracted"].get<std::string>()));
+            ++fresh;
+        }
+    EXPECT_EQ(fresh, extracted.size());
+    EXPECT_EQ(size_t(std::distance(fs::directory_iterator(out), fs::directory_iterator())),
+              before.size() + fresh);
+    fs::remove_all(d);
+}

@@ -21,6 +21,12 @@ inline const CatalogueRow kInvalidCatalogue[] = {
      "bad-structure.json: polygon 0 ring 0 vertex 2: coordinate is not a pair of numbers"},
     {"number-overflow.json", "triangulate", 3,
      "number-overflow.json:2:6: number out of range: 1e999 does not fit a double"},
+    // ... and below it: 1e-400 was read as 0, where 1e400 was refused.
+    {"number-underflow.json", "triangulate", 3,
+     "number-underflow.json:2:6: number out of range: 1e-400 underflows to 0 (the least double is "
+     "4.9e-324)"},
+    {"number-underflow.wkt", "triangulate", 3,
+     "number-underflow.wkt:1:25: WKT: number out of range: 1e-400 underflows to 0"},
     {"wkt-syntax.wkt", "triangulate", 3, "wkt-syntax.wkt:1:27: WKT: expected ')', found 'x'"},
     {"wkt-empty.wkt", "triangulate", 3,
      "wkt-empty.wkt:1:9: WKT: POLYGON EMPTY: polygon has no rings"},

@@ -386,6 +386,37 @@ size_t width(const std::string& s) {  // UTF-8 code points
     return size_t(std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
 }
 
+// Control characters made visible (\n, \t, \r, \e, \xHH; C1 controls \u0080 ... \u009f): a
+// feature's name or a file name must not move the terminal's cursor, change its colours or
+// forge a row of the table. JSON escapes them itself.
+std::string printable(const std::string& s) {
+    std::string out;
+    out.reserve(s.size());
+    char hex[8];
+    for (size_t i = 0; i < s.size(); ++i) {
+        const unsigned char c = static_cast<unsigned char>(s[i]);
+        if (c == 0xC2 && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
+            static_cast<unsigned char>(s[i + 1]) <= 0x9F) {
+            std::snprintf(hex, sizeof hex, "\\u%04x", unsigned(static_cast<unsigned char>(s[++i])));
+            out += hex;
+        } else if (c >= 0x20 && c != 0x7F) {
+            out += char(c);
+        } else if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else if (c == 0x1B) {
+            out += "\\e";
+        } else {
+            std::snprintf(hex, sizeof hex, "\\x%02x", unsigned(c));
+            out += hex;
+        }
+    }
+    return out;
+}
+
 // Cut to one table cell, never inside a UTF-8 sequence.
 std::string cell(const std::string& s, size_t max) {
     if (s.size() <= max) return s;
@@ -399,10 +430,10 @@ void printTable(const std::vector<Row*>& rows) {
     cells.push_back({"FILE", "FEATURE", "ID/NAME", "VERTICES", "VERDICT", "AT", "REASON"});
     for (const Row* r : rows) {
         const std::string& label = !r->id.empty() ? r->id : r->name;
-        cells.push_back({r->file, r->wholeFile ? "-" : std::to_string(r->feature),
-                         label.empty() ? "-" : label, std::to_string(r->vertices),
-                         verdictName(r->verdict), r->at.empty() ? "-" : cell(r->at, 80),
-                         r->reason.empty() ? "-" : cell(r->reason, 120)});
+        cells.push_back({printable(r->file), r->wholeFile ? "-" : std::to_string(r->feature),
+                         label.empty() ? "-" : printable(label), std::to_string(r->vertices),
+                         verdictName(r->verdict), r->at.empty() ? "-" : cell(printable(r->at), 80),
+                         r->reason.empty() ? "-" : cell(printable(r->reason), 120)});
     }
     std::array<size_t, 7> w{};
     for (const auto& c : cells)
@@ -460,7 +491,7 @@ int runCheck(const CheckOptions& o) {
 
     std::vector<Row*> rows;
     for (File& f : files) {
-        for (const std::string& w : f.warnings) std::cerr << "warning: " << w << "\n";
+        for (const std::string& w : f.warnings) std::cerr << "warning: " << printable(w) << "\n";
         for (Row& r : f.rows) rows.push_back(&r);
     }
     int code = 0;

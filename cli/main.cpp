@@ -647,6 +647,17 @@ int run(int argc, char** argv) {
                         "Refuse inputs larger than this (default 4 GiB; suffixes k, M, G: "
                         "1024-based)")
             ->transform(CLI::AsSizeValue(false))
+            // Runs before the size transform (each transform goes in front), which would
+            // read -5 as 2^64 - 5 and so accept it.
+            ->transform(CLI::Validator(
+                [](std::string& v) {
+                    size_t first = v.find_first_not_of(" \t");
+                    return first != std::string::npos && v[first] == '-'
+                               ? "'" + v + "' is not a size: give a positive number of bytes " +
+                                     "(suffixes k, M, G)"
+                               : std::string();
+                },
+                ""))
             ->check(CLI::Range(uint64_t(1), UINT64_MAX));
     for (CLI::App* cmd : {tri, trace, tr, ver, bench, shr, chk}) {
         cmd->add_option("--layer", selection.layer,

@@ -449,3 +449,33 @@ TEST(Check, ExtractNeverOverwritesAFile) {
               before.size() + fresh);
     fs::remove_all(d);
 }
+
+// A feature's name with an ESC reached the terminal raw, and a newline forged a table row:
+// control characters are shown escaped in the table and the warnings (the JSON escapes them).
+TEST(Check, ControlCharactersInNamesAreEscaped) {
+    fs::path d = scratch("control");
+    const std::string ring = "[[[0,0],[4,0],[4,4],[0,4],[0,0]]]";
+    std::ofstream(d / "ctl.json")
+        << R"({"type":"FeatureCollection","features":[)"
+        << R"({"type":"Feature","properties":{"name":"evil\u001b[31mred\nforged  row \u0085x\u007f"},)"
+        << R"("geometry":{"type":"Polygon","coordinates":)" << ring << "}},"
+        << R"({"type":"Feature","id":"a\rb\tc","properties":{},)"
+        << R"("geometry":{"type":"Polygon","coordinates":)" << ring << "}},"
+        << R"({"type":"Feature","properties":{},"geometry":{"type":"Point\u001b]0;x","coordinates":[0,0]}}]})";
+    CheckRun r = cli("check " + (d / "ctl.json").string());
+    EXPECT_EQ(r.code, 0) << r.out << r.err;
+    for (const std::string& s : {r.out, r.err}) {
+        EXPECT_EQ(s.find('\x1b'), std::string::npos) << s;
+        EXPECT_EQ(s.find('\r'), std::string::npos) << s;
+        EXPECT_EQ(s.find('\x7f'), std::string::npos) << s;
+        EXPECT_EQ(s.find("\xc2\x85"), std::string::npos) << s;
+    }
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 4) << r.out;  // head, 2 rows, sum
+    EXPECT_TRUE(has(r.out, "evil\\e[31mred\\nforged  row \\u0085x\\x7f")) << r.out;
+    EXPECT_TRUE(has(r.out, "a\\rb\\tc")) << r.out;
+    EXPECT_TRUE(has(r.err, "not polygonal (Point\\e]0;x), skipped")) << r.err;
+    // The JSON keeps the text itself, escaped as JSON escapes it.
+    json doc = checkJson((d / "ctl.json").string());
+    EXPECT_EQ(doc["features"][0]["name"], "evil\x1b[31mred\nforged  row \xc2\x85x\x7f");
+    fs::remove_all(d);
+}

@@ -111,6 +111,9 @@ inline const CatalogueRow kInvalidCatalogue[] = {
      "the exact checker rejects our triangulation: triangle-count"},
     // Usage (2)
     {"", "triangulate --format png x.json", 2, "--format"},
+    // A negative size used to wrap around to 2^64 - 5 and be accepted.
+    {"", "verify --max-input-bytes=-5 x.json", 2,
+     "--max-input-bytes: '-5' is not a size: give a positive number of bytes (suffixes k, M, G)"},
     // The finding: CLI11 said "A subcommand is required" for a misspelt one.
     {"", "frobnicate", 2,
      "unknown subcommand 'frobnicate'; expected one of triangulate, trace, transcript"},

@@ -166,12 +166,14 @@ struct Reader {
         if (!s.where.empty() && layer->SetAttributeFilter(s.where.c_str()) != OGRERR_NONE)
             return malformed("layer " + lname + ": --where '" + io_detail::echo(s.where) +
                              "' is not a valid attribute filter: " + lastError());
-        // What the layer says it holds, where it knows without reading (Shapefile's index,
-        // FlatGeobuf's header, GeoPackage's count): -1 otherwise, or with a filter.
+        // What the layer says it holds, where that is exactly what reading gives (FlatGeobuf's
+        // header; not a Shapefile's, which counts records marked deleted too): -1 otherwise,
+        // or with a filter. Elsewhere GDAL's errors are what tells a cut file.
+        const GDALDriver* driver = ds->GetDriver();
+        const bool exactCount = driver && std::string(driver->GetDescription()) == "FlatGeobuf" &&
+                                layer->TestCapability(OLCFastFeatureCount);
         const GIntBig announced =
-            s.feature < 0 && s.where.empty() && layer->TestCapability(OLCFastFeatureCount)
-                ? layer->GetFeatureCount(FALSE)
-                : -1;
+            s.feature < 0 && s.where.empty() && exactCount ? layer->GetFeatureCount(FALSE) : -1;
         auto features = [&](size_t n) {
             return std::to_string(n) + (announced >= 0 ? " of " + std::to_string(announced) : "") +
                    (n == 1 && announced < 0 ? " feature" : " features");

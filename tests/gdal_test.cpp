@@ -370,6 +370,22 @@ TEST_F(Gdal, CorruptOrTruncatedDatasetsFailNotSkip) {
     EXPECT_NE(d.features.back().read.diagnostic.message.find(": reading stopped after "),
               std::string::npos)
         << d.features.back().read.diagnostic.message;
+
+    // No false alarm: a Shapefile record marked deleted in the .dbf (its first byte '*', as
+    // editors leave it until a repack) is not read, and that is no corruption.
+    for (const char* ext : {".shp", ".shx", ".prj"})
+        fs::copy_file(path(std::string("source") + ext), path(std::string("deleted") + ext));
+    std::string dbf = slurp(path("source.dbf"));
+    const size_t header = size_t(static_cast<unsigned char>(dbf[8])) |
+                          size_t(static_cast<unsigned char>(dbf[9])) << 8,
+                 record = size_t(static_cast<unsigned char>(dbf[10])) |
+                          size_t(static_cast<unsigned char>(dbf[11])) << 8;
+    dbf[header + record] = '*';  // the second record
+    std::ofstream(path("deleted.dbf"), std::ios::binary) << dbf;
+    d = gdal::readFeatures(path("deleted.shp"), {});
+    ASSERT_EQ(d.features.size(), total - 1);
+    for (const FeatureRead& f : d.features)
+        EXPECT_TRUE(f.read.diagnostic.ok()) << f.read.diagnostic.message;
 }
 
 // Every length each fixture can be cut to, and bytes flipped through it: the read never

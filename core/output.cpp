@@ -230,6 +230,13 @@ const char* OutputTarget::kind() const {
 OutputTarget outputTarget(const std::string& path) {
     OutputTarget t;
     t.file = path;
+    // What the kernel finds at the end of the links first: a device, a FIFO or a directory is
+    // named by `path` itself (written in place or refused), which also keeps /proc's links
+    // (/dev/stdout -> /proc/self/fd/1 -> "pipe:[...]") working, whose text names no file.
+    if (::stat(path.c_str(), &t.st) == 0 && !S_ISREG(t.st.st_mode)) {
+        t.exists = true;
+        return t;
+    }
     for (int links = 0;; ++links) {
         if (::lstat(t.file.c_str(), &t.st) != 0) {
             if (errno != ENOENT) t.error = errno;

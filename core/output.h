@@ -11,9 +11,11 @@
 
 namespace flood {
 
-// Where a write to `path` lands: `path` itself or, when it is a symbolic link, the file at the
-// end of its links (a dangling link's target is created, as the shell's `>` does). Writers
-// replace `file` and never the link: a temporary in the folder of `file`, renamed over it.
+// Where a write to `path` lands: `path` itself or, when it is a symbolic link to a regular file
+// (or to nothing), the file at the end of its links (a dangling link's target is created, as
+// the shell's `>` does). Writers replace `file` and never the link: a temporary in the folder
+// of `file`, renamed over it. A link to anything else (a device, a FIFO, /dev/stdout's) is
+// `path` itself, with `st` what the kernel finds at its end.
 struct OutputTarget {
     std::string file;     // the name to write
     int error = 0;        // ELOOP, or what lstat or readlink said (ENOENT is a new file)

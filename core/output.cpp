@@ -381,8 +381,8 @@ Status Output::commit(std::string* message) {
     if (!o.buf.error() && !o.temp.empty() && o.noReplace &&
         ::renameat2(AT_FDCWD, o.temp.c_str(), AT_FDCWD, o.file.c_str(), RENAME_NOREPLACE) != 0) {
         // A file system without RENAME_NOREPLACE: a hard link fails on an existing name too.
-        if (errno != EINVAL && errno != ENOSYS) o.buf.fail(errno);
-        else if (::link(o.temp.c_str(), o.file.c_str()) != 0) o.buf.fail(errno);
+        const bool unsupported = errno == EINVAL || errno == ENOSYS;
+        if (!unsupported || ::link(o.temp.c_str(), o.file.c_str()) != 0) o.buf.fail(errno);
         else ::unlink(o.temp.c_str());
     }
     if (!o.buf.error()) {

@@ -58,7 +58,7 @@ public:
     void forget();
 
 private:
-    int slots_[8];
+    int slots_[8] = {};
     int count_ = 0;
 };
 

@@ -16,6 +16,7 @@
 #include <array>
 #include <atomic>
 #include <cctype>
+#include <cerrno>
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
@@ -348,9 +349,13 @@ private:
     size_t active_ = 0;
 };
 
+// Names tried for one extracted feature before giving up (DIR/STEM_featureN-10000.json).
+constexpr int kMaxExtractNames = 10000;
+
 // Each failing feature as DIR/STEM_featureN.json (a second file of the same stem gets
 // STEM-2_...); a failing whole file is copied as DIR/STEM_feature0.EXT, its format kept (JSON
-// cannot hold the NaN of a WKT file). Returns false when one could not be written.
+// cannot hold the NaN of a WKT file). A name taken gets -2, -3, ... before the extension.
+// Returns false when one could not be written.
 bool extract(std::vector<Row*>& rows, const CheckOptions& o) {
     std::error_code ec;
     fs::create_directories(o.extractDir, ec);
@@ -376,19 +381,65 @@ bool extract(std::vector<Row*>& rows, const CheckOptions& o) {
             stem = base;
             for (int k = 2; !stems.insert(stem).second; ++k) stem = base + "-" + std::to_string(k);
         }
-        std::string path =
-            (fs::path(o.extractDir) / (stem + "_feature" + std::to_string(r->feature) + ext))
-                .string();
-        Output out(path);
-        out.stream() << text;
-        if (out.commit() == Status::Ok) r->extracted = path;
-        else ok = false;
+        // Never over an existing file (an earlier run's, or an input being checked): the
+        // first free name of STEM_featureN.EXT, STEM_featureN-2.EXT, ... (made atomically).
+        const std::string base =
+            (fs::path(o.extractDir) / (stem + "_feature" + std::to_string(r->feature))).string();
+        for (int k = 1;; ++k) {
+            std::string path = base + (k == 1 ? "" : "-" + std::to_string(k)) + ext;
+            Output out(path, Output::IfExists::Fail);
+            if (out.error() != EEXIST) out.stream() << text;
+            std::string message;
+            if (out.commit(&message) == Status::Ok) {
+                r->extracted = path;
+                break;
+            }
+            if (out.error() == EEXIST && k < kMaxExtractNames) continue;
+            std::cerr << (out.error() == EEXIST
+                              ? "error: " + base + ext + ": " + std::to_string(k) +
+                                    " names taken, nothing extracted"
+                              : message)
+                      << "\n";
+            ok = false;
+            break;
+        }
     }
     return ok;
 }
 
 size_t width(const std::string& s) {  // UTF-8 code points
     return size_t(std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
+}
+
+// Control characters made visible (\n, \t, \r, \e, \xHH; C1 controls \u0080 ... \u009f): a
+// feature's name or a file name must not move the terminal's cursor, change its colours or
+// forge a row of the table. JSON escapes them itself.
+std::string printable(const std::string& s) {
+    std::string out;
+    out.reserve(s.size());
+    char hex[8];
+    for (size_t i = 0; i < s.size(); ++i) {
+        const unsigned char c = static_cast<unsigned char>(s[i]);
+        if (c == 0xC2 && i + 1 < s.size() && static_cast<unsigned char>(s[i + 1]) >= 0x80 &&
+            static_cast<unsigned char>(s[i + 1]) <= 0x9F) {
+            std::snprintf(hex, sizeof hex, "\\u%04x", unsigned(static_cast<unsigned char>(s[++i])));
+            out += hex;
+        } else if (c >= 0x20 && c != 0x7F) {
+            out += char(c);
+        } else if (c == '\n') {
+            out += "\\n";
+        } else if (c == '\t') {
+            out += "\\t";
+        } else if (c == '\r') {
+            out += "\\r";
+        } else if (c == 0x1B) {
+            out += "\\e";
+        } else {
+            std::snprintf(hex, sizeof hex, "\\x%02x", unsigned(c));
+            out += hex;
+        }
+    }
+    return out;
 }
 
 // Cut to one table cell, never inside a UTF-8 sequence.
@@ -404,14 +455,14 @@ void printTable(const std::vector<Row*>& rows) {
     cells.push_back({"FILE", "FEATURE", "ID/NAME", "VERTICES", "VERDICT", "AT", "REASON"});
     for (const Row* r : rows) {
         const std::string& label = !r->id.empty() ? r->id : r->name;
-        cells.push_back({r->file, r->wholeFile ? "-" : std::to_string(r->feature),
-                         label.empty() ? "-" : label, std::to_string(r->vertices),
-                         verdictName(r->verdict), r->at.empty() ? "-" : cell(r->at, 80),
-                         r->reason.empty() ? "-" : cell(r->reason, 120)});
+        cells.push_back({printable(r->file), r->wholeFile ? "-" : std::to_string(r->feature),
+                         label.empty() ? "-" : printable(label), std::to_string(r->vertices),
+                         verdictName(r->verdict), r->at.empty() ? "-" : cell(printable(r->at), 80),
+                         r->reason.empty() ? "-" : cell(printable(r->reason), 120)});
         // The feature's other findings under it, in the AT and REASON columns.
         for (size_t k = 1; k < r->findings.size(); ++k)
-            cells.push_back({"", "", "", "", "", cell(r->findings[k].at, 80),
-                             cell(r->findings[k].reason, 120)});
+            cells.push_back({"", "", "", "", "", cell(printable(r->findings[k].at), 80),
+                             cell(printable(r->findings[k].reason), 120)});
         if (r->findingsOmitted)
             cells.push_back(
                 {"", "", "", "", "", "\u2026",
@@ -476,7 +527,7 @@ int runCheck(const CheckOptions& o) {
 
     std::vector<Row*> rows;
     for (File& f : files) {
-        for (const std::string& w : f.warnings) std::cerr << "warning: " << w << "\n";
+        for (const std::string& w : f.warnings) std::cerr << "warning: " << printable(w) << "\n";
         for (Row& r : f.rows) rows.push_back(&r);
     }
     int code = 0;

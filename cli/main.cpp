@@ -409,9 +409,11 @@ int cmdShrink(const std::string& in, const std::string& out, const std::string& 
     file.stream() << text;
     Status written = file.commit();
     if (written != Status::Ok) return code(written);
-    // Checked the way its user reads it: the file itself when there is one.
+    // Checked the way its user reads it: the file itself when there is one (a FIFO or a
+    // device cannot be read back: what went there is the text).
     std::string back = text;
-    if (out != "-" && !readInputFile(out, back, kDefaultMaxInputBytes, "a polygon").ok())
+    if (out != "-" && Output::discardable(out) &&
+        !readInputFile(out, back, kDefaultMaxInputBytes, "a polygon").ok())
         back.clear();
     if (!classifyText(back, o, r.inputValid).sameClass(r.failure)) {
         std::cerr << "error: " << out << ": the repro written does not fail as " << kind
@@ -664,6 +666,17 @@ int run(int argc, char** argv) {
                         "Refuse inputs larger than this (default 4 GiB; suffixes k, M, G: "
                         "1024-based)")
             ->transform(CLI::AsSizeValue(false))
+            // Runs before the size transform (each transform goes in front), which would
+            // read -5 as 2^64 - 5 and so accept it.
+            ->transform(CLI::Validator(
+                [](std::string& v) {
+                    size_t first = v.find_first_not_of(" \t");
+                    return first != std::string::npos && v[first] == '-'
+                               ? "'" + v + "' is not a size: give a positive number of bytes " +
+                                     "(suffixes k, M, G)"
+                               : std::string();
+                },
+                ""))
             ->check(CLI::Range(uint64_t(1), UINT64_MAX));
     for (CLI::App* cmd : {tri, trace, tr, ver, bench, shr, chk}) {
         cmd->add_option("--layer", selection.layer,

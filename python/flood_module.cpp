@@ -37,6 +37,28 @@ namespace {
 
 using Array = py::array_t<double, py::array::c_style | py::array::forcecast>;
 
+// Why `a` is no ring, or "": a ring is n rows of x, y and optionally z and m (dropped), so an
+// (n, 2), (n, 3) or (n, 4) array. A shape with fewer rows than columns, 2 to 4 of them, is
+// what a transposed ring [xs, ys, zs] looks like: refused too (a (3, 4) array would otherwise
+// be three points), except one point (a hole of one point, z given).
+std::string badRingShape(const Array& a) {
+    const char* expected =
+        "a ring is an (n, 2), (n, 3) or (n, 4) array: one row per point, x, y[, z[, m]]";
+    if (!a) return expected;
+    std::string shape = "(";
+    for (py::ssize_t k = 0; k < a.ndim(); ++k)
+        shape += (k ? ", " : "") + std::to_string(a.shape(k));
+    shape += a.ndim() == 1 ? ",)" : ")";
+    if (a.ndim() != 2) return std::string(expected) + "; got an array of shape " + shape;
+    const py::ssize_t rows = a.shape(0), columns = a.shape(1);
+    if (rows >= 2 && rows <= 4 && columns > rows)
+        return std::string(expected) + "; got shape " + shape + ", " + std::to_string(rows) +
+               " rows of " + std::to_string(columns) +
+               ": transposed? [xs, ys] or [xs, ys, zs] must be passed as its transpose (a.T)";
+    if (columns < 2 || columns > 4) return std::string(expected) + "; got shape " + shape;
+    return "";
+}
+
 // Reads one input (see the file comment). Needs the GIL.
 ReadResult readInput(py::handle input, const std::string& name) {
     if (py::isinstance<py::str>(input)) {
@@ -54,10 +76,10 @@ ReadResult readInput(py::handle input, const std::string& name) {
         bool outer = true;
         for (py::handle ring : part) {
             Array a = Array::ensure(ring);
-            if (!a || a.ndim() != 2 || a.shape(1) != 2) {
-                rr.diagnostic = {Status::Malformed,
-                                 name + ": ring " + std::to_string(rr.polygon.rings.size()) +
-                                     ": a ring is an (n, 2) array of coordinates"};
+            if (std::string why = badRingShape(a); !why.empty()) {
+                rr.diagnostic = {
+                    Status::Malformed,
+                    name + ": ring " + std::to_string(rr.polygon.rings.size()) + ": " + why};
                 return rr;
             }
             std::vector<Point> raw(size_t(a.shape(0)));

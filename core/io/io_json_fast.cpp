@@ -71,7 +71,8 @@ private:
     // A coordinate, read by std::from_chars (correctly rounded, like the tree reader's strtod;
     // simdjson 3.0.1's own reading of literals past 19 digits is not: it read
     // 0.1000000000000000055511151231257827 as 4.1e-16). nlohmann reads an integer literal as
-    // an integer, so "-0" is +0.0. A value beyond the double range is left to the tree reader.
+    // an integer, so "-0" is +0.0. A value beyond the double range, or a nonzero one below it
+    // (from_chars says result_out_of_range for both), is left to the tree reader, which refuses it.
     static bool number(od::value v, double& d) {
         std::string_view token = v.raw_json_token();  // up to the next structural character
         size_t k = literalLength(token);

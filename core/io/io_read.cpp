@@ -217,6 +217,12 @@ ReadResult io_detail::parseJsonTree(std::string_view text, const std::string& na
         rr.diagnostic = {Status::Malformed, name + ": JSON error: " + jsonReason(e.what())};
         return rr;
     }
+    // nlohmann reads a literal below the doubles (1e-400) as 0, where it refuses 1e400.
+    if (size_t at = firstUnderflow(text); at != std::string_view::npos) {
+        rr.diagnostic = {Status::Malformed,
+                         where(name, text, at) + ": " + underflowReason(literalAt(text, at))};
+        return rr;
+    }
     try {
         int polygonCount = 0;
         if (doc.is_object()) {
@@ -413,6 +419,7 @@ DatasetRead parseFeatures(std::string_view text, const std::string& name, bool k
     } catch (const json::exception&) {
         return whole();  // parsePolygon says where and why
     }
+    if (io_detail::firstUnderflow(text) != std::string_view::npos) return whole();  // as 1e400
     if (!doc.is_object() || !doc.contains("type") || doc["type"] != "FeatureCollection" ||
         !doc.contains("features") || !doc["features"].is_array() || doc["features"].empty())
         return whole();

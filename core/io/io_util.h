@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <charconv>
 #include <cstddef>
+#include <cstdlib>
 #include <string>
 #include <string_view>
 
@@ -120,6 +121,61 @@ inline size_t tooDeep(std::string_view text) {
         }
     }
     return std::string_view::npos;
+}
+
+// A number literal (JSON or WKT) that is not zero but reads as 0: smaller than half the least
+// double (about 2.5e-324). It is refused as one too large is ("number out of range"): reading
+// it as 0 would move a vertex silently. A subnormal such as 1e-310 is a double, and is read.
+inline bool underflows(std::string_view literal) {
+    size_t mantissa = literal.find_first_of("eE");
+    if (mantissa == std::string_view::npos) mantissa = literal.size();
+    if (literal.substr(0, mantissa).find_first_of("123456789") == std::string_view::npos)
+        return false;  // zero, whatever its exponent
+    // Only a negative exponent or hundreds of digits can reach below the doubles.
+    if (literal.find("e-") == std::string_view::npos &&
+        literal.find("E-") == std::string_view::npos && literal.size() < 300)
+        return false;
+    std::string copy(literal);
+    char* end = nullptr;
+    double v = std::strtod(copy.c_str(), &end);
+    return v == 0 && end != copy.c_str();
+}
+
+// The message for such a literal, after the location.
+inline std::string underflowReason(std::string_view literal) {
+    return "number out of range: " + echo(literal) +
+           " underflows to 0 (the least double is 4.9e-324)";
+}
+
+// The first JSON number literal outside strings that underflows (above): its offset, or npos.
+// Linear time; `text` is valid JSON (it has been parsed).
+inline size_t firstUnderflow(std::string_view text) {
+    for (size_t i = 0; i < text.size(); ++i) {
+        char c = text[i];
+        if (c == '"') {
+            for (++i; i < text.size() && text[i] != '"'; ++i)
+                if (text[i] == '\\') ++i;
+            continue;
+        }
+        if (c != '-' && (c < '0' || c > '9')) continue;
+        size_t j = i;
+        while (j < text.size() &&
+               ((text[j] >= '0' && text[j] <= '9') || text[j] == '.' || text[j] == 'e' ||
+                text[j] == 'E' || text[j] == '-' || text[j] == '+'))
+            ++j;
+        if (underflows(text.substr(i, j - i))) return i;
+        i = j - 1;
+    }
+    return std::string_view::npos;
+}
+
+// The literal at `offset` (as firstUnderflow found it).
+inline std::string_view literalAt(std::string_view text, size_t offset) {
+    size_t j = offset;
+    while (j < text.size() &&
+           std::string_view("0123456789.eE+-").find(text[j]) != std::string_view::npos)
+        ++j;
+    return text.substr(offset, j - offset);
 }
 
 }  // namespace flood::io_detail

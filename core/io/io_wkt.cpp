@@ -168,6 +168,8 @@ private:
         double v = std::strtod(tok.c_str(), &end);
         if (end != tok.c_str() + tok.size())
             throw WktError{start, "expected a number, found \"" + io_detail::echo(tok) + "\""};
+        if (v == 0 && io_detail::underflows(tok))
+            throw WktError{start, io_detail::underflowReason(tok)};
         return v;
     }
 

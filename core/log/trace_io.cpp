@@ -293,6 +293,9 @@ Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& tra
                 throw Bad{std::string("JSON syntax error at column ") + std::to_string(e.byte) +
                           ": " + io_detail::jsonReason(e.what())};
             }
+            if (size_t at = io_detail::firstUnderflow(line); at != std::string_view::npos)
+                throw Bad{"column " + std::to_string(at + 1) + ": " +
+                          io_detail::underflowReason(io_detail::literalAt(line, at))};
             if (!o.is_object()) throw Bad{"a line must be one JSON object"};
             if (!sawHeader) {
                 parseHeader(o, trace.polygon);

@@ -159,8 +159,9 @@ def _ring(coords) -> np.ndarray:
     a = np.asarray(coords)
     if a.dtype.kind not in "fiu":
         raise TypeError(f"ring coordinates must be numbers, got dtype {a.dtype}")
-    if a.ndim == 2 and a.shape[1] > 2:
-        a = a[:, :2]  # shapely and GeoJSON may carry z
+    # Any shape goes on: the C++ side takes (n, 2), (n, 3) or (n, 4) rows of x, y[, z[, m]]
+    # (z and m dropped, as shapely and GeoJSON may carry them) and refuses the rest, a
+    # transposed [xs, ys, zs] among them, as malformed (code 3) rather than misreading it.
     return np.ascontiguousarray(a, dtype=np.float64)
 
 

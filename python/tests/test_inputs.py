@@ -148,3 +148,25 @@ def test_version_is_the_projects_and_the_package_is_typed():
     assert re.search(r"project\(flood VERSION ([0-9.]+)", cmake).group(1) == flood.__version__
     assert re.search(r'^version = "([0-9.]+)"', pyproject, re.M).group(1) == flood.__version__
     assert os.path.exists(os.path.join(os.path.dirname(flood.__file__), "py.typed"))
+
+
+def test_a_transposed_or_misshapen_ring_is_refused_not_misread():
+    # [xs, ys, zs] of four points, a (3, 4) array, was read as three points of (x, y).
+    xs, ys, zs = [0, 10, 10, 0], [0, 0, 10, 10], [5, 5, 5, 5]
+    for bad, shape in [(np.array([xs, ys, zs]), "(3, 4)"), (np.array([xs, ys]), "(2, 4)"),
+                       (np.zeros((10, 5)), "(10, 5)"), (np.zeros((10, 1)), "(10, 1)"),
+                       ([np.zeros(8)], "(1, 8)")]:
+        d = flood.validate([bad])
+        assert not d.ok and d.status == "malformed" and d.code == 3, (shape, d)
+        assert "a ring is an (n, 2), (n, 3) or (n, 4) array" in d.message, d.message
+        assert shape in d.message, d.message
+        with pytest.raises(flood.InvalidPolygon) as caught:
+            flood.triangulate(bad)
+        assert caught.value.code == 3
+    assert "transposed?" in flood.validate(np.array([xs, ys, zs])).message
+    # Its transpose, and rows carrying z or z and m, are rings.
+    square = flood.triangulate([(0, 0), (10, 0), (10, 10), (0, 10)]).triangles.tolist()
+    assert flood.triangulate(np.array([xs, ys, zs]).T).triangles.tolist() == square
+    assert flood.triangulate(np.array([xs, ys, zs, zs]).T).triangles.tolist() == square
+    # One point with z, a Steiner hole, is no transposed ring.
+    assert flood.validate([[(0, 0), (10, 0), (10, 10), (0, 10)], [(5, 5, 1)]]).ok

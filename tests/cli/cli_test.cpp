@@ -286,6 +286,21 @@ TEST(Cli, ShrinkWritesAReproThatFailsTheSameWayWhenRun) {
 
 // --- Input limits and clear messages ---------------------------------------------------------
 
+// --max-input-bytes -5 was read as 2^64 - 5 and accepted (0 was refused): a negative size is
+// refused by every command that reads.
+TEST(Cli, ANegativeInputLimitIsRefused) {
+    std::string hole = src("polygons/hole.json");
+    for (const char* cmd :
+         {"triangulate", "trace", "transcript", "verify", "bench", "shrink", "check"})
+        for (const char* value : {" -5", "=-5", "=-1k"}) {
+            RunResult r = run(std::string(cmd) + " --max-input-bytes" + value + " " + hole);
+            EXPECT_EQ(r.code, 2) << cmd << value << ": " << r.out;
+            EXPECT_TRUE(has(r.out, "--max-input-bytes: '-")) << cmd << value << ": " << r.out;
+            EXPECT_TRUE(has(r.out, "' is not a size: give a positive number of bytes"))
+                << cmd << value << ": " << r.out;
+        }
+}
+
 TEST(Cli, InputLimitsAndWhatTheInputIs) {
     fs::path d = scratch("limits");
     { std::ofstream(d / "nul.json", std::ios::binary) << std::string(1000, '\0'); }

@@ -21,6 +21,12 @@ inline const CatalogueRow kInvalidCatalogue[] = {
      "bad-structure.json: polygon 0 ring 0 vertex 2: coordinate is not a pair of numbers"},
     {"number-overflow.json", "triangulate", 3,
      "number-overflow.json:2:6: number out of range: 1e999 does not fit a double"},
+    // ... and below it: 1e-400 was read as 0, where 1e400 was refused.
+    {"number-underflow.json", "triangulate", 3,
+     "number-underflow.json:2:6: number out of range: 1e-400 underflows to 0 (the least double is "
+     "4.9e-324)"},
+    {"number-underflow.wkt", "triangulate", 3,
+     "number-underflow.wkt:1:25: WKT: number out of range: 1e-400 underflows to 0"},
     {"wkt-syntax.wkt", "triangulate", 3, "wkt-syntax.wkt:1:27: WKT: expected ')', found 'x'"},
     {"wkt-empty.wkt", "triangulate", 3,
      "wkt-empty.wkt:1:9: WKT: POLYGON EMPTY: polygon has no rings"},
@@ -105,6 +111,9 @@ inline const CatalogueRow kInvalidCatalogue[] = {
      "the exact checker rejects our triangulation: triangle-count"},
     // Usage (2)
     {"", "triangulate --format png x.json", 2, "--format"},
+    // A negative size used to wrap around to 2^64 - 5 and be accepted.
+    {"", "verify --max-input-bytes=-5 x.json", 2,
+     "--max-input-bytes: '-5' is not a size: give a positive number of bytes (suffixes k, M, G)"},
     // The finding: CLI11 said "A subcommand is required" for a misspelt one.
     {"", "frobnicate", 2,
      "unknown subcommand 'frobnicate'; expected one of triangulate, trace, transcript"},
@@ -117,6 +126,14 @@ inline const CatalogueRow kInvalidCatalogue[] = {
      "/dev/full: cannot write: No space left on device"},
     {"", "triangulate " FLOOD_SOURCE_DIR "/polygons/hole.json -o /dev/full/x.json", 8,
      "/dev/full/x.json: cannot write: Not a directory"},
+#ifdef FLOOD_GDAL
+    // A GIS dataset cannot be written in place: a device or a FIFO is refused, untouched. The
+    // test's stdout is a pipe; through /proc, which no writer can rename into, even a
+    // regressed one (5889d69 renamed its dataset over /dev/full, /dev/null).
+    {"", "triangulate " FLOOD_SOURCE_DIR "/polygons/hole.json --format gpkg -o /proc/self/fd/1", 8,
+     "/proc/self/fd/1: cannot write: --format gpkg needs a regular file, and /proc/self/fd/1 is "
+     "a FIFO (it was left untouched; write to a file)"},
+#endif
 };
 
 }  // namespace flood::testing

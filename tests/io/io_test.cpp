@@ -540,3 +540,58 @@ TEST(Validate, OneMillionVerticesAtScale) {
     p.vertices[n / 2 + 7].y = -1;  // a spike down through the zigzag: edges now cross
     EXPECT_EQ(validate(p, "big").status, Status::Invalid);
 }
+
+// 1e-400 was read as 0 while 1e400 was refused: a nonzero literal below the doubles is refused
+// by every reader, with its place; a subnormal (1e-310, 5e-324) is a double and read exactly.
+TEST(IoRead, UnderflowingLiteralsAreRefusedLikeOverflowingOnes) {
+    const std::string tail =
+        ": number out of range: 1e-400 underflows to 0 (the least double is "
+        "4.9e-324)";
+    struct Case {
+        std::string text, name, message;
+    } cases[] = {
+        // A bare ring array (the fast reader declines it, the tree reader says why).
+        {"[[[0,0],[10,0],\n [10,1e-400]]]", "a.json", "a.json:2:6" + tail},
+        // GeoJSON, the literal in a Feature's properties (refused as 1e400 there is).
+        {R"({"type":"Feature","properties":{"p":1e-400},"geometry":{"type":"Polygon",)"
+         R"("coordinates":[[[0,0],[10,0],[0,10]]]}})",
+         "f.json", "f.json:1:37" + tail},
+        // Digits without an exponent, and the upper-case E.
+        {"[[[0,0],[10,0],[0,0." + std::string(400, '0') + "1]]]", "digits.json",
+         "digits.json:1:19: number out of range: 0.00000"},
+        {"[[[0,0],[10,0],[0,-1E-400]]]", "upper.json",
+         "upper.json:1:19: number out of range: -1E-400"},
+        {"POLYGON ((0 0, 10 0, 10 1e-400, 0 10, 0 0))", "a.wkt", "a.wkt:1:25: WKT" + tail},
+    };
+    for (const Case& c : cases) {
+        ReadResult r = parsePolygon(c.text, c.name);
+        EXPECT_EQ(r.diagnostic.status, Status::Malformed) << c.name;
+        EXPECT_EQ(r.diagnostic.message.rfind(c.message, 0), 0u) << r.diagnostic.message;
+    }
+    // flood check's reader of collections agrees: the file is one malformed row.
+    DatasetRead d = parseFeatures(
+        R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{},)"
+        R"("geometry":{"type":"Polygon","coordinates":[[[0,0],[10,0],[0,1e-400]]]}}]})",
+        "fc.json", false);
+    ASSERT_EQ(d.features.size(), 1u);
+    EXPECT_TRUE(d.features[0].wholeFile);
+    EXPECT_NE(d.features[0].read.diagnostic.message.find("underflows to 0"), std::string::npos)
+        << d.features[0].read.diagnostic.message;
+    // Zero however written, and subnormals, are numbers.
+    for (const char* zero : {"0e-999", "0.0E-400", "-0.000e-5000", "1e-310", "5e-324", "3e-324"}) {
+        const std::string z = zero;
+        for (const std::string& text : {"[[[0,0],[10,0],[10,10],[5," + z + "]]]",
+                                        "POLYGON ((0 0, 10 0, 10 10, 5 " + z + "))"}) {
+            ReadResult r = parsePolygon(text, "z");
+            EXPECT_TRUE(r.diagnostic.ok()) << text << ": " << r.diagnostic.message;
+            ASSERT_EQ(r.polygon.vertices.size(), 4u) << text;
+            EXPECT_EQ(r.polygon.vertices[3].y, std::strtod(zero, nullptr)) << text;
+        }
+    }
+    // A trace's line (its header holds the polygon).
+    Trace t;
+    Diagnostic td = parseTrace(
+        R"({"flood_trace":1,"vertices":[[0,0],[1e-400,0],[0,1]],"rings":[[0,3]]})", "t.jsonl", t);
+    EXPECT_FALSE(td.ok());
+    EXPECT_NE(td.message.find("underflows to 0"), std::string::npos) << td.message;
+}

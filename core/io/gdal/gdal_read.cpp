@@ -40,6 +40,42 @@ std::string lastError() {
     return m.empty() ? "unknown GDAL error" : io_detail::echo(m);
 }
 
+// GDAL's failures while a feature is read, collected in this thread (flood check reads files
+// on several; CPL's handler stack and last error are per thread) for as long as it lives.
+class Failures {
+public:
+    Failures() { CPLPushErrorHandlerEx(collect, this); }
+    ~Failures() { CPLPopErrorHandler(); }
+    Failures(const Failures&) = delete;
+    Failures& operator=(const Failures&) = delete;
+
+    void clear() {
+        messages_.clear();
+        CPLErrorReset();
+    }
+    bool any() const { return !messages_.empty(); }
+    // "first; second" on one line, each cut to 160 bytes.
+    std::string text() const {
+        std::string t;
+        for (const std::string& m : messages_) t += (t.empty() ? "" : "; ") + m;
+        return t;
+    }
+
+private:
+    static void CPL_STDCALL collect(CPLErr level, CPLErrorNum, const char* message) {
+        auto* self = static_cast<Failures*>(CPLGetErrorHandlerUserData());
+        if (level < CE_Failure || !self || self->messages_.size() >= 4) return;
+        std::string m = message ? message : "";
+        std::replace_if(
+            m.begin(), m.end(), [](char c) { return c == '\n' || c == '\r' || c == '\t'; }, ' ');
+        size_t n = std::min<size_t>(m.size(), 160);
+        while (n > 0 && n < m.size() && (static_cast<unsigned char>(m[n]) & 0xC0) == 0x80) --n;
+        if (n < m.size()) m = m.substr(0, n) + "\u2026";
+        self->messages_.push_back(m.empty() ? "unknown GDAL error" : m);
+    }
+    std::vector<std::string> messages_;
+};
+
 struct DatasetCloser {
     void operator()(GDALDataset* d) const { GDALClose(d); }
 };
@@ -130,14 +166,47 @@ struct Reader {
         if (!s.where.empty() && layer->SetAttributeFilter(s.where.c_str()) != OGRERR_NONE)
             return malformed("layer " + lname + ": --where '" + io_detail::echo(s.where) +
                              "' is not a valid attribute filter: " + lastError());
+        // What the layer says it holds, where that is exactly what reading gives (FlatGeobuf's
+        // header; not a Shapefile's, which counts records marked deleted too): -1 otherwise,
+        // or with a filter. Elsewhere GDAL's errors are what tells a cut file.
+        const GDALDriver* driver = ds->GetDriver();
+        const bool exactCount = driver && std::string(driver->GetDescription()) == "FlatGeobuf" &&
+                                layer->TestCapability(OLCFastFeatureCount);
+        const GIntBig announced =
+            s.feature < 0 && s.where.empty() && exactCount ? layer->GetFeatureCount(FALSE) : -1;
+        auto features = [&](size_t n) {
+            return std::to_string(n) + (announced >= 0 ? " of " + std::to_string(announced) : "") +
+                   (n == 1 && announced < 0 ? " feature" : " features");
+        };
         layer->ResetReading();
+        // A feature GDAL fails to read (a truncated or corrupt file: "Error in fread()", a cut
+        // geometry blob) is a failure of its own, never skipped as a feature without geometry,
+        // and a read that stops early on an error, or short of the count the layer announces,
+        // is a failure after the last feature read: nothing is lost silently.
         size_t index = 0;
-        for (FeaturePtr f(layer->GetNextFeature()); f; f.reset(layer->GetNextFeature()), ++index) {
+        Failures failures;
+        for (;; ++index) {
+            failures.clear();
+            FeaturePtr f(layer->GetNextFeature());
+            if (!f) {
+                if (failures.any())
+                    unreadable(index, "",
+                               "layer " + lname + ": reading stopped after " + features(index) +
+                                   ": " + failures.text());
+                break;
+            }
             if (s.feature >= 0 && f->GetFID() != s.feature) continue;
-            readOne(*f, index);
+            if (failures.any())
+                unreadable(
+                    index, std::to_string(f->GetFID()),
+                    "feature " + std::to_string(f->GetFID()) + ": unreadable: " + failures.text());
+            else readOne(*f, index);
         }
-        if (CPLGetLastErrorType() >= CE_Failure && out.features.empty() && out.skipped.empty())
-            return malformed("layer " + lname + ": " + lastError());
+        if (announced > GIntBig(index) && !failures.any())
+            unreadable(index, "",
+                       "layer " + lname + ": reading stopped after " + features(index) +
+                           " without an error: the file is "
+                           "truncated or corrupt");
         if (out.features.empty())
             return malformed("layer " + lname + ": no polygon found" +
                              (s.feature >= 0 ? " (FID " + std::to_string(s.feature) + ")" : "") +
@@ -149,6 +218,16 @@ struct Reader {
         for (int k = 0; k < ds.GetLayerCount(); ++k)
             l += (k ? ", " : " (layers: ") + std::string(ds.GetLayer(k)->GetName());
         return l.empty() ? l : l + ")";
+    }
+
+    // A failure row where feature `index` (FID `fid`, or "" when unknown) should be.
+    void unreadable(size_t index, const std::string& fid, const std::string& message) {
+        FeatureRead r;
+        r.wholeFile = false;
+        r.index = index;
+        r.id = fid;
+        r.read.diagnostic = {Status::Malformed, name + ": " + message};
+        out.features.push_back(std::move(r));
     }
 
     void readOne(OGRFeature& f, size_t index) {

@@ -295,3 +295,123 @@ TEST_F(Gdal, AMissingModuleIsNamedNotACrash) {
 
 }  // namespace
 }  // namespace flood::testing
+
+namespace flood::testing {
+namespace {
+
+// True when a read of a dataset of `total` features reports every one ok, or a failure: what
+// must never happen is fewer features, all ok (a corrupt file passing as good).
+::testing::AssertionResult nothingLostSilently(const DatasetRead& d, size_t total) {
+    size_t ok = 0;
+    bool failed = false;
+    for (const FeatureRead& f : d.features) {
+        if (f.read.diagnostic.ok()) ++ok;
+        else failed = true;
+    }
+    if (failed || ok == total) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << ok << " of " << total << " features read, all ok";
+}
+
+// A .shp cut to 250 bytes passed `check` as "1 feature ... 1 ok" and `triangulate` used 1 of
+// its features; a GeoPackage with a cut geometry blob was "2 ok": GDAL said `Error in fread()`
+// and the feature came back without a geometry, skipped as "not polygonal (null)". An
+// unreadable feature is a failure (a row in check, exit 3), never a skip.
+TEST_F(Gdal, CorruptOrTruncatedDatasetsFailNotSkip) {
+    const size_t total = kValid.size() + kInvalid.size();
+    // The Shapefile: its .shp cut inside the second shape, its .shx (the index: after a
+    // 100-byte header, each shape's offset in 16-bit words, big-endian) and .dbf intact.
+    for (const char* ext : {".shx", ".dbf", ".prj"})
+        fs::copy_file(path(std::string("source") + ext), path(std::string("cut") + ext));
+    fs::copy_file(path("source.shp"), path("cut.shp"));
+    const std::string shx = slurp(path("source.shx"));
+    ASSERT_GT(shx.size(), 116u);
+    size_t second = 0;
+    for (int k = 108; k < 112; ++k) second = second * 256 + static_cast<unsigned char>(shx[k]);
+    fs::resize_file(path("cut.shp"), second * 2 + 20);
+    RunResult r = runCli("check --json " + path("cut.shp") + " 2>/dev/null");
+    EXPECT_EQ(r.code, 3) << r.out;
+    json doc = json::parse(r.out);
+    EXPECT_EQ(doc["summary"]["features"], total) << r.out;
+    EXPECT_EQ(doc["summary"]["verdicts"]["malformed"], total - 1) << r.out;
+    EXPECT_EQ(doc["features"][1]["verdict"], "malformed");
+    EXPECT_EQ(doc["features"][1]["id"], "1");
+    EXPECT_NE(doc["features"][1]["reason"].get<std::string>().find(
+                  "feature 1: unreadable: Error in fread()"),
+              std::string::npos)
+        << doc["features"][1];
+    r = runCli("triangulate " + path("cut.shp") + " -o " + path("cut.json"));
+    EXPECT_EQ(r.code, 3) << r.out;
+    EXPECT_NE(r.out.find("error: " + path("cut.shp") + ": feature 1: unreadable: "),
+              std::string::npos)
+        << r.out;
+    EXPECT_FALSE(fs::exists(path("cut.json")));
+
+    // The GeoPackage: one geometry blob cut short, in place (SQL through GDAL).
+    fs::copy_file(path("source.gpkg"), path("blob.gpkg"));
+    shell("ogrinfo " + path("blob.gpkg") +
+          " -sql \"UPDATE source SET geom = substr(geom, 1, length(geom) - 30) WHERE fid = 2\"");
+    DatasetRead d = gdal::readFeatures(path("blob.gpkg"), {});
+    ASSERT_EQ(d.features.size(), total);
+    EXPECT_EQ(d.features[1].read.diagnostic.status, Status::Malformed);
+    EXPECT_EQ(d.features[1].read.diagnostic.message,
+              path("blob.gpkg") +
+                  ": feature 2: unreadable: Length of input WKB is too small; Unable to read "
+                  "geometry");
+    EXPECT_TRUE(d.skipped.empty());
+    r = runCli("check " + path("blob.gpkg") + " --where \"name = 'holes'\"");
+    EXPECT_EQ(r.code, 3) << r.out;
+
+    // FlatGeobuf cut after its first feature: reading stops with an error.
+    const std::string fgb = slurp(path("source.fgb"));
+    std::ofstream(path("cut.fgb"), std::ios::binary) << fgb.substr(0, fgb.size() * 2 / 3);
+    d = gdal::readFeatures(path("cut.fgb"), {});
+    ASSERT_FALSE(d.features.empty());
+    EXPECT_EQ(d.features.back().read.diagnostic.status, Status::Malformed);
+    EXPECT_NE(d.features.back().read.diagnostic.message.find(": reading stopped after "),
+              std::string::npos)
+        << d.features.back().read.diagnostic.message;
+
+    // No false alarm: a Shapefile record marked deleted in the .dbf (its first byte '*', as
+    // editors leave it until a repack) is not read, and that is no corruption.
+    for (const char* ext : {".shp", ".shx", ".prj"})
+        fs::copy_file(path(std::string("source") + ext), path(std::string("deleted") + ext));
+    std::string dbf = slurp(path("source.dbf"));
+    const size_t header = size_t(static_cast<unsigned char>(dbf[8])) |
+                          size_t(static_cast<unsigned char>(dbf[9])) << 8,
+                 record = size_t(static_cast<unsigned char>(dbf[10])) |
+                          size_t(static_cast<unsigned char>(dbf[11])) << 8;
+    dbf[header + record] = '*';  // the second record
+    std::ofstream(path("deleted.dbf"), std::ios::binary) << dbf;
+    d = gdal::readFeatures(path("deleted.shp"), {});
+    ASSERT_EQ(d.features.size(), total - 1);
+    for (const FeatureRead& f : d.features)
+        EXPECT_TRUE(f.read.diagnostic.ok()) << f.read.diagnostic.message;
+}
+
+// Every length each fixture can be cut to, and bytes flipped through it: the read never
+// crashes and never loses a feature silently.
+TEST_F(Gdal, CutAndFlippedFixturesNeverLoseAFeatureSilently) {
+    const size_t total = kValid.size() + kInvalid.size();
+    for (const char* ext : {".shx", ".dbf", ".prj"})
+        fs::copy_file(path(std::string("source") + ext), path(std::string("mangled") + ext));
+    for (const char* ext : {".shp", ".fgb", ".gpkg"}) {
+        const std::string original = slurp(path(std::string("source") + ext));
+        const std::string file = path(std::string("mangled") + ext);
+        const size_t step = std::max<size_t>(1, original.size() / 40);
+        for (size_t n = 0; n < original.size(); n += step) {
+            SCOPED_TRACE(std::string(ext) + " cut to " + std::to_string(n));
+            std::ofstream(file, std::ios::binary | std::ios::trunc) << original.substr(0, n);
+            EXPECT_TRUE(nothingLostSilently(gdal::readFeatures(file, {}), total));
+        }
+        for (size_t n = 0; n < original.size(); n += step) {
+            SCOPED_TRACE(std::string(ext) + " byte " + std::to_string(n) + " flipped");
+            std::string bytes = original;
+            bytes[n] = char(~bytes[n]);
+            std::ofstream(file, std::ios::binary | std::ios::trunc) << bytes;
+            gdal::readFeatures(file, {});  // a crash fails the test; a verdict may be anything
+        }
+    }
+}
+
+}  // namespace
+}  // namespace flood::testing

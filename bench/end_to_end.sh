@@ -3,7 +3,7 @@
 # family at 10^6 and above, as a user runs it (read JSON, validate, flood, exact check, write),
 # beside Flood's triangulate() alone timed by `flood-bench run`. Writes DATA/e2e.tsv:
 # wall and user seconds (the best of two runs) and the peak resident size, less that of the same
-# command on an 8-vertex polygon (the program and its libraries), as tests/cli_memory_test.cpp
+# command on an 8-vertex polygon (the program and its libraries), as tests/cli/cli_memory_test.cpp
 # measures it. At 10^6 also where the command's time goes: `flood bench`'s CPU time per step (read,
 # validate, flood, exact check, write; one run each, ns per vertex).
 #   bench/end_to_end.sh DATA FLOOD SEED TIMEOUT

@@ -156,7 +156,8 @@ Row measure(const std::string& who, const Polygon& p, const CoordIndex& index) {
         else v = judge(p, result.triangles, 0, "");
         Polygon copy = p;  // validate() records the T-junctions it finds into its polygon
         Timing tv = timeRuns([&] { (void)validate(copy, "input"); });
-        // One more run counted (core/work.h): the sag search's share of the machine's work.
+        // One more run counted (core/geometry/work.h): the sag search's share of the
+        // machine's work.
         work() = {};
         (void)triangulate(p);
         const WorkCounters w = work();

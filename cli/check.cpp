@@ -267,7 +267,7 @@ private:
         size_t file, feature;
     };
 
-    // GIS datasets through GDAL (core_gdal/), the rest by the core's readers.
+    // GIS datasets through GDAL (core/io/gdal/), the rest by the core's readers.
     DatasetRead readDataset(const std::string& path) {
 #ifdef FLOOD_GDAL
         const Selection& s = o_.selection;

@@ -9,7 +9,7 @@
 //   written) -> flood (Forbidden -> exit 5) -> exact check of our own output (failure -> exit 6)
 //   -> write (`triangulate -o FILE`: the check and the writing at once, see checkWhileWriting).
 //   Exit codes are flood::Status values. "-" means stdin for input, stdout for output.
-// Outputs are written whole or not at all (core/output.h; a failed write exits 8).
+// Outputs are written whole or not at all (core/io/output.h; a failed write exits 8).
 #include <malloc.h>
 #include <unistd.h>
 
@@ -55,7 +55,7 @@ uint64_t maxInputBytes = kDefaultMaxInputBytes;
 // --layer, --feature, --where of the subcommand that reads (GDAL datasets).
 cli::Selection selection;
 
-// GIS datasets go to GDAL (core_gdal/), everything else to the core's own readers: the
+// GIS datasets go to GDAL (core/io/gdal/), everything else to the core's own readers: the
 // dispatch is here and in cli/check.cpp, so the core library never depends on GDAL.
 ReadResult readInput(const std::string& path) {
 #ifdef FLOOD_GDAL
@@ -147,7 +147,7 @@ void addUp(CLI::App* cmd, std::string& up) {
 }
 
 // The exact check and the writing at once, on two threads (the machine and CI have two
-// cores): the other thread checks each triangle alone (checkTriangles, core/checker.h), then
+// cores): the other thread checks each triangle alone (checkTriangles, core/check/checker.h), then
 // writes, while this one checks the rest. The output must be discardable: a failed check
 // leaves it uncommitted, so nothing of it is seen and every message is the serial path's.
 template <typename Write>
@@ -276,7 +276,7 @@ int cmdTranscript(const std::string& in, bool narrate, const std::string& up, bo
     if (!narrate) {
         std::cout << transcript(t.events) << "\n";
     } else {
-        // One numbered sentence per event in the flood metaphor (core/narrate.h).
+        // One numbered sentence per event in the flood metaphor (core/teach/narrate.h).
         for (const Event& e : t.events)
             std::cout << "step " << e.step << ": " << actionName(e.action) << ": "
                       << flood::narrate(polygon, e) << "\n";
@@ -335,7 +335,7 @@ int cmdGenerate(const std::string& family, size_t size, uint64_t seed, const std
     return code(o.commit());
 }
 
-// Shrinks a failing polygon (validation skipped; see core/shrink.h) and writes the repro: a
+// Shrinks a failing polygon (validation skipped; see core/tools/shrink.h) and writes the repro: a
 // GeoJSON Feature that says where it came from. It is written only once its bytes, read back
 // as the user will read them, fail the same way; a file is read back from disk after writing.
 int cmdShrink(const std::string& in, const std::string& out, const std::string& up,
@@ -510,7 +510,7 @@ int cmdBench(const std::string& in, int repeat, const std::string& up) {
         sink += triangulate(polygon, &rec, o).triangles.size();
     });
     double n = double(std::max<size_t>(1, polygon.vertices.size()));
-    // Formatted into std::cout, which keeps the reason of a failed write (core/output.h).
+    // Formatted into std::cout, which keeps the reason of a failed write (core/io/output.h).
     auto line = [](const char* format, auto... values) {
         char text[256];
         std::snprintf(text, sizeof text, format, values...);
@@ -598,7 +598,7 @@ int run(int argc, char** argv) {
 
     auto* gen = app.add_subcommand(
         "generate",
-        "Write a generated polygon (core/generate.h): a valid family, or an invalid one");
+        "Write a generated polygon (core/tools/generate.h): a valid family, or an invalid one");
     gen->add_option("FAMILY", family, "Polygon family (see the error message for the list)")
         ->required();
     gen->add_option("SIZE", size, "Approximate vertex count")

@@ -1,4 +1,4 @@
-// libFuzzer harness: parseTrace (core/trace_io.h) on arbitrary bytes, then a Replay of the
+// libFuzzer harness: parseTrace (core/log/trace_io.h) on arbitrary bytes, then a Replay of the
 // loaded trace seeking to pseudo-random steps (forward, backward, past the end).
 // A malformed trace must be a diagnostic; a loaded one must replay without crashing.
 #include <cstddef>

@@ -27,7 +27,7 @@ namespace py = pybind11;
 using namespace flood;
 
 namespace flood::io_detail {
-// Defined in core/io_read.cpp: the readers' ring cleaning (repeated consecutive points dropped
+// Defined in core/io/io_read.cpp: the readers' ring cleaning (repeated consecutive points dropped
 // with a warning, a closing point dropped), so an array reads exactly as the same file would.
 void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Point>& raw,
                   bool outer);
@@ -67,7 +67,7 @@ ReadResult readInput(py::handle input, const std::string& name) {
     return rr;
 }
 
-// The CLI's --up: an axis, an angle in degrees or "X,Y" (core/up.h).
+// The CLI's --up: an axis, an angle in degrees or "X,Y" (core/geometry/up.h).
 Up upOf(const std::string& up) {
     Up d;
     std::string why;
@@ -140,15 +140,15 @@ std::vector<Index> ringCounts(const Polygon& p) {
 py::object index(Index i) { return i == kNone ? py::object(py::none()) : py::object(py::int_(i)); }
 
 // (status code, message, reason, ring, vertex): where it points read from its culprits
-// (core/diagnostic_where.h), None for "names none".
+// (core/check/diagnostic_where.h), None for "names none".
 py::tuple diagnosticTuple(const Diagnostic& d, const Polygon& polygon, const std::string& name) {
     Where w = whereOf(polygon, d.culprits);
     return py::make_tuple(int(d.status), d.message, reasonOf(d.message, name, w), index(w.ring),
                           index(w.vertex));
 }
 
-// The numpy dtype of flood::Event: field names, types and offsets as core/events.h has them,
-// so the log is copied into the array byte for byte.
+// The numpy dtype of flood::Event: field names, types and offsets as core/machine/events.h has
+// them, so the log is copied into the array byte for byte.
 py::dtype eventDtype() {
     py::dict fingers;
     fingers["names"] = py::make_tuple("left", "right", "nextLeft", "nextRight");
@@ -346,7 +346,7 @@ PYBIND11_MODULE(_flood, m) {
         .def_readonly("bridges", &ReplayState::bridges)
         .def_readonly("forbidden", &ReplayState::forbidden);
 
-    // The replay of a trace (core/replay.h); seek returns a copy of the state, so a state read
+    // The replay of a trace (core/log/replay.h); seek returns a copy of the state, so a state read
     // earlier does not change under the caller when the replay moves on.
     py::class_<TraceHandle, std::shared_ptr<TraceHandle>>(m, "Trace")
         .def_property_readonly(

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# A longer run of the GEOS-differential test (tests/geos_diff_test.cpp): the same generator of
+# A longer run of the GEOS-differential test (tests/check/geos_diff_test.cpp): the same generator of
 # polygons and MultiPolygons, the same assertions (validate() agrees with GEOS 3.11's isValid;
 # every accepted case triangulates and passes the exact checker), with a seed and a count:
 #   scripts/geos-diff.sh [--seed S] [--cases N] [--dump DIR]

@@ -8,8 +8,8 @@ packages=(
   nlohmann-json3-dev libcli11-dev libgmp-dev          # core + CLI
   libsimdjson-dev                                     #   the fast JSON reader
   libgtest-dev libbenchmark-dev                       # tests, benchmarks
-  libgeos-dev                                         # GEOS, the validity oracle of tests/geos_diff_test.cpp
-  libgdal-dev gdal-bin                                # GIS formats through GDAL (core_gdal/, optional)
+  libgeos-dev                                         # GEOS, the validity oracle of tests/check/geos_diff_test.cpp
+  libgdal-dev gdal-bin                                # GIS formats through GDAL (core/io/gdal/, optional)
   libglfw3-dev libglm-dev libimgui-dev libstb-dev     # viewer
   libgif-dev                                          #   its animated GIF exports
   python3-glad python3-jinja2                         # GL loader generated at build time

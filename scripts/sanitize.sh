@@ -11,6 +11,6 @@ cmake -S . -B "$B" -DFLOOD_SANITIZE=address,undefined -DCMAKE_BUILD_TYPE=Debug \
 cmake --build "$B" -j2
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=0 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
 # Tests at 10^6 vertices (names ending in AtScale) take minutes under Debug+ASan; the rest run,
-# the growth tests (tests/growth_test.cpp) up to 10^4 vertices.
+# the growth tests (tests/machine/growth_test.cpp) up to 10^4 vertices.
 export FLOOD_GROWTH_MAX_N=10000
 ctest --test-dir "$B" --output-on-failure -j2 -E 'AtScale$'

@@ -48,7 +48,8 @@ inline std::vector<std::string> filesIn(const std::string& dir, const std::strin
     std::vector<std::string> out;
     if (!std::filesystem::is_directory(dir)) return out;
     for (auto& e : std::filesystem::directory_iterator(dir))
-        // polygons/gallery.json is the gallery's index (tests/gallery_test.cpp), not a polygon.
+        // polygons/gallery.json is the gallery's index (tests/teach/gallery_test.cpp),
+        // not a polygon.
         if (e.is_regular_file() && e.path().extension() == ext &&
             e.path().filename() != "gallery.json")
             out.push_back(e.path().string());

@@ -1,7 +1,7 @@
 // Live editing (issue 12): the loaded polygon's rings changed by undoable commands — move a
 // vertex, insert one on an edge, delete one, add a ring from clicked corners, move a whole
 // ring, start from nothing. No ImGui, no GL: the canvas (panel_edit.cpp) turns the mouse and
-// keys into these calls, tests/viewer_edit_test.cpp calls them directly.
+// keys into these calls, tests/viewer/viewer_edit_test.cpp calls them directly.
 //
 // Every edit hands the new polygon to the Model at once (Model::adoptEdit): validated and
 // flooded again under the same name, at the same step (clamped to the new trace). An edit

@@ -43,7 +43,7 @@ std::vector<uint32_t> exportSteps(uint32_t first, uint32_t last, uint32_t every,
 Camera exportCamera(const Camera& canvas, const Rect& area);
 
 // The caption of the current step: "Step N  Action" (in the action's colour) and the
-// narration sentence (core/narrate); at step 0, the polygon before the first event.
+// narration sentence (core/teach/narrate); at step 0, the polygon before the first event.
 CaptionLine captionOf(const Model& model, uint32_t step);
 
 // The files of a PNG sequence: DIR/frame-0000.png, ... wide enough for `count` frames.

@@ -33,7 +33,7 @@
 
 namespace flood::view {
 
-// [SECTION] vertex classes: core/vertex_class.cpp (the state table uses them too)
+// [SECTION] vertex classes: core/machine/vertex_class.cpp (the state table uses them too)
 
 // ========================================================================================
 // [SECTION] layout and camera
@@ -125,7 +125,8 @@ bool hits(const Breakpoints& b, const Event& e) {
     return false;
 }
 
-// [SECTION] text views: core/describe.cpp (an event in one line), core/transcript.cpp (items)
+// [SECTION] text views: core/teach/describe.cpp (an event in one line),
+// core/teach/transcript.cpp (items)
 
 // ========================================================================================
 // [SECTION] Predicate inspector
@@ -231,7 +232,7 @@ std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState&
     std::sort(sags.begin(), sags.end(),
               [&](Index a, Index b) { return compareHeight(p, trace.up, a, b) < 0; });
     // The one bridged is listed even when the cap cuts the rest. (Only a Bridge names a sag:
-    // in other events the field holds their own subject, core/events.h.)
+    // in other events the field holds their own subject, core/machine/events.h.)
     const Index bridging = e.action == Action::Bridge ? e.sag : kNone;
     if (bridging != kNone && std::find(sags.begin(), sags.end(), bridging) == sags.end())
         sags.insert(sags.begin(), bridging);

@@ -1,6 +1,6 @@
 // The viewer's data model: one recorded flood (Trace + Replay), the current step, playback,
 // breakpoints, camera and picking. No ImGui, no GL, no GLFW: the panels read it and call its
-// methods, and tests/viewer_model_test.cpp drives it without a window.
+// methods, and tests/viewer/viewer_model_test.cpp drives it without a window.
 //
 // Steps: step s means "the first s events applied" (Replay::seek(s)); the current event is
 // events[s - 1], the one that produced what is on screen. Step 0 has no current event.
@@ -33,7 +33,7 @@
 
 namespace flood::view {
 
-// Vertex classes of §3 (Fig. 1): core/vertex_class.h.
+// Vertex classes of §3 (Fig. 1): core/machine/vertex_class.h.
 using flood::classifyVertices;
 using flood::VertexClass;
 using flood::vertexClassName;
@@ -83,8 +83,8 @@ struct Breakpoints {
 bool hits(const Breakpoints& b, const Event& e);
 
 // ----------------------------------------------------------------------------------------
-// Text views of the log: an event in one line (core/describe.h), the transcript's items
-// (core/transcript.h).
+// Text views of the log: an event in one line (core/teach/describe.h), the transcript's items
+// (core/teach/transcript.h).
 
 // ----------------------------------------------------------------------------------------
 // The verdict, one line per finding. Ok only when the exact checker passed on valid input;
@@ -168,7 +168,7 @@ private:
 };
 
 // ----------------------------------------------------------------------------------------
-// Shrink from the viewer: core/shrink.h run in a background thread, with the tries made as
+// Shrink from the viewer: core/tools/shrink.h run in a background thread, with the tries made as
 // progress and a Cancel that stops it before its next classification. An `onTry` in the
 // options is still called (before the cancel is looked at).
 class ShrinkJob {
@@ -402,7 +402,7 @@ public:
         std::array<std::array<uint32_t, size_t(Action::Count)>, size_t(Action::Count)>;
     const Transitions& transitions() const { return transitions_; }
 
-    // Invariant lane: core/invariants.h run over the trace in a background thread, started
+    // Invariant lane: core/check/invariants.h run over the trace in a background thread, started
     // by every open. Results are readable once done; progress counts the steps checked.
     bool invariantsDone() const { return scan_.done.load(std::memory_order_acquire); }
     uint32_t invariantProgress() const { return scan_.progress.load(std::memory_order_relaxed); }

@@ -1,6 +1,6 @@
 // The flood direction dial: the paper's "chosen vertical" (§3) turned to any angle. Turning it
-// floods the polygon again along the new direction (heights stay exact: core/up.h) and shows
-// how the decomposition changed against the direction before: the gorges, the vertex classes
+// floods the polygon again along the new direction (heights stay exact: core/geometry/up.h) and
+// shows how the decomposition changed against the direction before: the gorges, the vertex classes
 // and each action (the decomposition into gorges is not unique). The floods go through the
 // editor's (viewer/edit.h): in the background, one at a time, so dragging the dial over a
 // large polygon skips the angles passed while a flood runs and the UI never waits for one.

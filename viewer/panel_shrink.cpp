@@ -1,5 +1,5 @@
-// Shrink from the viewer (issue 11): on any failure, shrink the polygon (core/shrink.h) in the
-// background with a progress bar and Cancel, open the minimal repro with the original one
+// Shrink from the viewer (issue 11): on any failure, shrink the polygon (core/tools/shrink.h) in
+// the background with a progress bar and Cancel, open the minimal repro with the original one
 // click away (and in Recent), and save it as GeoJSON.
 #include <imgui.h>
 

@@ -1,6 +1,6 @@
 // The paper's Fig. 10 drawn live: the vertex combinations the run met (classes of C and Next,
 // fingers meeting) against the states R F B S J X, each cell's count over the whole trace, and
-// the cell of the current step lit. The table itself is core/state_table.h.
+// the cell of the current step lit. The table itself is core/teach/state_table.h.
 #include <imgui.h>
 
 #include <string>

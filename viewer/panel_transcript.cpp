@@ -1,5 +1,5 @@
 // The run told like the caption of the paper's Fig. 7 ("Raise 0-7, Spill; ..."), flowing
-// like text with the paper's ", " and "; " between items (the core's, core/transcript.h); the
+// like text with the paper's ", " and "; " between items (the core's, core/teach/transcript.h); the
 // item holding the current step is highlighted, and clicking an item goes there.
 #include <imgui.h>
 

@@ -1,7 +1,7 @@
 // Presenter mode without a window: the UI scale (the monitor's content scale times the
 // user's Ctrl +/- zoom), the settings remembered between runs (theme, zoom), the presenter
 // layout (canvas and caption only) and the caption's text. panel_caption.cpp draws it;
-// tests/presenter_test.cpp drives it.
+// tests/viewer/presenter_test.cpp drives it.
 #pragma once
 #include <cstdint>
 #include <string>
@@ -57,7 +57,7 @@ struct Caption {
     std::string heading;     // "Step 12 of 40"
     bool hasAction = false;  // false at step 0 (no event yet)
     Action action = Action::Start;
-    std::string sentence;  // core/narrate's sentence, or what step 0 shows
+    std::string sentence;  // core/teach/narrate's sentence, or what step 0 shows
 };
 Caption captionAt(const Model& model, uint32_t step);
 Caption buildCaption(const Model& model);  // at the current step

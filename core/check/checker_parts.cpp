@@ -18,7 +18,7 @@
 // point. Collinear edges along the same stretch (parts touching along it) sort with the
 // interior-below one first, so the count between them never exceeds the sums either side.
 // This checker is an oracle: it uses only the polygon's vertices, its boundary edges and
-// orient(), and deliberately neither calls nor shares code with core/validate.cpp.
+// orient(), and deliberately neither calls nor shares code with core/check/validate.cpp.
 #include "check/checker_parts.h"
 
 #include <algorithm>

@@ -1,4 +1,4 @@
-// Rule 8 of the exact checker (core/checker.cpp): the parts of a MultiPolygon do not overlap.
+// Rule 8 of the exact checker (core/check/checker.cpp): the parts of a MultiPolygon do not overlap.
 #pragma once
 #include <string>
 #include <vector>

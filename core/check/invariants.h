@@ -1,5 +1,5 @@
-// The flood machine's invariants (core/flood.cpp's header), checked on the replay state after
-// each step: what the viewer's invariant lane shows, and what tells whether invalid input
+// The flood machine's invariants (core/machine/flood.cpp's header), checked on the replay state
+// after each step: what the viewer's invariant lane shows, and what tells whether invalid input
 // broke the machine before it noticed (the Forbidden transition comes later, if at all).
 //
 // Checked incrementally: each step looks only at what it changed (the chain's ends, the

@@ -1,5 +1,5 @@
 // validate() takes a shortcut on small single rings (a test of every pair of edges instead of
-// the sweep, core/validate.cpp): the sweep alone, for tests that hold the two to one verdict
+// the sweep, core/check/validate.cpp): the sweep alone, for tests that hold the two to one verdict
 // and one message. Internal to core/, not a public API.
 #pragma once
 #include <string>

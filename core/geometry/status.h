@@ -47,7 +47,7 @@ struct Diagnostic {
     Diagnostic(Status s, std::string m, Culprits c = {})
         : status(s), message(std::move(m)), culprits(std::move(c)) {}
     // Out of line (status.cpp): clang 14 left the implicit destructor undefined in the machine's
-    // templated code (core/flood.cpp) of the fuzz build, so one definition is given here.
+    // templated code (core/machine/flood.cpp) of the fuzz build, so one definition is given here.
     ~Diagnostic();
     Diagnostic(const Diagnostic&) = default;
     Diagnostic(Diagnostic&&) = default;

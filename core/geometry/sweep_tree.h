@@ -1,6 +1,6 @@
-// The ordered set of active edges of a sweep (core/validate.cpp; the bank sweep's slots,
-// core/sag_banks.cpp): a treap whose nodes are the edge indices themselves, its links arrays
-// indexed by edge. Nothing is allocated per insertion (a std::set allocates a 40-byte node
+// The ordered set of active edges of a sweep (core/check/validate.cpp; the bank sweep's slots,
+// core/machine/sags/sag_banks.cpp): a treap whose nodes are the edge indices themselves, its links
+// arrays indexed by edge. Nothing is allocated per insertion (a std::set allocates a 40-byte node
 // each time), and an edge is erased or stepped from by its index, without comparisons.
 // Priorities are a hash of the index, so the shape is that of a random treap whatever the
 // input order: O(log n) expected per operation.

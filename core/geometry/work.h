@@ -1,5 +1,5 @@
 // Work counters: deterministic measures of how much the validator and the flood machine did,
-// so tests can hold growth to linear without clocks (tests/growth_test.cpp). Counting costs
+// so tests can hold growth to linear without clocks (tests/machine/growth_test.cpp). Counting costs
 // one add; the counters are per thread, so parallel runs do not disturb each other.
 #pragma once
 #include <cstdint>

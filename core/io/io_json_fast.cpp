@@ -8,7 +8,8 @@
 // error, a structure problem, a warning about a skipped feature, an unusual key order, a
 // duplicate key (nlohmann keeps the last), an empty array — it gives up and the nlohmann
 // reader runs instead. So every message, with its byte position, is the nlohmann reader's,
-// and a document read here reads to the same polygon there (tests/json_fast_test.cpp compares them).
+// and a document read here reads to the same polygon there (tests/io/json_fast_test.cpp
+// compares them).
 #include <simdjson.h>
 
 #include <algorithm>

@@ -1,7 +1,7 @@
 // Many versions of one list that mostly grows and shrinks at its end (a stack with the odd
 // removal deeper down), stored at once: each version is the path from its head node up to the
 // root, so the prefix it shares with the version stored before it costs nothing again. The
-// replay's keyframes keep their dormant gorges and jump pointers this way (core/replay.cpp).
+// replay's keyframes keep their dormant gorges and jump pointers this way (core/log/replay.cpp).
 #pragma once
 #include <algorithm>
 #include <cstdint>

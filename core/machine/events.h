@@ -86,7 +86,7 @@ inline bool operator==(const Fingers& a, const Fingers& b) {
 }
 
 // Every field of an event, declared once: X(kind, type, name, initial value). The list
-// generates the members, operator== and the trace writer and reader (core/trace_io.cpp), where
+// generates the members, operator== and the trace writer and reader (core/log/trace_io.cpp), where
 // the kind says how the field is written: a name, a list of test names, a vertex index or a
 // gorge id (null for kNone), a number, or the four fingers. The list's own fields are stored
 // each in its place; the subject fields after them share storage (see Event).

@@ -41,7 +41,7 @@ public:
     const FloodResult& run(const Polygon& polygon, Listener* listener = nullptr,
                            const Options& options = {});
 
-    struct Workspace;  // core/triangulate.cpp
+    struct Workspace;  // core/machine/triangulate.cpp
 
 private:
     std::unique_ptr<Workspace> workspace_;

@@ -9,7 +9,8 @@ namespace {
 
 using Kind = DecisionNode::Kind;
 
-// The nodes in the order Machine::floodPart() and Machine::step() (core/flood.cpp) meet them.
+// The nodes in the order Machine::floodPart() and Machine::step() meet them
+// (core/machine/flood.cpp).
 class Builder {
 public:
     DecisionTree tree;

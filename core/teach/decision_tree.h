@@ -1,5 +1,5 @@
 // The paper's Fig. 9, "Decision tree for flooding actions", as data: the tests the machine
-// makes (core/flood.cpp, Machine::step()), each with a yes and a no child, the five actions
+// makes (core/machine/flood.cpp, Machine::step()), each with a yes and a no child, the five actions
 // and the forbidden states as leaves, and a layout to draw it by. GUI-free: the viewer's
 // Decision panel draws it with the current event's path lit.
 //

@@ -1,5 +1,5 @@
 // An event in one line, for lists and tooltips: "Bridge sag 12 to 7, gorge 3 pending;
-// triangles 8-9". Terser than narration (core/narrate.h), which says why in sentences.
+// triangles 8-9". Terser than narration (core/teach/narrate.h), which says why in sentences.
 #pragma once
 #include <string>
 

@@ -625,7 +625,7 @@ Polygon transform(const Polygon& polygon, int rotation90, bool mirror, bool reve
 // [SECTION] invalid families
 //
 // Each is a valid family with one seeded defect of a kind validate() refuses, built so the
-// defect is certain (tests/generate_test.cpp checks validate() refuses every one measured).
+// defect is certain (tests/tools/generate_test.cpp checks validate() refuses every one measured).
 // For the paper's open conjecture (docs/ALGORITHM.md §6): what the flood and the complement see.
 
 namespace {

@@ -1,4 +1,4 @@
-// Where a diagnostic points (core/diagnostic_where.h) comes from its culprits: on every
+// Where a diagnostic points (core/check/diagnostic_where.h) comes from its culprits: on every
 // invalid sample it is the location validate() puts first in its message, and `flood check`'s
 // AT column shows exactly it (never a cut of the message text).
 #include <gtest/gtest.h>

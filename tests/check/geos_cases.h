@@ -1,5 +1,5 @@
 // Seeded generator of small polygons and MultiPolygons on a small integer grid, for comparing
-// validate() with GEOS (tests/geos_diff_test.cpp, scripts/geos-diff.sh). Small coordinates
+// validate() with GEOS (tests/check/geos_diff_test.cpp, scripts/geos-diff.sh). Small coordinates
 // make degeneracies common: parts touching or crossing at vertices, T-junctions within and
 // between parts, collinear stretches, islands in lakes, holes touching holes. Mutations of
 // generated cases and of the sample polygons move a vertex onto another vertex or onto the

@@ -1,5 +1,5 @@
 // validate() against GEOS 3.11's GEOSisValid on generated and mutated polygons and
-// MultiPolygons (tests/geos_cases.h): the same verdict on every case, and every accepted case
+// MultiPolygons (tests/check/geos_cases.h): the same verdict on every case, and every accepted case
 // triangulates and passes the exact checker with all parts together. Built only when GEOS is
 // found (tests/CMakeLists.txt).
 //

@@ -1,4 +1,4 @@
-// The machine's invariants checked on the replay (core/invariants.h): none broken on valid
+// The machine's invariants checked on the replay (core/check/invariants.h): none broken on valid
 // input, broken on invalid input before the machine stops (or where it never does), a
 // tampered log caught, and the whole check in work linear in the trace.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// T-junctions found without validation (core/touches.h): the same splits as validate() on
+// T-junctions found without validation (core/check/touches.h): the same splits as validate() on
 // every valid input, exact and complete on invalid input (against a brute-force search),
 // linear work on the t-junctions family, and a cap that ends adversarial searches.
 #include <gtest/gtest.h>

@@ -2,7 +2,7 @@
 // (a T-junction between parts), at shared vertices, along a collinear stretch, nested in a
 // hole or in the other part. Between parts a T-junction is a touch point like any other (the
 // wedges must not interleave, the interiors not overlap there) but not a split of the machine:
-// parts are flooded apart. Verdicts are GEOS 3.11's (tests/geos_diff_test.cpp compares
+// parts are flooded apart. Verdicts are GEOS 3.11's (tests/check/geos_diff_test.cpp compares
 // generated cases with GEOS itself).
 #include <gtest/gtest.h>
 

@@ -2,7 +2,7 @@
 // example file in polygons/invalid/, the `flood` arguments, the exit code and a substring of
 // the exact message. Forbidden-machine examples run with --no-validate (validation would
 // reject them first). A second test checks that every forbidden reason of the machine
-// (FLOOD_FORBIDDEN in core/events.h) and every validation rule has a row.
+// (FLOOD_FORBIDDEN in core/machine/events.h) and every validation rule has a row.
 #include <gtest/gtest.h>
 
 #include "invalid_catalogue.h"
@@ -52,7 +52,7 @@ TEST(Errors, MachineExamplesAreCaughtByValidationFirst) {
 
 // Every forbidden reason of FLOOD_FORBIDDEN has an example row, except the one that no input
 // reaches (documented in docs/ERRORS.md): NoProgress (the step budget and walk guards, a
-// safety net; tests/regress_test.cpp holds fuzzer inputs that end there).
+// safety net; tests/machine/regress_test.cpp holds fuzzer inputs that end there).
 TEST(Errors, CatalogueCoversEveryForbiddenReason) {
     for (int i = 1; i < int(flood::Forbidden::Count); ++i) {
         std::string name = flood::forbiddenName(flood::Forbidden(i));

@@ -109,7 +109,7 @@ inline const CatalogueRow kInvalidCatalogue[] = {
     {"", "frobnicate", 2,
      "unknown subcommand 'frobnicate'; expected one of triangulate, trace, transcript"},
     // (an input that is refused before any write even without the check: a regression cannot
-    // overwrite the example; tests/cli_test.cpp tries shrink on copies)
+    // overwrite the example; tests/cli/cli_test.cpp tries shrink on copies)
     {"zero-area.json", "triangulate -o " FLOOD_SOURCE_DIR "/polygons/invalid/zero-area.json", 2,
      "zero-area.json is the input file"},
     // Write failed (8): the system's reason; an existing output is left as it was

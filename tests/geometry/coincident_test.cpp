@@ -1,5 +1,5 @@
-// The core's one search for repeated points (core/coincident.h): every later copy of a point
-// paired with its first position, -0.0 equal to 0.0, also past one hash bucket.
+// The core's one search for repeated points (core/geometry/coincident.h): every later copy of a
+// point paired with its first position, -0.0 equal to 0.0, also past one hash bucket.
 #include <gtest/gtest.h>
 
 #include <algorithm>

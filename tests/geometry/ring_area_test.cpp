@@ -1,5 +1,5 @@
-// The filtered ring orientation (core/ring_area.h) against exact arithmetic: the same sign on
-// every ring, also where doubles alone cannot tell, and error bounds that hold.
+// The filtered ring orientation (core/geometry/ring_area.h) against exact arithmetic: the same sign
+// on every ring, also where doubles alone cannot tell, and error bounds that hold.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -300,8 +300,8 @@ TEST(UpFlood, NoDirectionIsRefused) {
     }
 }
 
-// Work stays linear off the axes too (tests/growth_test.cpp's measure, plus the exact height
-// tests of the one sort, which are O(log n) a vertex).
+// Work stays linear off the axes too (tests/machine/growth_test.cpp's measure, plus the exact
+// height tests of the one sort, which are O(log n) a vertex).
 TEST(UpFlood, WorkPerVertexStaysLinearAtAnAngle) {
     const size_t maxN = [] {
         const char* cap = std::getenv("FLOOD_GROWTH_MAX_N");

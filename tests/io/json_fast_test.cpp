@@ -1,4 +1,4 @@
-// The fast JSON reader (core/io_json_fast.cpp) against the document-tree reader it stands in
+// The fast JSON reader (core/io/io_json_fast.cpp) against the document-tree reader it stands in
 // for: every document it reads must read to the same polygon and warnings there, and every
 // document it declines must be one the tree reader reads or explains (the same message).
 #include <gtest/gtest.h>

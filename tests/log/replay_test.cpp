@@ -71,7 +71,7 @@ TEST(Replay, ForbiddenRunEndsOnTheForbiddenStep) {
 
 }  // namespace
 
-// The replay state's operator== (core/replay.h) sees a change in any one field, a dormant
+// The replay state's operator== (core/log/replay.h) sees a change in any one field, a dormant
 // gorge's included.
 TEST(Replay, StatesDifferingInAnyFieldAreUnequal) {
     Trace t = record(generate("staircase", 1, 60));

@@ -1,4 +1,4 @@
-// The trace file (core/trace_io.h), version 2: an event line leaves out what its action does
+// The trace file (core/log/trace_io.h), version 2: an event line leaves out what its action does
 // not use and what is at its initial value, reads back to the same events on every family,
 // and version 1 files (every field written) still read.
 #include <gtest/gtest.h>
@@ -27,7 +27,7 @@ TEST(TraceFormat, RoundTripOnEveryFamily) {
         for (size_t i = 0; i < t.events.size(); ++i)  // every field (FLOOD_EVENT_FIELDS)
             ASSERT_TRUE(back.events[i] == t.events[i]) << "event " << i << " changed on the way";
         EXPECT_EQ(back.triangles, t.triangles);
-        // The log read back keeps no slack (96 bytes an event, tests/trace_memory_test.cpp).
+        // The log read back keeps no slack (96 bytes an event, tests/log/trace_memory_test.cpp).
         EXPECT_EQ(back.events.capacity(), back.events.size());
     }
 }

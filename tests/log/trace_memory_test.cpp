@@ -1,6 +1,6 @@
 // A trace's memory on every generated family, counted in bytes (never timed): its event log,
 // most of it, is at most 100 bytes an event (the replay's keyframes beside it:
-// tests/replay_memory_test.cpp).
+// tests/log/replay_memory_test.cpp).
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -14,8 +14,8 @@ using namespace flood;
 
 namespace {
 
-// An event is 96 bytes (core/events.h); a log kept at the size it needs is 96 an event
-// (tests/trace_format_test.cpp: a log read back from its file too). Before:
+// An event is 96 bytes (core/machine/events.h); a log kept at the size it needs is 96 an event
+// (tests/log/trace_format_test.cpp: a log read back from its file too). Before:
 // 112-byte events in a log reserved for 1.5 events a vertex and doubled when that ran out,
 // 112 to 224 bytes an event (grid-holes 185, touching-holes 224 at 10^5 vertices).
 constexpr double kLogBytesPerEvent = 100;

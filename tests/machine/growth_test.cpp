@@ -1,6 +1,6 @@
-// Growth held to linear without clocks (issue 10, issue 13): the work counters of core/work.h
-// (node visits, sag tests, orientation tests) are deterministic, so a family whose work per
-// vertex grows with N is super-linear whatever the machine it runs on.
+// Growth held to linear without clocks (issue 10, issue 13): the work counters of
+// core/geometry/work.h (node visits, sag tests, orientation tests) are deterministic, so a family
+// whose work per vertex grows with N is super-linear whatever the machine it runs on.
 //
 // Each case runs validate() + triangulate() at N = 10^3, 10^4, 10^5 and asserts that the
 // flooding's work per vertex at the larger sizes stays within a factor (kFactor) of the 10^3
@@ -35,10 +35,11 @@ uint64_t totalWork() {
 }
 
 // Work per vertex of flooding p (generation, validation and the exact check not counted).
-// Validation is held by tests/validate_growth_test.cpp and tests/validate_paths_test.cpp: once
-// its sweep needed ~2 orientation tests a vertex at 10^3 instead of ~11-23, its share no longer
-// diluted the machine's growth, and its own, on families whose shape changes with N
-// (circle-smooth: a quarter of the events are local extremes at 10^3, two thirds at 10^5).
+// Validation is held by tests/check/validate_growth_test.cpp and
+// tests/check/validate_paths_test.cpp: once its sweep needed ~2 orientation tests a vertex at 10^3
+// instead of ~11-23, its share no longer diluted the machine's growth, and its own, on families
+// whose shape changes with N (circle-smooth: a quarter of the events are local extremes at 10^3,
+// two thirds at 10^5).
 double workPerVertex(Polygon p, const std::string& name) {
     Diagnostic d = validate(p, name);
     EXPECT_TRUE(d.ok()) << name << ": " << d.message;
@@ -119,9 +120,9 @@ TEST(Growth, ManySmallPartsAreLinear) {
         "grid of squares", [](size_t n) { return gridOfSquares(n / 4); }, kFactor);
 }
 
-// The bank lists' sweep (core/sag_banks.h) on a polygon validate() passed (pointsDistinct:
-// no two edges meet) skips its checks for meeting edges, which on sliver-gorge families were
-// a third of its work (issue 13). Same triangles either way; fewer orientation tests.
+// The bank lists' sweep (core/machine/sags/sag_banks.h) on a polygon validate() passed
+// (pointsDistinct: no two edges meet) skips its checks for meeting edges, which on sliver-gorge
+// families were a third of its work (issue 13). Same triangles either way; fewer orientation tests.
 TEST(Growth, ValidatedInputSkipsTheBankSweepsCrossingChecks) {
     for (const char* family : {"star", "circle-jagged", "circle-smooth"}) {
         Polygon checked = generate(family, 7, 10000);

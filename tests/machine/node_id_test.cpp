@@ -1,5 +1,5 @@
-// Node ids (core/node_id.h) are their own type: a node id where a vertex index is wanted, or
-// the other way round, does not compile. The machine's loops are indexed by NodeId alone.
+// Node ids (core/machine/node_id.h) are their own type: a node id where a vertex index is wanted,
+// or the other way round, does not compile. The machine's loops are indexed by NodeId alone.
 #include <gtest/gtest.h>
 
 #include <type_traits>

@@ -1,11 +1,11 @@
 // Regression inputs found by fuzzing and random search (polygons/regress/). Each file is run
-// in a forked child with a time limit (core/shrink.h classify), with validation skipped, so a
+// in a forked child with a time limit (core/tools/shrink.h classify), with validation skipped, so a
 // crash or a hang fails the test instead of killing the suite.
 //   - A file must never crash or hang: the machine ends in a Forbidden diagnostic or an exact
 //     triangulation; if validate() accepts it, an exact triangulation.
 //   - `*.fuzz` files are raw fuzz_flood inputs (byte encoding of fuzz/fuzz_poly.h) for polygons
 //     no file format can carry (e.g. zero-length edges, which readers drop).
-//   - `open-*` files are known open bugs of the flood machine (core/flood.cpp), with the
+//   - `open-*` files are known open bugs of the flood machine (core/machine/flood.cpp), with the
 //     failure class in the name (open-crash-*, open-hang-*, or open-empty-ring: crash). The
 //     test asserts they still fail that way and says so; when the machine is fixed this
 //     test fails: rename the file without `open-` and it joins the must-not-fail set.
@@ -56,7 +56,8 @@ TEST(Regress, NoCrashNoHangOnRegressionInputs) {
             Failure::Kind expected =
                 startsWith(name, "open-hang") ? Failure::Kind::Hang : Failure::Kind::Crash;
             EXPECT_EQ(failureKindName(f.kind), std::string(failureKindName(expected)))
-                << name << " is a known open bug of core/flood.cpp; if it is fixed, drop the "
+                << name
+                << " is a known open bug of core/machine/flood.cpp; if it is fixed, drop the "
                 << "'open-' prefix from its name";
             std::cout << "[ KNOWN BUG ] " << name << ": still a " << failureKindName(f.kind)
                       << " with validation skipped (validate(): " << (valid ? "valid" : "invalid")

@@ -123,8 +123,8 @@ TEST(SmallPolygons, TriangulatorAllocatesNothingOnceWarm) {
     }
 }
 
-// The bank lists' sweep (core/sag_banks.h) keeps its arrays and its set's nodes: built again on
-// loops no larger than before, it allocates nothing, and labels the same.
+// The bank lists' sweep (core/machine/sags/sag_banks.h) keeps its arrays and its set's nodes: built
+// again on loops no larger than before, it allocates nothing, and labels the same.
 TEST(SmallPolygons, SagBanksAllocateNothingOnceWarm) {
     for (const char* family : {"star", "circle-jagged"}) {
         Polygon p = generate(family, 7, 5000);

@@ -1,4 +1,4 @@
-// The vertex classes (core/vertex_class.h) orient each ring by the machine's own rule
+// The vertex classes (core/machine/vertex_class.h) orient each ring by the machine's own rule
 // (ring_area.h's ringOrientation), so that on a ring that is not simple too they are the
 // classes the machine sees: the vertex it starts from is a bottom.
 #include <gtest/gtest.h>

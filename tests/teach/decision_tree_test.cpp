@@ -1,4 +1,4 @@
-// The paper's Fig. 9 as a model (core/decision_tree.h): every event of the samples, the
+// The paper's Fig. 9 as a model (core/teach/decision_tree.h): every event of the samples, the
 // invalid inputs and the generated families follows a path of the tree that ends in its own
 // action (a forbidden event: in a stop naming its reason), the answers on the path are the
 // ones the event recorded, and the layout draws no box over another.

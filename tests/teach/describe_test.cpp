@@ -1,4 +1,4 @@
-// An event in one line (core/describe.h), as the viewer's Events panel, timeline and caption
+// An event in one line (core/teach/describe.h), as the viewer's Events panel, timeline and caption
 // show it: the action, the vertices it moved, the triangles it cut.
 #include <gtest/gtest.h>
 

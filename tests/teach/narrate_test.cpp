@@ -1,4 +1,4 @@
-// Narration (core/narrate.h): one sentence per event, for every action and every forbidden
+// Narration (core/teach/narrate.h): one sentence per event, for every action and every forbidden
 // reason, naming the fingers, the triangles and why the machine chose what it did.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The paper's Fig. 10 as a model (core/state_table.h): every event has exactly one cell, the
+// The paper's Fig. 10 as a model (core/teach/state_table.h): every event has exactly one cell, the
 // counts add up to the run, and the cells say what the paper says of each state.
 #include <gtest/gtest.h>
 

@@ -1,4 +1,4 @@
-// The to-do list model (core/todo_list.h): at every step of runs with bridges and spills it
+// The to-do list model (core/teach/todo_list.h): at every step of runs with bridges and spills it
 // holds exactly the replay state's pending and held gorges, the pending ones in the order the
 // machine takes them, the held ones with the top and jump pointer their Jump will use.
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Transcript items (core/transcript.h): each covers its events (a whole run of raises, or one
+// Transcript items (core/teach/transcript.h): each covers its events (a whole run of raises, or one
 // other action), shows the triangles they cut, and carries the paper's separator; joined they
 // are flood::transcript(), the golden transcripts where there are some.
 #include <gtest/gtest.h>

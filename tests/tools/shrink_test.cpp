@@ -1,4 +1,4 @@
-// The shrinker (core/shrink.h) on planted failures: a crossing buried in a large valid ring,
+// The shrinker (core/tools/shrink.h) on planted failures: a crossing buried in a large valid ring,
 // a checker failure planted by the test-only corrupt hook, and a polygon that does not fail.
 #include <gtest/gtest.h>
 

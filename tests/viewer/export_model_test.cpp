@@ -1,7 +1,7 @@
 // Exports for slides without a window (viewer/export.h, quantize.h, gif_writer.h): which steps
 // become frames, the view an export shows, the caption, the GIF palette (exact when the frames
 // hold 256 colours or fewer) and a GIF that giflib reads back. The rendering itself is tested
-// under Xvfb (viewer/export_test.cpp). Compiles to nothing when the viewer is not built.
+// under Xvfb (tests/gui/export_test.cpp). Compiles to nothing when the viewer is not built.
 #if __has_include("export.h") && __has_include("quantize.h")
 #include <gtest/gtest.h>
 

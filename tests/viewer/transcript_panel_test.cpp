@@ -1,5 +1,5 @@
 // The viewer's Transcript panel (viewer/panel_transcript.cpp) draws Model::transcript()'s items
-// each followed by its separator: they are the core's items (core/transcript.h), so read in
+// each followed by its separator: they are the core's items (core/teach/transcript.h), so read in
 // order they are `flood transcript`'s string, with the paper's ", " and "; " (Fig. 7's caption).
 #if __has_include("model.h")
 #include <gtest/gtest.h>

@@ -1179,7 +1179,7 @@ TEST(ViewerDeclutter, BridgesHaveTheirOwnColourAndGorgeFocusHasAnOutline) {
                      l.color.b == palette::kBridge.b);
 }
 #ifdef FLOOD_GDAL
-// The viewer opens a GIS dataset like a polygon file (core_gdal/): a GeoPackage made here
+// The viewer opens a GIS dataset like a polygon file (core/io/gdal/): a GeoPackage made here
 // with ogr2ogr from a GeoJSON square with a hole.
 TEST(ViewerGdal, OpensAGeoPackage) {
     std::filesystem::path d = scratch("viewer-gdal");

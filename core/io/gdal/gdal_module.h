@@ -3,7 +3,7 @@
 // main(), thousands of times a small triangulation, so only a run that opens or writes a GIS
 // dataset loads them: the module is opened with dlopen() on first use (gdal_load.cpp) and
 // gives this table.
-// Internal to core_gdal/.
+// Internal to core/io/gdal/.
 #pragma once
 #include "io/gdal/gdal_io.h"
 

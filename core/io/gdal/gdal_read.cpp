@@ -18,7 +18,7 @@
 
 namespace flood {
 namespace io_detail {
-// Defined in core/io_read.cpp: the ring cleaning every reader shares.
+// Defined in core/io/io_read.cpp: the ring cleaning every reader shares.
 void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Point>& raw,
                   bool outer);
 }  // namespace io_detail

@@ -1,4 +1,4 @@
-// GIS formats through GDAL (core_gdal/): fixtures made at test time with ogr2ogr from the
+// GIS formats through GDAL (core/io/gdal/): fixtures made at test time with ogr2ogr from the
 // repo's polygons, so nothing binary is committed. Built only with GDAL (tests/CMakeLists.txt).
 #include <gdal_priv.h>
 #include <ogrsf_frmts.h>
@@ -265,7 +265,7 @@ TEST_F(Gdal, TrianglesWrittenAsGeoPackageAndFlatGeobufReadBack) {
     EXPECT_NE(info.find("Feature Count: 16"), std::string::npos) << info;
 }
 
-// GDAL is a module loaded on first use (core_gdal/gdal_module.h): the command is not linked to
+// GDAL is a module loaded on first use (core/io/gdal/gdal_module.h): the command is not linked to
 // it, so a run that reads no GIS dataset never loads its ~110 libraries.
 TEST_F(Gdal, TheCommandLoadsGdalOnlyForGisDatasets) {
     RunResult ldd = runShell(std::string("ldd ") + FLOOD_CLI + " 2>&1");

@@ -1,5 +1,5 @@
-// The bank lists' sweep (core/sag_banks.h) against a brute force, and its cost: every sag
-// labelled with the edges its rays meet first, along each axis direction, on loops with holes
+// The bank lists' sweep (core/machine/sags/sag_banks.h) against a brute force, and its cost: every
+// sag labelled with the edges its rays meet first, along each axis direction, on loops with holes
 // and point holes; and a minimum placed among the crossing edges from its own loop's nearby
 // edges, at a cost per node that does not grow with the active edges (issue 13).
 #include <gtest/gtest.h>

@@ -1,7 +1,7 @@
 // The plane-indexed sag list finds exactly what a scan of the sorted list would find, at every
 // scale of the coordinates, and its pruning does not depend on the scale. The bank lists
-// (core/sag_banks.h) label each sag with the edges its horizontal rays meet first, refuse
-// loops whose edges meet, and keep the sag search's work below the rest of the machine's.
+// (core/machine/sags/sag_banks.h) label each sag with the edges its horizontal rays meet first,
+// refuse loops whose edges meet, and keep the sag search's work below the rest of the machine's.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -30,6 +30,7 @@ void drawShrink(Ui& ui) {
     Model& m = ui.model;
     ShrinkJob& job = ui.shrink;
     const bool running = job.started() && !job.done();
+    ui.shrinkBox = {};
     if (!running && !m.shrunk() && (!m.failed() || m.polygon().vertices.empty())) return;
 
     ImGui::SetNextWindowPos(ImVec2(float(ui.layout.canvas.x + ui.layout.canvas.w - 340 * ui.scale),
@@ -37,9 +38,11 @@ void drawShrink(Ui& ui) {
                             ImGuiCond_FirstUseEver);
     // Its content changes with the job's stage: fit it each frame, text wrapped to a column.
     if (!ImGui::Begin("Shrink", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ui.shrinkBox = windowRect();  // collapsed: its title bar
         ImGui::End();
         return;
     }
+    ui.shrinkBox = windowRect();
     if (running) {
         // The shrinker does not know how many tries it will need: the bar is out of the most
         // it may make, the label says how many so far.

@@ -73,7 +73,7 @@ void drawFindings(Ui& ui) {
     const ImVec4 red = toImVec4(palette::kCulprit);
     const float headW = std::min(width, ImGui::CalcTextSize(head.c_str()).x);
     textOneLine(head, headW, &red);
-    const char* hint = "click: frame it   F8 / Shift+F8: next / previous   E: back";
+    const char* hint = "click or F8 / Shift+F8: frame it";
     const float hintW = ImGui::CalcTextSize(hint).x, spacing = ImGui::GetStyle().ItemSpacing.x;
     if (headW + spacing + hintW <= width) {  // the hint where it fits, right-aligned
         ImGui::SameLine(ImGui::GetCursorPosX() + width - hintW);

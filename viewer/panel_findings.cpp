@@ -52,9 +52,11 @@ double findingsHeight(const Model& m, float scale) {
     if (m.findings().empty()) return 0;
     const ImGuiStyle& style = ImGui::GetStyle();
     const double line = ImGui::GetTextLineHeightWithSpacing();
-    // The header, then up to four findings of two lines each; more scroll.
+    // The header and its notes, then up to four findings of two lines each; more scroll.
     const size_t rows = std::min<size_t>(m.findings().size(), 4);
-    return 2 * style.WindowPadding.y + line + rows * (2 * line + style.ItemSpacing.y) + 4 * scale;
+    const size_t notes = 1 + (m.findingsOmitted() > 0) + !m.findingsComplete();
+    return 2 * style.WindowPadding.y + double(notes) * line +
+           double(rows) * (2 * line + style.ItemSpacing.y) + 4 * scale;
 }
 
 void drawFindings(Ui& ui) {
@@ -79,9 +81,14 @@ void drawFindings(Ui& ui) {
         ImGui::SameLine(ImGui::GetCursorPosX() + width - hintW);
         ImGui::TextDisabled("%s", hint);
     }
-    if (m.findingsOmitted())
-        ImGui::TextDisabled("%zu more not listed (the first %zu are; `flood check --max-findings`)",
-                            m.findingsOmitted(), m.findings().size());
+    if (m.findingsOmitted()) {
+        size_t listed = 0;
+        for (const Finding& f : m.findings()) listed += f.kind == VerdictKind::InvalidInput;
+        ImGui::TextDisabled(
+            "%zu more validation findings not listed (the first %zu are; `flood check "
+            "--max-findings N` lists more)",
+            m.findingsOmitted(), listed);
+    }
     if (!m.findingsComplete())
         ImGui::TextDisabled(
             "the search for crossings stopped at its work limit: there may be more");

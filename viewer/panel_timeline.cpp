@@ -153,7 +153,10 @@ void invariantStatus(Ui& ui) {
 
 void drawTimeline(Ui& ui) {
     Model& m = ui.model;
-    beginTiled("Timeline", ui.layout.bottom, ImGuiWindowFlags_NoTitleBar);
+    // No scrollbar: one appearing for the lines under the strip would narrow the toolbar and
+    // wrap it (those lines still scroll with the wheel).
+    beginTiled("Timeline", ui.layout.bottom,
+               ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
     // The toolbar wraps onto more lines when the window is narrow or the scale large.
     const ImGuiStyle& style = ImGui::GetStyle();
     auto labelled = [&](float width, const char* label) {

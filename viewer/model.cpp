@@ -848,7 +848,7 @@ bool Model::showFinding(size_t i) {
 bool Model::nextFinding(int direction) {
     const size_t n = findings_.size();
     if (n == 0) return false;
-    if (!errorView_) return showFinding(currentFinding_);
+    if (!errorView_ && showFinding(currentFinding_)) return true;
     // A finding with nothing to frame is skipped.
     for (size_t k = 1; k <= n; ++k) {
         size_t i = direction > 0 ? (currentFinding_ + k) % n : (currentFinding_ + n - k % n) % n;

@@ -103,7 +103,11 @@ void drawFindings(Ui& ui) {
     for (const Finding& f : m.findings())
         whereW = std::max(whereW, ImGui::CalcTextSize(f.where.c_str()).x);
     whereW = std::clamp(whereW, 60 * s, avail / 3);
-    const float whatW = std::max(40.f, avail - numW - tagW - whereW - style.ItemSpacing.x);
+    // Narrow (a large scale): what is wrong goes under the place, the row's whole width.
+    const float besideW = avail - numW - tagW - whereW - style.ItemSpacing.x;
+    const bool stacked = besideW < avail * 0.45f;
+    if (stacked) whereW = std::max(40.f, avail - numW - tagW);
+    const float whatW = stacked ? std::max(40.f, avail - numW) : besideW;
     const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
     const ImU32 dim = ImGui::GetColorU32(ImGuiCol_TextDisabled);
     const ImU32 redText = toImU32(palette::kCulprit);
@@ -112,21 +116,30 @@ void drawFindings(Ui& ui) {
     for (size_t i = 0; i < m.findings().size(); ++i) {
         const Finding& f = m.findings()[i];
         const std::string num = std::to_string(i + 1);
-        const float h = std::max({ImGui::GetTextLineHeight(),
-                                  ImGui::CalcTextSize(f.where.c_str(), nullptr, false, whereW).y,
-                                  ImGui::CalcTextSize(f.reason.c_str(), nullptr, false, whatW).y});
+        const float whereH =
+            std::max(ImGui::GetTextLineHeight(),
+                     ImGui::CalcTextSize(f.where.c_str(), nullptr, false, whereW).y);
+        const float whatH = ImGui::CalcTextSize(f.reason.c_str(), nullptr, false, whatW).y;
+        const float h = stacked ? whereH + whatH : std::max(whereH, whatH);
         const ImVec2 p = ImGui::GetCursorScreenPos();
         const bool current = m.errorView() && m.currentFinding() == i;
+        // F8 moved: the row scrolled into view, asked again until it is there (a child
+        // window's first frame knows no content height to scroll in).
+        bool scrollTo = false;
+        if (current && ui.findingsScrolledTo != i) {
+            const float top = ImGui::GetCursorPosY(), at = ImGui::GetScrollY();
+            const float seen = ImGui::GetWindowHeight();
+            if (top >= at - 0.5f && (top + h <= at + seen + 0.5f || top <= at + 0.5f))
+                ui.findingsScrolledTo = i;
+            else scrollTo = true;
+        }
         ImGui::PushID(int(i));
         if (ImGui::Selectable("##finding", current, ImGuiSelectableFlags_None, ImVec2(avail, h))) {
             if (!m.showFinding(i)) ui.message = "finding " + num + ": nothing to frame";
         }
         if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", f.message.c_str());
+        if (scrollTo) ImGui::SetScrollHereY(0.0f);  // the item just submitted, at the top
         ImGui::PopID();
-        if (current && ui.findingsScrolledTo != i) {
-            ImGui::SetScrollHereY(0.5f);
-            ui.findingsScrolledTo = i;
-        }
         ui.findingRows.push_back({p.x, p.y, avail, h});
         float x = p.x;
         dl->AddText(font, size, ImVec2(x, p.y), dim, num.c_str());
@@ -134,8 +147,12 @@ void drawFindings(Ui& ui) {
         dl->AddText(font, size, ImVec2(x, p.y), redText, kindTag(f.kind));
         x += tagW;
         dl->AddText(font, size, ImVec2(x, p.y), text, f.where.c_str(), nullptr, whereW);
-        x += whereW + style.ItemSpacing.x;
-        dl->AddText(font, size, ImVec2(x, p.y), text, f.reason.c_str(), nullptr, whatW);
+        if (stacked)
+            dl->AddText(font, size, ImVec2(p.x + numW, p.y + whereH), text, f.reason.c_str(),
+                        nullptr, whatW);
+        else
+            dl->AddText(font, size, ImVec2(x + whereW + style.ItemSpacing.x, p.y), text,
+                        f.reason.c_str(), nullptr, whatW);
     }
     if (!m.errorView()) ui.findingsScrolledTo = ~size_t(0);
     ImGui::EndChild();

@@ -181,7 +181,7 @@ bool culpritBox(const Polygon& P, const std::vector<Triangle>& triangles, const 
     if (diagnosticPoint(P, c, p)) box.add(p);
     // Whole rings blamed, nothing finer (a hole outside its outer ring, holes inside each
     // other, a ring of zero area): the ring at fault is the first; the others are context,
-    // of which the nearest vertex is enough.
+    // of which the nearest point is enough.
     const bool ringLevel =
         (ringsAtFault && c.edges.empty() && c.triangles.empty() && !c.hasPoint) || box.empty();
     if (ringLevel && !c.rings.empty() && c.rings[0] < P.rings.size()) {

@@ -11,9 +11,12 @@ namespace flood::view {
 
 namespace {
 
-// --press names: the presenter keys, so a screenshot can show what they do.
+// --press names: the presenter keys and the findings' F8, so a screenshot can show what they
+// do.
 bool pressNamed(const std::string& name, Args::Press& p) {
     if (name == "tab") return p = {platform::kKeyTab, false}, true;
+    if (name == "f8") return p = {platform::kKeyF8, false}, true;
+    if (name == "shift+f8") return p = {platform::kKeyF8, false, true}, true;
     if (name == "f11") return p = {platform::kKeyF11, false}, true;
     if (name == "ctrl+plus") return p = {platform::kKeyPlus[0], true}, true;
     if (name == "ctrl+minus") return p = {platform::kKeyMinus[0], true}, true;
@@ -44,10 +47,11 @@ const char* const kUsage =
     "  --scale S         UI scale 0.5..4 instead of the monitor's (screenshots: 1)\n"
     "  --presenter       start in presenter view: the canvas and a large caption (Tab)\n"
     "  --theme T         light or dark (default: the last one chosen, else dark)\n"
-    "  --print-layout    with --screenshot: print where the caption and the toolbar's last\n"
-    "                    button were drawn (x y w h, logical pixels)\n"
-    "  --press KEY       with --screenshot: press tab, f11, ctrl+plus, ctrl+minus or ctrl+0\n"
-    "                    first (repeat it for more, one frame apart)\n"
+    "  --print-layout    with --screenshot: print where the caption, the toolbar's last\n"
+    "                    button, the canvas, the findings and their rows, the boxes over the\n"
+    "                    canvas and the error view's labels were drawn (x y w h, logical px)\n"
+    "  --press KEY       with --screenshot: press tab, f11, ctrl+plus, ctrl+minus, ctrl+0,\n"
+    "                    f8 or shift+f8 first (repeat it for more, one frame apart)\n"
     "  --canvas-only     --screenshot renders the canvas alone (no panels), offscreen at --size;\n"
     "                    OUT ending in .svg is always the canvas alone, as SVG\n"
     "  --export-gif OUT  the flood (or --steps) as an animated GIF of the canvas, then exit\n"
@@ -127,8 +131,8 @@ int parseArgs(int argc, char** argv, Args& a) {
             if (!v || !pressNamed(v, p)) {
                 if (v)
                     std::fprintf(stderr,
-                                 "flood-viewer: --press wants tab, f11, ctrl+plus, ctrl+minus or "
-                                 "ctrl+0, got '%s'\n",
+                                 "flood-viewer: --press wants tab, f11, ctrl+plus, ctrl+minus, "
+                                 "ctrl+0, f8 or shift+f8, got '%s'\n",
                                  v);
                 return 2 + 1;
             }

@@ -26,8 +26,9 @@ struct Args {
     struct Press {
         int key;
         bool ctrl;
+        bool shift = false;
     };
-    std::vector<Press> presses;  // --press KEY: presenter keys pressed before a screenshot
+    std::vector<Press> presses;  // --press KEY: keys pressed before a screenshot
     bool canvasOnly = false;     // --canvas-only: --screenshot renders the canvas alone
     bool sizeGiven = false;
     ExportSettings exports;  // canvas-only PNG, SVG, GIF, PNG sequence (export.h)

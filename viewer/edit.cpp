@@ -19,6 +19,8 @@ Model::EditedRun Model::floodEdit(Polygon polygon, const std::string& name, Up u
     // An empty canvas is a start, not an invalid polygon.
     if (!polygon.vertices.empty()) {
         run.input = validate(polygon, name);
+        // Every finding of an invalid edit, off the UI thread as the flood is.
+        if (!run.input.ok()) run.findings = validateAll(polygon, name);
         // Invalid polygons are flooded too, as an open does: the student sees where the
         // machine stops.
         try {
@@ -58,9 +60,11 @@ void Model::adoptEdit(EditedRun run, bool deferScan) {
     input_ = std::move(run.input);
     warnings_.clear();
     if (run.checked) checked_ = std::move(run.check);
+    if (!input_.ok() && !run.findings.list.empty()) validated_ = std::move(run.findings);
     deferScan_ = deferScan;
     adopt(std::make_unique<Trace>(std::move(run.trace)));
     checked_.reset();  // used by adopt's verdict, or not needed there: never by a later open
+    validated_.reset();
     // What adopt() resets for an open stays as the user left it.
     feature_ = feature;
     origin_ = origin, originName_ = originName, originFeature_ = originFeature;

@@ -156,6 +156,10 @@ int openArgs(Model& model, const Args& args) {
         }
     } else if (!args.file.empty()) {
         model.open(args.file);
+        // A file that cannot be opened as asked (a --layer it does not have, say) is said
+        // here too: a screenshot's window shows it, but a script reads stderr.
+        if (!model.openDiagnostic().ok())
+            std::fprintf(stderr, "flood-viewer: %s\n", model.openDiagnostic().message.c_str());
     }
     if (!args.up.empty()) {
         Up d;
@@ -231,7 +235,8 @@ DrawnFrame drawFrame(Ui& ui, const Args& args, int frame, const FrameInput& inpu
     Vec2 size = platform::windowSize();
     const Rect canvasWas = ui.layout.canvas;
     ui.layout = ui.presenter ? presenterLayout(size.x, size.y, ui.captionHeight)
-                             : computeLayout(size.x, size.y, ui.scale, ui.bottomWanted);
+                             : computeLayout(size.x, size.y, ui.scale, ui.bottomWanted,
+                                             findingsHeight(model, ui.scale));
     // While the first frames settle the layout (the timeline's and the caption's heights are
     // measured) the camera is fitted to the canvas it ends up with; the error view keeps its
     // own zoom.
@@ -255,6 +260,7 @@ DrawnFrame drawFrame(Ui& ui, const Args& args, int frame, const FrameInput& inpu
         drawCaption(ui);
     } else {
         drawTimeline(ui);
+        drawFindings(ui);
         drawStateMachine(ui);
         drawDecision(ui);
         drawPredicates(ui);
@@ -338,6 +344,7 @@ FrameInput scriptedInput(Ui& ui, const Args& args, int frame, const ImVec2& mous
         const Args::Press& p = args.presses[size_t(frame / 2)];
         io.KeysDown[p.key] = frame % 2 == 0;
         io.KeyCtrl = p.ctrl && frame % 2 == 0;
+        io.KeyShift = p.shift && frame % 2 == 0;
     }
     FrameInput input;
     input.presenterKeys = !args.presses.empty();
@@ -374,11 +381,19 @@ int runScreenshot(Ui& ui, const Args& args, Styled& styled) {
         } else if (frame == shotFrame) {
             bool ok = writeFrame(ui, f, args.screenshot);
             std::fprintf(ok ? stdout : stderr, "flood-viewer: %s\n", ui.message.c_str());
-            for (auto [name, r] :
-                 {std::pair{"caption", ui.captionRect}, {"toolbar-end", ui.toolbarEnd}})
+            std::vector<std::pair<std::string, Rect>> printed = {
+                {"caption", ui.captionRect},  {"toolbar-end", ui.toolbarEnd},
+                {"canvas", ui.layout.canvas}, {"findings", ui.layout.findings},
+                {"find-box", ui.findBox},     {"edit-box", ui.editBox},
+                {"shrink-box", ui.shrinkBox}, {"inset", ui.inset}};
+            for (size_t i = 0; i < ui.findingRows.size(); ++i)
+                printed.push_back({"finding-" + std::to_string(i), ui.findingRows[i]});
+            for (size_t i = 0; i < ui.labels.size(); ++i)
+                printed.push_back({"label-" + std::to_string(i), ui.labels[i]});
+            for (const auto& [name, r] : printed)
                 if (args.printLayout && r.w > 0)
-                    std::printf("flood-viewer: layout %s %.0f %.0f %.0f %.0f\n", name, r.x, r.y,
-                                r.w, r.h);
+                    std::printf("flood-viewer: layout %s %.0f %.0f %.0f %.0f\n", name.c_str(), r.x,
+                                r.y, r.w, r.h);
             // The picture is written; the exit code still says what the input was.
             exitCode = !ok ? int(Status::WriteFailed) : model.exitCode();
             platform::requestClose();

@@ -38,7 +38,8 @@ namespace flood::view {
 
 // ========================================================================================
 // [SECTION] layout and camera
-Layout computeLayout(double width, double height, double uiScale, double bottomWanted) {
+Layout computeLayout(double width, double height, double uiScale, double bottomWanted,
+                     double findingsWanted) {
     // Side columns shrink on small windows so the canvas keeps at least half the width.
     double side = std::min(300.0 * uiScale, width * 0.25);
     double bottom = std::min(128.0 * uiScale, height * 0.3);
@@ -47,7 +48,10 @@ Layout computeLayout(double width, double height, double uiScale, double bottomW
     l.left = {0, 0, side, height - bottom};
     l.right = {width - side, 0, side, height - bottom};
     l.bottom = {0, height - bottom, width, bottom};
-    l.canvas = {side, 0, std::max(1.0, width - 2 * side), std::max(1.0, height - bottom)};
+    const double column = std::max(1.0, height - bottom);
+    const double findings = findingsWanted > 0 ? std::min(findingsWanted, column / 3) : 0;
+    l.canvas = {side, 0, std::max(1.0, width - 2 * side), std::max(1.0, column - findings)};
+    if (findings > 0) l.findings = {side, l.canvas.h, l.canvas.w, findings};
     return l;
 }
 
@@ -79,6 +83,11 @@ void Camera::fitBox(double x0, double y0, double x1, double y1, const Rect& view
     if (!std::isfinite(scale_) || scale_ <= 0) scale_ = 1;
 }
 
+void Camera::centerOn(Point p, double scale) {
+    cx_ = p.x, cy_ = p.y;
+    scale_ = std::clamp(scale, 1e-12, 1e15);
+}
+
 Vec2 Camera::toScreen(Point p) const {
     return {viewport_.x + viewport_.w / 2 + (p.x - cx_) * scale_,
             viewport_.y + viewport_.h / 2 - (p.y - cy_) * scale_};
@@ -100,6 +109,125 @@ void Camera::zoomAt(Vec2 screen, double factor) {
     Point after = toWorld(screen);
     cx_ += before.x - after.x;
     cy_ += before.y - after.y;
+}
+
+// ========================================================================================
+// [SECTION] framing
+void WorldBox::add(Point p) {
+    if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
+    x0 = std::min(x0, p.x), x1 = std::max(x1, p.x);
+    y0 = std::min(y0, p.y), y1 = std::max(y1, p.y);
+}
+
+WorldBox visibleBox(const Camera& camera) {
+    const Rect& r = camera.viewport();
+    WorldBox b;
+    b.add(camera.toWorld({r.x, r.y}));
+    b.add(camera.toWorld({r.x + r.w, r.y + r.h}));
+    return b;
+}
+
+Camera frameNeighbourhood(const WorldBox& target, double minSide, const Rect& viewport) {
+    Camera c;
+    c.setViewport(viewport);
+    if (target.empty()) return c;
+    if (!std::isfinite(minSide) || minSide < 0) minSide = 0;
+    const Point m = target.centre();
+    const double w = std::max(target.w(), minSide) * 1.5, h = std::max(target.h(), minSide) * 1.5;
+    // A box of no size at all (one point, nothing beside it): fitBox's fallback scale.
+    c.fitBox(m.x - w / 2, m.y - h / 2, m.x + w / 2, m.y + h / 2, viewport);
+    return c;
+}
+
+bool culpritBox(const Polygon& P, const std::vector<Triangle>& triangles, const Culprits& c,
+                bool ringsAtFault, WorldBox& box, double& minSide) {
+    const auto& V = P.vertices;
+    box = {};
+    minSide = 0;
+    auto next = [&](Index v) {
+        const Ring& r = P.rings[P.ringOf(v)];
+        return v + 1 == r.first + r.count ? r.first : v + 1;
+    };
+    auto prev = [&](Index v) {
+        const Ring& r = P.rings[P.ringOf(v)];
+        return v == r.first ? r.first + r.count - 1 : v - 1;
+    };
+    // A culprit vertex and its nearer ring neighbour (not at its point): the neighbourhood
+    // that tells its edges from the rest.
+    std::vector<Point> neighbours;
+    auto vertex = [&](Index v) {
+        if (v >= V.size()) return;
+        box.add(V[v]);
+        double nearest = std::numeric_limits<double>::infinity();
+        Point at;
+        for (Index u : {prev(v), next(v)}) {
+            double d = std::hypot(V[u].x - V[v].x, V[u].y - V[v].y);
+            if (d > 0 && d < nearest) nearest = d, at = V[u];
+        }
+        if (std::isfinite(nearest)) neighbours.push_back(at);
+    };
+    size_t budget = 256;  // a finding names a few; the error view of a huge ring stays cheap
+    for (Index e : c.edges)
+        if (e < V.size() && budget) --budget, vertex(e), vertex(next(e));
+    for (Index v : c.vertices)
+        if (budget) --budget, vertex(v);
+    for (uint32_t t : c.triangles)
+        if (t < triangles.size() && budget) {
+            --budget;
+            for (Index v : triangles[t]) vertex(v);
+        }
+    for (Point q : neighbours) box.add(q);
+    Point p;
+    if (diagnosticPoint(P, c, p)) box.add(p);
+    // Whole rings blamed, nothing finer (a hole outside its outer ring, holes inside each
+    // other, a ring of zero area): the ring at fault is the first; the others are context,
+    // of which the nearest point is enough.
+    const bool ringLevel =
+        (ringsAtFault && c.edges.empty() && c.triangles.empty() && !c.hasPoint) || box.empty();
+    if (ringLevel && !c.rings.empty() && c.rings[0] < P.rings.size()) {
+        const Ring& g = P.rings[c.rings[0]];
+        for (Index i = 0; i < g.count; ++i) box.add(V[g.first + i]);
+        if (!box.empty()) {
+            const Point m = box.centre();
+            const double reach = 8 * std::max(box.w(), box.h());
+            // The nearest point of each other ring's edges, when it is near enough that the
+            // ring at fault stays large in the view.
+            for (size_t k = 1; k < c.rings.size() && k < 4; ++k) {
+                if (c.rings[k] >= P.rings.size()) continue;
+                const Ring& o = P.rings[c.rings[k]];
+                double best = std::numeric_limits<double>::infinity();
+                Point nearest;
+                for (Index i = 0; i < o.count; ++i) {
+                    const Point a = V[o.first + i], b = V[o.first + (i + 1) % o.count];
+                    const double dx = b.x - a.x, dy = b.y - a.y, len2 = dx * dx + dy * dy;
+                    double t = len2 > 0 ? ((m.x - a.x) * dx + (m.y - a.y) * dy) / len2 : 0;
+                    t = std::clamp(t, 0.0, 1.0);
+                    const Point q{a.x + t * dx, a.y + t * dy};
+                    const double d = std::hypot(q.x - m.x, q.y - m.y);
+                    if (d < best) best = d, nearest = q;
+                }
+                if (best <= reach) box.add(nearest);
+            }
+        }
+    }
+    if (box.empty()) return false;
+    // One point and nothing beside it: a fiftieth of the face around it.
+    minSide = 0;
+    if (box.w() == 0 && box.h() == 0) {
+        WorldBox face;
+        for (size_t i = 0; i < V.size(); i += 1 + V.size() / 100000) face.add(V[i]);
+        minSide = 0.02 * std::max(face.w(), face.h());
+    }
+    return true;
+}
+
+bool frameCulprits(const Polygon& P, const std::vector<Triangle>& triangles, const Culprits& c,
+                   bool ringsAtFault, const Rect& viewport, Camera& camera) {
+    WorldBox box;
+    double minSide = 0;
+    if (!culpritBox(P, triangles, c, ringsAtFault, box, minSide)) return false;
+    camera = frameNeighbourhood(box, minSide, viewport);
+    return true;
 }
 
 // ========================================================================================
@@ -438,6 +566,7 @@ void Model::adopt(std::unique_ptr<Trace> trace) {
              t < e.firstTriangle + e.triangleCount && t < triangleStep_.size(); ++t)
             triangleStep_[t] = e.step + 1;
     computeVerdictLines();  // runs the exact checker: once, not every frame
+    computeFindings();
     computeOffenders();
     verdict_ = computeVerdict();
     needsFit_ = true;
@@ -610,42 +739,149 @@ int Model::exitCode() const {
 
 bool Model::errorPoint(Point& p) const { return diagnosticPoint(trace_->polygon, error_, p); }
 
-bool Model::showError() {
-    if (!failed()) return false;
-    const auto& V = trace_->polygon.vertices;
-    double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
-    auto grow = [&](Point p) {
-        if (!std::isfinite(p.x) || !std::isfinite(p.y)) return;
-        x0 = std::min(x0, p.x), x1 = std::max(x1, p.x), y0 = std::min(y0, p.y),
-        y1 = std::max(y1, p.y);
+void Model::computeFindings() {
+    findings_.clear();
+    findingsOmitted_ = 0;
+    findingsComplete_ = true;
+    currentFinding_ = 0;
+    const Polygon& P = trace_->polygon;
+    auto add = [&](VerdictKind kind, const Diagnostic& d, const std::string& name) {
+        Finding f;
+        f.kind = kind;
+        f.message = d.message;
+        f.culprits = d.culprits;
+        Where w = whereOf(P, d.culprits);
+        f.where = w.text;
+        f.reason = reasonOf(d.message, name, w);
+        f.hasPoint = diagnosticPoint(P, d.culprits, f.point, true);
+        findings_.push_back(std::move(f));
     };
-    for (Index v : error_.vertices)
-        if (v < V.size()) grow(V[v]);
-    for (uint32_t t : error_.triangles)
-        if (t < trace_->triangles.size())
-            for (Index v : trace_->triangles[t])
-                if (v < V.size()) grow(V[v]);
-    Point p;
-    if (errorPoint(p)) grow(p);
-    // A validation finding about whole rings (a hole outside, holes overlapping): the rings;
-    // otherwise rings only when nothing finer is blamed (the machine's fingers' rings can be
-    // the whole polygon).
-    bool ringLevel = !input_.ok() && error_.edges.empty() && !error_.hasPoint;
-    if (!(x0 <= x1) || ringLevel)
-        for (Index r : error_.rings)
-            if (r < trace_->polygon.rings.size())
-                for (Index i = 0; i < trace_->polygon.rings[r].count; ++i)
-                    grow(V[trace_->polygon.rings[r].first + i]);
-    if (!(x0 <= x1)) return false;
-    // A single point is shown with a neighbourhood of 1/50 of the polygon.
-    Camera whole;
-    whole.fit(trace_->polygon, camera_.viewport());
-    double side = 0.02 * std::min(camera_.viewport().w, camera_.viewport().h) / whole.scale();
-    camera_.fitBox(x0, y0, x1, y1, camera_.viewport(), side);
+    // One line of the verdict, one finding; the input's line, every validation finding.
+    for (const VerdictLine& line : verdictLines_) {
+        switch (line.kind) {
+            case VerdictKind::Unreadable: add(line.kind, input_, path_); break;
+            case VerdictKind::InvalidInput: {
+                if (P.vertices.empty()) {
+                    add(line.kind, input_, path_);
+                    break;
+                }
+                // validate()'s verdict first (an edit's findings came with its flood).
+                Findings all = validated_ ? std::move(*validated_) : validateAll(P, path_);
+                if (all.list.empty() || all.list.front().message != input_.message)
+                    all.list.insert(all.list.begin(), input_);
+                for (const Diagnostic& d : all.list) add(line.kind, d, path_);
+                findingsOmitted_ = all.omitted;
+                findingsComplete_ = all.complete;
+                break;
+            }
+            case VerdictKind::Forbidden:
+                for (const Event& e : trace_->events)
+                    if (e.action == Action::Forbidden) {
+                        Finding f;
+                        f.kind = line.kind;
+                        f.step = e.step + 1;
+                        f.where = "step " + std::to_string(f.step);
+                        f.reason = describeForbidden(P, e);
+                        f.message = line.text;
+                        f.culprits = forbiddenCulprits(P, e);
+                        f.hasPoint = diagnosticPoint(P, f.culprits, f.point, true);
+                        findings_.push_back(std::move(f));
+                        break;
+                    }
+                break;
+            case VerdictKind::Internal:
+                add(line.kind, trace_->diagnostic, path_);
+                findings_.back().message = line.text;
+                break;
+            case VerdictKind::Rejected: {
+                Finding f;
+                f.kind = line.kind;
+                f.reason = check_.reason;
+                f.message = line.text;
+                f.culprits = check_.culprits;
+                f.where = check_.culprits.triangles.empty()
+                              ? whereOf(P, check_.culprits).text
+                              : "triangle " + std::to_string(check_.culprits.triangles.front());
+                f.hasPoint = diagnosticPoint(P, f.culprits, f.point, true);
+                for (uint32_t t : f.culprits.triangles)
+                    if (t < triangleStep_.size() && triangleStep_[t] &&
+                        (f.step == kNone || triangleStep_[t] < f.step))
+                        f.step = triangleStep_[t];
+                findings_.push_back(std::move(f));
+                break;
+            }
+            default: break;
+        }
+    }
+    validated_.reset();
+    if (!findings_.empty()) error_ = findings_.front().culprits;
+}
+
+// A validation finding shows at the first step one of its vertices is a finger.
+uint32_t Model::findingStep(const Finding& f) const {
+    if (f.step != kNone || f.kind != VerdictKind::InvalidInput) return f.step;
+    const auto& blamed = f.culprits.vertices;
+    if (blamed.empty()) return kNone;
+    for (const Event& e : trace_->events)
+        for (Index v : {e.after.left, e.after.right, e.after.nextLeft, e.after.nextRight})
+            if (v != kNone && std::find(blamed.begin(), blamed.end(), v) != blamed.end())
+                return e.step + 1;
+    return kNone;
+}
+
+bool Model::showFinding(size_t i) {
+    if (i >= findings_.size()) return false;
+    Finding& f = findings_[i];
+    Camera framed = camera_;
+    if (!frameCulprits(trace_->polygon, trace_->triangles, f.culprits,
+                       f.kind == VerdictKind::InvalidInput, camera_.viewport(), framed))
+        return false;
+    camera_ = framed;
+    currentFinding_ = i;
+    error_ = f.culprits;
     errorView_ = true;
     needsFit_ = false;
-    if (firstErrorStep_ != kNone) seek(firstErrorStep_);
+    f.step = findingStep(f);
+    if (f.step != kNone) seek(f.step);
     return true;
+}
+
+bool Model::nextFinding(int direction) {
+    const size_t n = findings_.size();
+    if (n == 0) return false;
+    if (!errorView_ && showFinding(currentFinding_)) return true;
+    // A finding with nothing to frame is skipped.
+    for (size_t k = 1; k <= n; ++k) {
+        size_t i = direction > 0 ? (currentFinding_ + k) % n : (currentFinding_ + n - k % n) % n;
+        if (showFinding(i)) return true;
+    }
+    return false;
+}
+
+bool Model::frameVertices(const std::vector<Index>& vertices) {
+    const Polygon& P = trace_->polygon;
+    Culprits c;
+    for (Index v : vertices)
+        if (v < P.vertices.size()) c.vertices.push_back(v);
+    if (c.vertices.empty()) return false;
+    WorldBox box;
+    double minSide = 0;
+    if (!culpritBox(P, trace_->triangles, c, false, box, minSide)) return false;
+    if (c.vertices.size() == 1) {
+        // One vertex stays at the centre: its nearer neighbour's distance on every side.
+        const Point v = P.vertices[c.vertices[0]];
+        const double r = std::max({v.x - box.x0, box.x1 - v.x, v.y - box.y0, box.y1 - v.y});
+        box = {};
+        box.add({v.x - r, v.y - r}), box.add({v.x + r, v.y + r});
+    }
+    camera_ = frameNeighbourhood(box, minSide, camera_.viewport());
+    needsFit_ = false;
+    return true;
+}
+
+void Model::goToViolation(const Violation& v) {
+    seek(v.step);
+    frameVertices(v.vertices);
 }
 
 FindTarget findTarget(const Trace& trace, const std::string& query) {
@@ -679,6 +915,7 @@ FindTarget findTarget(const Trace& trace, const std::string& query) {
             if (f.index >= V.size()) return outOfRange("vertex", V.size());
             Index v = Index(f.index);
             at(V[v]);
+            f.vertices = {v};
             // Its first event: the first step it is a finger or the event's subject.
             for (const Event& e : trace.events)
                 for (Index u : {e.after.left, e.after.right, e.after.nextLeft, e.after.nextRight,
@@ -723,6 +960,12 @@ FindTarget findTarget(const Trace& trace, const std::string& query) {
             if (v == kNone || v >= V.size()) v = e.before.left;
             if (v != kNone && v < V.size()) at(V[v]);
             else return f.ok = true, f;  // nothing to centre on: seek only
+            // Framed with its fingers: where the water is and where it goes next.
+            f.vertices = {v};
+            for (Index u : {e.after.left, e.after.right, e.after.nextLeft, e.after.nextRight})
+                if (u != kNone && u < V.size() &&
+                    std::find(f.vertices.begin(), f.vertices.end(), u) == f.vertices.end())
+                    f.vertices.push_back(u);
             break;
         }
         case 'r': {
@@ -750,10 +993,18 @@ FindTarget Model::find(const std::string& query) {
     FindTarget f = findTarget(*trace_, query);
     if (!f.ok) return f;
     if (f.seekTo != kNone) seek(f.seekTo);
+    if (!f.hasCenter) return f;
+    // Framed, never only centred: a vertex with its nearest neighbours, a step's fingers, a
+    // triangle or a ring whole with a margin.
+    if (!f.vertices.empty() && frameVertices(f.vertices)) return f;
+    WorldBox box;
+    box.add({f.x0, f.y0}), box.add({f.x1, f.y1});
     if (f.kind == 'r' && (f.x1 > f.x0 || f.y1 > f.y0))
         camera_.fitBox(f.x0, f.y0, f.x1, f.y1, camera_.viewport());
-    else if (f.hasCenter) camera_.centerOn(f.center);
-    if (f.hasCenter) needsFit_ = false;
+    else if (!box.empty() && (box.w() > 0 || box.h() > 0))
+        camera_ = frameNeighbourhood(box, 0, camera_.viewport());
+    else camera_.centerOn(f.center);
+    needsFit_ = false;
     return f;
 }
 

@@ -40,13 +40,18 @@ using flood::vertexClassName;
 
 // ----------------------------------------------------------------------------------------
 // The tiled window layout: panels on the left and right, timeline at the bottom, canvas in
-// the middle. Shared with the screenshot test so it can find a vertex on the PNG.
+// the middle, and under the canvas the findings of a failing face. Shared with the
+// screenshot test so it can find a vertex on the PNG.
 struct Layout {
     Rect canvas, left, right, bottom;
+    Rect findings;  // between the canvas and the timeline; empty (h 0) when nothing failed
 };
 // `bottomWanted`: what the timeline needed last frame (its toolbar wraps at a large scale or
 // on a narrow window); it gets that much, up to half the window, when its share is smaller.
-Layout computeLayout(double width, double height, double uiScale, double bottomWanted = 0);
+// `findingsWanted`: what the findings panel needs (0: none), taken from the canvas's column,
+// at most a third of it.
+Layout computeLayout(double width, double height, double uiScale, double bottomWanted = 0,
+                     double findingsWanted = 0);
 
 // World (polygon coordinates, y up) to screen (y down): screen = origin + (p - center) * scale.
 class Camera {
@@ -57,6 +62,8 @@ public:
     void fitBox(double x0, double y0, double x1, double y1, const Rect& viewport,
                 double minSide = 1e-300);
     void centerOn(Point p) { cx_ = p.x, cy_ = p.y; }
+    // Centres on `p` at `scale` pixels per world unit (clamped as zoomAt clamps).
+    void centerOn(Point p, double scale);
     void setViewport(const Rect& viewport) { viewport_ = viewport; }
     Vec2 toScreen(Point p) const;
     Point toWorld(Vec2 s) const;
@@ -105,6 +112,54 @@ struct VerdictLine {
     bool failure() const { return kind != VerdictKind::Ok && kind != VerdictKind::Note; }
 };
 
+// One finding of the open face, as the findings panel lists it: a validation finding
+// (validateAll, the first being validate()'s verdict), the forbidden transition, the exact
+// checker's rejection, an internal failure or an unreadable file.
+struct Finding {
+    VerdictKind kind = VerdictKind::InvalidInput;
+    std::string message;    // the diagnostic's whole line
+    std::string where;      // "ring R vertex V (x, y)", "step N", "triangle T", or ""
+    std::string reason;     // what is wrong, the location apart
+    Culprits culprits;      // what it blames (drawn thick in the error view)
+    bool hasPoint = false;  // `point` is where it is (diagnosticPoint, any vertex)
+    Point point;
+    uint32_t step = kNone;  // the step it shows at; kNone: none (or not known yet)
+};
+
+// ----------------------------------------------------------------------------------------
+// Framing: what E, a click in the findings panel, Find and the invariant lane's Go show.
+// A world box, x0 > x1 when empty.
+struct WorldBox {
+    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
+    void add(Point p);  // non-finite points are left out
+    bool empty() const { return !(x0 <= x1 && y0 <= y1); }
+    double w() const { return x1 - x0; }
+    double h() const { return y1 - y0; }
+    Point centre() const { return {(x0 + x1) / 2, (y0 + y1) / 2}; }
+    bool contains(Point p) const { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; }
+};
+// The camera showing the neighbourhood of `target` (world) in `viewport`: the target with a
+// quarter of its size as margin on each side, never narrower than `minSide` across (a point,
+// a short edge: a side the caller chooses so the nearest neighbours show).
+Camera frameNeighbourhood(const WorldBox& target, double minSide, const Rect& viewport);
+// The box the error view frames for `culprits`: the culprit edges, vertices, triangles and
+// point. `ringsAtFault` (a validation finding): when it blames whole rings only (a hole
+// outside its outer ring), its first ring (the one at fault) and the nearest vertex of each
+// other ring it names, so the hole shows beside what it is judged against but the whole
+// outer ring is not framed; the first ring too when nothing else is blamed. Each culprit
+// vertex brings its nearer ring neighbour, so its edges show against the rest. `minSide`:
+// what frameNeighbourhood is to keep across (a fiftieth of the face for a lone point, else
+// 0). False when nothing finite is blamed.
+bool culpritBox(const Polygon& polygon, const std::vector<Triangle>& triangles,
+                const Culprits& culprits, bool ringsAtFault, WorldBox& box, double& minSide);
+// The camera showing `culprits` in `viewport` (culpritBox, frameNeighbourhood). False when
+// nothing finite is blamed: `camera` is left as it was.
+bool frameCulprits(const Polygon& polygon, const std::vector<Triangle>& triangles,
+                   const Culprits& culprits, bool ringsAtFault, const Rect& viewport,
+                   Camera& camera);
+// The world box a camera shows.
+WorldBox visibleBox(const Camera& camera);
+
 // Find: "v2999" (vertex), "t77022" (triangle), "s12051" (step), "r3" (ring), parsed and
 // looked up against a trace. A bad query says why in `message`.
 struct FindTarget {
@@ -116,6 +171,7 @@ struct FindTarget {
     Point center;                           // where to centre the view
     double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // what to show (a ring's box; a point otherwise)
     uint32_t seekTo = kNone;                // step to seek to, kNone: stay
+    std::vector<Index> vertices;            // what to frame: a vertex, a step's fingers
 };
 FindTarget findTarget(const Trace& trace, const std::string& query);
 // Predicate inspector: the tests of one event's decision path (Fig. 9), recomputed from the
@@ -323,20 +379,41 @@ public:
     // 6 checker rejection or internal error (docs/ERRORS.md).
     int exitCode() const;
 
-    // The first failure's culprits (input validation, then the forbidden event, then the
-    // checker), the step it shows at (kNone: none), and a display point for it if any.
+    // Every finding of what is loaded, in the verdict's order: the input's validation
+    // findings (validateAll, at most 100; the first is validate()'s verdict), then the
+    // forbidden transition, the checker's rejection or an internal failure. Empty when ok.
+    const std::vector<Finding>& findings() const { return findings_; }
+    size_t findingsOmitted() const { return findingsOmitted_; }  // beyond the 100 listed
+    bool findingsComplete() const { return findingsComplete_; }  // false: the search gave up
+    size_t currentFinding() const { return currentFinding_; }    // what the error view shows
+    // The error view on finding i: its culprits framed (frameCulprits), the step it shows at
+    // sought. False (nothing changed) when there is no such finding or nothing to frame.
+    bool showFinding(size_t i);
+    // F8 / Shift+F8: the next (direction > 0) or previous finding, round the list; out of the
+    // error view, the current one first.
+    bool nextFinding(int direction);
+
+    // The current finding's culprits (the first failure's until another is chosen: input
+    // validation, then the forbidden event, then the checker), the first failure's step
+    // (kNone: none), and a display point for the current finding if any.
     const Culprits& errorCulprits() const { return error_; }
     // Marked on the timeline (panel_timeline.cpp).
     uint32_t firstErrorStep() const { return firstErrorStep_; }
     bool errorPoint(Point& p) const;
-    // The error view: zooms to the culprits, seeks to the first error's step; the canvas
+    // The error view: frames the current finding's culprits, seeks to its step; the canvas
     // draws the culprits thick and dims the rest while errorView() holds. A fit ends it.
-    bool showError();
+    bool showError() { return showFinding(currentFinding_); }
     bool errorView() const { return errorView_; }
     void hideError() { errorView_ = false; }
 
-    // Find (see findTarget): centres the camera on the target and seeks where it says.
+    // Find (see findTarget): frames the target (a vertex with its nearest neighbours, a
+    // triangle, a step's fingers, a ring) and seeks where it says.
     FindTarget find(const std::string& query);
+    // The invariant lane's Go: seeks to the violation's step and frames its vertices.
+    void goToViolation(const Violation& v);
+    // Frames vertices (their box, never narrower than twice the shortest edge at one of
+    // them); false when none is a finite vertex.
+    bool frameVertices(const std::vector<Index>& vertices);
 
     // Time.
     uint32_t steps() const { return uint32_t(trace_->events.size()); }
@@ -421,6 +498,7 @@ public:
         Diagnostic input;   // the validator's verdict on it
         CheckResult check;  // the exact checker on a completed run (checked: it ran)
         bool checked = false;
+        Findings findings;  // validateAll's, when `input` is invalid
     };
     static EditedRun floodEdit(Polygon polygon, const std::string& name, Up up = Up::PlusY);
     // Makes `run` the loaded run under the same name. Unlike an open, the step (clamped to
@@ -481,6 +559,12 @@ private:
     std::optional<CheckResult> checked_;  // adoptEdit: the checker already ran with the flood
     bool deferScan_ = false, scanWaiting_ = false;  // adoptEdit's deferred invariant scan
     std::vector<VerdictLine> verdictLines_;
+    std::vector<Finding> findings_;
+    size_t findingsOmitted_ = 0, currentFinding_ = 0;
+    bool findingsComplete_ = true;
+    std::optional<Findings> validated_;  // adoptEdit: validateAll already ran with the flood
+    void computeFindings();
+    uint32_t findingStep(const Finding& f) const;
     Culprits error_;
     uint32_t firstErrorStep_ = kNone;
     std::unique_ptr<Trace> trace_;  // owned here, at a stable address for Replay

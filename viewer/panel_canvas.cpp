@@ -8,8 +8,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
+#include "geometry/number_text.h"
 #include "gorge_focus.h"
+#include "label_layout.h"
 #include "panels.h"
 #include "platform_glfw.h"
 
@@ -55,7 +58,7 @@ void canvasInput(Ui& ui) {
         Index ring = p.ringOf(v);
         ImGui::BeginTooltip();
         ImGui::Text("vertex %u  (ring %u, #%u in ring)", v, ring, v - p.rings[ring].first);
-        ImGui::Text("(%.17g, %.17g)", p.vertices[v].x, p.vertices[v].y);
+        ImGui::TextUnformatted(formatPoint(p.vertices[v]).c_str());
         ImGui::Text("class: %s", vertexClassName(m.classes()[v]));
         const Fingers& f = m.state().fingers;
         if (v == f.left) ImGui::TextColored(toImVec4(palette::kLeft), "Left");
@@ -196,8 +199,27 @@ void gorgeFocus(Ui& ui) {
     }
 }
 
-// The error view: the canvas dimmed, the culprit edges thick, the crossing point ringed and
-// each culprit vertex labelled "ring R #i" (Model::showError zoomed to them).
+// A culprit label's text: "v205 (ring 0 #205)", or for coincident vertices one label
+// "v205 = v207 (ring 0 #205, #207)" (rings apart: "v3 (ring 0 #3) = v9 (ring 1 #0)").
+std::string culpritLabel(const Polygon& P, const std::vector<Index>& group) {
+    std::string names, where;
+    bool oneRing = true;
+    for (Index v : group) oneRing = oneRing && P.ringOf(v) == P.ringOf(group.front());
+    for (Index v : group) {
+        const Index r = P.ringOf(v);
+        const std::string at = "#" + std::to_string(v - P.rings[r].first);
+        names += (names.empty() ? "v" : " = v") + std::to_string(v);
+        if (oneRing) where += (where.empty() ? "ring " + std::to_string(r) + " " : ", ") + at;
+        else names += " (ring " + std::to_string(r) + " " + at + ")";
+    }
+    return oneRing ? names + " (" + where + ")" : names;
+}
+
+// The error view: the canvas dimmed; the current finding's culprit edges thick (only they:
+// a ring named as context, such as the outer ring a hole lies outside of, stays thin), its
+// point ringed, the other findings' points small rings; each culprit vertex labelled once
+// ("v205 = v207" for coincident ones), the labels kept apart and out from under the boxes
+// over the canvas (label_layout.h). Model::showFinding framed them.
 void errorOverlay(Ui& ui, ImDrawList* dl) {
     const Model& m = ui.model;
     const Camera& cam = m.camera();
@@ -229,33 +251,163 @@ void errorOverlay(Ui& ui, ImDrawList* dl) {
                     r.addLine(Layer::Lines, cam.toScreen(P.vertices[tri[k]]),
                               cam.toScreen(P.vertices[tri[(k + 1) % 3]]), 4 * s, palette::kCulprit);
         }
-    // Only rings blamed (a hole outside, overlapping holes, a bad count): their outlines, up
-    // to a bound so a huge ring stays a frame's work.
-    if (c.edges.empty() && c.triangles.empty()) {
+    // Only rings blamed: the ring at fault (a validation finding's first ring: the hole
+    // outside its outer ring, the hole inside another) thick, the others it names thin, as
+    // context; a machine's or checker's rings (the fingers' rings) are all context. Up to a
+    // bound, so a huge ring stays a frame's work.
+    const bool validation =
+        !m.findings().empty() && m.findings()[m.currentFinding()].kind == VerdictKind::InvalidInput;
+    if (c.edges.empty() && c.triangles.empty() && !c.hasPoint) {
         size_t budget = 50000;
-        for (Index ring : c.rings) {
+        Rgba context = palette::kCulprit;
+        context.a = 150;
+        for (size_t k = 0; k < c.rings.size(); ++k) {
+            const Index ring = c.rings[k];
             if (ring >= P.rings.size()) continue;
+            const bool atFault = validation && k == 0;
             const Ring& g = P.rings[ring];
             for (Index i = 0; i < g.count && budget; ++i, --budget)
                 r.addLine(Layer::Lines, cam.toScreen(P.vertices[g.first + i]),
-                          cam.toScreen(P.vertices[g.first + (i + 1) % g.count]), 3 * s,
-                          palette::kCulprit);
+                          cam.toScreen(P.vertices[g.first + (i + 1) % g.count]),
+                          (atFault ? 3.f : 1.5f) * s, atFault ? palette::kCulprit : context);
         }
+    }
+    // The other findings, where they are: a small ring each (the current one is ringed large).
+    Rgba other = palette::kCulprit;
+    other.a = 170;
+    for (size_t i = 0; i < m.findings().size() && i < 1000; ++i) {
+        const Finding& f = m.findings()[i];
+        if (i == m.currentFinding() || !f.hasPoint) continue;
+        Vec2 p = cam.toScreen(f.point);
+        if (area.contains(p)) r.addCircle(Layer::Markers, p, 7 * s, 1.5f * s, other);
     }
     Point x;
     if (m.errorPoint(x))
         r.addCircle(Layer::Markers, cam.toScreen(x), 12 * s, 3 * s, palette::kCulprit);
+    // The culprit vertices: a dot each, and a label per point (coincident vertices share one).
+    std::vector<Index> shown;
+    std::vector<Point> at;
     for (Index v : c.vertices) {
-        if (v >= P.vertices.size()) continue;
+        if (v >= P.vertices.size() || shown.size() >= 64) continue;
         Vec2 p = cam.toScreen(P.vertices[v]);
         r.addDisc(Layer::Markers, p, 4 * s, palette::kCulprit);
         if (!area.contains(p)) continue;
-        Index ring = P.ringOf(v);
-        char text[64];
-        std::snprintf(text, sizeof text, "v%u (ring %u #%u)", v, ring, v - P.rings[ring].first);
-        dl->AddText(ImVec2(float(p.x + 8 * s), float(p.y - 16 * s)), toImU32(palette::kCulprit),
-                    text);
+        shown.push_back(v);
+        at.push_back(P.vertices[v]);
     }
+    std::vector<LabelRequest> requests;
+    std::vector<std::string> texts;
+    for (const PointGroup& g : groupCoincident(at)) {
+        std::vector<Index> group;
+        for (size_t k : g.members) group.push_back(shown[k]);
+        texts.push_back(culpritLabel(P, group));
+        ImVec2 size = ImGui::CalcTextSize(texts.back().c_str());
+        const double pad = 2 * s;
+        requests.push_back({cam.toScreen(g.at), size.x + 2 * pad, size.y + 2 * pad});
+    }
+    std::vector<PlacedLabel> placed =
+        placeLabels(requests, area, ui.canvas.obstacles, 3 * s, 14 * s, 260 * s);
+    ui.labels.clear();
+    Rgba back = palette::kBackground;
+    back.a = 215;
+    for (size_t i = 0; i < placed.size(); ++i) {
+        const PlacedLabel& l = placed[i];
+        if (l.leader)
+            dl->AddLine(ImVec2(float(l.from.x), float(l.from.y)),
+                        ImVec2(float(l.to.x), float(l.to.y)), toImU32(palette::kCulprit), 1.5f * s);
+        const ImVec2 p0(float(l.box.x), float(l.box.y)),
+            p1(float(l.box.x + l.box.w), float(l.box.y + l.box.h));
+        dl->AddRectFilled(p0, p1, toImU32(back), 3 * s);
+        dl->AddText(ImVec2(p0.x + 2 * s, p0.y + 2 * s), toImU32(palette::kCulprit),
+                    texts[i].c_str());
+        ui.labels.push_back(l.box);
+    }
+}
+
+// The locator inset: when the view is far inside the face, the whole face small in the
+// canvas's bottom-right corner and a box where the view is (a cross when the box is a dot).
+// Its rectangle, or an empty one when the view is not zoomed far in.
+Rect insetRect(const Ui& ui) {
+    const Model& m = ui.model;
+    const CanvasState& cs = ui.canvas;
+    const Rect& area = ui.layout.canvas;
+    if (m.polygon().vertices.empty() || cs.generation != m.generation()) return {};
+    const double fw = double(cs.bbox[2]) - cs.bbox[0], fh = double(cs.bbox[3]) - cs.bbox[1];
+    const WorldBox view = visibleBox(m.camera());
+    if (!(fw > 0 || fh > 0) || view.empty()) return {};
+    // Far in: the view shows less than a sixth of the face across.
+    if (std::max(view.w() / std::max(fw, 1e-300), view.h() / std::max(fh, 1e-300)) > 1.0 / 6)
+        return {};
+    const float s = ui.scale;
+    double w = 150 * s, h = 110 * s;  // the face's shape, at most this large
+    if (fw * h > fh * w) h = w * fh / fw;
+    else w = h * fw / fh;
+    w = std::max(w, 40.0 * s), h = std::max(h, 40.0 * s);
+    if (area.w < 3 * w || area.h < 3 * h) return {};
+    const double pad = 8 * s;
+    return {area.x + area.w - w - pad - 2 * s, area.y + area.h - h - pad - 2 * s, w + 4 * s,
+            h + 4 * s};
+}
+
+void drawInset(Ui& ui, ImDrawList* dl) {
+    const Rect& box = ui.inset;
+    if (box.w <= 0) return;
+    const Model& m = ui.model;
+    const CanvasState& cs = ui.canvas;
+    const Polygon& P = m.polygon();
+    const float s = ui.scale;
+    const double inner = 2 * s;
+    const double x0 = cs.origin.x + cs.bbox[0], y0 = cs.origin.y + cs.bbox[1];
+    const double fw = std::max(double(cs.bbox[2]) - cs.bbox[0], 1e-300),
+                 fh = std::max(double(cs.bbox[3]) - cs.bbox[1], 1e-300);
+    const double k = std::min((box.w - 2 * inner) / fw, (box.h - 2 * inner) / fh);
+    const double ox = box.x + (box.w - fw * k) / 2, oy = box.y + (box.h + fh * k) / 2;
+    auto map = [&](Point p) {
+        return ImVec2(float(ox + (p.x - x0) * k), float(oy - (p.y - y0) * k));
+    };
+    Rgba back = palette::kBackground;
+    back.a = 230;
+    dl->AddRectFilled(ImVec2(float(box.x), float(box.y)),
+                      ImVec2(float(box.x + box.w), float(box.y + box.h)), toImU32(back), 3 * s);
+    dl->AddRect(ImVec2(float(box.x), float(box.y)),
+                ImVec2(float(box.x + box.w), float(box.y + box.h)), toImU32(palette::kBoundary),
+                3 * s);
+    // The rings, a point every half pixel or more apart (a million vertices: a few hundred
+    // segments), gathered once per trace and inset.
+    CanvasState& cache = ui.canvas;
+    const std::array<double, 5> key{double(m.generation()), box.x, box.y, box.w, box.h};
+    if (cache.insetKey != key) {
+        cache.insetKey = key;
+        cache.insetSegments.clear();
+        for (const Ring& g : P.rings) {
+            if (g.count < 2) continue;
+            ImVec2 last = map(P.vertices[g.first]), first = last;
+            for (Index i = 1; i <= g.count; ++i) {
+                ImVec2 q = i == g.count ? first : map(P.vertices[g.first + i]);
+                if (std::abs(q.x - last.x) + std::abs(q.y - last.y) < 0.5f && i != g.count)
+                    continue;
+                cache.insetSegments.push_back({last.x, last.y});
+                cache.insetSegments.push_back({q.x, q.y});
+                last = q;
+            }
+        }
+    }
+    const ImU32 line = toImU32(palette::kBoundary);
+    for (size_t i = 0; i + 1 < cache.insetSegments.size(); i += 2) {
+        const Vec2 p = cache.insetSegments[i], q = cache.insetSegments[i + 1];
+        dl->AddLine(ImVec2(float(p.x), float(p.y)), ImVec2(float(q.x), float(q.y)), line, 1);
+    }
+    // Where the view is.
+    const WorldBox view = visibleBox(m.camera());
+    ImVec2 a = map({view.x0, view.y1}), b = map({view.x1, view.y0});
+    const ImU32 mark = toImU32(palette::kCulprit);
+    if (b.x - a.x < 4 && b.y - a.y < 4) {
+        const ImVec2 c((a.x + b.x) / 2, (a.y + b.y) / 2);
+        const float arm = 6 * s;
+        dl->AddLine(ImVec2(c.x - arm, c.y), ImVec2(c.x + arm, c.y), mark, 1.5f * s);
+        dl->AddLine(ImVec2(c.x, c.y - arm), ImVec2(c.x, c.y + arm), mark, 1.5f * s);
+    }
+    dl->AddRect(a, ImVec2(std::max(b.x, a.x + 2), std::max(b.y, a.y + 2)), mark, 0, 0, 1.5f * s);
 }
 
 // The find box and the "Show error" button, floating at the canvas's top-left corner.
@@ -269,6 +421,7 @@ void canvasBar(Ui& ui) {
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoFocusOnAppearing);
+    ui.findBox = windowRect();
     ImGuiIO& io = ImGui::GetIO();
     bool keys = !io.WantTextInput;
     if (ui.focusFind || (io.KeyCtrl && ImGui::IsKeyPressed(platform::kKeyF, false))) {
@@ -307,7 +460,22 @@ void drawCanvas(Ui& ui) {
     m.setViewport(area);
     editFrame(ui);  // live editing: a finished flood adopted, a drag carried on
     canvasInput(ui);
-    paintCanvas(ui, ImGui::GetBackgroundDrawList());
+    // What floats over the canvas, as last drawn: the labels keep out from under it. (An
+    // export paints the canvas alone: nothing floats over it then.)
+    ui.inset = ui.presenter ? Rect{} : insetRect(ui);
+    ui.canvas.obstacles.clear();
+    if (!ui.presenter)
+        for (const Rect& r : {ui.findBox, ui.editBox, ui.shrinkBox, ui.inset})
+            if (r.w > 0 && r.h > 0) ui.canvas.obstacles.push_back(r);
+    ImDrawList* dl = ImGui::GetBackgroundDrawList();
+    paintCanvas(ui, dl);
+    ui.canvas.obstacles.clear();
+    if (ui.inset.w > 0) {
+        dl->PushClipRect(ImVec2(float(area.x), float(area.y)),
+                         ImVec2(float(area.x + area.w), float(area.y + area.h)), true);
+        drawInset(ui, dl);
+        dl->PopClipRect();
+    }
     if (!ui.presenter) {  // presenter view: nothing over the canvas but the polygon
         canvasBar(ui);
         editBar(ui);
@@ -364,6 +532,7 @@ void paintCanvas(Ui& ui, ImDrawList* dl) {
 
     dl->PushClipRect(ImVec2(float(area.x), float(area.y)),
                      ImVec2(float(area.x + area.w), float(area.y + area.h)), true);
+    if (!m.errorView()) ui.labels.clear();
     if (m.errorView()) errorOverlay(ui, dl);
     else if (o.gorgeFocus) gorgeFocus(ui);
     if (o.triangleNumbers && !m.errorView()) triangleLabels(ui, dl);

@@ -42,6 +42,32 @@ void sameLineOrWrap(float width) {
     if (right <= ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x) ImGui::SameLine();
 }
 
+Rect windowRect() {
+    ImVec2 p = ImGui::GetWindowPos(), s = ImGui::GetWindowSize();
+    return {p.x, p.y, s.x, s.y};
+}
+
+void textOneLine(const std::string& text, float width, const ImVec4* colour) {
+    std::string shown = text;
+    if (ImGui::CalcTextSize(text.c_str()).x > width && text.size() > 2) {
+        // The longest middle cut that fits: as many characters kept as the width allows,
+        // the start and the end (a path's folder and its file name) both kept.
+        const std::string dots = "...";  // the default font has no ellipsis glyph
+        size_t lo = 0, hi = text.size();
+        while (lo < hi) {
+            size_t keep = (lo + hi + 1) / 2;
+            std::string t =
+                text.substr(0, keep / 2) + dots + text.substr(text.size() - (keep - keep / 2));
+            if (ImGui::CalcTextSize(t.c_str()).x <= width) lo = keep;
+            else hi = keep - 1;
+        }
+        shown = text.substr(0, lo / 2) + dots + text.substr(text.size() - (lo - lo / 2));
+    }
+    if (colour) ImGui::TextColored(*colour, "%s", shown.c_str());
+    else ImGui::TextUnformatted(shown.c_str());
+    if (shown != text && ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text.c_str());
+}
+
 float buttonWidth(const char* label) {
     return ImGui::CalcTextSize(label, nullptr, true).x + 2 * ImGui::GetStyle().FramePadding.x;
 }

@@ -222,6 +222,7 @@ void editBar(Ui& ui) {
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
                      ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
                      ImGuiWindowFlags_NoFocusOnAppearing);
+    ui.editBox = windowRect();
     if (ImGui::Checkbox("Edit (M)", &e.on) && !e.on) e.ringTool = false;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("drag a vertex, double-click an edge, Delete, Shift+drag a ring");

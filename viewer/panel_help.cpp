@@ -51,8 +51,11 @@ void drawHelp(Ui& ui) {
         {"F", "fit the polygon in the canvas"},
         {"F1 or ?", "this window"},
         {"Ctrl+O", "open a polygon or a trace (*.jsonl), or drop a file on the window"},
-        {"E", "error view: zoom to the culprits of a failure (again: back)"},
-        {"Ctrl+F", "find v<vertex>, t<triangle>, s<step>, r<ring>"},
+        {"E", "error view: frame the current finding's culprits (again: back)"},
+        {"F8 / Shift+F8",
+         "next / previous finding of a failing face, framed (the findings panel under the canvas; "
+         "a click on a finding frames it too)"},
+        {"Ctrl+F", "find and frame v<vertex>, t<triangle>, s<step>, r<ring>"},
         {"drag / wheel", "pan / zoom at the cursor"},
         {"timeline: click / wheel / right-drag", "go to the hovered step / zoom / pan the strip"},
         {"hover", "vertex or triangle details"},

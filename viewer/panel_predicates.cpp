@@ -6,6 +6,7 @@
 
 #include <cstdio>
 
+#include "geometry/number_text.h"
 #include "panels.h"
 
 namespace flood::view {
@@ -67,7 +68,7 @@ void drawPredicates(Ui& ui) {
                 std::snprintf(num, sizeof num, "%u", v);
                 clickable(ui, num, 'v');
                 ImGui::SameLine(0, 4 * ui.scale);
-                ImGui::TextDisabled("(%.17g, %.17g)", p.vertices[v].x, p.vertices[v].y);
+                ImGui::TextDisabled("%s", formatPoint(p.vertices[v]).c_str());
             }
             ImGui::TableNextColumn();
             if (r.hasValue) ImGui::Text("%.6g", r.value);

@@ -30,16 +30,21 @@ void drawShrink(Ui& ui) {
     Model& m = ui.model;
     ShrinkJob& job = ui.shrink;
     const bool running = job.started() && !job.done();
+    ui.shrinkBox = {};
     if (!running && !m.shrunk() && (!m.failed() || m.polygon().vertices.empty())) return;
 
-    ImGui::SetNextWindowPos(ImVec2(float(ui.layout.canvas.x + ui.layout.canvas.w - 340 * ui.scale),
-                                   float(ui.layout.canvas.y + 10 * ui.scale)),
-                            ImGuiCond_FirstUseEver);
+    // First shown under the Edit box at the canvas's right edge: clear of the find box and its
+    // Show error button, whatever the window's width.
+    ImGui::SetNextWindowPos(ImVec2(float(ui.layout.canvas.x + ui.layout.canvas.w - 8 * ui.scale),
+                                   float(ui.layout.canvas.y + 52 * ui.scale)),
+                            ImGuiCond_FirstUseEver, ImVec2(1, 0));
     // Its content changes with the job's stage: fit it each frame, text wrapped to a column.
     if (!ImGui::Begin("Shrink", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+        ui.shrinkBox = windowRect();  // collapsed: its title bar
         ImGui::End();
         return;
     }
+    ui.shrinkBox = windowRect();
     if (running) {
         // The shrinker does not know how many tries it will need: the bar is out of the most
         // it may make, the label says how many so far.

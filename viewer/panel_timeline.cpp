@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include "panels.h"
@@ -141,7 +142,7 @@ void invariantStatus(Ui& ui) {
     if (ImGui::IsItemHovered())  // the rule itself, beside the line saying how it broke
         ImGui::SetTooltip("%s: %s", invariantName(v.front().which), invariantText(v.front().which));
     ImGui::SameLine();
-    if (ImGui::SmallButton("Go##invariant")) m.seek(v.front().step);
+    if (ImGui::SmallButton("Go##invariant")) m.goToViolation(v.front());
     if (m.forbiddenStep()) {
         ImGui::SameLine();
         ImGui::TextDisabled("(the machine stops at step %u)", m.forbiddenStep());
@@ -152,7 +153,10 @@ void invariantStatus(Ui& ui) {
 
 void drawTimeline(Ui& ui) {
     Model& m = ui.model;
-    beginTiled("Timeline", ui.layout.bottom, ImGuiWindowFlags_NoTitleBar);
+    // No scrollbar: one appearing for the lines under the strip would narrow the toolbar and
+    // wrap it (those lines still scroll with the wheel).
+    beginTiled("Timeline", ui.layout.bottom,
+               ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
     // The toolbar wraps onto more lines when the window is narrow or the scale large.
     const ImGuiStyle& style = ImGui::GetStyle();
     auto labelled = [&](float width, const char* label) {
@@ -224,26 +228,39 @@ void drawTimeline(Ui& ui) {
     // lines it wraps to, the strip and its lane's status; the lines below may scroll.
     ui.bottomWanted = ImGui::GetCursorPosY() - style.ItemSpacing.y + style.WindowPadding.y;
 
+    // The verdict first, on one line: ok, or how many findings (each whole in the findings
+    // panel under the canvas); then the file and the step, each on one line, never wrapping.
+    const float width = ImGui::GetContentRegionAvail().x;
+    const ImVec4 red = toImVec4(palette::kCulprit), green = toImVec4(palette::kOk);
+    if (!m.findings().empty()) {
+        const Finding& first = m.findings().front();
+        std::string line =
+            std::to_string(m.findings().size() + m.findingsOmitted()) +
+            (m.findings().size() + m.findingsOmitted() == 1 ? " finding" : " findings") +
+            " (listed under the canvas); the first: " + first.message;
+        textOneLine(line, width, &red);
+    }
+    for (const VerdictLine& line : m.verdictLines()) {
+        if (line.failure()) continue;  // in the findings panel
+        const ImVec4 grey = ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
+        textOneLine(line.text, width, line.kind == VerdictKind::Note ? &grey : &green);
+    }
     const Event* e = m.currentEvent();
-    ImGui::PushTextWrapPos(0);
-    ImGui::TextUnformatted(m.path().c_str());
+    const float pathWidth = std::min(width * 0.4f, ImGui::CalcTextSize(m.path().c_str()).x);
+    textOneLine(m.path(), pathWidth);
     ImGui::SameLine();
+    const float rest = std::max(40.f, width - pathWidth - ImGui::GetStyle().ItemSpacing.x);
     if (e) {
-        ImGui::TextColored(toImVec4(palette::action(e->action)), "step %u: %s", m.step(),
-                           describeEvent(m.trace().polygon, *e).c_str());
+        const ImVec4 colour = toImVec4(palette::action(e->action));
+        textOneLine(
+            "step " + std::to_string(m.step()) + ": " + describeEvent(m.trace().polygon, *e), rest,
+            &colour);
     } else {
         ImGui::TextDisabled("step 0: before the first event");
     }
-    // The verdict, a line per finding: each failure red, a note grey, ok green.
-    for (const VerdictLine& line : m.verdictLines()) {
-        if (line.kind == VerdictKind::Note) ImGui::TextDisabled("%s", line.text.c_str());
-        else
-            ImGui::TextColored(
-                line.failure() ? toImVec4(palette::kCulprit) : toImVec4(palette::kOk), "%s",
-                line.text.c_str());
-    }
+    if (!ui.message.empty()) textOneLine(ui.message, width);
+    ImGui::PushTextWrapPos(0);
     for (const auto& w : m.warnings()) ImGui::TextDisabled("warning: %s", w.c_str());
-    if (!ui.message.empty()) ImGui::TextDisabled("%s", ui.message.c_str());
     ImGui::PopTextWrapPos();
     ImGui::End();
 }

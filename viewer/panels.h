@@ -50,6 +50,11 @@ struct CanvasState {
     // computed for (camera centre x, y, scale, canvas x, y, w, h, generation and step).
     std::array<double, 8> focusKey{};
     std::vector<Rect> focusDim;
+    // The locator inset's rings as segment ends (panel_canvas.cpp), and the generation and
+    // rectangle they were mapped for.
+    std::array<double, 5> insetKey{};
+    std::vector<Vec2> insetSegments;
+    std::vector<Rect> obstacles;  // this frame, while the canvas paints: what floats over it
 };
 
 // Live editing's UI state (panel_edit.cpp); the edits themselves are viewer/edit.h's.
@@ -148,6 +153,14 @@ struct Ui {
     TimelineFold timelineFold;
     TranscriptLines transcriptLines;
     OpenUi openPanel;
+    // The findings panel (panel_findings.cpp): each row's rectangle this frame, and the row
+    // it last scrolled to.
+    std::vector<Rect> findingRows;
+    size_t findingsScrolledTo = ~size_t(0);
+    // What floats over the canvas, as last drawn (labels keep out from under them): the find
+    // box, the Edit box, the Shrink window and the locator inset; empty when not shown.
+    Rect findBox, editBox, shrinkBox, inset;
+    std::vector<Rect> labels;  // the error view's vertex labels this frame
 };
 
 void drawCanvas(Ui& ui);  // panel_canvas.cpp: geometry to the renderer, labels, input
@@ -155,16 +168,19 @@ void drawCanvas(Ui& ui);  // panel_canvas.cpp: geometry to the renderer, labels,
 // Renderer::render draws it next), labels and overlays to `dl`, at ui.layout.canvas through
 // model.camera(). Exports call it with their own camera, rectangle and draw list.
 void paintCanvas(Ui& ui, ImDrawList* dl);
-void drawTimeline(Ui& ui);         // panel_timeline.cpp: strip, transport, go-to, play
-void drawStateMachine(Ui& ui);     // panel_state_machine.cpp: the six states of §4
-void drawDecision(Ui& ui);         // panel_decision.cpp: the Fig. 9 tree, the current path lit
-void drawPredicates(Ui& ui);       // panel_predicates.cpp: those tests' predicates, values, stages
-void drawStateTable(Ui& ui);       // panel_state_table.cpp: Fig. 10, combinations against states
-void drawBreakpoints(Ui& ui);      // panel_breakpoints.cpp: breakpoints, legend, display options
-void drawEvents(Ui& ui);           // panel_events.cpp: every event, clipped
-void drawTranscript(Ui& ui);       // panel_transcript.cpp: the paper-style transcript
-void drawOpen(Ui& ui);             // panel_open.cpp: polygons/ and recent files
-void drawShrink(Ui& ui);           // panel_shrink.cpp: shrink a failure, open and save the repro
+void drawTimeline(Ui& ui);      // panel_timeline.cpp: strip, transport, go-to, play
+void drawStateMachine(Ui& ui);  // panel_state_machine.cpp: the six states of §4
+void drawDecision(Ui& ui);      // panel_decision.cpp: the Fig. 9 tree, the current path lit
+void drawPredicates(Ui& ui);    // panel_predicates.cpp: those tests' predicates, values, stages
+void drawStateTable(Ui& ui);    // panel_state_table.cpp: Fig. 10, combinations against states
+void drawBreakpoints(Ui& ui);   // panel_breakpoints.cpp: breakpoints, legend, display options
+void drawEvents(Ui& ui);        // panel_events.cpp: every event, clipped
+void drawTranscript(Ui& ui);    // panel_transcript.cpp: the paper-style transcript
+void drawOpen(Ui& ui);          // panel_open.cpp: polygons/ and recent files
+void drawShrink(Ui& ui);        // panel_shrink.cpp: shrink a failure, open and save the repro
+void drawFindings(Ui& ui);      // panel_findings.cpp: every finding, click to frame, F8 / Shift+F8
+// The height the findings panel wants (0: none): its header and up to four findings.
+double findingsHeight(const Model& m, float scale);
 void drawHelp(Ui& ui);             // panel_help.cpp: keys and glossary
 void drawExport(Ui& ui);           // panel_export.cpp: canvas PNG/SVG, GIF, PNG sequence
 void handleShortcuts(Ui& ui);      // panel_help.cpp: the keys the help window lists
@@ -199,6 +215,11 @@ void clickable(Ui& ui, const char* text, char kind);
 // Toolbars wrap: the next item goes on this line only if `width` more still fits in it.
 void sameLineOrWrap(float width);
 float buttonWidth(const char* label);
+// The current ImGui window's rectangle (between Begin and End).
+Rect windowRect();
+// `text` on one line of at most `width` pixels: cut in the middle ("/home/.../face.json") when
+// longer, the whole of it then in a tooltip. `colour` null: the text colour.
+void textOneLine(const std::string& text, float width, const ImVec4* colour = nullptr);
 // "first-last" (or "first" when count < 2), each end clickable as above.
 void clickableRange(Ui& ui, uint32_t first, uint32_t count, char kind);
 // "label v", v clickable; nothing for kNone.

@@ -12,6 +12,7 @@ namespace flood::view::platform {
 
 const int kKeyF = GLFW_KEY_F;
 const int kKeyF1 = GLFW_KEY_F1;
+const int kKeyF8 = GLFW_KEY_F8;
 const int kKeyLeft = GLFW_KEY_LEFT, kKeyRight = GLFW_KEY_RIGHT;
 const int kKeyF11 = GLFW_KEY_F11, kKeyTab = GLFW_KEY_TAB;
 // '+' shares its key with '=' on most layouts; Ctrl+= is what a user presses for Ctrl++.

@@ -49,6 +49,7 @@ void wake();
 // io.KeysDown by GLFW key code, so these index io.KeysDown directly.
 extern const int kKeyF;
 extern const int kKeyF1;
+extern const int kKeyF8;  // next finding (Shift: previous)
 extern const int kKeyLeft, kKeyRight;
 
 // Presenter mode (panel_caption.cpp).

@@ -28,6 +28,7 @@
 #include <set>
 #include <sstream>
 
+#include "geometry/number_text.h"  // formatPoint: shortest round-trip
 #include "geometry/predicates.h"
 #include "geometry/work.h"
 
@@ -98,10 +99,7 @@ std::string edgeName(const Segment& s) {
 }
 
 std::string vertexName(const std::vector<Point>& V, Index v) {
-    std::ostringstream o;
-    o.precision(17);
-    o << "vertex " << v << " (" << V[v].x << ", " << V[v].y << ")";
-    return o.str();
+    return "vertex " + std::to_string(v) + " " + formatPoint(V[v]);
 }
 
 PartsOverlap crossing(const Segment& s, const Segment& t, const std::string& where) {

@@ -7,29 +7,16 @@
 #include <string>
 #include <string_view>
 
+#include "geometry/number_text.h"
 #include "geometry/polygon.h"
 
 namespace flood::io_detail {
 
-// Shortest decimal text that reads back as the same double ("nan", "inf", "-inf" for the
-// non-finite values, which JSON cannot hold but messages and WKT can).
-// Writes it at `to` (room for kDoubleChars) and returns the end.
-constexpr size_t kDoubleChars = 32;
-inline char* writeDouble(char* to, double v) {
-    auto copy = [to](const char* s, size_t k) { return std::copy(s, s + k, to); };
-    if (v != v) return copy("nan", 3);
-    if (v == 1.0 / 0.0) return copy("inf", 3);
-    if (v == -1.0 / 0.0) return copy("-inf", 4);
-    return std::to_chars(to, to + kDoubleChars, v).ptr;
-}
-inline std::string formatDouble(double v) {
-    char buf[kDoubleChars];
-    return std::string(buf, writeDouble(buf, v));
-}
-
-inline std::string formatPoint(Point p) {
-    return "(" + formatDouble(p.x) + ", " + formatDouble(p.y) + ")";
-}
+// The number text of every message and file (geometry/number_text.h).
+using flood::formatDouble;
+using flood::formatPoint;
+using flood::kDoubleChars;
+using flood::writeDouble;
 
 // Input echoed into a message is cut to kEchoChars bytes and an ellipsis: a 10 MB literal
 // must not become a 10 MB message. The cut never splits a UTF-8 sequence.

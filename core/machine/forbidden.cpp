@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <sstream>
 
+#include "geometry/number_text.h"
 #include "machine/flood.h"
 
 namespace flood {
@@ -23,13 +24,15 @@ Culprits forbiddenCulprits(const Polygon& polygon, const Event& e) {
 
 std::string describeForbidden(const Polygon& polygon, const Event& e) {
     std::ostringstream os;
-    os.precision(17);
     auto vertex = [&](const char* label, Index v) {
         if (v == kNone || v >= polygon.vertices.size()) return;
         Index r = polygon.ringOf(v);
         Point p = polygon.vertices[v];
+        // Coordinates as the shortest text that reads back the same (-127.71, not
+        // -127.70999999999999), as every message and file writes them.
         os << "; " << label << " = vertex " << v << " (ring " << r << " vertex "
-           << v - polygon.rings[r].first << ", " << p.x << ", " << p.y << ")";
+           << v - polygon.rings[r].first << ", " << formatDouble(p.x) << ", " << formatDouble(p.y)
+           << ")";
     };
     os << "forbidden transition " << forbiddenName(e.reason) << " at step " << e.step + 1;
     vertex("at", e.culprit);

@@ -29,7 +29,12 @@ std::string describeEvent(const Polygon& polygon, const Event& e) {
             break;
         case Action::Spill:
             s << " over top " << vertexName(e.top) << " (jump -> " << vertexName(e.jumpTarget)
-              << "), new gorge at " << vertexName(e.bottom);
+              << ")";
+            // Where the water goes on: a new gorge at a bottom, or a pending gorge resumed
+            // (its chain then starts at the vertex Left is after the event).
+            if (e.bottom != kNone) s << ", new gorge at " << vertexName(e.bottom);
+            else if (e.gorgePopped != kNone)
+                s << ", into pending gorge " << e.gorgePopped << " at " << vertexName(e.after.left);
             break;
         case Action::Jump:
             s << " from top " << vertexName(e.top) << " to " << vertexName(e.jumpTarget);

@@ -445,75 +445,77 @@ TEST(Check, EveryFindingOfAFeatureIsListedWithItsLocation) {
     EXPECT_EQ(two["features"][0]["findings_omitted"], 1);
     EXPECT_TRUE(has(cli("check --max-findings 2 " + in.string()).out,
                     "and 1 more findings (--max-findings)"));
+    fs::remove_all(d);
+}
 
-    // --extract used to replace whatever held an extracted name: an earlier run's repros, or an
-    // input being checked. A taken name gets -2, -3, ... and "extracted" says which was written.
-    TEST(Check, ExtractNeverOverwritesAFile) {
-        fs::path d = scratch("extract-no-overwrite");
-        const fs::path out = d / "out";
-        fs::create_directories(out);
-        // An input that is checked lives in the folder, under the name feature 1 would get.
-        const fs::path input = out / "mixed_feature1.json";
-        fs::copy_file(sourcePath("polygons/invalid/hole-outside.json"), input);
-        const std::string inputText = slurp(input);
-        json first = checkJson("--extract " + out.string() + " " + kMixed + " " + input.string());
-        EXPECT_EQ(slurp(input), inputText);
-        std::map<std::string, std::string> extracted;  // file#feature -> name
-        for (const json& r : first["features"])
-            if (r["extracted"].is_string())
-                extracted[r["file"].get<std::string>() + "#" + r["feature"].dump()] =
-                    fs::path(r["extracted"].get<std::string>()).filename();
-        EXPECT_EQ(extracted[kMixed + "#1"], "mixed_feature1-2.json") << first;
-        EXPECT_EQ(extracted[input.string() + "#null"], "mixed_feature1_feature0.json") << first;
-        // Again: every name is taken now, none is replaced.
-        std::map<std::string, std::string> before;
-        for (auto& e : fs::directory_iterator(out)) before[e.path().filename()] = slurp(e.path());
-        for (auto& [name, text] : before) std::ofstream(out / name) << "precious " << name;
-        int code = -1;
-        json second =
-            checkJson("--extract " + out.string() + " " + kMixed + " " + input.string(), &code);
-        EXPECT_EQ(code, 4);
-        for (auto& [name, text] : before) EXPECT_EQ(slurp(out / name), "precious " + name) << name;
-        size_t fresh = 0;
-        for (const json& r : second["features"])
-            if (r["extracted"].is_string()) {
-                std::string name = fs::path(r["extracted"].get<std::string>()).filename();
-                EXPECT_EQ(before.count(name), 0u) << name;
-                EXPECT_TRUE(fs::exists(r["extracted"].get<std::string>()));
-                ++fresh;
-            }
-        EXPECT_EQ(fresh, extracted.size());
-        EXPECT_EQ(size_t(std::distance(fs::directory_iterator(out), fs::directory_iterator())),
-                  before.size() + fresh);
-        fs::remove_all(d);
-    }
-
-    // A feature's name with an ESC reached the terminal raw, and a newline forged a table row:
-    // control characters are shown escaped in the table and the warnings (the JSON escapes them).
-    TEST(Check, ControlCharactersInNamesAreEscaped) {
-        fs::path d = scratch("control");
-        const std::string ring = "[[[0,0],[4,0],[4,4],[0,4],[0,0]]]";
-        std::ofstream(d / "ctl.json")
-            << R"({"type":"FeatureCollection","features":[)"
-            << R"({"type":"Feature","properties":{"name":"evil\u001b[31mred\nforged  row \u0085x\u007f"},)"
-            << R"("geometry":{"type":"Polygon","coordinates":)" << ring << "}},"
-            << R"({"type":"Feature","id":"a\rb\tc","properties":{},)"
-            << R"("geometry":{"type":"Polygon","coordinates":)" << ring << "}},"
-            << R"({"type":"Feature","properties":{},"geometry":{"type":"Point\u001b]0;x","coordinates":[0,0]}}]})";
-        CheckRun r = cli("check " + (d / "ctl.json").string());
-        EXPECT_EQ(r.code, 0) << r.out << r.err;
-        for (const std::string& s : {r.out, r.err}) {
-            EXPECT_EQ(s.find('\x1b'), std::string::npos) << s;
-            EXPECT_EQ(s.find('\r'), std::string::npos) << s;
-            EXPECT_EQ(s.find('\x7f'), std::string::npos) << s;
-            EXPECT_EQ(s.find("\xc2\x85"), std::string::npos) << s;
+// --extract used to replace whatever held an extracted name: an earlier run's repros, or an
+// input being checked. A taken name gets -2, -3, ... and "extracted" says which was written.
+TEST(Check, ExtractNeverOverwritesAFile) {
+    fs::path d = scratch("extract-no-overwrite");
+    const fs::path out = d / "out";
+    fs::create_directories(out);
+    // An input that is checked lives in the folder, under the name feature 1 would get.
+    const fs::path input = out / "mixed_feature1.json";
+    fs::copy_file(sourcePath("polygons/invalid/hole-outside.json"), input);
+    const std::string inputText = slurp(input);
+    json first = checkJson("--extract " + out.string() + " " + kMixed + " " + input.string());
+    EXPECT_EQ(slurp(input), inputText);
+    std::map<std::string, std::string> extracted;  // file#feature -> name
+    for (const json& r : first["features"])
+        if (r["extracted"].is_string())
+            extracted[r["file"].get<std::string>() + "#" + r["feature"].dump()] =
+                fs::path(r["extracted"].get<std::string>()).filename();
+    EXPECT_EQ(extracted[kMixed + "#1"], "mixed_feature1-2.json") << first;
+    EXPECT_EQ(extracted[input.string() + "#null"], "mixed_feature1_feature0.json") << first;
+    // Again: every name is taken now, none is replaced.
+    std::map<std::string, std::string> before;
+    for (auto& e : fs::directory_iterator(out)) before[e.path().filename()] = slurp(e.path());
+    for (auto& [name, text] : before) std::ofstream(out / name) << "precious " << name;
+    int code = -1;
+    json second =
+        checkJson("--extract " + out.string() + " " + kMixed + " " + input.string(), &code);
+    EXPECT_EQ(code, 4);
+    for (auto& [name, text] : before) EXPECT_EQ(slurp(out / name), "precious " + name) << name;
+    size_t fresh = 0;
+    for (const json& r : second["features"])
+        if (r["extracted"].is_string()) {
+            std::string name = fs::path(r["extracted"].get<std::string>()).filename();
+            EXPECT_EQ(before.count(name), 0u) << name;
+            EXPECT_TRUE(fs::exists(r["extracted"].get<std::string>()));
+            ++fresh;
         }
-        EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 4) << r.out;  // head, 2 rows, sum
-        EXPECT_TRUE(has(r.out, "evil\\e[31mred\\nforged  row \\u0085x\\x7f")) << r.out;
-        EXPECT_TRUE(has(r.out, "a\\rb\\tc")) << r.out;
-        EXPECT_TRUE(has(r.err, "not polygonal (Point\\e]0;x), skipped")) << r.err;
-        // The JSON keeps the text itself, escaped as JSON escapes it.
-        json doc = checkJson((d / "ctl.json").string());
-        EXPECT_EQ(doc["features"][0]["name"], "evil\x1b[31mred\nforged  row \xc2\x85x\x7f");
-        fs::remove_all(d);
+    EXPECT_EQ(fresh, extracted.size());
+    EXPECT_EQ(size_t(std::distance(fs::directory_iterator(out), fs::directory_iterator())),
+              before.size() + fresh);
+    fs::remove_all(d);
+}
+
+// A feature's name with an ESC reached the terminal raw, and a newline forged a table row:
+// control characters are shown escaped in the table and the warnings (the JSON escapes them).
+TEST(Check, ControlCharactersInNamesAreEscaped) {
+    fs::path d = scratch("control");
+    const std::string ring = "[[[0,0],[4,0],[4,4],[0,4],[0,0]]]";
+    std::ofstream(d / "ctl.json")
+        << R"({"type":"FeatureCollection","features":[)"
+        << R"({"type":"Feature","properties":{"name":"evil\u001b[31mred\nforged  row \u0085x\u007f"},)"
+        << R"("geometry":{"type":"Polygon","coordinates":)" << ring << "}},"
+        << R"({"type":"Feature","id":"a\rb\tc","properties":{},)"
+        << R"("geometry":{"type":"Polygon","coordinates":)" << ring << "}},"
+        << R"({"type":"Feature","properties":{},"geometry":{"type":"Point\u001b]0;x","coordinates":[0,0]}}]})";
+    CheckRun r = cli("check " + (d / "ctl.json").string());
+    EXPECT_EQ(r.code, 0) << r.out << r.err;
+    for (const std::string& s : {r.out, r.err}) {
+        EXPECT_EQ(s.find('\x1b'), std::string::npos) << s;
+        EXPECT_EQ(s.find('\r'), std::string::npos) << s;
+        EXPECT_EQ(s.find('\x7f'), std::string::npos) << s;
+        EXPECT_EQ(s.find("\xc2\x85"), std::string::npos) << s;
     }
+    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 4) << r.out;  // head, 2 rows, sum
+    EXPECT_TRUE(has(r.out, "evil\\e[31mred\\nforged  row \\u0085x\\x7f")) << r.out;
+    EXPECT_TRUE(has(r.out, "a\\rb\\tc")) << r.out;
+    EXPECT_TRUE(has(r.err, "not polygonal (Point\\e]0;x), skipped")) << r.err;
+    // The JSON keeps the text itself, escaped as JSON escapes it.
+    json doc = checkJson((d / "ctl.json").string());
+    EXPECT_EQ(doc["features"][0]["name"], "evil\x1b[31mred\nforged  row \xc2\x85x\x7f");
+    fs::remove_all(d);
+}

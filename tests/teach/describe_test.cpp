@@ -68,3 +68,41 @@ TEST(DescribeEvent, EveryEventOfEverySample) {
     }
     EXPECT_GE(forbidden, 8u) << "each forbidden-*.json sample stops in a Forbidden event";
 }
+
+// A Spill says where the water goes on, by its vertex: a new gorge at a bottom, or the pending
+// gorge it runs into (no "new gorge at -", issue 26).
+TEST(DescribeEvent, EverySpillNamesWhereTheWaterGoes) {
+    size_t resumed = 0;
+    for (const std::string& f : filesIn(sourcePath("polygons"), ".json")) {
+        SCOPED_TRACE(f);
+        Trace t = record(readOrFail(f));
+        for (const Event& e : t.events) {
+            if (e.action != Action::Spill) continue;
+            std::string line = describeEvent(t.polygon, e);
+            EXPECT_EQ(line.find("at -"), std::string::npos) << line;
+            EXPECT_TRUE(line.find(", new gorge at ") != std::string::npos ||
+                        line.find(", into pending gorge ") != std::string::npos)
+                << line;
+            if (e.bottom == kNone) {
+                ++resumed;
+                EXPECT_NE(line.find(" at " + std::to_string(e.after.left)), std::string::npos)
+                    << line;
+            }
+        }
+    }
+    EXPECT_GE(resumed, 1u) << "a sample spills into a pending gorge";
+}
+
+// Coordinates in a forbidden transition's line read as written: the shortest text that reads
+// back as the same double (-127.71, not -127.70999999999999; issue 26).
+TEST(DescribeEvent, ForbiddenCoordinatesAreShortestRoundTrip) {
+    Polygon p;
+    p.addRing({{-127.71, 50.1}, {-127.7, 50.3}, {-127.6, 50.1}}, true);
+    Event e;
+    e.action = Action::Forbidden;
+    e.reason = Forbidden::StartNotBottom;
+    e.culprit = 0;
+    const std::string s = describeForbidden(p, e);
+    EXPECT_NE(s.find("(ring 0 vertex 0, -127.71, 50.1)"), std::string::npos) << s;
+    EXPECT_EQ(s.find("9999"), std::string::npos) << s;
+}

@@ -1,0 +1,32 @@
+// Numbers as every message, file and panel writes them: the shortest decimal text that reads
+// back as the same double (-127.71, never -127.70999999999999); "nan", "inf", "-inf" for the
+// non-finite values, which JSON cannot hold but messages and WKT can.
+#pragma once
+#include <algorithm>
+#include <charconv>
+#include <cstddef>
+#include <string>
+
+#include "geometry/polygon.h"
+
+namespace flood {
+
+// Writes it at `to` (room for kDoubleChars) and returns the end.
+constexpr size_t kDoubleChars = 32;
+inline char* writeDouble(char* to, double v) {
+    auto copy = [to](const char* s, size_t k) { return std::copy(s, s + k, to); };
+    if (v != v) return copy("nan", 3);
+    if (v == 1.0 / 0.0) return copy("inf", 3);
+    if (v == -1.0 / 0.0) return copy("-inf", 4);
+    return std::to_chars(to, to + kDoubleChars, v).ptr;
+}
+inline std::string formatDouble(double v) {
+    char buf[kDoubleChars];
+    return std::string(buf, writeDouble(buf, v));
+}
+
+inline std::string formatPoint(Point p) {
+    return "(" + formatDouble(p.x) + ", " + formatDouble(p.y) + ")";
+}
+
+}  // namespace flood

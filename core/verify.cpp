@@ -13,10 +13,13 @@ namespace {
 // Sides lo' < lo and hi' > hi (exact) for coordinates in [lo, hi]: the next multiples of a
 // power of two w at least the span (and at least 2^-50 of the magnitude, so that hi / w + 1 is
 // exact), a margin as large as the polygon, clamped at +-DBL_MAX. False when no double lies
-// beyond (a coordinate is +-DBL_MAX).
+// beyond (a coordinate is +-DBL_MAX). At subnormal magnitudes 2^-50 of it is below the least
+// double, 2^-1074, which w stays at: every double is a multiple of it (and w = 0 would never
+// grow to the span).
 bool beyond(double lo, double hi, double& outLo, double& outHi) {
+    constexpr int kLeastExponent = DBL_MIN_EXP - DBL_MANT_DIG;  // 2^-1074, the least subnormal
     double big = std::max(std::fabs(lo), std::fabs(hi));
-    double w = big == 0 ? 1 : std::ldexp(1.0, std::ilogb(big) - 50);
+    double w = big == 0 ? 1 : std::ldexp(1.0, std::max(std::ilogb(big) - 50, kLeastExponent));
     while (w < hi - lo && std::isfinite(w)) w *= 2;  // hi - lo may be inf: w overflows too
     if (!std::isfinite(w)) w = std::ldexp(1.0, DBL_MAX_EXP - 1);
     outHi = (std::floor(hi / w) + 1) * w;

@@ -128,3 +128,23 @@ TEST(Verify, WhatCaughtUnvalidatedInput) {
     findTouches(fine);
     EXPECT_EQ(verify(fine).caught(), Caught::Nothing) << verify(fine).summary();
 }
+
+// Subnormal coordinates: the box's grid step, 2^-50 of the largest coordinate, underflowed to
+// 0 and never grew to the polygon's span (issue 25 item 8: `flood verify` never ended). It
+// stops at the least subnormal, 2^-1074.
+TEST(Verify, SubnormalCoordinatesEnd) {
+    const double d = std::numeric_limits<double>::denorm_min();
+    Polygon p;
+    p.addRing({{0, 0}, {8 * d, 0}, {8 * d, 8 * d}, {0, 8 * d}}, true);
+    p.addRing({{2 * d, 2 * d}, {2 * d, 4 * d}, {4 * d, 4 * d}, {4 * d, 2 * d}}, false);
+    ASSERT_TRUE(validate(p, "subnormal").ok());
+    Verification v = verify(p);
+    EXPECT_TRUE(v.ok()) << v.summary();
+    Polygon c = complementOf(p);
+    EXPECT_EQ(c.vertices[0].x, -8 * d) << "a margin as wide as the polygon";
+    EXPECT_EQ(c.vertices[2].x, 16 * d);
+    Polygon tiny;  // one subnormal coordinate among normal ones
+    tiny.addRing({{d, 0}, {1, 0}, {1, 1}}, true);
+    ASSERT_TRUE(validate(tiny, "tiny").ok());
+    EXPECT_TRUE(verify(tiny).ok()) << verify(tiny).summary();
+}

@@ -1,11 +1,14 @@
 // libFuzzer harness: parseTrace (core/log/trace_io.h) on arbitrary bytes, then a Replay of the
-// loaded trace seeking to pseudo-random steps (forward, backward, past the end).
-// A malformed trace must be a diagnostic; a loaded one must replay without crashing.
+// loaded trace seeking to pseudo-random steps (forward, backward, past the end), and the
+// invariant scan the viewer runs on every trace it opens (core/check/invariants.h), which reads the
+// vertices the events name.
+// A malformed trace must be a diagnostic; a loaded one must replay and scan without crashing.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <string_view>
 
+#include "check/invariants.h"
 #include "log/replay.h"
 #include "log/trace_io.h"
 
@@ -31,5 +34,7 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
         if (s.step > n) std::abort();
     }
     replay.seek(0);
+    for (const flood::Violation& v : flood::checkInvariants(trace))
+        if (v.step == 0 || v.step > n) std::abort();
     return 0;
 }

@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <cstddef>
 #include <cstring>
 #include <memory>
@@ -280,37 +281,57 @@ PYBIND11_MODULE(_flood, m) {
         enum class Kind : uint8_t { Arrays, Text, Wkb };
         std::vector<Kind> kind(inputs.size(), Kind::Arrays);
         for (size_t i = 0; i < inputs.size(); ++i) {
+            // Ctrl+C: Python's handler only sets a flag, acted on here (a KeyboardInterrupt).
+            if (PyErr_CheckSignals() != 0) throw py::error_already_set();
             py::handle input = inputs[i];
             if (py::isinstance<py::str>(input)) kind[i] = Kind::Text;
             else if (py::isinstance<py::bytes>(input)) kind[i] = Kind::Wkb;
             if (kind[i] != Kind::Arrays) texts[i] = input.cast<std::string>();
             else outcomes[i] = prepare(input, names[i]);
         }
+        bool interrupted = false;
         {
             py::gil_scoped_release unlocked;
             std::atomic<size_t> nextFeature{0};
-            auto worker = [&] {
-                for (size_t i; (i = nextFeature++) < outcomes.size();) {
-                    Outcome& o = outcomes[i];
-                    if (kind[i] != Kind::Arrays) {
-                        ReadResult rr = kind[i] == Kind::Text ? parsePolygon(texts[i], names[i])
-                                                              : parseWkb(texts[i], names[i]);
-                        o.diagnostic = rr.diagnostic;
-                        o.polygon = std::move(rr.polygon);
-                        std::string().swap(texts[i]);
-                    }
-                    run(o, validateFirst, options, names[i]);
-                    o.where = whereOf(o.polygon, o.diagnostic.culprits);
-                    o.polygon = {};  // the verdict is all that is kept
+            std::atomic<bool> stop{false};
+            auto one = [&](size_t i) {
+                Outcome& o = outcomes[i];
+                if (kind[i] != Kind::Arrays) {
+                    ReadResult rr = kind[i] == Kind::Text ? parsePolygon(texts[i], names[i])
+                                                          : parseWkb(texts[i], names[i]);
+                    o.diagnostic = rr.diagnostic;
+                    o.polygon = std::move(rr.polygon);
+                    std::string().swap(texts[i]);
                 }
+                run(o, validateFirst, options, names[i]);
+                o.where = whereOf(o.polygon, o.diagnostic.culprits);
+                o.polygon = {};  // the verdict is all that is kept
+            };
+            auto worker = [&] {
+                for (size_t i; !stop.load(std::memory_order_relaxed) &&
+                               (i = nextFeature++) < outcomes.size();)
+                    one(i);
             };
             if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
             threads = unsigned(std::min<size_t>(threads, std::max<size_t>(1, outcomes.size())));
             std::vector<std::thread> pool;
             for (unsigned t = 1; t < threads; ++t) pool.emplace_back(worker);
-            worker();
+            // This thread works too, and between its features looks for a signal (Ctrl+C) with
+            // the GIL, at most every 20 ms: taking the GIL from a busy Python thread can wait
+            // its switch interval (5 ms). A signal stops every worker after its feature.
+            using Clock = std::chrono::steady_clock;
+            Clock::time_point lastLook = Clock::now();
+            for (size_t i;
+                 !stop.load(std::memory_order_relaxed) && (i = nextFeature++) < outcomes.size();) {
+                one(i);
+                if (Clock::now() - lastLook < std::chrono::milliseconds(20)) continue;
+                py::gil_scoped_acquire locked;
+                if (PyErr_CheckSignals() != 0) interrupted = true, stop = true;
+                lastLook = Clock::now();
+            }
             for (std::thread& t : pool) t.join();
         }
+        if (interrupted) throw py::error_already_set();  // the KeyboardInterrupt, still set
         py::list verdicts;
         for (const Outcome& o : outcomes)
             verdicts.append(

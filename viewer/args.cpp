@@ -88,13 +88,13 @@ int parseArgs(int argc, char** argv, Args& a) {
             return 1;
         } else if (s == "--step") {
             const char* v = value("--step");
-            char* end = nullptr;
-            if (!v || (a.step = std::strtol(v, &end, 10), *end != 0) || a.step < 0) {
+            uint32_t step = 0;
+            if (!v || !parseStepArg(v, step)) {
                 if (v)
                     std::fprintf(stderr, "flood-viewer: --step wants a number >= 0, got '%s'\n", v);
                 return 2 + 1;
             }
-            a.steps.push_back(uint32_t(std::min<long>(a.step, ~0u)));
+            a.steps.push_back(step);
         } else if (s == "--feature") {
             const char* v = value("--feature");
             char* end = nullptr;

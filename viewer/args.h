@@ -11,8 +11,8 @@ namespace flood::view {
 
 struct Args {
     std::string file;
-    long step = -1;               // -1: where the model lands by itself
     std::vector<uint32_t> steps;  // every --step in order: one frame at each before the last
+                                  // (none: where the model lands by itself)
     std::string screenshot;
     int width = 1280, height = 800;
     bool bench = false;      // measure open, seek and frame times, print them, exit

@@ -27,6 +27,14 @@ bool parseStep(const std::string& s, uint32_t& out) {
 
 }  // namespace
 
+bool parseStepArg(const std::string& text, uint32_t& step) {
+    if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return false;
+    uint64_t v = 0;  // saturates at UINT32_MAX: no digit string overflows it
+    for (char c : text) v = std::min<uint64_t>(v * 10 + uint64_t(c - '0'), UINT32_MAX);
+    step = uint32_t(v);
+    return true;
+}
+
 bool parseStepRange(const std::string& text, uint32_t& first, uint32_t& last, std::string* error) {
     size_t colon = text.find(':');
     std::string a = colon == std::string::npos ? text : text.substr(0, colon);

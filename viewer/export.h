@@ -30,6 +30,11 @@ struct ExportSettings {
 // GIF delays are in hundredths of a second, and browsers slow down delays under 2.
 constexpr double kMaxFps = 50, kMinFps = 0.1;
 
+// --step N: digits only; a number past the last step, however large, is the last
+// (UINT32_MAX, which seek() clamps). Worked out in fixed-width types: with `long` (32 bits on
+// Windows and wasm32) every N made the viewer jump to the end.
+bool parseStepArg(const std::string& text, uint32_t& step);
+
 // Parses "A:B" ("A:" to the end, ":B" from 0) into `first`/`last`; false with a reason.
 bool parseStepRange(const std::string& text, uint32_t& first, uint32_t& last, std::string* error);
 

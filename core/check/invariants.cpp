@@ -34,9 +34,10 @@ std::string vtx(Index v) { return "vertex " + std::to_string(v); }
 const char* invariantName(Invariant i) { return i < Invariant::Count ? kNames[int(i)] : "?"; }
 const char* invariantText(Invariant i) { return i < Invariant::Count ? kTexts[int(i)] : "?"; }
 
-// Node i of the chain (strictly inside it) turns right or goes straight.
+// Node i of the chain (strictly inside it) turns right or goes straight. Any other i holds:
+// a log that lies about the chain's length gives one past either end, or one wrapped around.
 bool InvariantChecker::reflexAt(const std::vector<Index>& chain, size_t i, Violation& out) const {
-    if (i == 0 || i + 1 >= chain.size()) return true;
+    if (chain.size() < 3 || i == 0 || i > chain.size() - 2) return true;
     if (orient(P(chain[i - 1]), P(chain[i]), P(chain[i + 1])) <= 0) return true;
     out = violated(
         Invariant::ReflexChain, {chain[i], chain[i - 1], chain[i + 1]},
@@ -240,6 +241,7 @@ Violation InvariantChecker::check(const ReplayState& s) {
             }
             break;
         case Action::Jump: {  // the top joins the held chain to the active one
+            if (before == 0 || before > c.size()) break;  // the log lies: no joint to look at
             size_t joint = e.side == Side::Right ? before - 1 : c.size() - before;
             for (size_t i = joint == 0 ? 0 : joint - 1; i <= joint + 1; ++i)
                 if (!reflexAt(c, i, out)) return out;

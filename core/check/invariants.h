@@ -47,6 +47,8 @@ struct Violation {
 };
 
 // Feed it every step of one trace in order: check(replay.seek(s)) for s = 1, 2, ...
+// Its events must pass eventProblem() (events.h): the checker reads the vertices they name
+// (parseTrace() refuses a trace with one that does not; the machine records none).
 class InvariantChecker {
 public:
     explicit InvariantChecker(const Trace& trace) : trace_(&trace) {}

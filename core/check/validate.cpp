@@ -1109,7 +1109,8 @@ void Validator::collectAll(bool& complete) {
 
 // Small polygons reuse this thread's scratch; a large one gets its own, freed on return, so
 // that no thread keeps a large polygon's arrays (flooding comes next and needs the memory).
-Diagnostic validateIn(Polygon& polygon, const std::string& name, bool pairsFirst) {
+Diagnostic validateIn(Polygon& polygon, const std::string& name, bool pairsFirst,
+                      std::vector<Index>* enclosing = nullptr) {
     constexpr size_t kReusedUpTo = 1 << 14;  // vertices: at most a few MB kept per thread
     thread_local Scratch reused;
     Scratch fresh;
@@ -1118,6 +1119,8 @@ Diagnostic validateIn(Polygon& polygon, const std::string& name, bool pairsFirst
     Diagnostic d = v.run();
     polygon.splits.assign(d.ok() ? v.splits.begin() : v.splits.end(), v.splits.end());
     polygon.pointsDistinct = d.ok() && v.touchPoints.empty();  // check 5 grouped every shared point
+    if (enclosing)
+        enclosing->assign(d.ok() ? v.enclosing.begin() : v.enclosing.end(), v.enclosing.end());
     return d;
 }
 
@@ -1125,6 +1128,11 @@ Diagnostic validateIn(Polygon& polygon, const std::string& name, bool pairsFirst
 
 Diagnostic validateBySweep(Polygon& polygon, const std::string& name) {
     return validateIn(polygon, name, false);
+}
+
+Diagnostic validateNesting(Polygon& polygon, const std::string& name,
+                           std::vector<Index>& enclosing) {
+    return validateIn(polygon, name, true, &enclosing);
 }
 
 Diagnostic validate(Polygon& polygon, const std::string& name) {

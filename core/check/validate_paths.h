@@ -3,6 +3,7 @@
 // and one message. Internal to core/, not a public API.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "io/io.h"
 
@@ -10,5 +11,12 @@ namespace flood {
 
 // validate() without the shortcut: every polygon sweeps.
 Diagnostic validateBySweep(Polygon& polygon, const std::string& name);
+
+// validate(), and on a valid polygon the innermost ring whose interior holds each ring (kNone:
+// none), as its sweep finds it for check 6 in O(n log n): an island's outer ring lies in its
+// lake, a hole of another part. Left empty when the polygon is invalid. verify.cpp nests the
+// complement's parts with it.
+Diagnostic validateNesting(Polygon& polygon, const std::string& name,
+                           std::vector<Index>& enclosing);
 
 }  // namespace flood

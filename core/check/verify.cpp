@@ -5,7 +5,9 @@
 #include <cmath>
 
 #include "check/touches.h"
+#include "check/validate_paths.h"
 #include "geometry/predicates.h"
+#include "geometry/work.h"
 
 namespace flood {
 namespace {
@@ -13,10 +15,13 @@ namespace {
 // Sides lo' < lo and hi' > hi (exact) for coordinates in [lo, hi]: the next multiples of a
 // power of two w at least the span (and at least 2^-50 of the magnitude, so that hi / w + 1 is
 // exact), a margin as large as the polygon, clamped at +-DBL_MAX. False when no double lies
-// beyond (a coordinate is +-DBL_MAX).
+// beyond (a coordinate is +-DBL_MAX). At subnormal magnitudes 2^-50 of it is below the least
+// double, 2^-1074, which w stays at: every double is a multiple of it (and w = 0 would never
+// grow to the span).
 bool beyond(double lo, double hi, double& outLo, double& outHi) {
+    constexpr int kLeastExponent = DBL_MIN_EXP - DBL_MANT_DIG;  // 2^-1074, the least subnormal
     double big = std::max(std::fabs(lo), std::fabs(hi));
-    double w = big == 0 ? 1 : std::ldexp(1.0, std::ilogb(big) - 50);
+    double w = big == 0 ? 1 : std::ldexp(1.0, std::max(std::ilogb(big) - 50, kLeastExponent));
     while (w < hi - lo && std::isfinite(w)) w *= 2;  // hi - lo may be inf: w overflows too
     if (!std::isfinite(w)) w = std::ldexp(1.0, DBL_MAX_EXP - 1);
     outHi = (std::floor(hi / w) + 1) * w;
@@ -61,19 +66,14 @@ Box ringBox(const Polygon& P, const Ring& r) {
 }
 
 // The innermost hole of another part that each part lies in (kNone: none), by one exact
-// point location per part and hole whose boxes nest. On valid input the holes containing a
-// part form a chain; the innermost is the one whose own part lies in the most holes.
-std::vector<Index> innermostHoles(const Polygon& P) {
+// point location per part and hole whose boxes nest: for a polygon that is not valid
+// (`flood verify --no-validate`), whose holes around a part need not form a chain; the
+// innermost is the one whose own part lies in the most holes. A point location for each hole
+// around each part: quadratic on deep nesting, which innermostHoles() spares valid input.
+std::vector<Index> nestByPointLocation(const Polygon& P, const std::vector<Index>& partOfRing,
+                                       std::vector<Index> holes) {
     const size_t parts = P.parts.size();
-    std::vector<Index> partOfRing(P.rings.size());
-    std::vector<Index> holes;  // rings that bound an area and are not outer
-    for (Index k = 0; k < parts; ++k)
-        for (Index r = P.parts[k].firstRing; r < P.parts[k].firstRing + P.parts[k].ringCount; ++r) {
-            partOfRing[r] = k;
-            if (r != P.parts[k].firstRing && P.rings[r].count > 1) holes.push_back(r);
-        }
     std::vector<std::vector<Index>> containing(parts);
-    if (holes.empty() || parts < 2) return std::vector<Index>(parts, kNone);
     // A ring with a non-finite coordinate nests nowhere (the floods refuse it).
     auto finite = [&](Index r) {
         for (Index v = P.rings[r].first; v < P.rings[r].first + P.rings[r].count; ++v)
@@ -104,10 +104,13 @@ std::vector<Index> innermostHoles(const Polygon& P) {
                      active.end());
         const Ring& outer = P.rings[P.parts[k].firstRing];
         for (Index h : active) {
+            ++work().nestingSteps;
             if (partOfRing[h] == k || !holeBox[h].contains(pb)) continue;
             Side s = Side::Boundary;
-            for (Index v = outer.first; v < outer.first + outer.count && s == Side::Boundary; ++v)
+            for (Index v = outer.first; v < outer.first + outer.count && s == Side::Boundary; ++v) {
+                work().nestingSteps += P.rings[h].count;
                 s = locate(P, P.rings[h], P.vertices[v]);
+            }
             if (s != Side::Outside) containing[k].push_back(h);  // all on its boundary: inside
         }
     }
@@ -119,6 +122,40 @@ std::vector<Index> innermostHoles(const Polygon& P) {
                 innermost[k] = h;
     return innermost;
 }
+
+}  // namespace
+
+// On a valid polygon the holes around a part form a chain, and the innermost one is the ring
+// just around its outer ring, which validation's sweep finds for check 6 (validateNesting()):
+// the same hole as the point locations find, whose interior holds the part.
+std::vector<Index> innermostHoles(const Polygon& P, bool pointLocation) {
+    const size_t parts = P.parts.size();
+    std::vector<Index> partOfRing(P.rings.size());
+    std::vector<Index> holes;  // rings that bound an area and are not outer
+    for (Index k = 0; k < parts; ++k)
+        for (Index r = P.parts[k].firstRing; r < P.parts[k].firstRing + P.parts[k].ringCount; ++r) {
+            partOfRing[r] = k;
+            if (r != P.parts[k].firstRing && P.rings[r].count > 1) holes.push_back(r);
+        }
+    if (holes.empty() || parts < 2) return std::vector<Index>(parts, kNone);
+    Polygon copy = P;  // validation records the T-junctions it finds in it
+    std::vector<Index> enclosing;
+    if (!pointLocation && validateNesting(copy, "polygon", enclosing).ok()) {
+        std::vector<Index> innermost(parts, kNone);
+        bool lakes = true;  // each part in nothing or in a hole of another part
+        for (Index k = 0; k < parts && lakes; ++k) {
+            ++work().nestingSteps;
+            const Index e = enclosing[P.parts[k].firstRing];
+            lakes = e == kNone || (partOfRing[e] != k && P.parts[partOfRing[e]].firstRing != e &&
+                                   P.rings[e].count > 1);
+            innermost[k] = e;
+        }
+        if (lakes) return innermost;
+    }
+    return nestByPointLocation(P, partOfRing, std::move(holes));
+}
+
+namespace {
 
 // The box's sides x0, y0, x1, y1 beyond the polygon; false when a side has no double beyond.
 bool boxAround(const Polygon& p, double side[4]) {
@@ -154,17 +191,26 @@ Polygon complementOf(const Polygon& input) {
                                   polygon.vertices.begin() + g.first + g.count);
     };
     std::vector<Index> innermost = innermostHoles(polygon);
+    // The islands of each lake, in part order: lake r's are islands[start[r] .. start[r + 1]).
+    const size_t parts = polygon.parts.size();
+    std::vector<Index> start(polygon.rings.size() + 1, 0), islands(parts);
+    for (Index k = 0; k < parts; ++k)
+        if (innermost[k] != kNone) ++start[innermost[k] + 1];
+    for (size_t r = 1; r < start.size(); ++r) start[r] += start[r - 1];
+    std::vector<Index> fill(start.begin(), start.end() - 1);
+    for (Index k = 0; k < parts; ++k)
+        if (innermost[k] != kNone) islands[fill[innermost[k]]++] = k;
     Polygon c;
     c.addRing({{x0, y0}, {x1, y0}, {x1, y1}, {x0, y1}}, true);
-    for (Index k = 0; k < polygon.parts.size(); ++k)
+    for (Index k = 0; k < parts; ++k)
         if (innermost[k] == kNone) c.addRing(ring(polygon.parts[k].firstRing), false);
     // Each lake a part, the islands in it its holes; a point hole has no complement.
     for (const Part& part : polygon.parts)
         for (Index r = part.firstRing + 1; r < part.firstRing + part.ringCount; ++r) {
             if (polygon.rings[r].count <= 1) continue;
             c.addRing(ring(r), true);
-            for (Index k = 0; k < polygon.parts.size(); ++k)
-                if (innermost[k] == r) c.addRing(ring(polygon.parts[k].firstRing), false);
+            for (Index i = start[r]; i < start[r + 1]; ++i)
+                c.addRing(ring(polygon.parts[islands[i]].firstRing), false);
         }
     // Parts that touched at a T-junction are now rings of one part touching there.
     findTouches(c);

@@ -4,6 +4,7 @@
 // conjecture, measured in docs/ALGORITHM.md §6 (scripts/conjecture.sh).
 #pragma once
 #include <string>
+#include <vector>
 
 #include "check/checker.h"
 #include "machine/flood.h"
@@ -13,14 +14,20 @@ namespace flood {
 // The region between a box strictly containing `polygon` and the polygon: one part per face.
 // The box, its holes the outer rings of the parts that lie in no hole; and each hole of the
 // polygon (but point holes: they bound no area) as a part, its holes the outer rings of the
-// parts lying in that hole and in no hole nested inside it (an island in a lake). Nesting is
-// decided exactly by a vertex of the part that is not on the hole's boundary. The box's sides
-// are multiples of a power of two about the polygon's extent (clamped at +-DBL_MAX, never
-// overflowing), exact and strictly outside; when a coordinate is +-DBL_MAX itself no double
-// lies beyond it, so the complement is built from the polygon halved (exact unless that loses
-// a subnormal's last bit; then the box touches it there).
+// parts lying in that hole and in no hole nested inside it (an island in a lake), as
+// innermostHoles() below nests them. The box's sides are multiples of a power of two about
+// the polygon's extent (clamped at +-DBL_MAX, never overflowing), exact and strictly outside;
+// when a coordinate is +-DBL_MAX itself no double lies beyond it, so the complement is built
+// from the polygon halved (exact unless that loses a subnormal's last bit; then the box
+// touches it there).
 // Its T-junctions are found by findTouches(), valid input or not.
 Polygon complementOf(const Polygon& polygon);
+
+// The nesting complementOf() uses: the innermost hole of another part that each part of
+// `polygon` lies in (kNone: none). On a valid polygon, as validation's sweep finds it
+// (O(n log n)); otherwise, or with `pointLocation`, by exact point location of each part in
+// the holes whose boxes hold its box (quadratic on deep nesting; tests compare the two).
+std::vector<Index> innermostHoles(const Polygon& polygon, bool pointLocation = false);
 
 // Which check of the verification caught an input (the first, in this order).
 enum class Caught : uint8_t {

@@ -12,6 +12,7 @@
 #pragma once
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 
 #include "geometry/polygon.h"
 #include "geometry/up.h"
@@ -30,7 +31,11 @@ public:
         addCross(a, b), addCross(b, c), addCross(c, a);
     }
     double value() const { return sum_; }
-    // |value() - exact| <= bound(), when finite() (not for 2^50 terms or more). Each product
+    // Terms counted in 64 bits on every platform (size_t is 32 bits on wasm32 and 32-bit
+    // Windows, where `size_t(1) << 50` was undefined).
+    static constexpr uint64_t kMaxTerms = uint64_t(1) << 50;
+    uint64_t terms() const { return terms_; }
+    // |value() - exact| <= bound(), when finite() (not for kMaxTerms terms or more). Each product
     // and difference errs by at most u (2^-53) relatively, plus 2^-1074 absolutely where it
     // underflows, and a recursive sum of m terms by (m - 1)u of their magnitudes: at most
     // (m + 3)u·M + 3m·2^-1074 with M the exact sum of |products|; twice that covers the
@@ -39,7 +44,7 @@ public:
         return 2 * (double(terms_) + 3) * 0x1p-53 * magnitude_ + 6 * double(terms_) * 0x1p-1074;
     }
     bool finite() const {
-        return std::isfinite(sum_) && std::isfinite(magnitude_) && terms_ < (size_t(1) << 50);
+        return std::isfinite(sum_) && std::isfinite(magnitude_) && terms_ < kMaxTerms;
     }
     // The sign when the bound decides it, else 0 (undecided, not zero).
     int sign() const {
@@ -50,7 +55,7 @@ public:
 
 private:
     double sum_ = 0, magnitude_ = 0;
-    size_t terms_ = 0;
+    uint64_t terms_ = 0;
 };
 
 // The exact sign of the doubled signed area of the ring of `count` vertices at `first`.

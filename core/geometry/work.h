@@ -19,6 +19,8 @@ struct WorkCounters {
     uint64_t invariantSteps = 0;  // grid cells and vertices the invariant checker visits
     uint64_t heightCalls = 0;     // exact height tests along a direction off the axes (heightSign)
     uint64_t touchSearchNodes = 0;  // nodes the flood machine hashed looking for rings that touch
+    uint64_t nestingSteps = 0;      // parts, holes and hole edges verify's complement looks at to
+                                    // put islands in their lakes (core/verify.cpp)
 };
 
 inline thread_local WorkCounters tWork;

@@ -333,6 +333,11 @@ Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& tra
                 if (e.step != trace.events.size())
                     throw Bad{"event step " + std::to_string(e.step) + ", expected " +
                               std::to_string(trace.events.size())};
+                // Before the replay, the invariant checker or the viewer index anything with it.
+                if (const char* problem =
+                        eventProblem(e, trace.polygon.vertices.size(), trace.polygon.parts.size()))
+                    throw Bad{"event " + std::to_string(e.step) + " (" + actionName(e.action) +
+                              "): " + problem};
                 trace.events.push_back(e);
             }
         }

@@ -10,8 +10,9 @@
 // then a last line {"triangles":[[a,b,c],...],"status":"ok","message":"..."}.
 // Coordinates are JSON numbers, or "NaN", "Infinity", "-Infinity" (JSON has none of these;
 // an unvalidated run can hold them).
-// Loading checks the format and version and every index; a malformed line becomes a
-// Malformed diagnostic naming the line, never a crash.
+// Loading checks the format and version and every index, and each event against the polygon
+// (eventProblem(), events.h); a malformed line becomes a Malformed diagnostic naming the line,
+// never a crash.
 #pragma once
 #include <iosfwd>
 #include <string>

@@ -3,6 +3,7 @@
 // Every kind is declared once in the lists below; they generate the enums and the names.
 // Events hold vertex indices and numbers only, never pointers, so traces serialize and replay.
 #pragma once
+#include <cstddef>
 #include <cstdint>
 
 #include "geometry/polygon.h"
@@ -185,6 +186,17 @@ inline bool operator==(const Event& a, const Event& b) {
 // this size.
 static_assert(sizeof(Event) == 96,
               "Event changed: list its fields in FLOOD_EVENT_FIELDS, bump kTraceFormatVersion");
+
+// What is wrong with event `e` for the replay (replay.h), the invariant checker
+// (invariants.h) and the viewer, which index the polygon's vertices with its fields and take
+// the chain's ends from them; nullptr when nothing is. Every event the machine records passes
+// (tests/trace_mutation_test.cpp); parseTrace() refuses a trace with one that does not. Checked:
+// every vertex field is a vertex of the polygon or none, and `part` a part of it; the fingers
+// before and after name all four vertices or none; the water is a vertex when the fingers
+// after are; and the action has what the replay builds its chain from (Start: its bottom;
+// Raise, Bridge, Spill, Jump: the fingers after; Bridge: its sag and bridgeTo; Spill and Jump:
+// the top and its jump target; Spill: the bottom it starts from when it takes no gorge).
+const char* eventProblem(const Event& e, size_t vertexCount, size_t partCount);
 
 const char* actionName(Action a);  // "Raise"
 const char* actionMeaning(Action a);

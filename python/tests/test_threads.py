@@ -1,6 +1,8 @@
 """The module under threads: Python threads (the GIL is released in the core) and check()'s
-own C++ threads give exactly the serial results."""
+own C++ threads give exactly the serial results; Ctrl+C stops a long check()."""
 from concurrent.futures import ThreadPoolExecutor
+
+import pytest
 
 import flood
 from conftest import SAMPLES
@@ -60,3 +62,37 @@ def test_the_gil_is_released_while_the_core_runs():
     finally:
         sys.setswitchinterval(interval)
     assert reads[1] > reads[0]
+
+
+@pytest.mark.parametrize("threads", [1, 2])
+def test_ctrl_c_stops_check_between_features(threads):
+    """SIGINT during a long check() raises KeyboardInterrupt after the feature being flooded,
+    not when the whole call would have ended (issue 25 item 10: 9 s later)."""
+    import signal
+    import threading
+    import time
+
+    polygon = flood.generate("circle-holes", 4000, 1)
+    start = time.perf_counter()
+    flood.check([polygon] * 8, threads=1)
+    per_feature = (time.perf_counter() - start) / 8
+    count = max(64, int(4.0 / per_feature))  # about 4 s of flooding on one thread
+    whole = count * per_feature / threads
+    handler = signal.signal(signal.SIGINT, signal.default_int_handler)
+    main, sent = threading.main_thread().ident, []
+
+    def interrupt():
+        sent.append(time.perf_counter())
+        signal.pthread_kill(main, signal.SIGINT)
+
+    timer = threading.Timer(0.2, interrupt)
+    try:
+        timer.start()
+        with pytest.raises(KeyboardInterrupt):
+            flood.check([polygon] * count, threads=threads)
+        latency = time.perf_counter() - sent[0]
+    finally:
+        timer.cancel()
+        signal.signal(signal.SIGINT, handler)
+    assert latency < whole / 4, f"{latency:.2f} s to stop a check of about {whole:.2f} s"
+    assert flood.check([polygon], threads=threads)[0].ok  # the next call runs as usual

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <limits>
 
 #include "check/touches.h"
@@ -127,4 +128,103 @@ TEST(Verify, WhatCaughtUnvalidatedInput) {
     fine.splits.clear();
     findTouches(fine);
     EXPECT_EQ(verify(fine).caught(), Caught::Nothing) << verify(fine).summary();
+}
+
+// Subnormal coordinates: the box's grid step, 2^-50 of the largest coordinate, underflowed to
+// 0 and never grew to the polygon's span (issue 25 item 8: `flood verify` never ended). It
+// stops at the least subnormal, 2^-1074.
+TEST(Verify, SubnormalCoordinatesEnd) {
+    const double d = std::numeric_limits<double>::denorm_min();
+    Polygon p;
+    p.addRing({{0, 0}, {8 * d, 0}, {8 * d, 8 * d}, {0, 8 * d}}, true);
+    p.addRing({{2 * d, 2 * d}, {2 * d, 4 * d}, {4 * d, 4 * d}, {4 * d, 2 * d}}, false);
+    ASSERT_TRUE(validate(p, "subnormal").ok());
+    Verification v = verify(p);
+    EXPECT_TRUE(v.ok()) << v.summary();
+    Polygon c = complementOf(p);
+    EXPECT_EQ(c.vertices[0].x, -8 * d) << "a margin as wide as the polygon";
+    EXPECT_EQ(c.vertices[2].x, 16 * d);
+    Polygon tiny;  // one subnormal coordinate among normal ones
+    tiny.addRing({{d, 0}, {1, 0}, {1, 1}}, true);
+    ASSERT_TRUE(validate(tiny, "tiny").ok());
+    EXPECT_TRUE(verify(tiny).ok()) << verify(tiny).summary();
+}
+
+namespace {
+
+// Islands in lakes, `rings` / 2 deep: concentric squares one unit apart, an outer ring and
+// its hole for each part (`flood verify` was quadratic in the depth, issue 25 item 9).
+Polygon nestedIslands(size_t rings) {
+    Polygon p;
+    for (size_t i = 0; i < rings; ++i) {
+        const double h = double(rings - i);
+        if (i % 2 == 0) p.addRing({{-h, -h}, {h, -h}, {h, h}, {-h, h}}, true);
+        else p.addRing({{-h, -h}, {-h, h}, {h, h}, {h, -h}}, false);
+    }
+    return p;
+}
+
+// Parts with lakes holding 0 to 4 islands each, themselves with lakes, 3 levels deep, side by
+// side in rows: a seeded mix of nesting depths and neighbours.
+Polygon lakesAndIslands(uint64_t seed) {
+    Polygon p;
+    uint64_t state = seed * 0x9E3779B97F4A7C15ull;
+    auto next = [&](uint64_t n) {
+        state = state * 6364136223846793005ull + 1442695040888963407ull;
+        return (state >> 33) % n;
+    };
+    // A part filling the square at (x, y) of side `side`, its lake one unit in, and islands in
+    // a 2x2 grid of that lake's cells.
+    std::function<void(double, double, double, int)> part = [&](double x, double y, double side,
+                                                                int depth) {
+        p.addRing({{x, y}, {x + side, y}, {x + side, y + side}, {x, y + side}}, true);
+        if (side < 6 || next(5) == 0) return;
+        p.addRing({{x + 1, y + 1},
+                   {x + 1, y + side - 1},
+                   {x + side - 1, y + side - 1},
+                   {x + side - 1, y + 1}},
+                  false);
+        const double cell = std::floor((side - 2) / 2);
+        for (int i = 0; i < 4 && depth > 0 && cell >= 4; ++i)
+            if (next(3) != 0)
+                part(x + 1 + (i % 2) * cell + 1, y + 1 + (i / 2) * cell + 1, cell - 2, depth - 1);
+    };
+    for (int i = 0; i < 12; ++i) part(70.0 * (i % 4), 70.0 * (i / 4), 64, 3);
+    return p;
+}
+
+}  // namespace
+
+// The complement's nesting from validation's sweep (valid input) is the one the exact point
+// locations give, on every valid polygon here with parts inside other parts' holes: nested,
+// touching their lake's shore at a vertex or inside an edge, several to a lake, beside lakes.
+TEST(Verify, NestingBySweepIsThePointLocations) {
+    std::vector<std::pair<std::string, Polygon>> cases;
+    cases.emplace_back("nested", nestedIslands(40));
+    for (uint64_t seed = 1; seed <= 8; ++seed)
+        cases.emplace_back("lakes " + std::to_string(seed), lakesAndIslands(seed));
+    cases.emplace_back("islands", generate("islands", 1, 600));
+    Polygon shore;  // islands touching the lake's shore: at a vertex, inside an edge
+    shore.addRing({{0, 0}, {20, 0}, {20, 20}, {0, 20}}, true);
+    shore.addRing({{2, 2}, {2, 18}, {18, 18}, {18, 2}}, false);
+    shore.addRing({{5, 2}, {6, 4}, {4, 4}}, true);        // tip inside the lake's bottom edge
+    shore.addRing({{2, 2}, {4, 3}, {3, 4}}, true);        // at the lake's corner
+    shore.addRing({{10, 10}, {14, 10}, {12, 14}}, true);  // free in the lake
+    shore.addRing({{30, 0}, {40, 0}, {35, 5}}, true);     // on land beside
+    shore.addRing({{32, 1}, {35, 4}, {38, 1}}, false);
+    shore.addRing({{34, 2}, {36, 2}, {35, 3}}, true);  // an island in that one's lake
+    cases.emplace_back("shore", shore);
+    for (const std::string& f : filesIn(sourcePath("polygons"), ".json")) {
+        ReadResult r = readPolygonFile(f);
+        if (r.diagnostic.ok() && r.polygon.parts.size() > 1) cases.emplace_back(f, r.polygon);
+    }
+    size_t islands = 0;
+    for (auto& [name, p] : cases) {
+        Diagnostic d = validate(p, name);
+        ASSERT_TRUE(d.ok()) << d.message;
+        std::vector<Index> bySweep = innermostHoles(p), byLocation = innermostHoles(p, true);
+        EXPECT_EQ(bySweep, byLocation) << name;
+        for (Index h : bySweep) islands += h != kNone;
+    }
+    EXPECT_GT(islands, 100u);
 }

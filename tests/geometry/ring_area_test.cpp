@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 
 #include "geometry/predicates.h"
 #include "geometry/ring_area.h"
@@ -24,6 +25,21 @@ Polygon ring(const std::vector<Point>& pts) {
     Polygon p;
     p.addRing(pts, true);
     return p;
+}
+
+// The term count and its limit (2^50) are 64-bit on every platform. Issue 29: `size_t(1) << 50`
+// is undefined where size_t is 32 bits (wasm32, 32-bit Windows), and a 32-bit count would wrap
+// after 2^32 terms. Checked here with the types spelled out, as a 32-bit build would see them.
+TEST(RingArea, TermLimitIsSixtyFourBitsEverywhere) {
+    static_assert(std::is_same_v<decltype(AreaEstimate::kMaxTerms), const uint64_t>);
+    static_assert(std::is_same_v<decltype(AreaEstimate{}.terms()), uint64_t>);
+    static_assert(AreaEstimate::kMaxTerms == 1125899906842624ull, "2^50");
+    static_assert(AreaEstimate::kMaxTerms > uint64_t(UINT32_MAX), "beyond any 32-bit count");
+    AreaEstimate a;
+    a.addTriangle({0, 0}, {1, 0}, {0, 1});
+    EXPECT_EQ(a.terms(), 3u);
+    EXPECT_TRUE(a.finite());
+    EXPECT_EQ(a.sign(), 1);
 }
 
 TEST(RingArea, SignMatchesExactArithmetic) {

@@ -10,12 +10,14 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <functional>
 #include <string>
 #include <vector>
 
 #include "check/checker.h"
+#include "check/verify.h"
 #include "geometry/work.h"
 #include "io/io.h"
 #include "machine/flood.h"
@@ -142,6 +144,45 @@ TEST(Growth, ValidatedInputSkipsTheBankSweepsCrossingChecks) {
         // of these families is an inserted edge's end about half the time.
         EXPECT_LE(trusted + 1.0, checking) << family << ": " << trusted << " orientation tests "
                                            << "per vertex validated, " << checking << " not";
+    }
+}
+
+// Islands in lakes, `rings` / 2 deep: concentric squares one unit apart, an outer ring and its
+// hole for each part.
+Polygon nestedIslands(size_t rings) {
+    Polygon p;
+    for (size_t i = 0; i < rings; ++i) {
+        const double h = double(rings - i);
+        if (i % 2 == 0) p.addRing({{-h, -h}, {h, -h}, {h, h}, {-h, h}}, true);
+        else p.addRing({{-h, -h}, {-h, h}, {h, h}, {h, -h}}, false);
+    }
+    return p;
+}
+
+// `flood verify` of islands nested in lakes: the complement's nesting took a point location of
+// each island in every lake around it, quadratic in the depth (issue 25 item 9: 0.16, 0.51,
+// 2.85, 8.53 s at 5k, 10k, 20k, 40k rings). All its work per vertex — validation, both floods
+// and exact checks, the complement's nesting and T-junctions — from 5,000 to 40,000 rings.
+TEST(Growth, VerifyOfNestedIslandsIsLinear) {
+    const size_t base = maxN() >= 100000 ? 5000 : std::max<size_t>(maxN() / 32, 64);
+    double first = 0;
+    for (size_t rings = base; rings <= 8 * base; rings *= 2) {
+        Polygon p = nestedIslands(rings);
+        ASSERT_TRUE(validate(p, "nested islands").ok());
+        work() = {};
+        Verification v = verify(p);
+        const WorkCounters w = work();
+        ASSERT_TRUE(v.ok()) << v.summary();
+        const uint64_t total = w.orientCalls + w.nodeVisits + w.sagTests + w.validatorSteps +
+                               w.touchSteps + w.checkerSteps + w.heightCalls + w.touchSearchNodes +
+                               w.nestingSteps;
+        const double perVertex = double(total) / double(p.vertices.size());
+        std::printf(
+            "  nested islands, %zu rings: %.1f work units per vertex, %.2f of them "
+            "nesting\n",
+            rings, perVertex, double(w.nestingSteps) / double(p.vertices.size()));
+        if (rings == base) first = perVertex;
+        EXPECT_LE(perVertex, kFactor * first) << rings << " rings";
     }
 }
 

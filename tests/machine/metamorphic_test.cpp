@@ -1,5 +1,6 @@
 // Metamorphic tests: exact transforms of a polygon — scaling by 2^k for k from -1000 to 1000
-// and to both ends of the double range, a quarter turn, a mirror, a shift by 2^40 — must not change any verdict. Every predicate is
+// and to both ends of the double range (subnormal included), a quarter turn, a mirror, a shift
+// by 2^40 — must not change any verdict, `flood verify`'s included. Every predicate is
 // exact for every finite double, so validate() must give the same Status, the flood must
 // succeed exactly when it did, and its triangles must pass the exact checker with the same
 // count. Whatever computes with coordinates outside the predicates (the sag index's pruning,
@@ -13,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "check/touches.h"
+#include "check/verify.h"
 #include "test_support.h"
 #include "tools/generate.h"
 
@@ -61,20 +64,25 @@ struct Variant {
     bool scaleOnly;  // heights keep their order: even an invalid input floods the same way
 };
 
-// The scales tested: the fixed ones, and the two edges of the double range for this input
-// (its largest coordinate just below DBL_MAX, where differences and spans overflow; its
-// smallest nonzero one at the least normal double, where products underflow).
+// The scales tested: the fixed ones, and the edges of the double range for this input (its
+// largest coordinate just below DBL_MAX, where differences and spans overflow; its smallest
+// nonzero one at the least normal double, where products underflow; and its lowest set bit
+// at the least subnormal, 2^-1074, where a small integer polygon is subnormal throughout).
 std::vector<int> scalesFor(const Polygon& p) {
     std::vector<int> ks(std::begin(kScales), std::end(kScales));
-    int eMax = INT_MIN, eMin = INT_MAX;
+    int eMax = INT_MIN, eMin = INT_MAX, lowBit = INT_MAX;
     for (Point v : p.vertices)
         for (double c : {v.x, v.y})
-            if (c != 0) {
+            if (c != 0 && std::isfinite(c)) {
                 int e;
-                std::frexp(c, &e);  // |c| in [2^(e-1), 2^e)
+                double m = std::frexp(c, &e);  // |c| in [2^(e-1), 2^e)
                 eMax = std::max(eMax, e), eMin = std::min(eMin, e);
+                int low = e - 53;  // c = M 2^(e-53), M an integer: its lowest set bit
+                for (double M = std::ldexp(std::fabs(m), 53); std::fmod(M, 2) == 0; M /= 2) ++low;
+                lowBit = std::min(lowBit, low);
             }
-    if (eMax != INT_MIN) ks.push_back(1024 - eMax), ks.push_back(-1021 - eMin);
+    if (eMax != INT_MIN)
+        ks.push_back(1024 - eMax), ks.push_back(-1021 - eMin), ks.push_back(-1074 - lowBit);
     return ks;
 }
 
@@ -113,16 +121,27 @@ std::vector<Variant> variants(const Polygon& p, std::vector<std::string>& skippe
     return out;
 }
 
+// `flood verify` of p as the CLI runs it: p validated (its T-junctions found), or not, then
+// its T-junctions found as on the unvalidated path.
+Verification verified(Polygon p, bool valid) {
+    if (!valid) findTouches(p);
+    return verify(p);
+}
+
 // Every variant of `original` gets the original's verdicts (validation, and the flood of a
-// valid polygon: exact, same triangle count; of an invalid one: the same Status under scaling).
+// valid polygon: exact, same triangle count; of an invalid one: the same Status under scaling;
+// the verification (the polygon and its complement, flooded and checked exactly) of a valid
+// one passes, of an invalid one ends caught by the same check under scaling).
 void expectSameVerdicts(const Polygon& original, const std::string& what) {
     Polygon base = original;
     base.splits.clear();
     const Status valid = validate(base, what).status;
     const FloodResult baseFlood = triangulate(base);
+    const Verification baseVerified = verified(base, valid == Status::Ok);
     if (valid == Status::Ok) {
         ASSERT_TRUE(baseFlood.diagnostic.ok()) << what << ": " << baseFlood.diagnostic.message;
         ASSERT_EQ(baseFlood.triangles.size(), base.expectedTriangles()) << what;
+        ASSERT_TRUE(baseVerified.ok()) << what << ": " << baseVerified.summary();
     }
     std::vector<std::string> skipped;
     for (Variant& v : variants(original, skipped)) {
@@ -130,14 +149,20 @@ void expectSameVerdicts(const Polygon& original, const std::string& what) {
         Diagnostic d = validate(v.polygon, name);
         EXPECT_EQ(d.status, valid) << name << ": " << d.message;
         FloodResult r = triangulate(v.polygon);
+        const Verification ver = verified(v.polygon, d.ok());
         if (valid == Status::Ok) {
             EXPECT_TRUE(r.diagnostic.ok()) << name << ": " << r.diagnostic.message;
             CheckResult c = checkTriangulation(v.polygon, r.triangles);
             EXPECT_TRUE(c.ok) << name << ": " << c.reason;
             EXPECT_EQ(r.triangles.size(), baseFlood.triangles.size()) << name;
+            EXPECT_TRUE(ver.ok()) << name << ": " << ver.summary();
+            EXPECT_EQ(ver.complementFlood.triangles.size(),
+                      baseVerified.complementFlood.triangles.size())
+                << name;
         } else if (v.scaleOnly) {
             EXPECT_EQ(r.diagnostic.status, baseFlood.diagnostic.status)
                 << name << ": " << r.diagnostic.message;
+            EXPECT_EQ(ver.caught(), baseVerified.caught()) << name << ": " << ver.summary();
         }
     }
     for (const std::string& s : skipped) std::cout << "  " << what << ": skipped " << s << "\n";

@@ -56,6 +56,36 @@ TEST(Export, StepRangesParseOrSayWhy) {
     EXPECT_NE(why.find("after the last"), std::string::npos) << why;
 }
 
+// --step N (viewer/args.cpp), around 2^31 and 2^32, in the fixed-width types the parse uses:
+// N itself up to 2^32 - 1, anything larger the end (UINT32_MAX; seek() clamps it). Issue 29:
+// std::min<long>(N, ~0u) read ~0u as the long -1 where long is 32 bits (Windows, wasm32), so
+// every --step N jumped to the end there.
+TEST(Export, StepArgumentAroundTwoToThe32) {
+    const struct {
+        const char* text;
+        uint32_t step;
+    } cases[] = {{"0", 0u},
+                 {"5", 5u},
+                 {"007", 7u},
+                 {"2147483647", 2147483647u},  // INT32_MAX, a 32-bit long's largest
+                 {"2147483648", 2147483648u},
+                 {"4294967294", 4294967294u},
+                 {"4294967295", UINT32_MAX},
+                 {"4294967296", UINT32_MAX},  // past 2^32 - 1: the end
+                 {"9223372036854775808", UINT32_MAX},
+                 {"99999999999999999999999999", UINT32_MAX}};
+    for (const auto& c : cases) {
+        uint32_t step = 12345;
+        EXPECT_TRUE(parseStepArg(c.text, step)) << c.text;
+        EXPECT_EQ(step, c.step) << c.text;
+    }
+    for (const char* bad : {"", "-1", "-0", "+5", " 5", "5x", "0x10", "1e3"}) {
+        uint32_t step = 12345;
+        EXPECT_FALSE(parseStepArg(bad, step)) << bad;
+        EXPECT_EQ(step, 12345u) << bad;
+    }
+}
+
 TEST(Export, CameraShowsWhatTheCanvasShowsAtTheExportSize) {
     Camera canvas;
     canvas.fitBox(0, 0, 10, 5, Rect{300, 40, 800, 500});

@@ -86,6 +86,18 @@ inline Polygon readOrFail(const std::string& path) {
     return r.polygon;
 }
 
+// Islands in lakes, `rings` / 2 deep: concentric squares one unit apart, an outer ring and its
+// hole for each part (`flood verify` was quadratic in the depth, issue 25 item 9).
+inline Polygon nestedIslands(size_t rings) {
+    Polygon p;
+    for (size_t i = 0; i < rings; ++i) {
+        const double h = double(rings - i);
+        if (i % 2 == 0) p.addRing({{-h, -h}, {h, -h}, {h, h}, {-h, h}}, true);
+        else p.addRing({{-h, -h}, {-h, h}, {h, h}, {h, -h}}, false);
+    }
+    return p;
+}
+
 // Floods `p` and proves the result exact-valid; returns the run for further checks.
 inline FloodResult expectTriangulates(const Polygon& p, const std::string& what,
                                       const Options& options = {}) {

@@ -1058,7 +1058,8 @@ bool Validator::collectEdgeFindings(bool& complete) {
         order[e] = e;
     }
     std::sort(order.begin(), order.end(), [&](Index a, Index b) {
-        return box[a].x0 < box[b].x0 || (box[a].x0 == box[b].x0 && a < b);
+        const double xa = box[a].x0, xb = box[b].x0;
+        return xa < xb || (xa == xb && a < b);
     });
     std::vector<Diagnostic> found;
     const uint64_t cap = 64 * uint64_t(n) + (uint64_t(1) << 22);

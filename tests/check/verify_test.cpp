@@ -152,18 +152,6 @@ TEST(Verify, SubnormalCoordinatesEnd) {
 
 namespace {
 
-// Islands in lakes, `rings` / 2 deep: concentric squares one unit apart, an outer ring and
-// its hole for each part (`flood verify` was quadratic in the depth, issue 25 item 9).
-Polygon nestedIslands(size_t rings) {
-    Polygon p;
-    for (size_t i = 0; i < rings; ++i) {
-        const double h = double(rings - i);
-        if (i % 2 == 0) p.addRing({{-h, -h}, {h, -h}, {h, h}, {-h, h}}, true);
-        else p.addRing({{-h, -h}, {-h, h}, {h, h}, {h, -h}}, false);
-    }
-    return p;
-}
-
 // Parts with lakes holding 0 to 4 islands each, themselves with lakes, 3 levels deep, side by
 // side in rows: a seeded mix of nesting depths and neighbours.
 Polygon lakesAndIslands(uint64_t seed) {

@@ -21,6 +21,7 @@
 #include "geometry/work.h"
 #include "io/io.h"
 #include "machine/flood.h"
+#include "test_support.h"
 #include "tools/generate.h"
 
 namespace flood {
@@ -147,18 +148,6 @@ TEST(Growth, ValidatedInputSkipsTheBankSweepsCrossingChecks) {
     }
 }
 
-// Islands in lakes, `rings` / 2 deep: concentric squares one unit apart, an outer ring and its
-// hole for each part.
-Polygon nestedIslands(size_t rings) {
-    Polygon p;
-    for (size_t i = 0; i < rings; ++i) {
-        const double h = double(rings - i);
-        if (i % 2 == 0) p.addRing({{-h, -h}, {h, -h}, {h, h}, {-h, h}}, true);
-        else p.addRing({{-h, -h}, {-h, h}, {h, h}, {h, -h}}, false);
-    }
-    return p;
-}
-
 // `flood verify` of islands nested in lakes: the complement's nesting took a point location of
 // each island in every lake around it, quadratic in the depth (issue 25 item 9: 0.16, 0.51,
 // 2.85, 8.53 s at 5k, 10k, 20k, 40k rings). All its work per vertex — validation, both floods
@@ -167,7 +156,7 @@ TEST(Growth, VerifyOfNestedIslandsIsLinear) {
     const size_t base = maxN() >= 100000 ? 5000 : std::max<size_t>(maxN() / 32, 64);
     double first = 0;
     for (size_t rings = base; rings <= 8 * base; rings *= 2) {
-        Polygon p = nestedIslands(rings);
+        Polygon p = testing::nestedIslands(rings);
         ASSERT_TRUE(validate(p, "nested islands").ok());
         work() = {};
         Verification v = verify(p);

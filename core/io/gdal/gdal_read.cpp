@@ -70,7 +70,7 @@ private:
             m.begin(), m.end(), [](char c) { return c == '\n' || c == '\r' || c == '\t'; }, ' ');
         size_t n = std::min<size_t>(m.size(), 160);
         while (n > 0 && n < m.size() && (static_cast<unsigned char>(m[n]) & 0xC0) == 0x80) --n;
-        if (n < m.size()) m = m.substr(0, n) + "\u2026";
+        if (n < m.size()) m.resize(n), m += "\u2026";
         self->messages_.push_back(m.empty() ? "unknown GDAL error" : m);
     }
     std::vector<std::string> messages_;

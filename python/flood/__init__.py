@@ -173,7 +173,7 @@ def _normalize(polygon) -> Any:
     if isinstance(polygon, (bytes, bytearray, memoryview)):
         blob = bytes(polygon)
         if _flood.wkb_like(blob):
-            return blob  # WKB: read by the core (core/io_wkb.cpp), on check()'s threads
+            return blob  # WKB: read by the core (core/io/io_wkb.cpp), on check()'s threads
         return blob.decode("utf-8")
     if isinstance(polygon, str):
         if len(polygon) % 2 == 0 and _HEX_WKB.fullmatch(polygon):

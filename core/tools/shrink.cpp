@@ -383,9 +383,8 @@ void writeRings(std::ostream& out, const Polygon& p, const Part& part) {
     for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) {
         const Ring& ring = p.rings[r];
         out << (r == part.firstRing ? "" : ",\n ") << '[';
-        for (Index i = 0; i <= ring.count; ++i) {  // closed: the first point again
+        for (Index i = 0; ring.count > 0 && i <= ring.count; ++i) {  // closed: the first again
             const Point& q = p.vertices[ring.first + (i == ring.count ? 0 : i)];
-            if (ring.count == 0) break;
             out << (i ? "," : "") << '[';
             writeNumber(out, q.x);
             out << ',';

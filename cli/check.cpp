@@ -142,8 +142,9 @@ Finding findingOf(const Diagnostic& d, const std::string& name, const Polygon& p
 }
 
 // validate()'s verdict, and every other finding of the feature.
-void splitInvalid(Row& row, const std::string& name, const Polygon& p, size_t maxFindings) {
-    Findings all = validateAll(p, name, maxFindings);
+void splitInvalid(Row& row, const std::string& name, const Polygon& p, Diagnostic verdict,
+                  size_t maxFindings) {
+    Findings all = validateAll(p, name, std::move(verdict), maxFindings);
     for (const Diagnostic& d : all.list) row.findings.push_back(findingOf(d, name, p));
     row.findingsOmitted = all.omitted;
     row.findingsComplete = all.complete;
@@ -186,7 +187,7 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
             row.reason = reasonOf(f.read.diagnostic.message, name, {});  // the name has a column
         } else if (Diagnostic d = o.validate ? validate(p, name) : Diagnostic{}; !d.ok()) {
             row.verdict = Verdict::Invalid;
-            splitInvalid(row, name, p, o.maxFindings);
+            splitInvalid(row, name, p, std::move(d), o.maxFindings);
         } else {
             FloodResult r = triangulate(p);
             if (!r.diagnostic.ok()) {

@@ -1141,9 +1141,13 @@ Diagnostic validate(Polygon& polygon, const std::string& name) {
 }
 
 Findings validateAll(const Polygon& polygon, const std::string& name, size_t maxFindings) {
-    Findings out;
     Polygon copy = polygon;
-    Diagnostic first = validate(copy, name);
+    return validateAll(polygon, name, validate(copy, name), maxFindings);
+}
+
+Findings validateAll(const Polygon& polygon, const std::string& name, Diagnostic first,
+                     size_t maxFindings) {
+    Findings out;
     if (first.ok()) return out;
     std::string verdict = first.message;
     out.list.push_back(std::move(first));

@@ -97,6 +97,10 @@ struct Findings {
     bool complete = true;  // false: the search for crossings gave up at its work cap
 };
 Findings validateAll(const Polygon& polygon, const std::string& name, size_t maxFindings = 100);
+// The same when validate(polygon, name) has run already and gave `verdict` (flood check has
+// it): the polygon is not validated a second time.
+Findings validateAll(const Polygon& polygon, const std::string& name, Diagnostic verdict,
+                     size_t maxFindings);
 
 void writeJson(std::ostream& out, const Polygon& p, const std::vector<Triangle>& t);
 void writeSvg(std::ostream& out, const Polygon& p, const std::vector<Triangle>& t);

@@ -113,7 +113,8 @@ private:
     // ---- [SECTION] predicates on nodes -------------------------------------------------
     Point P(NodeId n) const { return heights_.at(n); }
     bool lower(NodeId a, NodeId b) const { return heights_.lower(a, b); }
-    int turn(NodeId a, NodeId b, NodeId c) const { return orient(P(a), P(b), P(c)); }
+    // The paper's convex() predicate on nodes: the corner at b turns left (strictly).
+    bool convex(NodeId a, NodeId b, NodeId c) const { return flood::convex(P(a), P(b), P(c)); }
     NodeId prev(NodeId n) const { return nodes_[n].prev; }
     NodeId next(NodeId n) const { return nodes_[n].next; }
     bool isMinimum(NodeId n) const { return lower(n, prev(n)) && lower(n, next(n)); }
@@ -127,7 +128,7 @@ private:
         const NodeId start = setUp(part);
         if (!ok()) return;
         Ev e = begin(Action::Start);
-        if (!isMinimum(start) || turn(prev(start), start, next(start)) <= 0)
+        if (!isMinimum(start) || !convex(prev(start), start, next(start)))
             return forbid(e, Forbidden::StartNotBottom, start, kNil);
         startGorge(start);
         e.bottom = nodes_[start].v;
@@ -219,7 +220,7 @@ private:
         size_t kept = 0;
         for (NodeId n : bottoms) {
             if (n < outerEnd && (lowest == kNil || lower(n, lowest))) lowest = n;
-            if (turn(prev(n), n, next(n)) <= 0) sags.push_back(n);
+            if (!convex(prev(n), n, next(n))) sags.push_back(n);
             else bottoms[kept++] = n;
         }
         bottoms.resize(kept);
@@ -333,7 +334,7 @@ private:
             return raise(e, side);
         }
         // C is a local maximum of the loop: a top, or a ceiling reached too early.
-        bool top = turn(prev(c), c, next(c)) <= 0;
+        bool top = !convex(prev(c), c, next(c));
         mark(e, Test::CIsTop, top);
         if (!top) return forbid(e, Forbidden::CeilingAsEnd, c, nx);
         bool jumpSet = nodes_.ends(c).jump != kNil;
@@ -375,7 +376,7 @@ private:
         while (c != stop) {
             const NodeId along = forward ? next(c) : prev(c);
             const NodeId a = forward ? apex : along, b = forward ? along : apex;
-            if (turn(a, c, b) <= 0) return true;
+            if (!convex(a, c, b)) return true;
             if (guard-- == 0 || !nodes_.alive(c)) return false;
             ++work().nodeVisits;
             cutTriangle(a, c, b);
@@ -511,7 +512,7 @@ private:
             NodeId n = next(c);
             if (guard-- == 0) return forbid(e, Forbidden::FillOpen, apex, c);  // Right unreachable
             ++work().nodeVisits;
-            if (turn(apex, c, n) <= 0) return forbid(e, Forbidden::BadTriangle, c, n);
+            if (!convex(apex, c, n)) return forbid(e, Forbidden::BadTriangle, c, n);
             c = n;
         }
         for (NodeId c = left_; c != right_;) {

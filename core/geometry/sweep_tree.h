@@ -1,5 +1,5 @@
-// The ordered set of active edges of a sweep (core/check/validate_edges.cpp; the bank sweep's slots,
-// core/machine/sags/sag_banks.cpp): a treap whose nodes are the edge indices themselves, its links
+// The ordered set of active edges of a sweep (core/check/validate_edges.cpp; the bank sweep's
+// slots, core/machine/sags/sag_banks.cpp): a treap whose nodes are the edge indices themselves, its links
 // arrays indexed by edge. Nothing is allocated per insertion (a std::set allocates a 40-byte node
 // each time), and an edge is erased or stepped from by its index, without comparisons.
 // Priorities are a hash of the index, so the shape is that of a random treap whatever the

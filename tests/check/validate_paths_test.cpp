@@ -2,7 +2,8 @@
 // (core/check/validate_edges.cpp, pairsClear), and sweeps first with the minimal tests: it must
 // give the full sweep's verdict, message, culprits and splits on every input — the samples, the
 // invalid catalogue, generated polygons and mutations of them that repeat points, put vertices
-// on edges, cross, overlap and fold back. And its cost, counted: the sweep's hand-over of an edge's place, the box test before orient().
+// on edges, cross, overlap and fold back. And its cost, counted: the sweep's hand-over of an
+// edge's place, the box test before orient().
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -259,7 +259,7 @@ int cmdTriangulate(const std::string& in, const std::string& out, std::string fo
 // forbidden transition that proves it wrong, is what one wants to look at. The exit code is
 // still the verdict's (4 for invalid input).
 int cmdTrace(const std::string& in, const std::string& out, const std::string& up, bool check,
-             bool exactCheck) {
+             bool exactCheck, bool binary) {
     Polygon polygon;
     Status s = prepare(in, polygon, check, true);
     const Status verdict = s;
@@ -273,7 +273,8 @@ int cmdTrace(const std::string& in, const std::string& out, const std::string& u
     if (s == Status::Internal)
         t.diagnostic = {Status::Internal, "the exact checker rejects the result"};
     Output o(out);
-    writeTrace(o.stream(), t);
+    if (binary) writeBinaryTrace(o.stream(), t);
+    else writeTrace(o.stream(), t);
     Status w = o.commit();
     return code(s != Status::Ok ? s : w);
 }
@@ -599,6 +600,13 @@ int run(int argc, char** argv) {
     auto* trace = app.add_subcommand("trace", "Flood and write the event trace (JSON Lines)");
     flooding(trace, polygonIn, true);
     trace->add_option("-o,--output", out, "Output trace file (- for stdout, the default)");
+    std::string traceFormat;
+    trace
+        ->add_option("--format", traceFormat,
+                     "jsonl (JSON Lines, for people and scripts) or bin (compact binary, for "
+                     "large traces; the viewer opens both) (default: bin for a .bin output, "
+                     "else jsonl)")
+        ->check(CLI::IsMember({"jsonl", "bin"}));
 
     auto* tr = app.add_subcommand("transcript", "Print the paper-style transcript (Fig. 7)");
     flooding(tr, polygonIn, false);
@@ -737,7 +745,11 @@ int run(int argc, char** argv) {
     }
     try {
         if (tri->parsed()) return cmdTriangulate(in, out, format, up, !noValidate, !noExactCheck);
-        if (trace->parsed()) return cmdTrace(in, out, up, !noValidate, !noExactCheck);
+        if (trace->parsed()) {
+            bool binary = traceFormat == "bin" || (traceFormat.empty() && out.size() > 4 &&
+                                                   out.compare(out.size() - 4, 4, ".bin") == 0);
+            return cmdTrace(in, out, up, !noValidate, !noExactCheck, binary);
+        }
         if (tr->parsed()) return cmdTranscript(in, narrate, up, !noValidate);
         if (gen->parsed()) return cmdGenerate(family, size, seed, out);
         if (shr->parsed()) return cmdShrink(in, out, up, timeout, slipping, quiet);

@@ -6,7 +6,8 @@ usage: scripts/fuzz-seeds.py OUTDIR [FLOOD_CLI]
 OUTDIR/read   every polygon file as is (GeoJSON, ring arrays, WKT, the invalid ones), plus WKT
               renderings of the ring arrays
 OUTDIR/flood  the same polygons in the byte encoding of fuzz/fuzz_poly.h
-OUTDIR/trace  `flood trace` of each small polygon (needs FLOOD_CLI), including forbidden runs
+OUTDIR/trace  `flood trace` of each small polygon, JSON Lines and binary (needs FLOOD_CLI),
+              including forbidden runs
 """
 import json, os, struct, subprocess, sys
 
@@ -94,10 +95,12 @@ def main():
             count["read"] += 1
             count["flood"] += 1
         if cli and len(data) < 4096:
-            r = subprocess.run([cli, "trace", path], capture_output=True)
-            if r.stdout:
-                open(os.path.join(out, "trace", name + ".jsonl"), "wb").write(r.stdout)
-                count["trace"] += 1
+            # Both forms of the trace: JSON Lines and the compact binary one.
+            for form, ext in (("jsonl", ".jsonl"), ("bin", ".ftb")):
+                r = subprocess.run([cli, "trace", path, "--format", form], capture_output=True)
+                if r.stdout:
+                    open(os.path.join(out, "trace", name + ext), "wb").write(r.stdout)
+                    count["trace"] += 1
     print("seeds: " + ", ".join("%s %d" % kv for kv in count.items()))
 
 

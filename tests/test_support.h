@@ -111,11 +111,13 @@ inline FloodResult expectTriangulates(const Polygon& p, const std::string& what,
 // `t` written as `flood trace` writes it and read back, for the round-trip tests: the test
 // fails if it does not read or loses events; whether each event came back is theirs to say
 // (Event's == compares every field).
-inline Trace writtenAndRead(const Trace& t) {
+// `binary`: in the compact form (`flood trace --format bin`) instead of JSON Lines.
+inline Trace writtenAndRead(const Trace& t, bool binary = false) {
     std::ostringstream out;
-    writeTrace(out, t);
+    if (binary) writeBinaryTrace(out, t);
+    else writeTrace(out, t);
     Trace back;
-    Diagnostic d = parseTrace(out.str(), "t.jsonl", back);
+    Diagnostic d = parseTrace(out.str(), binary ? "t.bin" : "t.jsonl", back);
     EXPECT_TRUE(d.ok()) << d.message;
     EXPECT_EQ(back.events.size(), t.events.size());
     return back;

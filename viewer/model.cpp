@@ -467,7 +467,7 @@ static bool isTracePath(const std::string& path) {
     h.erase(std::remove_if(h.begin(), h.end(),
                            [](char c) { return std::isspace(static_cast<unsigned char>(c)); }),
             h.end());
-    return h.rfind("{\"format\":\"flood-trace\"", 0) == 0;
+    return h.rfind("{\"format\":\"flood-trace\"", 0) == 0 || isBinaryTrace(h);
 }
 
 void Model::open(const std::string& path) {

@@ -73,9 +73,10 @@ DatasetRead readFeaturesFile(const std::string& path, uint64_t maxBytes, bool ke
 
 // Reads all of `path` ("-" is stdin) into `text`. Malformed, naming the file, when it cannot
 // be opened or read, is a directory, holds a NUL byte (binary data, not `expected`: reading
-// stops there, so /dev/zero ends at once) or grows beyond `maxBytes`.
+// stops there, so /dev/zero ends at once; unless the input starts with `binaryMagic`, a
+// binary format's first bytes) or grows beyond `maxBytes`.
 Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t maxBytes,
-                         const char* expected);
+                         const char* expected, const char* binaryMagic = nullptr);
 
 // Validity rules checked before flooding (docs/ERRORS.md): finite coordinates, rings with at
 // least 3 distinct points (holes may be single Steiner points), non-zero area, no

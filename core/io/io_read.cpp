@@ -282,8 +282,17 @@ ReadResult parsePolygon(std::string_view text, const std::string& name) {
 }
 
 // POSIX reads, not iostreams: they give the system's reason (errno) for each failure.
+// The input so far (`text`, then `k` bytes of `buf`) starts with `magic`.
+static bool binaryMagicAt(const std::string& text, const char* buf, size_t k, const char* magic) {
+    if (!magic) return false;
+    const size_t m = std::strlen(magic);
+    std::string head = text.substr(0, m);
+    if (head.size() < m) head.append(buf, std::min(k, m - head.size()));
+    return head == magic;
+}
+
 Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t maxBytes,
-                         const char* expected) {
+                         const char* expected, const char* binaryMagic) {
     text.clear();
     const std::string name = path == "-" ? "<stdin>" : path;
     const int fd = path == "-" ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
@@ -313,7 +322,9 @@ Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t ma
                                                std::to_string(text.size()) +
                                                " bytes: " + std::strerror(errno)};
             if (k == 0) break;
-            if (const void* z = std::memchr(buf, 0, size_t(k)))
+            if (const void* z = binaryMagicAt(text, buf, size_t(k), binaryMagic)
+                                    ? nullptr
+                                    : std::memchr(buf, 0, size_t(k)))
                 return {
                     Status::Malformed,
                     io_detail::binaryData(

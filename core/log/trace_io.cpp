@@ -272,6 +272,7 @@ void writeTrace(std::ostream& out, const Trace& trace) {
 }
 
 Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& trace) {
+    if (isBinaryTrace(text)) return parseBinaryTrace(text, name, trace);
     trace = Trace{};
     size_t lineNo = 0, pos = 0;
     bool sawHeader = false, sawEnd = false;
@@ -365,9 +366,11 @@ Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& tra
 Diagnostic readTraceFile(const std::string& path, Trace& trace) {
     trace = Trace{};
     std::string text;
-    Diagnostic d = readInputFile(path, text, kDefaultMaxInputBytes, "a flood trace");
+    const std::string name = path == "-" ? "<stdin>" : path;
+    Diagnostic d =
+        readInputFile(path, text, kDefaultMaxInputBytes, "a flood trace", kBinaryTraceMagic);
     if (!d.ok()) return d;
-    return parseTrace(text, path == "-" ? "<stdin>" : path, trace);
+    return parseTrace(text, name, trace);
 }
 
 }  // namespace flood

@@ -13,6 +13,9 @@
 // Loading checks the format and version and every index, and each event against the polygon
 // (eventProblem(), events.h); a malformed line becomes a Malformed diagnostic naming the line,
 // never a crash.
+// The same trace can be written in a compact binary form (`flood trace --format bin`,
+// trace_bin.cpp: about 15 bytes an event instead of ~400, and read ~20x faster); the
+// readers below take either, told apart by its first bytes ("FLOODTRB").
 #pragma once
 #include <iosfwd>
 #include <string>
@@ -24,10 +27,14 @@
 namespace flood {
 
 void writeTrace(std::ostream& out, const Trace& trace);
+void writeBinaryTrace(std::ostream& out, const Trace& trace);
+constexpr const char* kBinaryTraceMagic = "FLOODTRB";  // the binary form's first bytes
+bool isBinaryTrace(std::string_view text);             // starts with them
 
-// Parses a trace; on failure `trace` is left empty and the diagnostic reads
-// "NAME:LINE: what is wrong".
+// Parses a trace, either form; on failure `trace` is left empty and the diagnostic reads
+// "NAME:LINE: what is wrong" (JSON Lines) or "NAME: byte B: what is wrong" (binary).
 Diagnostic parseTrace(std::string_view text, const std::string& name, Trace& trace);
+Diagnostic parseBinaryTrace(std::string_view text, const std::string& name, Trace& trace);
 Diagnostic readTraceFile(const std::string& path, Trace& trace);  // "-" reads stdin
 
 }  // namespace flood

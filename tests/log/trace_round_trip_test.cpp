@@ -1,4 +1,4 @@
-// Traces written and read back hold the same events, compared field by field by Event's
+// Traces written and read back, in both forms (JSON Lines and binary), hold the same events, compared field by field by Event's
 // operator== (generated from FLOOD_EVENT_FIELDS); the logs round-tripped give every field a
 // value besides its initial one, so no field's comparison goes untried.
 #include <gtest/gtest.h>
@@ -27,17 +27,18 @@ TEST(TraceRoundTrip, EveryEventFieldComesBackAndIsExercised) {
 
     std::map<std::string, size_t> changed;  // field -> events where it is not its initial value
     const Event initial{};
-    for (const Trace& t : traces) {
-        Trace back = writtenAndRead(t);
-        ASSERT_EQ(back.events.size(), t.events.size());
-        for (size_t i = 0; i < t.events.size(); ++i) {
-            const Event& e = t.events[i];
-            ASSERT_TRUE(back.events[i] == e) << "event " << i << " changed on the way";
+    for (bool binary : {false, true})
+        for (const Trace& t : traces) {
+            Trace back = writtenAndRead(t, binary);
+            ASSERT_EQ(back.events.size(), t.events.size());
+            for (size_t i = 0; i < t.events.size(); ++i) {
+                const Event& e = t.events[i];
+                ASSERT_TRUE(back.events[i] == e) << "event " << i << " changed on the way";
 #define FLOOD_X(kind, type, name, init) changed[#name] += !(e.name == initial.name);
-            FLOOD_EVENT_FIELDS(FLOOD_X)
+                FLOOD_EVENT_FIELDS(FLOOD_X)
 #undef FLOOD_X
+            }
         }
-    }
 #define FLOOD_X(kind, type, name, init) \
     EXPECT_GT(changed[#name], 0u) << #name " keeps its initial value in every trace tried";
     FLOOD_EVENT_FIELDS(FLOOD_X)

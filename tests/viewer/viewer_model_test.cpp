@@ -617,6 +617,30 @@ TEST(ViewerFind, BadQueriesSayWhy) {
     }
 }
 
+// The binary form (`flood trace --format bin`) opens by its first bytes, whatever its name; a
+// damaged one fails naming the file and keeps what was loaded.
+TEST(ViewerTraces, BinaryTraceOpensByItsMagic) {
+    std::string dir = ::testing::TempDir();
+    Polygon p = squareWithHole(false, true);
+    ASSERT_TRUE(validate(p, "square").ok());
+    Trace t = record(p);
+    std::ostringstream out;
+    writeBinaryTrace(out, t);
+    const std::string bin = out.str();
+    std::ofstream(dir + "saved.trace", std::ios::binary) << bin;
+    Model m;
+    m.open(dir + "saved.trace");
+    ASSERT_TRUE(m.openDiagnostic().ok()) << m.openDiagnostic().message;
+    EXPECT_EQ(m.steps(), t.events.size());
+    EXPECT_EQ(m.verdictLines().at(0).kind, VerdictKind::Ok) << m.verdict();
+    std::ofstream(dir + "cut.bin", std::ios::binary) << bin.substr(0, bin.size() - 3);
+    m.open(dir + "cut.bin");
+    EXPECT_EQ(m.exitCode(), 3);
+    EXPECT_NE(m.openDiagnostic().message.find("cut.bin: "), std::string::npos)
+        << m.openDiagnostic().message;
+    EXPECT_EQ(m.steps(), t.events.size()) << "a failed open keeps the loaded run";
+}
+
 TEST(ViewerTraces, OpenLikeAPolygonAndFailWithTheLine) {
     std::string dir = ::testing::TempDir();
     Polygon p = squareWithHole(false, true);

@@ -1,9 +1,10 @@
 // Seeded generator of valid polygons for tests, benchmarks and the viewer's open list.
 // Every family takes (seed, size), size being roughly the total vertex count, and returns a
 // valid flood::Polygon: rings simple, holes inside their outer ring, rings touching only at
-// single points (shared vertices or T-junctions, recorded in Polygon::splits). Output is identical on every platform (own PRNG and own sin/cos,
-// no std distributions). Where a new family goes: add a function in generate.cpp and one row
-// to its family table.
+// single points (shared vertices or T-junctions, recorded in Polygon::splits). Output is
+// identical on every platform (own PRNG and own sin/cos, no std distributions). Where a new
+// family goes: a function in generate.cpp (an invalid one in generate_invalid.cpp) and one row
+// in its family table.
 #pragma once
 #include <cstdint>
 #include <string>

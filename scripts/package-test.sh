@@ -38,4 +38,28 @@ for static in "" --static; do
 done
 
 "$prefix/bin/flood" generate star 50 -o "$tmp/star.json" && "$prefix/bin/flood" verify "$tmp/star.json" >/dev/null
+
+# The installed viewer opens the installed polygons (share/flood/polygons beside bin/), also
+# once the prefix has moved, never the build's source tree; its desktop entry names its icon.
+if [ -x "$prefix/bin/flood-viewer" ]; then
+    echo "package-test: installed viewer"
+    for f in share/flood/polygons/paper-figure-7.json share/flood/polygons/gallery.json \
+             share/applications/flood-viewer.desktop \
+             share/icons/hicolor/scalable/apps/flood-viewer.svg; do
+        [ -s "$prefix/$f" ] || { echo "package-test: $f not installed" >&2; exit 1; }
+    done
+    grep -qx 'Exec=flood-viewer %f' "$prefix/share/applications/flood-viewer.desktop"
+    grep -qx 'Icon=flood-viewer' "$prefix/share/applications/flood-viewer.desktop"
+    if command -v desktop-file-validate >/dev/null; then
+        desktop-file-validate "$prefix/share/applications/flood-viewer.desktop"
+    fi
+    mv "$prefix" "$tmp/moved"
+    out=$(cd "$tmp" && env -u DISPLAY -u WAYLAND_DISPLAY -u FLOOD_POLYGONS_DIR \
+          "$tmp/moved/bin/flood-viewer" 2>&1 || true)
+    case $out in
+      *"Summary of $tmp/moved/share/flood/polygons/paper-figure-7.json"*) ;;
+      *) echo "package-test: the installed viewer did not open its own polygons:" >&2
+         echo "$out" >&2; exit 1 ;;
+    esac
+fi
 echo "package-test: ok"

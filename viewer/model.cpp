@@ -25,6 +25,10 @@
 #include "io/gdal/gdal_io.h"
 #endif
 
+#ifndef FLOOD_DATA_SUBDIR  // share/flood, relative to the install prefix
+#define FLOOD_DATA_SUBDIR "share/flood"
+#define FLOOD_INSTALL_DATA_DIR "/usr/local/share/flood"
+#endif
 #ifndef FLOOD_SOURCE_DIR
 #define FLOOD_SOURCE_DIR "."
 #endif
@@ -1139,9 +1143,21 @@ int64_t Model::pickTriangle(Vec2 screen) const {
 
 // ========================================================================================
 // [SECTION] polygon files
+// The installed polygons are found beside the executable (PREFIX/bin/flood-viewer ->
+// PREFIX/share/flood/polygons), so an installed tree can move; a build in the source tree
+// finds the source's; the install path the build was configured with comes last.
 std::string polygonsDir() {
+    namespace fs = std::filesystem;
     if (const char* d = std::getenv("FLOOD_POLYGONS_DIR")) return d;
-    return std::string(FLOOD_SOURCE_DIR) + "/polygons";
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        const fs::path installed = exe.parent_path().parent_path() / FLOOD_DATA_SUBDIR / "polygons";
+        if (fs::is_directory(installed, ec)) return installed.string();
+    }
+    const std::string source = std::string(FLOOD_SOURCE_DIR) + "/polygons";
+    if (fs::is_directory(source, ec)) return source;
+    return std::string(FLOOD_INSTALL_DATA_DIR) + "/polygons";
 }
 
 std::vector<std::string> listPolygonFiles(const std::string& dir) {

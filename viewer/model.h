@@ -585,7 +585,9 @@ private:
     mutable uint64_t stateTableFor_ = ~0ull;  // the generation it was built for
 };
 
-// Where to look for polygons: FLOOD_SOURCE_DIR/polygons unless overridden.
+// Where to look for polygons: $FLOOD_POLYGONS_DIR; else the installed share/flood/polygons
+// beside the executable; else the source tree's polygons/ (a build); else the configured
+// install prefix's.
 std::string polygonsDir();
 // polygons/FLOOD_VIEWER_DEFAULT_POLYGON (CMake cache, default paper-figure-7.json) if it
 // exists, else the first polygon file, else "". FLOOD_POLYGONS_DIR overrides the directory.

@@ -154,22 +154,22 @@ std::string outputDriver(const std::string& format, const std::string& path) {
         if (dot == std::string::npos || (slash != std::string::npos && dot < slash)) return "";
         ext = path.substr(dot + 1);
     }
+    // Drivers that create vector datasets: the one so named, else the one whose own extension
+    // it is (.gpkg is GPKG's, though SQLite lists it too), else the first that lists it.
+    std::vector<GDALDriver*> drivers;
     GDALDriverManager* m = GetGDALDriverManager();
-    GDALDriver* byExtension = nullptr;
-    for (int i = 0; i < m->GetDriverCount(); ++i) {
-        GDALDriver* d = m->GetDriver(i);
-        if (!d->GetMetadataItem(GDAL_DCAP_VECTOR) || !d->GetMetadataItem(GDAL_DCAP_CREATE))
-            continue;
+    for (int i = 0; i < m->GetDriverCount(); ++i)
+        if (GDALDriver* d = m->GetDriver(i);
+            d->GetMetadataItem(GDAL_DCAP_VECTOR) && d->GetMetadataItem(GDAL_DCAP_CREATE))
+            drivers.push_back(d);
+    for (GDALDriver* d : drivers)
         if (!format.empty() && sameName(format, d->GetDescription())) return d->GetDescription();
-        // The driver whose own extension it is first: .kml is KML's (LIBKML lists it too).
-        const char* own = d->GetMetadataItem(GDAL_DMD_EXTENSION);
-        if (own && sameName(ext, own) &&
-            (!byExtension || !byExtension->GetMetadataItem(GDAL_DMD_EXTENSION) ||
-             !sameName(ext, byExtension->GetMetadataItem(GDAL_DMD_EXTENSION))))
-            byExtension = d;
-        else if (!byExtension && hasExtension(*d, ext)) byExtension = d;
-    }
-    return byExtension ? byExtension->GetDescription() : "";
+    for (GDALDriver* d : drivers)
+        if (const char* own = d->GetMetadataItem(GDAL_DMD_EXTENSION); own && sameName(ext, own))
+            return d->GetDescription();
+    for (GDALDriver* d : drivers)
+        if (hasExtension(*d, ext)) return d->GetDescription();
+    return "";
 }
 
 Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
@@ -253,6 +253,7 @@ Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
             break;
         }
     Source source(o);
+    CPLErrorReset();  // a source GDAL cannot open (a ring array) is no failure of the writing
     OGRFeatureDefn* from = source.layer ? source.layer->GetLayerDefn() : nullptr;
     const OGRSpatialReference* sourceCrs = source.layer ? source.layer->GetSpatialRef() : nullptr;
     OGRSpatialReference* crs = sourceCrs ? sourceCrs->Clone() : nullptr;

@@ -59,6 +59,10 @@ TEST(ViewerGis, LayerWhereAndFeatureChooseWhatOpens) {
     EXPECT_EQ(m.path(), gpkg + "#3");
     EXPECT_FALSE(m.openFeature(gpkg, 1));
     EXPECT_EQ(m.openDiagnostic().status, Status::Usage) << m.openDiagnostic().message;
+    EXPECT_NE(m.openDiagnostic().message.find("no polygonal feature 1 (the collection's FIDs run "
+                                              "2..3)"),
+              std::string::npos)
+        << m.openDiagnostic().message;
     EXPECT_EQ(m.polygon().vertices.size(), 3u) << "a failed open keeps what was loaded";
 
     // A filter GDAL refuses and a layer that is not there: failures naming the file, the

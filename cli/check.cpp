@@ -91,7 +91,7 @@ struct Finding {
 struct Row {
     std::string file;
     bool wholeFile = true;
-    size_t feature = 0;
+    int64_t feature = 0;  // the FID (FeatureRead::fid), what --feature and the viewer take
     std::string id, name;
     std::vector<std::pair<std::string, std::string>> attributes;  // the feature's properties
     size_t vertices = 0;
@@ -173,7 +173,7 @@ std::string polygonJson(const Polygon& p) {
 void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
     const std::string name = displayName(row.file);
     row.wholeFile = f.wholeFile;
-    row.feature = f.index;
+    row.feature = f.fid;
     row.id = f.id;
     row.name = f.name;
     row.attributes = f.attributes;

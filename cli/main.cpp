@@ -40,6 +40,7 @@
 #include "teach/transcript.h"
 #include "tools/generate.h"
 #include "tools/shrink.h"
+#include "triangulate_gis.h"
 #ifdef FLOOD_GDAL
 #include "io/gdal/gdal_io.h"
 #endif
@@ -196,39 +197,16 @@ Status checkWhileWriting(const Polygon& polygon, const std::vector<Triangle>& tr
 }
 
 int cmdTriangulate(const std::string& in, const std::string& out, std::string format,
-                   const std::string& up, bool check, bool exactCheck) {
+                   bool multipolygon, const std::string& up, bool check, bool exactCheck) {
+    std::string driver;
+    if (int c = cli::outputFormat(out, format, driver)) return c;
+    if (!driver.empty())
+        return cli::triangulateGis({in, out, format, driver, multipolygon, selection, maxInputBytes,
+                                    makeOptions(up), check, exactCheck});
     Polygon polygon;
     Status s = prepare(in, polygon, check);
     if (s != Status::Ok) return code(s);
     FloodResult r = triangulate(polygon, nullptr, makeOptions(up));
-    if (format.empty()) {
-        auto ends = [&](const char* ext) {
-            std::string e = ext;
-            return out.size() >= e.size() && out.compare(out.size() - e.size(), e.size(), e) == 0;
-        };
-        format = ends(".svg")    ? "svg"
-                 : ends(".obj")  ? "obj"
-                 : ends(".gpkg") ? "gpkg"
-                 : ends(".fgb")  ? "fgb"
-                                 : "json";
-    }
-    if (format == "gpkg" || format == "fgb") {
-        s = judge(polygon, r.triangles, r.diagnostic, check, exactCheck);
-        if (s != Status::Ok) return code(s);
-#ifdef FLOOD_GDAL
-        if (out == "-") {
-            std::cerr << "error: --format " << format << " needs a file: give -o FILE\n";
-            return code(Status::Usage);
-        }
-        Diagnostic w = gdal::writeTriangles(out, format, polygon, r.triangles);
-        if (!w.ok()) std::cerr << "error: " << w.message << "\n";
-        return code(w.status);
-#else
-        std::cerr << "error: --format " << format << " needs GDAL: this flood was built without "
-                  << "it (install libgdal-dev, reconfigure with -DFLOOD_GDAL=ON)\n";
-        return code(Status::Usage);
-#endif
-    }
     auto write = [&](Output& o) {
         if (format == "svg") writeSvg(o.stream(), polygon, r.triangles);
         else if (format == "obj") writeObj(o.stream(), polygon, r.triangles);
@@ -591,11 +569,15 @@ int run(int argc, char** argv) {
     auto* tri = app.add_subcommand("triangulate", "Triangulate a polygon and write the result");
     flooding(tri, "Input polygon (GeoJSON, ring array or WKT; - for stdin)", true);
     tri->add_option("-o,--output", out, "Output file (- for stdout, the default)");
-    tri->add_option(
-           "--format", format,
-           "json, svg, obj, or with GDAL gpkg (GeoPackage) or fgb (FlatGeobuf): a layer of "
-           "triangle polygons (default: from the output extension, else json)")
-        ->check(CLI::IsMember({"json", "svg", "obj", "gpkg", "fgb"}));
+    tri->add_option("--format", format,
+                    "json, svg, obj, or with GDAL any vector driver or its extension (gpkg, fgb, "
+                    "GeoJSON, shp, KML, CSV, ...): a layer of the triangles of each feature "
+                    "(default: from the output extension; none or stdout: json)");
+    std::string perFeature = "triangles";
+    tri->add_option("--per-feature", perFeature,
+                    "GIS outputs: one polygon per triangle (triangles, the default) or one "
+                    "MultiPolygon per feature (multipolygon)")
+        ->check(CLI::IsMember({"triangles", "multipolygon"}));
 
     auto* trace = app.add_subcommand("trace", "Flood and write the event trace (JSON Lines)");
     flooding(trace, polygonIn, true);
@@ -744,7 +726,9 @@ int run(int argc, char** argv) {
         return code(Status::Usage);
     }
     try {
-        if (tri->parsed()) return cmdTriangulate(in, out, format, up, !noValidate, !noExactCheck);
+        if (tri->parsed())
+            return cmdTriangulate(in, out, format, perFeature == "multipolygon", up, !noValidate,
+                                  !noExactCheck);
         if (trace->parsed()) {
             bool binary = traceFormat == "bin" || (traceFormat.empty() && out.size() > 4 &&
                                                    out.compare(out.size() - 4, 4, ".bin") == 0);

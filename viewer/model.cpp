@@ -1211,7 +1211,7 @@ bool Model::openFeature(const std::string& path, size_t index) {
     DatasetRead d;
     try {
 #ifdef FLOOD_GDAL
-        // A GIS layer's features, numbered by position among those --where keeps.
+        // A GIS layer's features, by FID (--where keeps some of them: the others are not there).
         if (gdal::handles(path, {gisLayer, -1, gisWhere}))
             d = gdal::readFeatures(path, {gisLayer, -1, gisWhere});
         else
@@ -1234,17 +1234,20 @@ bool Model::openFeature(const std::string& path, size_t index) {
                                              std::to_string(index)};
         return false;
     }
-    // Indices are positions in "features"; a non-polygonal feature has none of its own here.
+    // By FID, as `flood check` and `flood --feature` name them (FeatureRead::fid); a
+    // non-polygonal feature has none here.
     auto it = std::find_if(d.features.begin(), d.features.end(),
-                           [&](const FeatureRead& f) { return f.index == index; });
+                           [&](const FeatureRead& f) { return f.fid == int64_t(index); });
     if (it == d.features.end()) {
-        size_t last = 0;
-        for (const auto& f : d.features) last = std::max(last, f.index);
+        int64_t first = INT64_MAX, last = INT64_MIN;
+        for (const auto& f : d.features)
+            first = std::min(first, f.fid), last = std::max(last, f.fid);
         openDiag_ = {Status::Usage,
                      path + ": no polygonal feature " + std::to_string(index) +
                          " (the collection's " +
-                         (d.features.empty() ? std::string("features are not polygons")
-                                             : "features run 0.." + std::to_string(last)) +
+                         (d.features.empty()
+                              ? std::string("features are not polygons")
+                              : "FIDs run " + std::to_string(first) + ".." + std::to_string(last)) +
                          ")"};
         return false;
     }
@@ -1353,7 +1356,7 @@ Diagnostic saveGeoJson(const Polygon& polygon, const std::string& path) {
 
 FeatureVerdict judgeFeature(const FeatureRead& f) {
     FeatureVerdict v;
-    v.index = f.index;
+    v.index = size_t(f.fid);
     v.id = f.id;
     v.name = f.name;
     v.vertices = f.read.polygon.vertices.size();

@@ -260,7 +260,7 @@ Diagnostic saveGeoJson(const Polygon& polygon, const std::string& path);
 // The features of a FeatureCollection with their verdicts (read, validate, flood, exact
 // check: the first failure), as `flood check` judges them.
 struct FeatureVerdict {
-    size_t index = 0;  // position in the collection's "features" array
+    size_t index = 0;  // the feature's FID (FeatureRead::fid): what openFeature() takes
     std::string id, name;
     size_t vertices = 0;
     VerdictKind kind =
@@ -341,11 +341,12 @@ public:
     std::string gisLayer, gisWhere;
     void openPolygon(Polygon polygon, const std::string& name, Diagnostic input,
                      std::vector<std::string> warnings = {});
-    // Feature `index` (its position in "features") of a FeatureCollection, named
+    // The feature of FID `index` (FeatureRead::fid: a GeoJSON's position in "features", or
+    // its integer "id"; a GIS layer's FID) of a FeatureCollection or GIS layer, named
     // "FILE#index". Not a collection, or no such feature: false, the loaded polygon kept,
     // openDiagnostic() says why (Usage for a bad index, else the read's failure).
     bool openFeature(const std::string& path, size_t index);
-    size_t feature() const { return feature_; }  // the open feature's index, kNoFeature if none
+    size_t feature() const { return feature_; }  // the open feature's FID, kNoFeature if none
     static constexpr size_t kNoFeature = ~size_t(0);
 
     // Shrink: opens a shrunk polygon as "<name> (shrunk)", remembering what it came from so

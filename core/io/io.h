@@ -50,8 +50,12 @@ ReadResult parseWkb(std::string_view bytes, const std::string& name);
 // One polygon of a dataset (`flood check`): a Feature of a FeatureCollection, or a whole file.
 struct FeatureRead {
     bool wholeFile = true;  // not a FeatureCollection's feature (any other document, or unreadable)
-    size_t index = 0;       // position in the collection's "features" array
-    std::string id, name;   // the Feature's "id" and "properties.name" (cut to 60 bytes), or ""
+    size_t index = 0;       // position in the collection's "features" array (or the layer)
+    // The feature's FID, as GDAL numbers it (core/io/gdal/): a GeoJSON Feature's integer "id"
+    // when every feature has a distinct one, else its position; 0 for a whole file. What
+    // --feature, `flood check`'s FEATURE column and messages ("feature N") call it.
+    int64_t fid = 0;
+    std::string id, name;  // the Feature's "id" and "properties.name" (cut to 60 bytes), or ""
     // Every property (a GIS feature's fields) as text, in file order, each cut to 60 bytes:
     // what `flood check --json` reports beside the verdict. Null values are left out.
     std::vector<std::pair<std::string, std::string>> attributes;

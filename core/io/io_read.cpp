@@ -372,11 +372,13 @@ std::string propertyText(const json& v) {
     return echo(v.is_string() ? v.get<std::string>() : v.dump());
 }
 
-FeatureRead readFeature(const std::string& name, const json& item, size_t i, bool keepSource) {
+FeatureRead readFeature(const std::string& name, const json& item, size_t i, int64_t fid,
+                        bool keepSource) {
     FeatureRead f;
     f.wholeFile = false;
     f.index = i;
-    const std::string ctx = "feature " + std::to_string(i);
+    f.fid = fid;
+    const std::string ctx = "feature " + std::to_string(fid);
     try {
         if (item.is_object() && item.contains("id") && !item["id"].is_null())
             f.id = propertyText(item["id"]);
@@ -411,6 +413,25 @@ bool polygonal(const json& item) {
     return t == "Polygon" || t == "MultiPolygon" || t == "GeometryCollection" || t == "Feature";
 }
 
+// The FID GDAL's GeoJSON driver gives each feature: its "id" when every feature has an integer
+// one and no two the same, else its position. So a feature is the same number whichever
+// reader reads the file (--where and --feature read it through GDAL).
+std::vector<int64_t> gdalFids(const json& items) {
+    std::vector<int64_t> ids;
+    for (const json& item : items) {
+        if (!item.is_object() || !item.contains("id") || !item["id"].is_number_integer()) break;
+        ids.push_back(item["id"].get<int64_t>());
+    }
+    std::vector<int64_t> sorted = ids;
+    std::sort(sorted.begin(), sorted.end());
+    if (ids.size() == items.size() &&
+        std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end())
+        return ids;
+    ids.resize(items.size());
+    for (size_t i = 0; i < ids.size(); ++i) ids[i] = int64_t(i);
+    return ids;
+}
+
 }  // namespace
 
 DatasetRead parseFeatures(std::string_view text, const std::string& name, bool keepSource) {
@@ -435,17 +456,18 @@ DatasetRead parseFeatures(std::string_view text, const std::string& name, bool k
         !doc.contains("features") || !doc["features"].is_array() || doc["features"].empty())
         return whole();
     const json& items = doc["features"];
+    const std::vector<int64_t> fid = gdalFids(items);
     for (size_t i = 0; i < items.size(); ++i) {
         if (!polygonal(items[i])) {
             const json& g = items[i]["geometry"];
             std::string type = g.is_object() && g.contains("type") && g["type"].is_string()
                                    ? echo(g["type"].get<std::string>())
                                    : "null";
-            out.skipped.push_back(name + ": feature " + std::to_string(i) + ": not polygonal (" +
-                                  type + "), skipped");
+            out.skipped.push_back(name + ": feature " + std::to_string(fid[i]) +
+                                  ": not polygonal (" + type + "), skipped");
             continue;
         }
-        out.features.push_back(readFeature(name, items[i], i, keepSource));
+        out.features.push_back(readFeature(name, items[i], i, fid[i], keepSource));
     }
     if (out.features.empty()) return whole();  // "no polygon found"
     return out;

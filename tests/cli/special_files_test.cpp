@@ -52,7 +52,8 @@ struct Writer {
 std::vector<Writer> writers() {
     const std::string hole = src("polygons/hole.json");
     std::vector<Writer> w = {
-        {"triangulate json", "triangulate " + hole},
+        // .out is no format's extension (exit 2): the format is named.
+        {"triangulate json", "triangulate --format json " + hole},
         {"triangulate svg", "triangulate --format svg " + hole},
         {"triangulate obj", "triangulate --format obj " + hole},
         {"trace", "trace " + hole},

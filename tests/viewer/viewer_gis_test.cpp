@@ -50,13 +50,19 @@ TEST(ViewerGis, LayerWhereAndFeatureChooseWhatOpens) {
     EXPECT_EQ(m.polygon().rings.size(), 2u);
     EXPECT_EQ(m.exitCode(), 0) << m.verdict();
 
-    // --feature N counts the features --where keeps: the second of b, c is c.
+    // --feature N is the FID, as in `flood check` and `flood --feature`, whatever --where
+    // keeps: c is FID 3 (it was "the second of b, c", 1), and a, FID 1, is filtered out.
     m.gisWhere = "name <> 'a'";
-    ASSERT_TRUE(m.openFeature(gpkg, 1)) << m.openDiagnostic().message;
+    ASSERT_TRUE(m.openFeature(gpkg, 3)) << m.openDiagnostic().message;
     EXPECT_EQ(m.polygon().vertices.size(), 3u);
-    EXPECT_EQ(m.feature(), 1u);
-    EXPECT_FALSE(m.openFeature(gpkg, 2));
+    EXPECT_EQ(m.feature(), 3u);
+    EXPECT_EQ(m.path(), gpkg + "#3");
+    EXPECT_FALSE(m.openFeature(gpkg, 1));
     EXPECT_EQ(m.openDiagnostic().status, Status::Usage) << m.openDiagnostic().message;
+    EXPECT_NE(m.openDiagnostic().message.find("no polygonal feature 1 (the collection's FIDs run "
+                                              "2..3)"),
+              std::string::npos)
+        << m.openDiagnostic().message;
     EXPECT_EQ(m.polygon().vertices.size(), 3u) << "a failed open keeps what was loaded";
 
     // A filter GDAL refuses and a layer that is not there: failures naming the file, the

@@ -35,11 +35,40 @@ DatasetRead readFeatures(const std::string& path, const Selection& s);
 // FeatureCollection is read by readPolygonFile.
 ReadResult readPolygon(const std::string& path, const Selection& s);
 
-// Writes `triangles` as a layer "triangles" of triangle polygons (field "triangle": its
-// index) to `path` in `format`: "gpkg" (GeoPackage) or "fgb" (FlatGeobuf). The file is made
-// beside `path` and renamed over it once complete. Returns WriteFailed with a message naming
-// the file on failure.
-Diagnostic writeTriangles(const std::string& path, const std::string& format, const Polygon& p,
-                          const std::vector<Triangle>& triangles);
+// "" when Flood's GDAL module can be loaded, else why not: one line naming `path` (the file
+// being read or written) and every place the module was looked for.
+std::string unavailable(const std::string& path);
+
+// The GDAL vector driver `flood triangulate` writes with: the one named by `format` (GDAL's
+// short name, any case, e.g. "GPKG", "GeoJSON", "ESRI Shapefile", or an extension: "gpkg",
+// "fgb", "shp", "csv"), else the one whose extension `path` has (".geojson", ".kml", ...).
+// "" when no driver that creates vector datasets matches.
+std::string outputDriver(const std::string& format, const std::string& path);
+
+// One source feature's triangles, as `flood triangulate` writes them.
+struct TriangulatedFeature {
+    int64_t fid = 0;  // the source feature's FID (FeatureRead::fid)
+    const Polygon* polygon = nullptr;
+    std::vector<Triangle> triangles;
+};
+
+struct LayerOutput {
+    std::string driver;  // outputDriver()
+    std::string format;  // as the user named it (--format, or OUT's extension), for messages
+    // The dataset read: its layer's CRS and fields are copied, and each feature's values from
+    // the source feature of the same FID ("" or a file GDAL cannot open: FID only, no CRS).
+    std::string source;
+    Selection selection;        // which layer of it, which filter
+    bool multipolygon = false;  // one MultiPolygon per feature, else one Polygon per triangle
+};
+
+// Writes the features' triangles as a layer "triangles" to `path` with `o.driver`: the source
+// fields, then "src_fid" (the source FID) and, per triangle, "triangle" (its number in its
+// feature); "flood_src_fid", "flood_triangle" when the source has fields so named. The files
+// are made beside `path` and renamed over it once complete. Returns WriteFailed with a message
+// naming the file on failure; `warnings` gets what was written but not as asked.
+Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
+                      const std::vector<TriangulatedFeature>& features,
+                      std::vector<std::string>& warnings);
 
 }  // namespace flood::gdal

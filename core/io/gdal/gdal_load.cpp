@@ -57,12 +57,13 @@ const Loaded& module() {
     return loaded;
 }
 
+}  // namespace
+
 std::string unavailable(const std::string& path) {
+    if (module().table) return "";
     return path + ": GIS datasets need Flood's GDAL module, which could not be loaded (" +
            module().why + ")";
 }
-
-}  // namespace
 
 DatasetRead readFeatures(const std::string& path, const Selection& s) {
     if (const ModuleTable* t = module().table) return t->readFeatures(path, s);
@@ -79,9 +80,15 @@ ReadResult readPolygon(const std::string& path, const Selection& s) {
     return rr;
 }
 
-Diagnostic writeTriangles(const std::string& path, const std::string& format, const Polygon& p,
-                          const std::vector<Triangle>& triangles) {
-    if (const ModuleTable* t = module().table) return t->writeTriangles(path, format, p, triangles);
+std::string outputDriver(const std::string& format, const std::string& path) {
+    if (const ModuleTable* t = module().table) return t->outputDriver(format, path);
+    return "";
+}
+
+Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
+                      const std::vector<TriangulatedFeature>& features,
+                      std::vector<std::string>& warnings) {
+    if (const ModuleTable* t = module().table) return t->writeLayer(path, o, features, warnings);
     return {Status::WriteFailed, unavailable(path)};
 }
 

@@ -13,18 +13,21 @@ namespace flood::gdal {
 namespace direct {
 DatasetRead readFeatures(const std::string& path, const Selection& s);
 ReadResult readPolygon(const std::string& path, const Selection& s);
-Diagnostic writeTriangles(const std::string& path, const std::string& format, const Polygon& p,
-                          const std::vector<Triangle>& triangles);
+std::string outputDriver(const std::string& format, const std::string& path);
+Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
+                      const std::vector<TriangulatedFeature>& features,
+                      std::vector<std::string>& warnings);
 }  // namespace direct
 
 struct ModuleTable {
     int version;  // kModuleVersion: a module from another build is refused
     DatasetRead (*readFeatures)(const std::string&, const Selection&);
     ReadResult (*readPolygon)(const std::string&, const Selection&);
-    Diagnostic (*writeTriangles)(const std::string&, const std::string&, const Polygon&,
-                                 const std::vector<Triangle>&);
+    std::string (*outputDriver)(const std::string&, const std::string&);
+    Diagnostic (*writeLayer)(const std::string&, const LayerOutput&,
+                             const std::vector<TriangulatedFeature>&, std::vector<std::string>&);
 };
-constexpr int kModuleVersion = 1;
+constexpr int kModuleVersion = 2;
 
 }  // namespace flood::gdal
 

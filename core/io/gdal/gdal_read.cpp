@@ -226,6 +226,7 @@ struct Reader {
         r.wholeFile = false;
         r.index = index;
         r.id = fid;
+        r.fid = fid.empty() ? -1 : std::stoll(fid);
         r.read.diagnostic = {Status::Malformed, name + ": " + message};
         out.features.push_back(std::move(r));
     }
@@ -244,6 +245,7 @@ struct Reader {
         r.wholeFile = false;
         r.index = index;
         r.id = fid;
+        r.fid = f.GetFID();
         r.name = fieldText(f, "name");
         for (int i = 0; i < f.GetFieldCount(); ++i)
             if (f.IsFieldSetAndNotNull(i))

@@ -148,7 +148,7 @@ TEST_F(Gdal, CheckReportsVerdictsWithFidsAndNames) {
         const std::string& name = valid ? kValid[k] : kInvalid[k - kValid.size()];
         EXPECT_EQ(rows[k]["id"], std::to_string(k + 1)) << rows[k];  // GeoPackage FIDs
         EXPECT_EQ(rows[k]["name"], name);
-        EXPECT_EQ(rows[k]["feature"], k);
+        EXPECT_EQ(rows[k]["feature"], k + 1);  // the FID, what --feature takes
         EXPECT_EQ(rows[k]["verdict"], valid ? "ok" : "invalid") << rows[k];
         // Every field of the feature is reported with it.
         EXPECT_EQ(rows[k]["attributes"]["name"], name) << rows[k];
@@ -156,11 +156,20 @@ TEST_F(Gdal, CheckReportsVerdictsWithFidsAndNames) {
     }
     EXPECT_EQ(rows[kValid.size()]["reason"],
               "hole (ring 1) lies outside its outer ring (ring 0) (global vertex 4)");
-    // The table's ID/NAME column carries the FID.
+    // The FEATURE column is the FID with --where too (it was renumbered from 0), the one
+    // --feature opens.
     r = runCli("check " + path("source.gpkg") + " --where \"name = 'invalid/hole-outside'\"");
     EXPECT_EQ(r.code, 4);
-    EXPECT_NE(r.out.find("source.gpkg  0        6        8         invalid"), std::string::npos)
+    EXPECT_NE(r.out.find("source.gpkg  6        6        8         invalid"), std::string::npos)
         << r.out;
+    r = runCli("check " + path("source.gpkg") + " --feature 6");
+    EXPECT_NE(r.out.find("source.gpkg  6        6        8         invalid"), std::string::npos)
+        << r.out;
+    // A GeoJSON read by Flood's reader and through GDAL (--where) numbers its features alike.
+    r = runCli("check " + path("source.geojson") + " --where \"name = 'invalid/hole-outside'\"");
+    EXPECT_NE(r.out.find("source.geojson  5  "), std::string::npos) << r.out;
+    r = runCli("check " + path("source.geojson"));
+    EXPECT_NE(r.out.find("source.geojson  5  "), std::string::npos) << r.out;
 }
 
 // A curve is linearised by OGR; a point feature is skipped with a warning, as GeoJSON's are.
@@ -411,6 +420,47 @@ TEST_F(Gdal, CutAndFlippedFixturesNeverLoseAFeatureSilently) {
             gdal::readFeatures(file, {});  // a crash fails the test; a verdict may be anything
         }
     }
+}
+
+}  // namespace
+}  // namespace flood::testing
+
+namespace flood::testing {
+namespace {
+
+// Flood's GeoJSON reader numbers features as GDAL's GeoJSON driver does (FeatureRead::fid), so
+// `flood check x.geojson` and `flood check x.geojson --where ...` (read through GDAL), --feature
+// and the viewer name a feature alike: by its integer "id" when every feature has a distinct
+// one, else by its position, non-polygonal features counted.
+TEST(GeoJsonFids, FloodsReaderNumbersFeaturesAsGdalDoes) {
+    const std::string tri =
+        R"("geometry":{"type":"Polygon","coordinates":[[[0,0],[1,0],[0,1],[0,0]]]})";
+    const std::string point = R"("geometry":{"type":"Point","coordinates":[0,0]})";
+    const std::vector<std::vector<std::string>> collections = {
+        {R"("id":5,)" + tri, R"("id":2,)" + tri},           // ids: the FIDs
+        {R"("id":"x",)" + tri, tri},                        // a string id: positions
+        {point, R"("id":"3",)" + tri, R"("id":7,)" + tri},  // positions, the point too
+        {R"("id":5,)" + tri, tri, R"("id":-3,)" + tri},     // one missing: positions
+    };
+    const fs::path d = scratch("geojson-fids");
+    for (size_t k = 0; k < collections.size(); ++k) {
+        SCOPED_TRACE(k);
+        std::string text = R"({"type":"FeatureCollection","features":[)";
+        for (size_t i = 0; i < collections[k].size(); ++i)
+            text += (i ? ",{" : "{") + std::string(R"("type":"Feature","properties":{},)") +
+                    collections[k][i] + "}";
+        const std::string file = (d / ("c" + std::to_string(k) + ".geojson")).string();
+        std::ofstream(file) << text << "]}";
+        std::vector<int64_t> ours, gdals;
+        for (const FeatureRead& f : readFeaturesFile(file, kDefaultMaxInputBytes, false).features)
+            ours.push_back(f.fid);
+        // A filter that keeps every feature sends the file to GDAL.
+        for (const FeatureRead& f : gdal::readFeatures(file, {"", -1, "1 = 1"}).features)
+            gdals.push_back(f.fid);
+        EXPECT_EQ(ours, gdals);
+        EXPECT_FALSE(ours.empty());
+    }
+    fs::remove_all(d);
 }
 
 }  // namespace

@@ -7,6 +7,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "canvas_geometry.h"
@@ -161,6 +162,9 @@ struct Ui {
     // box, the Edit box, the Shrink window and the locator inset; empty when not shown.
     Rect findBox, editBox, shrinkBox, inset;
     std::vector<Rect> labels;  // the error view's vertex labels this frame
+    // The step's labels this frame (scene_labels.h), each named for what it labels:
+    // "named-vertex-35", "finger-vertex-36", "ghost-vertex-14", "named-triangle-18", ...
+    std::vector<std::pair<std::string, Rect>> stepLabels;
 };
 
 void drawCanvas(Ui& ui);  // panel_canvas.cpp: geometry to the renderer, labels, input

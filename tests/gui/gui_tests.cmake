@@ -68,3 +68,11 @@ add_dependencies(narration_screenshot_test flood-viewer)
 add_test(NAME viewer/narration_screenshot_test COMMAND narration_screenshot_test)
 set_tests_properties(viewer/narration_screenshot_test PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
   ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+
+# ---- the State machine panel: no state's name cut (window-free ImGui, no display needed) -----
+add_executable(state_machine_test ${GUI_TESTS}/state_machine_test.cpp panel_state_machine.cpp
+               panel_common.cpp panel_edit.cpp renderer.cpp platform_glfw.cpp ${SHADER_HEADER})
+target_include_directories(state_machine_test PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
+target_link_libraries(state_machine_test PRIVATE floodviewmodel floodglad glfw PkgConfig::IMGUI
+                      GTest::gtest_main)
+add_test(NAME viewer/state_machine_test COMMAND state_machine_test)

@@ -172,33 +172,40 @@ void triangleLabels(Ui& ui, ImDrawList* dl, const std::vector<ShownLabel>& shown
     }
 }
 
-// The caption's large font, rebuilt at the UI scale: what a class reads.
+// The caption's large font (the presenter's), rebuilt at the UI scale: what a class reads.
 ImFont* largeFont(const Ui& ui) { return ui.captionFont ? ui.captionFont : ImGui::GetFont(); }
 
 // Vertex numbers beside their vertex, through the same culling: a vertex's room is the
 // distance to its nearest neighbour, which must be longer on screen than a six-digit label.
-// A placed label keeps its place: a number that would cover one is left out.
+// In presenter view they are in the large font (and need as much more room). A placed label
+// keeps its place: a number that would cover one is left out.
 void vertexLabels(Ui& ui, ImDrawList* dl, const std::vector<ShownLabel>& shown) {
     const Model& m = ui.model;
     const Camera& cam = m.camera();
     const float s = ui.scale;
-    const double room = 44 * s;
+    ImFont* font = ui.presenter ? largeFont(ui) : ImGui::GetFont();
+    const float k = font->FontSize / ImGui::GetFont()->FontSize;
+    const double room = 44 * s * k;
     char text[16];
     for (uint32_t i : visibleLabels(ui.canvas.vertexGrid, cam,
                                     uint32_t(m.polygon().vertices.size()), room * room)) {
         Vec2 c = cam.toScreen(m.polygon().vertices[i]);
         std::snprintf(text, sizeof text, "%u", i);
-        const ImVec2 size = ImGui::CalcTextSize(text);
-        const Rect box{c.x + 5 * s, c.y - 16 * s, size.x, size.y};
+        const ImVec2 size = font->CalcTextSizeA(font->FontSize, FLT_MAX, 0, text);
+        const Rect box{c.x + 5 * s, c.y - 16 * s * k, size.x, size.y};
         if (givesWay(shown, box, i, kNone)) continue;
-        dl->AddText(ImVec2(float(box.x), float(box.y)), toImU32(palette::kVertexNumber), text);
+        dl->AddText(font, font->FontSize, ImVec2(float(box.x), float(box.y)),
+                    toImU32(palette::kVertexNumber), text);
     }
 }
 
-// The font a step label is drawn in: the sentence's names in the large font, readable from
-// the back of a room.
+// The font a step label is drawn in: the sentence's names in the large font, and in
+// presenter view the fingers and their ghosts too, readable from the back of a room.
 ImFont* labelFont(const Ui& ui, const Scene::Label& l) {
-    return l.kind == Scene::LabelKind::Named ? largeFont(ui) : ImGui::GetFont();
+    using Kind = Scene::LabelKind;
+    const bool large = l.kind == Kind::Named ||
+                       (ui.presenter && (l.kind == Kind::Finger || l.kind == Kind::Ghost));
+    return large ? largeFont(ui) : ImGui::GetFont();
 }
 
 constexpr float kLabelPad = 2;  // around a label's text, before UI scale

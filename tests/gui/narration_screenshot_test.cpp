@@ -2,8 +2,9 @@
 // hangs ... below NextRight (vertex 14): a bridge joins it to the water at vertex 51 ...,
 // cutting triangle 18", and the canvas labels 35, 14, 51 and triangle 18, in the large font,
 // inside the canvas, none over another label; at the default window size and at a
-// projector's. `--print-layout` says where each step label went; the picture must show ink
-// there. Exit 77 (skipped) without a display, except in CI.
+// projector's, and (§4) at 250% the names and the fingers' letters grow with the caption's
+// font. `--print-layout` says where each step label went; the picture must show ink there.
+// Exit 77 (skipped) without a display, except in CI.
 #include <stb_image.h>  // implementation lives in Debian's libstb
 
 #include <algorithm>
@@ -39,15 +40,17 @@ bool overlaps(const Rect& a, const Rect& b) {
     return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
 }
 
-// One shot at W x H: the step labels' rectangles from --print-layout, the picture loaded.
-int shootStep23(int W, int H) {
+// One shot at W x H after `keys` (--press ...): the step labels' rectangles from
+// --print-layout, the picture loaded. `font`: the large font's pixels at the shot's scale.
+int shootStep23(int W, int H, const std::string& keys = "", double font = 20) {
     const std::string input = std::string(FLOOD_SOURCE_DIR) + "/polygons/paper-figure-7.json";
     const std::string png = std::string(FLOOD_WORK_DIR) + "/narration-step23-" + std::to_string(W) +
-                            "x" + std::to_string(H) + ".png";
+                            "x" + std::to_string(H) + (keys.empty() ? "" : "-zoomed") + ".png";
     std::remove(png.c_str());
     const std::string cmd = std::string("'") + FLOOD_VIEWER + "' '" + input +
-                            "' --step 23 --presenter --theme dark --print-layout --screenshot '" +
-                            png + "' --size " + std::to_string(W) + "x" + std::to_string(H);
+                            "' --step 23 --presenter --theme dark " + keys +
+                            " --print-layout --screenshot '" + png + "' --size " +
+                            std::to_string(W) + "x" + std::to_string(H);
     std::printf("%s\n", cmd.c_str());
     std::fflush(stdout);
     FILE* pipe = popen(cmd.c_str(), "r");
@@ -92,11 +95,17 @@ int shootStep23(int W, int H) {
         const Rect& r = layout[name];
         if (!within(r, canvas)) failures += failWith(std::string(name) + " leaves the canvas");
         // The caption's font (20 px at scale 1) and its padding: readable from the back.
-        if (r.h < 22) failures += failWith(std::string(name) + " is in a small font");
+        if (r.h < font) failures += failWith(std::string(name) + " is in a small font");
         const int n = ink(r);
         if (n < 40) failures += failWith(std::string(name) + " shows no text");
         std::printf("%s at %.0f %.0f %.0f x %.0f: %d ink pixels\n", name, r.x, r.y, r.w, r.h, n);
     }
+    // The fingers' letters in presenter view: the large font too (issue 27 §4), so they grow
+    // with Ctrl + as the caption does.
+    for (const auto& [name, r] : layout)
+        if (name.rfind("finger-", 0) == 0 && r.h < font)
+            failures +=
+                failWith(name + " is in a small font (" + std::to_string(int(r.h)) + " px tall)");
     // Every step label (names, fingers, ghosts, gorges) apart from every other.
     std::vector<std::pair<std::string, Rect>> labels;
     for (const auto& [name, r] : layout)
@@ -115,8 +124,14 @@ int shootStep23(int W, int H) {
 
 int main() {
     if (int skip = displayOrSkip()) return skip;
-    int failures = shootStep23(1280, 800) + shootStep23(1920, 1080);
+    // Ctrl + six times: 250%, the caption's font 50 px.
+    std::string zoom;
+    for (int i = 0; i < 6; ++i) zoom += " --press ctrl+plus";
+    int failures =
+        shootStep23(1280, 800) + shootStep23(1920, 1080) + shootStep23(1920, 1080, zoom, 50);
     if (failures) return 1;
-    std::printf("ok: step 23's names 35, 14, 51 and triangle 18 labelled large and apart\n");
+    std::printf(
+        "ok: step 23's names 35, 14, 51 and triangle 18 labelled large and apart, the fingers'"
+        " letters large, at 100%% and 250%%\n");
     return 0;
 }

@@ -5,6 +5,7 @@
 #include <ostream>
 
 #include "io/svg.h"
+#include "scene_labels.h"
 #include "teach/narrate.h"
 
 namespace flood::view {
@@ -314,11 +315,28 @@ void writeSceneSvg(std::ostream& out, const Scene& sc, const Camera& cam, int wi
         else s.fill = svgColor(m.color);
         doc.circle(s, m.p, hundredths(m.radius));
     }
-    for (const auto& l : sc.labels) {
+    for (const auto& l : sc.labels) {  // triangle numbers, at their centroid
+        if (l.kind != Scene::LabelKind::Number) continue;
         if (l.worldArea > 0 && l.worldArea * cam.scale() * cam.scale() < l.minArea) continue;
         Point c = doc.place(l.p);
         doc.text({hundredths(c.x + l.dx), hundredths(c.y + l.dy + 10)}, 11,
                  {{l.text, svgColor(l.color)}});
+    }
+    // The step's labels placed apart as on the canvas (scene_labels.h), the sentence's names
+    // larger; the text's size estimated (a sans-serif letter is about 0.6 of its size wide).
+    auto px = [](const Scene::Label& l) { return l.kind == Scene::LabelKind::Named ? 16.0 : 11.0; };
+    auto size = [&](const Scene::Label& l) {
+        return Vec2{0.6 * px(l) * double(l.text.size()) + 4, px(l) + 4};
+    };
+    for (const ShownLabel& sl : placeSceneLabels(sc.labels, cam, area, {}, size, 1)) {
+        const Scene::Label& l = *sl.label;
+        if (sl.at.leader) {
+            svg::Style s;
+            s.stroke = svgColor(l.color), s.strokeWidth = 1;
+            doc.line(s, cam.toWorld(sl.at.from), cam.toWorld(sl.at.to));
+        }
+        doc.text({hundredths(sl.at.box.x + 2), hundredths(sl.at.box.y + 2 + 0.8 * px(l))}, px(l),
+                 {{l.text, svgColor(l.color), l.kind == Scene::LabelKind::Named}});
     }
     doc.endGroup();
     if (caption)

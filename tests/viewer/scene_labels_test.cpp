@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <sstream>
 
 #include "model.h"
 #include "presenter.h"
@@ -155,6 +156,25 @@ TEST(SceneLabels, Figure7Step23ShowsNextRightBeforeAsAGhost) {
                                                "triangle 18"}));
     for (const Scene::Label& l : with.labels)
         EXPECT_FALSE(l.kind == Scene::LabelKind::Ghost && l.vertex == 14) << l.text;
+    m.cancelInvariants();
+}
+
+// The SVG export places the step's labels as the canvas does, the sentence's names larger.
+TEST(SceneLabels, TheSvgNamesWhatTheSentenceNames) {
+    Model m;
+    m.open(polygonsDir() + "/paper-figure-7.json");
+    m.seek(23);
+    m.fitCamera({0, 0, 1280, 800});
+    std::ostringstream out;
+    writeSceneSvg(out, buildScene(m), m.camera(), 1280, 800);
+    const std::string svg = out.str();
+    for (const char* name :
+         {">35 sag<", ">14 NextRight before<", ">51 bridge end<", ">triangle 18<"}) {
+        const size_t at = svg.find(name);
+        ASSERT_NE(at, std::string::npos) << name;
+        const size_t text = svg.rfind("<text", at);
+        EXPECT_NE(svg.substr(text, at - text).find("font-size=\"16\""), std::string::npos) << name;
+    }
     m.cancelInvariants();
 }
 

@@ -23,8 +23,8 @@ mkdir -p docs/img
 step_after() {
   { "$FLOOD" transcript --narrate --no-validate "polygons/$1" 2>/dev/null || true; } |
     awk -v a="$2" -v n="$3" '
-      { split($2, s, ":"); last = s[1] + 1 }
-      $3 == a":" && ++k == n { print $2 + 1; found = 1; exit }
+      { split($2, s, ":"); last = s[1] }
+      $3 == a":" && ++k == n { print s[1]; found = 1; exit }
       END { if (!found && n == 0) print last }' | tr -d ':'
 }
 
@@ -67,6 +67,10 @@ viewer polygons/tutorial/crossing-face.json --show-error --screenshot docs/img/w
 # Presenter mode (Tab) in the light theme, as a slide would show it.
 viewer polygons/paper-figure-7.json --presenter --theme light --step "$(step_after paper-figure-7.json Bridge 2)" \
   --screenshot docs/img/presenter-light.png --size 900x600
+# "Before and after": Fig. 7 step 23 (issue 27's example) in presenter view, at a projector's
+# size: the names of the step's sentence labelled, NextRight's ghost at vertex 14.
+viewer polygons/paper-figure-7.json --presenter --theme light --step 23 \
+  --screenshot docs/img/teach-before-after.png --size 1280x800
 # "Teaching with Flood": a slide (the canvas alone, light theme, with its caption), the dial
 # turned to +x beside the +y run, and the whole flood of sag.json as a small animated GIF.
 viewer polygons/sag.json --theme light --step "$(step_after sag.json Bridge 1)" --canvas-only --caption \

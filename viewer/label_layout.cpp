@@ -65,11 +65,12 @@ std::vector<PlacedLabel> placeLabels(const std::vector<LabelRequest>& labels, co
         // Beside the point first: right and above, right and below, left and above, left and
         // below (the usual places of a map label).
         const double d = 7;
-        bool done = false;
+        bool done = l.preferred && consider({a.x + l.offset.x, a.y + l.offset.y, l.w, l.h});
         for (Rect box :
              {Rect{a.x + d, a.y - d - l.h, l.w, l.h}, Rect{a.x + d, a.y + d, l.w, l.h},
               Rect{a.x - d - l.w, a.y - d - l.h, l.w, l.h}, Rect{a.x - d - l.w, a.y + d, l.w, l.h}})
-            if ((done = consider(box))) break;
+            if (done || (done = consider(box))) break;
+        const bool beside = done;  // no leader needed
         // Then further out, ring by ring, 16 directions each.
         for (double r = d + step; !done && r <= reach; r += step)
             for (int k = 0; k < 16 && !done; ++k) {
@@ -81,7 +82,7 @@ std::vector<PlacedLabel> placeLabels(const std::vector<LabelRequest>& labels, co
         best.overlaps = !done;
         const Vec2 to = nearestOn(best.box, a);
         best.from = a, best.to = to;
-        best.leader = std::hypot(to.x - a.x, to.y - a.y) > d * 1.5 + 1;
+        best.leader = !beside && std::hypot(to.x - a.x, to.y - a.y) > d * 1.5 + 1;
         placed.push_back(best);
     }
     return placed;

@@ -15,6 +15,10 @@ namespace flood::view {
 struct LabelRequest {
     Vec2 anchor;          // the point labelled
     double w = 0, h = 0;  // the text's size
+    // Where the label would rather go, its top-left corner from the anchor (the fingers'
+    // usual sides: NL above left, R below right); tried before the four usual places.
+    bool preferred = false;
+    Vec2 offset;
 };
 
 struct PlacedLabel {
@@ -24,7 +28,8 @@ struct PlacedLabel {
     bool overlaps = false;  // no free place was found: the least crowded one is used
 };
 
-// Places each label in order: first just right of and above its point, then further out on
+// Places each label in order: first where it prefers, if it does, then just right of and
+// above its point (and the three other corners), then further out on
 // rings of 16 directions, `step` pixels apart, up to `reach` pixels. A place is free when it
 // lies inside `area`, `gap` pixels clear of every label placed and every obstacle, and
 // covers no anchor.

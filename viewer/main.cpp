@@ -390,6 +390,7 @@ int runScreenshot(Ui& ui, const Args& args, Styled& styled) {
                 printed.push_back({"finding-" + std::to_string(i), ui.findingRows[i]});
             for (size_t i = 0; i < ui.labels.size(); ++i)
                 printed.push_back({"label-" + std::to_string(i), ui.labels[i]});
+            for (const auto& l : ui.stepLabels) printed.push_back(l);
             for (const auto& [name, r] : printed)
                 if (args.printLayout && r.w > 0)
                     std::printf("flood-viewer: layout %s %.0f %.0f %.0f %.0f\n", name.c_str(), r.x,

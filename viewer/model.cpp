@@ -1021,6 +1021,19 @@ void Model::seek(uint32_t step) {
     replay_->seek(step_);
 }
 
+const std::vector<Index>& Model::chainBefore() const {
+    const uint64_t key = generation_ << 32 | step_;
+    if (chainBeforeFor_ != key) {
+        chainBeforeFor_ = key;
+        chainBefore_.clear();
+        if (step_ > 0) {  // the replay ends where it was: state() is unchanged
+            chainBefore_ = replay_->seek(step_ - 1).chain;
+            replay_->seek(step_);
+        }
+    }
+    return chainBefore_;
+}
+
 bool Model::seekAction(Action a, int direction) {
     const auto& ev = trace_->events;
     if (direction > 0) {

@@ -423,6 +423,9 @@ public:
     size_t keyframeCount() const { return replay_->keyframeCount(); }
     size_t keyframeBytes() const { return replay_->keyframeBytes(); }
     const Event* currentEvent() const;
+    // The active chain before the current event (the canvas's ghost of the step before);
+    // empty at step 0. Found by a seek back and forth, cached per step.
+    const std::vector<Index>& chainBefore() const;
     void seek(uint32_t step);  // clamps to [0, steps()]
     void stepForward() { seek(step_ + 1); }
     void stepBack() { seek(step_ == 0 ? 0 : step_ - 1); }
@@ -546,7 +549,9 @@ private:
     uint32_t landedStep_ = 0;      // where open() put the step
     bool landingPending_ = false;  // the scan's result has not been looked at yet
     std::vector<PredicateRow> inspection_;
-    uint64_t inspectedFor_ = ~0ull;  // generation and step of inspection_
+    mutable std::vector<Index> chainBefore_;
+    mutable uint64_t chainBeforeFor_ = ~0ull;  // generation and step of chainBefore_
+    uint64_t inspectedFor_ = ~0ull;            // generation and step of inspection_
     void computeOffenders();
     std::string computeVerdict() const;
     void adopt(std::unique_ptr<Trace> trace);  // makes `trace` the loaded run

@@ -69,6 +69,9 @@ void drawBreakpoints(Ui& ui) {
         ImGui::SameLine(), ImGui::Checkbox("pending/held gorges", &o.dormant);
         ImGui::Checkbox("vertex numbers", &o.vertexNumbers);
         ImGui::SameLine(), ImGui::Checkbox("current gorge only", &o.gorgeFocus);
+        ImGui::Checkbox("step before (ghost)", &o.ghost);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("the chain and fingers before the step, faint");
     }
     ImGui::End();
 }

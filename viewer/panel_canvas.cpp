@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -15,6 +16,7 @@
 #include "label_layout.h"
 #include "panels.h"
 #include "platform_glfw.h"
+#include "scene_labels.h"
 
 namespace flood::view {
 
@@ -112,7 +114,8 @@ void syncBuffers(Ui& ui) {
     }
     const SceneOptions& o = ui.sceneOptions;
     const SceneOptions& was = cs.overlayOptions;
-    if (cs.overlayStep != m.step() || o.dormant != was.dormant || o.jumps != was.jumps) {
+    if (cs.overlayStep != m.step() || o.dormant != was.dormant || o.jumps != was.jumps ||
+        o.ghost != was.ghost) {
         cs.overlay = buildCanvasOverlay(m, o, cs.origin);
         ui.renderer.setOverlay(cs.overlay.lines);
         cs.overlayStep = m.step();
@@ -135,8 +138,21 @@ void syncBuffers(Ui& ui) {
     }
 }
 
-// Triangle numbers, only when few enough are on screen to read (visibleLabels).
-void triangleLabels(Ui& ui, ImDrawList* dl) {
+// Whether a small number gives way: its box would cover a placed label, or a label names
+// its vertex or triangle already (`vertex` or `triangle` kNone: not asked).
+bool givesWay(const std::vector<ShownLabel>& shown, const Rect& box, Index vertex,
+              uint32_t triangle) {
+    return std::any_of(shown.begin(), shown.end(), [&](const ShownLabel& l) {
+        const bool named = l.label->kind == Scene::LabelKind::Named &&
+                           ((vertex != kNone && l.label->vertex == vertex) ||
+                            (triangle != kNone && l.label->triangle == triangle));
+        return named || overlap(l.at.box, box, 1);
+    });
+}
+
+// Triangle numbers, only when few enough are on screen to read (visibleLabels), except
+// where a placed label is (a named triangle's label says its number).
+void triangleLabels(Ui& ui, ImDrawList* dl, const std::vector<ShownLabel>& shown) {
     const Model& m = ui.model;
     const Camera& cam = m.camera();
     const float s = ui.scale;
@@ -149,25 +165,91 @@ void triangleLabels(Ui& ui, ImDrawList* dl) {
         Vec2 c = cam.toScreen(ui.canvas.grid.centroid(t));
         std::snprintf(text, sizeof text, "%u", t);
         ImVec2 size = ImGui::CalcTextSize(text);
+        const Rect box{c.x - size.x / 2, c.y - size.y / 2, size.x, size.y};
+        if (givesWay(shown, box, kNone, t)) continue;
         Rgba color = t >= curFirst ? Rgba{0, 0, 0, 255} : Rgba{230, 240, 255, 255};
-        dl->AddText(ImVec2(float(c.x) - size.x / 2, float(c.y) - size.y / 2), toImU32(color), text);
+        dl->AddText(ImVec2(float(box.x), float(box.y)), toImU32(color), text);
     }
 }
 
+// The caption's large font (the presenter's), rebuilt at the UI scale: what a class reads.
+ImFont* largeFont(const Ui& ui) { return ui.captionFont ? ui.captionFont : ImGui::GetFont(); }
+
 // Vertex numbers beside their vertex, through the same culling: a vertex's room is the
 // distance to its nearest neighbour, which must be longer on screen than a six-digit label.
-void vertexLabels(Ui& ui, ImDrawList* dl) {
+// In presenter view they are in the large font (and need as much more room). A placed label
+// keeps its place: a number that would cover one is left out.
+void vertexLabels(Ui& ui, ImDrawList* dl, const std::vector<ShownLabel>& shown) {
     const Model& m = ui.model;
     const Camera& cam = m.camera();
     const float s = ui.scale;
-    const double room = 44 * s;
+    ImFont* font = ui.presenter ? largeFont(ui) : ImGui::GetFont();
+    const float k = font->FontSize / ImGui::GetFont()->FontSize;
+    const double room = 44 * s * k;
     char text[16];
     for (uint32_t i : visibleLabels(ui.canvas.vertexGrid, cam,
                                     uint32_t(m.polygon().vertices.size()), room * room)) {
         Vec2 c = cam.toScreen(m.polygon().vertices[i]);
         std::snprintf(text, sizeof text, "%u", i);
-        dl->AddText(ImVec2(float(c.x + 5 * s), float(c.y - 16 * s)),
+        const ImVec2 size = font->CalcTextSizeA(font->FontSize, FLT_MAX, 0, text);
+        const Rect box{c.x + 5 * s, c.y - 16 * s * k, size.x, size.y};
+        if (givesWay(shown, box, i, kNone)) continue;
+        dl->AddText(font, font->FontSize, ImVec2(float(box.x), float(box.y)),
                     toImU32(palette::kVertexNumber), text);
+    }
+}
+
+// The font a step label is drawn in: the sentence's names in the large font, and in
+// presenter view the fingers and their ghosts too, readable from the back of a room.
+ImFont* labelFont(const Ui& ui, const Scene::Label& l) {
+    using Kind = Scene::LabelKind;
+    const bool large = l.kind == Kind::Named ||
+                       (ui.presenter && (l.kind == Kind::Finger || l.kind == Kind::Ghost));
+    return large ? largeFont(ui) : ImGui::GetFont();
+}
+
+constexpr float kLabelPad = 2;  // around a label's text, before UI scale
+
+std::vector<ShownLabel> placeStepLabels(const Ui& ui, const std::vector<Scene::Label>& labels) {
+    const float s = ui.scale;
+    auto size = [&](const Scene::Label& l) {
+        ImFont* f = labelFont(ui, l);
+        const ImVec2 t = f->CalcTextSizeA(f->FontSize, FLT_MAX, 0, l.text.c_str());
+        return Vec2{t.x + 2 * kLabelPad * s, t.y + 2 * kLabelPad * s};
+    };
+    return placeSceneLabels(labels, ui.model.camera(), ui.layout.canvas, ui.canvas.obstacles, size,
+                            s);
+}
+
+// The sentence's names on a plate of the background, so they read over water and land;
+// the others as text. A label moved away from its point, and a finger's, is tied to it by a
+// line.
+void drawStepLabels(Ui& ui, ImDrawList* dl, const std::vector<ShownLabel>& shown) {
+    const float s = ui.scale;
+    Rgba plate = palette::kBackground;
+    plate.a = 215;
+    for (const ShownLabel& sl : shown) {
+        const Scene::Label& l = *sl.label;
+        const Rect& b = sl.at.box;
+        const bool named = l.kind == Scene::LabelKind::Named;
+        // A finger's letter is tied to its marker even beside it: where L, R and the fingers
+        // crowd one corner, which letter is whose must not be a guess.
+        const bool finger = l.kind == Scene::LabelKind::Finger || l.kind == Scene::LabelKind::Ghost;
+        if (sl.at.leader || finger)
+            dl->AddLine(ImVec2(float(sl.at.from.x), float(sl.at.from.y)),
+                        ImVec2(float(sl.at.to.x), float(sl.at.to.y)), toImU32(l.color),
+                        (named ? 1.5f : 1.f) * s);
+        if (named)
+            dl->AddRectFilled(ImVec2(float(b.x), float(b.y)),
+                              ImVec2(float(b.x + b.w), float(b.y + b.h)), toImU32(plate), 3 * s);
+        ImFont* f = labelFont(ui, l);
+        dl->AddText(f, f->FontSize, ImVec2(float(b.x + kLabelPad * s), float(b.y + kLabelPad * s)),
+                    toImU32(l.color), l.text.c_str());
+        const std::string what = l.vertex != kNone     ? "vertex-" + std::to_string(l.vertex)
+                                 : l.triangle != kNone ? "triangle-" + std::to_string(l.triangle)
+                                                       : "gorge";
+        const char* kind[] = {"named-", "finger-", "ghost-", "gorge-", "number-"};
+        ui.stepLabels.push_back({kind[int(l.kind)] + what, b});
     }
 }
 
@@ -303,7 +385,7 @@ void errorOverlay(Ui& ui, ImDrawList* dl) {
         texts.push_back(culpritLabel(P, group));
         ImVec2 size = ImGui::CalcTextSize(texts.back().c_str());
         const double pad = 2 * s;
-        requests.push_back({cam.toScreen(g.at), size.x + 2 * pad, size.y + 2 * pad});
+        requests.push_back({cam.toScreen(g.at), size.x + 2 * pad, size.y + 2 * pad, false, {}});
     }
     std::vector<PlacedLabel> placed =
         placeLabels(requests, area, ui.canvas.obstacles, 3 * s, 14 * s, 260 * s);
@@ -535,16 +617,13 @@ void paintCanvas(Ui& ui, ImDrawList* dl) {
     if (!m.errorView()) ui.labels.clear();
     if (m.errorView()) errorOverlay(ui, dl);
     else if (o.gorgeFocus) gorgeFocus(ui);
-    if (o.triangleNumbers && !m.errorView()) triangleLabels(ui, dl);
-    if (o.vertexNumbers && !m.errorView()) vertexLabels(ui, dl);
-    // Gorge labels fold away when hundreds are on screen; finger labels always show.
-    size_t crowd = 0;
-    for (const auto& l : cs.overlay.labels) crowd += l.folds && area.contains(cam.toScreen(l.p));
-    for (const auto& l : cs.overlay.labels) {
-        Vec2 c = cam.toScreen(l.p);
-        if (!area.contains(c) || (l.folds && crowd > 200) || m.errorView()) continue;
-        dl->AddText(ImVec2(float(c.x + l.dx * s), float(c.y + l.dy * s)), toImU32(l.color),
-                    l.text.c_str());
+    // The step's labels placed first (scene_labels.h); the small numbers give way to them.
+    ui.stepLabels.clear();
+    if (!m.errorView()) {
+        const std::vector<ShownLabel> shown = placeStepLabels(ui, cs.overlay.labels);
+        if (o.triangleNumbers) triangleLabels(ui, dl, shown);
+        if (o.vertexNumbers) vertexLabels(ui, dl, shown);
+        drawStepLabels(ui, dl, shown);
     }
     // The predicate inspector's hovered row: its arguments, numbered in the predicate's order.
     for (size_t i = 0; i < ui.highlight.size(); ++i) {

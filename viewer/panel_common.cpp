@@ -93,6 +93,18 @@ void clickableVertex(Ui& ui, const char* label, Index v) {
     clickable(ui, num, 'v');
 }
 
+const char* actionLetter(Action a) {
+    switch (a) {
+        case Action::Raise: return "R";
+        case Action::Fill: return "F";
+        case Action::Bridge: return "B";
+        case Action::Spill: return "S";
+        case Action::Jump: return "J";
+        case Action::Forbidden: return "X";
+        default: return "start";
+    }
+}
+
 ImVec4 toImVec4(Rgba c) { return ImVec4(c.r / 255.f, c.g / 255.f, c.b / 255.f, c.a / 255.f); }
 unsigned toImU32(Rgba c) { return IM_COL32(c.r, c.g, c.b, c.a); }
 

@@ -12,18 +12,6 @@ namespace flood::view {
 
 namespace {
 const char* className(int c) { return c == kNoClass ? "-" : vertexClassName(VertexClass(c)); }
-// The paper's letters; Start is the machine's entry, not one of its states.
-const char* columnLetter(Action a) {
-    switch (a) {
-        case Action::Raise: return "R";
-        case Action::Fill: return "F";
-        case Action::Bridge: return "B";
-        case Action::Spill: return "S";
-        case Action::Jump: return "J";
-        case Action::Forbidden: return "X";
-        default: return "start";
-    }
-}
 }  // namespace
 
 void drawStateTable(Ui& ui) {
@@ -42,7 +30,7 @@ void drawStateTable(Ui& ui) {
         ImGui::TableSetupColumn("C");
         ImGui::TableSetupColumn("Next");
         ImGui::TableSetupColumn("meet");
-        for (Action a : kStateColumns) ImGui::TableSetupColumn(columnLetter(a));
+        for (Action a : kStateColumns) ImGui::TableSetupColumn(actionLetter(a));
         ImGui::TableHeadersRow();
         for (int r = 0; r < StateTable::kRows; ++r) {
             bool curRow = cur && cur->row == r;

@@ -7,6 +7,7 @@
 #include <array>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "canvas_geometry.h"
@@ -161,6 +162,10 @@ struct Ui {
     // box, the Edit box, the Shrink window and the locator inset; empty when not shown.
     Rect findBox, editBox, shrinkBox, inset;
     std::vector<Rect> labels;  // the error view's vertex labels this frame
+    Rect stateDiagram;         // where the State machine panel drew its states this frame
+    // The step's labels this frame (scene_labels.h), each named for what it labels:
+    // "named-vertex-35", "finger-vertex-36", "ghost-vertex-14", "named-triangle-18", ...
+    std::vector<std::pair<std::string, Rect>> stepLabels;
 };
 
 void drawCanvas(Ui& ui);  // panel_canvas.cpp: geometry to the renderer, labels, input
@@ -224,6 +229,9 @@ void textOneLine(const std::string& text, float width, const ImVec4* colour = nu
 void clickableRange(Ui& ui, uint32_t first, uint32_t count, char kind);
 // "label v", v clickable; nothing for kNone.
 void clickableVertex(Ui& ui, const char* label, Index v);
+// The paper's letter of a state (Fig. 10): R, B, S, J, F, X; Start is the machine's entry,
+// not one of its states ("start").
+const char* actionLetter(Action a);
 ImVec4 toImVec4(Rgba c);
 unsigned toImU32(Rgba c);
 // Writes the current step as "<name>-step<N>.svg" in the working directory.

@@ -5,12 +5,17 @@
 #include <ostream>
 
 #include "io/svg.h"
+#include "scene_labels.h"
+#include "teach/narrate.h"
 
 namespace flood::view {
 
 namespace {
 
 bool valid(const Polygon& p, Index v) { return v != kNone && v < p.vertices.size(); }
+
+// A ghost's colour: the same hue, faint.
+Rgba faint(Rgba c) { return {c.r, c.g, c.b, 150}; }
 
 double area(Point a, Point b, Point c) {
     return std::abs((b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x)) / 2;
@@ -141,6 +146,7 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
                 Scene::Label l{v[anchor], (g.held ? "held " : "pending ") + std::to_string(g.id),
                                palette::kDormant, 10, 10};
                 l.folds = true;
+                l.kind = Scene::LabelKind::Gorge;
                 sc.labels.push_back(std::move(l));
             }
         }
@@ -150,6 +156,15 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
             if (valid(poly, top) && valid(poly, to))
                 sc.lines.push_back({v[top], v[to], palette::kJump, 2, true});
 
+    // The step as a transition (Python Tutor's before and after): the chain before it, faint
+    // and wider, under the chain after; where they agree only the chain after shows.
+    const bool ghost = o.ghost && ev && ev->action != Action::Start;
+    if (ghost) {
+        const std::vector<Index>& was = model.chainBefore();
+        for (size_t i = 0; i + 1 < was.size(); ++i)
+            if (valid(poly, was[i]) && valid(poly, was[i + 1]))
+                sc.lines.push_back({v[was[i]], v[was[i + 1]], faint(palette::kChain), 7});
+    }
     for (size_t i = 0; i + 1 < s.chain.size(); ++i)
         if (valid(poly, s.chain[i]) && valid(poly, s.chain[i + 1]))
             sc.lines.push_back({v[s.chain[i]], v[s.chain[i + 1]], palette::kChain, 3});
@@ -169,25 +184,78 @@ Scene buildScene(const Model& model, const SceneOptions& o) {
         sc.markers.push_back({v[i], palette::kCulprit, 11, Scene::Shape::Ring});
     }
 
-    // Fingers, then Right, then Left last so Left is on top when they coincide.
+    // The fingers, then Right, then Left last so Left is on top when they coincide; each
+    // after a faint ghost of where it was before the step, if it moved.
+    struct FingerLook {
+        Index Fingers::*at;
+        const char* name;
+        Rgba color;
+        float radius, dx, dy;
+        Scene::Shape shape;
+    };
+    const FingerLook looks[] = {
+        {&Fingers::nextLeft, "NL", palette::kNextLeft, 8, -26, -22, Scene::Shape::Finger},
+        {&Fingers::nextRight, "NR", palette::kNextRight, 8, 10, -22, Scene::Shape::Finger},
+        {&Fingers::right, "R", palette::kRight, 6.5f, 9, 4, Scene::Shape::Disc},
+        {&Fingers::left, "L", palette::kLeft, 6.5f, -18, 4, Scene::Shape::Disc}};
     const Fingers& f = s.fingers;
-    if (valid(poly, f.nextLeft)) {
-        sc.markers.push_back({v[f.nextLeft], palette::kNextLeft, 8, Scene::Shape::Finger});
-        sc.labels.push_back({v[f.nextLeft], "NL", palette::kNextLeft, -26, -22});
+    for (const FingerLook& k : looks) {
+        const Index was = ghost ? ev->before.*k.at : kNone;
+        if (valid(poly, was) && was != f.*k.at) {
+            sc.markers.push_back({v[was], faint(k.color), k.radius, k.shape});
+            Scene::Label l{v[was], std::string(k.name) + " before", faint(k.color), k.dx, k.dy};
+            l.kind = Scene::LabelKind::Ghost, l.vertex = was;
+            sc.labels.push_back(std::move(l));
+        }
+        if (!valid(poly, f.*k.at)) continue;
+        sc.markers.push_back({v[f.*k.at], k.color, k.radius, k.shape});
+        Scene::Label l{v[f.*k.at], k.name, k.color, k.dx, k.dy};
+        l.kind = Scene::LabelKind::Finger, l.vertex = f.*k.at;
+        sc.labels.push_back(std::move(l));
     }
-    if (valid(poly, f.nextRight)) {
-        sc.markers.push_back({v[f.nextRight], palette::kNextRight, 8, Scene::Shape::Finger});
-        sc.labels.push_back({v[f.nextRight], "NR", palette::kNextRight, 10, -22});
-    }
-    if (valid(poly, f.right)) {
-        sc.markers.push_back({v[f.right], palette::kRight, 6.5f});
-        sc.labels.push_back({v[f.right], "R", palette::kRight, 9, 4});
-    }
-    if (valid(poly, f.left)) {
-        sc.markers.push_back({v[f.left], palette::kLeft, 6.5f});
-        sc.labels.push_back({v[f.left], "L", palette::kLeft, -18, 4});
+
+    if (ev) {
+        addNamedLabels(sc, model, *ev);
+        // A ghost the sentence names already has its label ("14 NextRight before").
+        auto named = [&](const Scene::Label& g) {
+            return g.kind == Scene::LabelKind::Ghost &&
+                   std::any_of(sc.labels.begin(), sc.labels.end(), [&](const Scene::Label& l) {
+                       return l.kind == Scene::LabelKind::Named && l.vertex == g.vertex;
+                   });
+        };
+        sc.labels.erase(std::remove_if(sc.labels.begin(), sc.labels.end(), named), sc.labels.end());
     }
     return sc;
+}
+
+void addNamedLabels(Scene& sc, const Model& model, const Event& e) {
+    const Polygon& poly = model.polygon();
+    const auto& v = poly.vertices;
+    const Narration n = narration(poly, e);
+    std::vector<Index> done;  // a vertex named twice keeps its first role
+    for (const NamedVertex& nv : n.vertices) {
+        if (!valid(poly, nv.vertex) || std::find(done.begin(), done.end(), nv.vertex) != done.end())
+            continue;
+        done.push_back(nv.vertex);
+        sc.markers.push_back({v[nv.vertex], palette::kHover, 10, Scene::Shape::Ring});
+        Scene::Label l{v[nv.vertex], std::to_string(nv.vertex) + " " + nv.role, palette::kHover, 8,
+                       -30};
+        l.kind = Scene::LabelKind::Named, l.vertex = nv.vertex;
+        sc.labels.push_back(std::move(l));
+    }
+    // A fan of many triangles: its first and last, the ends of the range the sentence says.
+    const auto& tris = model.trace().triangles;
+    const uint32_t last = n.firstTriangle + n.triangleCount;
+    for (uint32_t t = n.firstTriangle; t < last && t < tris.size(); ++t) {
+        if (n.triangleCount > kNamedTriangles && t != n.firstTriangle && t + 1 != last) continue;
+        const Triangle& tri = tris[t];
+        if (!valid(poly, tri[0]) || !valid(poly, tri[1]) || !valid(poly, tri[2])) continue;
+        Point c{(v[tri[0]].x + v[tri[1]].x + v[tri[2]].x) / 3,
+                (v[tri[0]].y + v[tri[1]].y + v[tri[2]].y) / 3};
+        Scene::Label l{c, "triangle " + std::to_string(t), palette::kHover, -30, -8};
+        l.kind = Scene::LabelKind::Named, l.triangle = t;
+        sc.labels.push_back(std::move(l));
+    }
 }
 
 // ----------------------------------------------------------------------------------------
@@ -247,11 +315,28 @@ void writeSceneSvg(std::ostream& out, const Scene& sc, const Camera& cam, int wi
         else s.fill = svgColor(m.color);
         doc.circle(s, m.p, hundredths(m.radius));
     }
-    for (const auto& l : sc.labels) {
+    for (const auto& l : sc.labels) {  // triangle numbers, at their centroid
+        if (l.kind != Scene::LabelKind::Number) continue;
         if (l.worldArea > 0 && l.worldArea * cam.scale() * cam.scale() < l.minArea) continue;
         Point c = doc.place(l.p);
         doc.text({hundredths(c.x + l.dx), hundredths(c.y + l.dy + 10)}, 11,
                  {{l.text, svgColor(l.color)}});
+    }
+    // The step's labels placed apart as on the canvas (scene_labels.h), the sentence's names
+    // larger; the text's size estimated (a sans-serif letter is about 0.6 of its size wide).
+    auto px = [](const Scene::Label& l) { return l.kind == Scene::LabelKind::Named ? 16.0 : 11.0; };
+    auto size = [&](const Scene::Label& l) {
+        return Vec2{0.6 * px(l) * double(l.text.size()) + 4, px(l) + 4};
+    };
+    for (const ShownLabel& sl : placeSceneLabels(sc.labels, cam, area, {}, size, 1)) {
+        const Scene::Label& l = *sl.label;
+        if (sl.at.leader) {
+            svg::Style s;
+            s.stroke = svgColor(l.color), s.strokeWidth = 1;
+            doc.line(s, cam.toWorld(sl.at.from), cam.toWorld(sl.at.to));
+        }
+        doc.text({hundredths(sl.at.box.x + 2), hundredths(sl.at.box.y + 2 + 0.8 * px(l))}, px(l),
+                 {{l.text, svgColor(l.color), l.kind == Scene::LabelKind::Named}});
     }
     doc.endGroup();
     if (caption)

@@ -56,3 +56,23 @@ target_include_directories(ui_state_test PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/gen
 target_link_libraries(ui_state_test PRIVATE floodviewmodel floodglad glfw PkgConfig::IMGUI
                       GTest::gtest_main)
 add_test(NAME viewer/ui_state_test COMMAND ui_state_test)
+
+# ---- the picture shows what the sentence says: Fig. 7 step 23 in presenter view -------------
+add_executable(narration_screenshot_test ${GUI_TESTS}/narration_screenshot_test.cpp)
+target_link_libraries(narration_screenshot_test PRIVATE floodviewmodel PkgConfig::IMGUI)
+target_compile_definitions(narration_screenshot_test PRIVATE
+  FLOOD_VIEWER="$<TARGET_FILE:flood-viewer>"
+  FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
+  FLOOD_WORK_DIR="${CMAKE_CURRENT_BINARY_DIR}")
+add_dependencies(narration_screenshot_test flood-viewer)
+add_test(NAME viewer/narration_screenshot_test COMMAND narration_screenshot_test)
+set_tests_properties(viewer/narration_screenshot_test PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
+  ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+
+# ---- the State machine panel: no state's name cut (window-free ImGui, no display needed) -----
+add_executable(state_machine_test ${GUI_TESTS}/state_machine_test.cpp panel_state_machine.cpp
+               panel_common.cpp panel_edit.cpp renderer.cpp platform_glfw.cpp ${SHADER_HEADER})
+target_include_directories(state_machine_test PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
+target_link_libraries(state_machine_test PRIVATE floodviewmodel floodglad glfw PkgConfig::IMGUI
+                      GTest::gtest_main)
+add_test(NAME viewer/state_machine_test COMMAND state_machine_test)

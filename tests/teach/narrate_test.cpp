@@ -4,6 +4,7 @@
 
 #include <cctype>
 #include <cmath>
+#include <cstring>
 
 #include "io/io.h"
 #include "log/replay.h"
@@ -211,4 +212,87 @@ TEST(Narrate, NoWordRepeatedOnGalleryAndSamples) {
     Polygon nan;
     nan.addRing({{0, 0}, {1, 0}, {std::nan(""), 1}}, true);
     expectNoRepeatedWord(nan, "a NaN coordinate");
+}
+
+namespace {
+
+// What a sentence says by number, read back from its text (the test's cross-check only: the
+// narration hands the same as data): every "vertex N", and "triangle(s) A[-B]".
+struct Said {
+    std::vector<Index> vertices;
+    uint32_t firstTriangle = 0, triangleCount = 0;
+};
+Said readBack(const std::string& s) {
+    Said said;
+    for (size_t at = s.find("vertex "); at != std::string::npos; at = s.find("vertex ", at + 1))
+        if (std::isdigit(static_cast<unsigned char>(s[at + 7])))
+            said.vertices.push_back(Index(std::stoul(s.substr(at + 7))));
+    for (const char* word : {"cutting triangles ", "cutting triangle "}) {
+        const size_t at = s.find(word);
+        if (at == std::string::npos) continue;
+        size_t used = 0;
+        const std::string range = s.substr(at + std::strlen(word));
+        said.firstTriangle = uint32_t(std::stoul(range, &used));
+        said.triangleCount = 1;
+        if (range[used] == '-')
+            said.triangleCount =
+                uint32_t(std::stoul(range.substr(used + 1))) - said.firstTriangle + 1;
+        break;
+    }
+    return said;
+}
+
+}  // namespace
+
+// The viewer labels what a sentence names from the narration's data: the data must be every
+// vertex and triangle the text names, in the text's order, with a role each.
+TEST(Narrate, NamedVerticesAndTrianglesAreWhatTheTextSays) {
+    std::vector<std::string> files = filesIn(sourcePath("polygons"), ".json");
+    for (const std::string& f : filesIn(sourcePath("polygons/invalid"), ".json"))
+        files.push_back(f);
+    size_t named = 0;
+    for (const std::string& f : files) {
+        ReadResult r = readPolygonFile(f);
+        if (!r.diagnostic.ok()) continue;
+        validate(r.polygon, f);
+        Trace t = record(r.polygon);
+        for (const Event& e : t.events) {
+            const Narration n = narration(r.polygon, e);
+            EXPECT_EQ(n.text, narrate(r.polygon, e));
+            const Said said = readBack(n.text);
+            std::vector<Index> data;
+            for (const NamedVertex& v : n.vertices) {
+                data.push_back(v.vertex);
+                EXPECT_GT(std::strlen(v.role), 0u) << f << ": " << n.text;
+            }
+            EXPECT_EQ(data, said.vertices) << f << ", step " << e.step + 1 << ": " << n.text;
+            EXPECT_EQ(n.firstTriangle, said.firstTriangle) << f << ": " << n.text;
+            EXPECT_EQ(n.triangleCount, said.triangleCount) << f << ": " << n.text;
+            named += data.size();
+        }
+    }
+    EXPECT_GT(named, 500u);
+}
+
+// Issue 27's example, Fig. 7 step 23: the sag, NextRight as it was before the Bridge, and the
+// chain vertex the bridge joins, each with its role.
+TEST(Narrate, Figure7Step23NamesTheSagNextRightBeforeAndTheBridgeEnd) {
+    Polygon p = readOrFail(sourcePath("polygons/paper-figure-7.json"));
+    Trace t = record(p);
+    ASSERT_GE(t.events.size(), 23u);
+    const Event& e = t.events[22];  // step 23, as the viewer and the CLI number it
+    ASSERT_EQ(e.action, Action::Bridge);
+    const Narration n = narration(p, e);
+    ASSERT_EQ(n.vertices.size(), 3u) << n.text;
+    EXPECT_EQ(n.vertices[0].vertex, 35u);
+    EXPECT_STREQ(n.vertices[0].role, "sag");
+    EXPECT_EQ(n.vertices[1].vertex, 14u);
+    EXPECT_STREQ(n.vertices[1].role, "NextRight before");
+    EXPECT_EQ(n.vertices[2].vertex, 51u);
+    EXPECT_STREQ(n.vertices[2].role, "bridge end");
+    EXPECT_EQ(n.firstTriangle, 18u);
+    EXPECT_EQ(n.triangleCount, 1u);
+    // The fingers it names as before are the event's before, not its after.
+    EXPECT_EQ(e.before.nextRight, 14u);
+    EXPECT_NE(e.after.nextRight, 14u);
 }

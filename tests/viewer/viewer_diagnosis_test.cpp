@@ -214,8 +214,9 @@ TEST(ViewerLabels, PlacedApartOutOfTheBoxesAndBesideTheirPoint) {
     const std::vector<Rect> boxes{{0, 0, 260, 36}, {500, 0, 100, 36}};
     // Six labels at points a few pixels apart (v205, v206, v207, ...), one under a box.
     std::vector<LabelRequest> labels;
-    for (int i = 0; i < 6; ++i) labels.push_back({{300.0 + 3 * i, 200.0 + 2 * i}, 110, 17});
-    labels.push_back({{40, 30}, 110, 17});
+    for (int i = 0; i < 6; ++i)
+        labels.push_back({{300.0 + 3 * i, 200.0 + 2 * i}, 110, 17, false, {}});
+    labels.push_back({{40, 30}, 110, 17, false, {}});
     std::vector<PlacedLabel> placed = placeLabels(labels, area, boxes);
     ASSERT_EQ(placed.size(), labels.size());
     for (size_t i = 0; i < placed.size(); ++i) {

@@ -15,6 +15,10 @@ DatasetRead readFeatures(const std::string& path, const Selection& s);
 ReadResult readPolygon(const std::string& path, const Selection& s);
 Diagnostic writeTriangles(const std::string& path, const std::string& format, const Polygon& p,
                           const std::vector<Triangle>& triangles);
+// The layer `layer` of the dataset `file` read back as a user's tool reads it: "" when every
+// one of its `features` features reads without an error, else what is wrong ("reading it back
+// gives 12 of 16 features"). A writer's check: GDAL does not always report a failed write.
+std::string readBackProblem(const std::string& file, const std::string& layer, long long features);
 }  // namespace direct
 
 struct ModuleTable {

@@ -345,5 +345,26 @@ ReadResult readPolygon(const std::string& path, const Selection& s) {
     return rr;
 }
 
+std::string readBackProblem(const std::string& file, const std::string& layerName,
+                            long long features) {
+    registerOnce();
+    CPLErrorReset();
+    DatasetPtr ds(static_cast<GDALDataset*>(
+        GDALOpenEx(file.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    if (!ds) return "it does not open: " + lastError("GDALOpenEx failed without a message");
+    OGRLayer* layer = ds->GetLayerByName(layerName.c_str());
+    if (!layer) return "it has no layer " + layerName;
+    Failures failures;
+    long long n = 0;
+    for (FeaturePtr f; (f.reset(layer->GetNextFeature()), f) && !failures.any();) ++n;
+    if (failures.any())
+        return "reading it back fails after " + std::to_string(n) + " of " +
+               std::to_string(features) + " features: " + failures.text();
+    if (n != features)
+        return "reading it back gives " + std::to_string(n) + " of " + std::to_string(features) +
+               " features";
+    return "";
+}
+
 }  // namespace gdal::direct
 }  // namespace flood

@@ -179,6 +179,13 @@ Diagnostic writeTriangles(const std::string& path, const std::string& format, co
         removeFolder();
         return d;
     }
+    // FlatGeobuf does not check the close of its files, where stdio writes its last buffer: a
+    // full disk there went unnoticed (tests/cli/write_faults_test.cpp). Read back, it shows.
+    if (std::string problem = readBackProblem(file, kLayer, (long long)triangles.size());
+        !problem.empty()) {
+        removeFolder();
+        return cannot("GDAL reported no error, but the dataset written is incomplete: " + problem);
+    }
     int e = adoptPermissions(-1, file, target);
     if (!e && ::rename(file.c_str(), target.file.c_str()) != 0) e = errno;
     removeFolder();

@@ -229,6 +229,18 @@ bool polygonFile(const fs::path& p) {
     return ext == ".json" || ext == ".geojson" || ext == ".wkt";
 }
 
+}  // namespace
+
+std::string folderFormats() {
+    std::string list = ".json, .geojson, .wkt";
+#ifdef FLOOD_GDAL
+    for (const std::string& ext : gdal::gisExtensions()) list += ", ." + ext;
+#endif
+    return list;
+}
+
+namespace {
+
 // Folders become their polygon files, recursively, in sorted order.
 std::vector<File> expand(const std::vector<std::string>& inputs) {
     std::vector<File> files;
@@ -249,7 +261,7 @@ std::vector<File> expand(const std::vector<std::string>& inputs) {
         for (std::string& f : found) files.emplace_back(std::move(f));
         if (ec) files.emplace_back(in, in + ": cannot list folder: " + ec.message());
         else if (found.empty())
-            files.emplace_back(in, in + ": folder holds no .json, .geojson or .wkt file");
+            files.emplace_back(in, in + ": folder holds no polygon file (" + folderFormats() + ")");
     }
     return files;
 }

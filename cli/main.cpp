@@ -330,17 +330,24 @@ double medianNs(int repeat, F&& run) {
     return t[t.size() / 2];
 }
 
+// The generator's families, as --help and an unknown family's message list them.
+std::string familyList() {
+    std::string list;
+    for (const std::string& n : familyNames()) list += (list.empty() ? "" : ", ") + n;
+    list += "; invalid families (validation refuses them): ";
+    const std::vector<std::string> invalid = invalidFamilyNames();
+    for (size_t k = 0; k < invalid.size(); ++k) list += (k ? ", " : "") + invalid[k];
+    return list;
+}
+
 // Writes a generated polygon: ring array (one part) or GeoJSON MultiPolygon, streamed so a
 // 10^7-vertex file needs no second copy in memory.
 int cmdGenerate(const std::string& family, size_t size, uint64_t seed, const std::string& out) {
     auto names = familyNames(), invalid = invalidFamilyNames();
     bool isInvalid = std::find(invalid.begin(), invalid.end(), family) != invalid.end();
     if (!isInvalid && std::find(names.begin(), names.end(), family) == names.end()) {
-        std::cerr << "error: unknown family \"" << family << "\"; families:";
-        for (const std::string& n : names) std::cerr << " " << n;
-        std::cerr << "; invalid families (validate() refuses them):";
-        for (const std::string& n : invalid) std::cerr << " " << n;
-        std::cerr << "\n";
+        std::cerr << "error: unknown family \"" << family << "\"; families: " << familyList()
+                  << "\n";
         return code(Status::Usage);
     }
     Polygon p = isInvalid ? generateInvalid(family, seed, size) : generate(family, seed, size);
@@ -616,8 +623,7 @@ int run(int argc, char** argv) {
     auto* gen = app.add_subcommand(
         "generate",
         "Write a generated polygon (core/tools/generate.h): a valid family, or an invalid one");
-    gen->add_option("FAMILY", family, "Polygon family (see the error message for the list)")
-        ->required();
+    gen->add_option("FAMILY", family, "Polygon family: " + familyList())->required();
     gen->add_option("SIZE", size, "Approximate vertex count")
         ->required()
         ->check(CLI::Range(size_t(3), size_t(1) << 31));
@@ -643,8 +649,9 @@ int run(int argc, char** argv) {
     auto* chk = app.add_subcommand("check",
                                    "Check every polygon of a dataset: each feature of "
                                    "each file, folders recursively; a table or --json");
-    chk->add_option("FILE", checkOptions.inputs,
-                    "Files and folders (.json, .geojson, .wkt found recursively; - for stdin)")
+    chk->add_option(
+           "FILE", checkOptions.inputs,
+           "Files and folders (in folders, recursively: " + cli::folderFormats() + "; - for stdin)")
         ->required();
     chk->add_flag("--json", checkOptions.json,
                   "One JSON document: a record per feature and the summary");

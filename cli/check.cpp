@@ -231,6 +231,12 @@ bool polygonFile(const fs::path& p) {
 
 }  // namespace
 
+std::string grouped(size_t n) {
+    std::string s = std::to_string(n);
+    for (size_t i = s.size(); i > 3; i -= 3) s.insert(i - 3, ",");
+    return s;
+}
+
 std::string folderFormats() {
     std::string list = ".json, .geojson, .wkt";
 #ifdef FLOOD_GDAL
@@ -419,6 +425,31 @@ bool extract(std::vector<Row*>& rows, const CheckOptions& o) {
     return ok;
 }
 
+// Warnings of one kind (what follows a warning's last ": ", as "repeated point dropped") shown
+// per file before the rest of that kind is counted: 2,000 features with a repeated point were
+// 2,000 lines.
+constexpr size_t kWarningsShownPerKind = 3;
+
+// A file's warnings as printed: the first of each kind in full (each names its feature), then
+// "FILE: ... and N more like it (KIND)" for each kind, in the order the kinds first came.
+std::vector<std::string> folded(const std::vector<std::string>& warnings, const std::string& file) {
+    std::vector<std::string> out;
+    std::vector<std::pair<std::string, size_t>> kinds;  // each kind and how many
+    for (const std::string& w : warnings) {
+        const size_t colon = w.rfind(": ");
+        const std::string kind = colon == std::string::npos ? w : w.substr(colon + 2);
+        auto k = std::find_if(kinds.begin(), kinds.end(),
+                              [&](const auto& seen) { return seen.first == kind; });
+        if (k == kinds.end()) k = kinds.insert(kinds.end(), {kind, 0});
+        if (k->second++ < kWarningsShownPerKind) out.push_back(w);
+    }
+    for (const auto& [kind, n] : kinds)
+        if (n > kWarningsShownPerKind)
+            out.push_back(file + ": \u2026 and " + grouped(n - kWarningsShownPerKind) +
+                          " more like it (" + kind + ")");
+    return out;
+}
+
 size_t width(const std::string& s) {  // UTF-8 code points
     return size_t(std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
 }
@@ -539,7 +570,8 @@ int runCheck(const CheckOptions& o) {
 
     std::vector<Row*> rows;
     for (File& f : files) {
-        for (const std::string& w : f.warnings) std::cerr << "warning: " << printable(w) << "\n";
+        for (const std::string& w : folded(f.warnings, displayName(f.path)))
+            std::cerr << "warning: " << printable(w) << "\n";
         for (Row& r : f.rows) rows.push_back(&r);
     }
     int code = 0;

@@ -26,6 +26,9 @@ struct CheckOptions {
     size_t maxFindings = 100;         // an invalid feature's findings listed, the rest counted
 };
 
+// 1234567 -> "1,234,567".
+std::string grouped(size_t n);
+
 // What a folder search finds, for messages and the help: ".json, .geojson, .wkt" and, built
 // with GDAL, the GIS formats (".shp, .gpkg, ...").
 std::string folderFormats();

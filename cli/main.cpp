@@ -65,13 +65,6 @@ ReadResult readInput(const std::string& path) {
     return readPolygonFile(path, maxInputBytes);
 }
 
-// 1234567 -> "1,234,567".
-std::string grouped(size_t n) {
-    std::string s = std::to_string(n);
-    for (size_t i = s.size(); i > 3; i -= 3) s.insert(i - 3, ",");
-    return s;
-}
-
 // Reads and validates; on failure prints the diagnostic and returns its status.
 // With `check` false (--no-validate) validation is skipped, so the flood machine itself
 // diagnoses invalid input (docs/ERRORS.md, forbidden transitions); the T-junctions the machine
@@ -84,7 +77,7 @@ Status prepare(const std::string& path, Polygon& polygon, bool check = true,
     for (const std::string& w : rr.warnings) std::cerr << "warning: " << w << "\n";
     if (rr.warningsOmitted)
         std::cerr << "warning: " << (path == "-" ? "<stdin>" : path) << ": \u2026 and "
-                  << grouped(rr.warningsOmitted) << " more warnings like these\n";
+                  << cli::grouped(rr.warningsOmitted) << " more warnings like these\n";
     if (!rr.diagnostic.ok()) {
         std::cerr << "error: " << rr.diagnostic.message << "\n";
         return rr.diagnostic.status;

@@ -559,3 +559,40 @@ TEST(Check, HelpListsEveryFormatAFolderSearchFinds) {
     EXPECT_EQ(doc["features"][0]["reason"], "folder holds no polygon file (" + list + ")");
     fs::remove_all(d);
 }
+
+// 2,000 features with a repeated point printed 2,000 identical lines that named no feature
+// (issue 30 §4): each warning names its feature, and past the first few of a kind the rest of
+// that kind are one line with their count.
+TEST(Check, WarningsNameTheFeatureAndFoldRepeats) {
+    fs::path d = scratch("warnings");
+    json features = json::array();
+    for (int i = 0; i < 2000; ++i)
+        features.push_back({{"type", "Feature"},
+                            {"properties", json::object()},
+                            {"geometry",
+                             {{"type", "Polygon"},
+                              {"coordinates", {{{0, 0}, {10, 0}, {10, 0}, {10, 10}, {0, 0}}}}}}});
+    const std::string file = (d / "rep.geojson").string();
+    std::ofstream(file) << json{{"type", "FeatureCollection"}, {"features", features}}.dump();
+    CheckRun r = cli("check " + file);
+    EXPECT_EQ(r.code, 0) << r.err;
+    std::string want;
+    for (int i = 0; i < 3; ++i)
+        want += "warning: " + file + ": feature " + std::to_string(i) +
+                ": ring 0 vertex 2 (10, 0): repeated point dropped\n";
+    want += "warning: " + file + ": \u2026 and 1,997 more like it (repeated point dropped)\n";
+    EXPECT_EQ(r.err, want);
+#ifdef FLOOD_GDAL
+    // A GIS dataset's warnings name the feature by its FID.
+    const std::string gpkg = (d / "rep.gpkg").string();
+    RunResult g = runShell("ogr2ogr -f GPKG " + gpkg + " " + file + " -limit 2 2>&1");
+    ASSERT_EQ(g.code, 0) << g.out;
+    r = cli("check " + gpkg);
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(has(r.err, "warning: " + gpkg +
+                               ": feature 2: ring 0 vertex 2 (10, 0): repeated "
+                               "point dropped\n"))
+        << r.err;
+#endif
+    fs::remove_all(d);
+}

@@ -283,9 +283,11 @@ struct Reader {
             if (linear) g = linear.get();
         }
         std::string problem;
+        const OGRGeometry* other = g->IsEmpty() ? nullptr : addGeometry(r.read, name, *g);
+        io_detail::nameFeature(r.read.warnings, name, ctx);
         if (g->IsEmpty()) {
             problem = type + " EMPTY has no rings";
-        } else if (const OGRGeometry* other = addGeometry(r.read, name, *g)) {
+        } else if (other) {
             problem = other == g ? "a " + type +
                                        " is not read: only POLYGON, MULTIPOLYGON and collections "
                                        "of them are triangulated"

@@ -129,29 +129,26 @@ TEST(WriteFaults, AFullDiskFailsEveryWriterAndKeepsTheOldFile) {
             const unsigned long long n = ns[i];
             SCOPED_TRACE("writes fail after " + std::to_string(n) + " of " + std::to_string(total) +
                          " bytes");
-            {
-                // OUT there or not, in turn (always there for the update of a GeoPackage)
-                const bool existing = w.existingGeoPackage || i % 2 == 0;
-                if (existing) makeOld();
-                else fs::remove(out);
-                const std::string old = existing ? slurp(out) : "";
-                struct stat before = {}, after = {};
-                if (existing) {
-                    ASSERT_EQ(stat(out.c_str(), &before), 0);
-                }
-                r = faulted("FLOOD_FAULT_BYTES=" + std::to_string(n), args);
-                EXPECT_EQ(r.code, 8) << r.out;
-                EXPECT_EQ(r.out.rfind("error: " + out.string() + ": cannot write: ", 0), 0u)
-                    << r.out;
-                EXPECT_EQ(listing(dir), existing ? std::vector<std::string>{out.filename()}
-                                                 : std::vector<std::string>{})
-                    << "a temporary left beside OUT, or OUT made";
-                if (!existing) continue;
-                EXPECT_TRUE(slurp(out) == old) << "OUT changed";  // (not its bytes printed)
-                ASSERT_EQ(stat(out.c_str(), &after), 0);
-                EXPECT_EQ(after.st_ino, before.st_ino);
-                EXPECT_EQ(after.st_mode, before.st_mode);
+            // OUT there or not, in turn (always there for the update of a GeoPackage)
+            const bool existing = w.existingGeoPackage || i % 2 == 0;
+            if (existing) makeOld();
+            else fs::remove(out);
+            const std::string old = existing ? slurp(out) : "";
+            struct stat before = {}, after = {};
+            if (existing) {
+                ASSERT_EQ(stat(out.c_str(), &before), 0);
             }
+            r = faulted("FLOOD_FAULT_BYTES=" + std::to_string(n), args);
+            EXPECT_EQ(r.code, 8) << r.out;
+            EXPECT_EQ(r.out.rfind("error: " + out.string() + ": cannot write: ", 0), 0u) << r.out;
+            EXPECT_EQ(listing(dir), existing ? std::vector<std::string>{out.filename()}
+                                             : std::vector<std::string>{})
+                << "a temporary left beside OUT, or OUT made";
+            if (!existing) continue;
+            EXPECT_TRUE(slurp(out) == old) << "OUT changed";  // (not its bytes printed)
+            ASSERT_EQ(stat(out.c_str(), &after), 0);
+            EXPECT_EQ(after.st_ino, before.st_ino);
+            EXPECT_EQ(after.st_mode, before.st_mode);
         }
         // Writes cut short without an error (from the first byte, and half way): a writer
         // that loops gets the whole output, the same bytes as without a fault.

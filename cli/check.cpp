@@ -230,6 +230,24 @@ bool polygonFile(const fs::path& p) {
     return ext == ".json" || ext == ".geojson" || ext == ".wkt";
 }
 
+}  // namespace
+
+std::string grouped(size_t n) {
+    std::string s = std::to_string(n);
+    for (size_t i = s.size(); i > 3; i -= 3) s.insert(i - 3, ",");
+    return s;
+}
+
+std::string folderFormats() {
+    std::string list = ".json, .geojson, .wkt";
+#ifdef FLOOD_GDAL
+    for (const std::string& ext : gdal::gisExtensions()) list += ", ." + ext;
+#endif
+    return list;
+}
+
+namespace {
+
 // Folders become their polygon files, recursively, in sorted order.
 std::vector<File> expand(const std::vector<std::string>& inputs) {
     std::vector<File> files;
@@ -250,7 +268,7 @@ std::vector<File> expand(const std::vector<std::string>& inputs) {
         for (std::string& f : found) files.emplace_back(std::move(f));
         if (ec) files.emplace_back(in, in + ": cannot list folder: " + ec.message());
         else if (found.empty())
-            files.emplace_back(in, in + ": folder holds no .json, .geojson or .wkt file");
+            files.emplace_back(in, in + ": folder holds no polygon file (" + folderFormats() + ")");
     }
     return files;
 }
@@ -408,6 +426,31 @@ bool extract(std::vector<Row*>& rows, const CheckOptions& o) {
     return ok;
 }
 
+// Warnings of one kind (what follows a warning's last ": ", as "repeated point dropped") shown
+// per file before the rest of that kind is counted: 2,000 features with a repeated point were
+// 2,000 lines.
+constexpr size_t kWarningsShownPerKind = 3;
+
+// A file's warnings as printed: the first of each kind in full (each names its feature), then
+// "FILE: ... and N more like it (KIND)" for each kind, in the order the kinds first came.
+std::vector<std::string> folded(const std::vector<std::string>& warnings, const std::string& file) {
+    std::vector<std::string> out;
+    std::vector<std::pair<std::string, size_t>> kinds;  // each kind and how many
+    for (const std::string& w : warnings) {
+        const size_t colon = w.rfind(": ");
+        const std::string kind = colon == std::string::npos ? w : w.substr(colon + 2);
+        auto k = std::find_if(kinds.begin(), kinds.end(),
+                              [&](const auto& seen) { return seen.first == kind; });
+        if (k == kinds.end()) k = kinds.insert(kinds.end(), {kind, 0});
+        if (k->second++ < kWarningsShownPerKind) out.push_back(w);
+    }
+    for (const auto& [kind, n] : kinds)
+        if (n > kWarningsShownPerKind)
+            out.push_back(file + ": \u2026 and " + grouped(n - kWarningsShownPerKind) +
+                          " more like it (" + kind + ")");
+    return out;
+}
+
 size_t width(const std::string& s) {  // UTF-8 code points
     return size_t(std::count_if(s.begin(), s.end(), [](char c) { return (c & 0xC0) != 0x80; }));
 }
@@ -528,7 +571,8 @@ int runCheck(const CheckOptions& o) {
 
     std::vector<Row*> rows;
     for (File& f : files) {
-        for (const std::string& w : f.warnings) std::cerr << "warning: " << printable(w) << "\n";
+        for (const std::string& w : folded(f.warnings, displayName(f.path)))
+            std::cerr << "warning: " << printable(w) << "\n";
         for (Row& r : f.rows) rows.push_back(&r);
     }
     int code = 0;

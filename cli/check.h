@@ -26,6 +26,13 @@ struct CheckOptions {
     size_t maxFindings = 100;         // an invalid feature's findings listed, the rest counted
 };
 
+// 1234567 -> "1,234,567".
+std::string grouped(size_t n);
+
+// What a folder search finds, for messages and the help: ".json, .geojson, .wkt" and, built
+// with GDAL, the GIS formats (".shp, .gpkg, ...").
+std::string folderFormats();
+
 // Returns the exit code: 0 when every feature passed, else the largest code of a failing
 // feature's class (3 malformed < 4 invalid < 5 forbidden < 6 checker/internal), or 8 when an
 // extracted file could not be written.

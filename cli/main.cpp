@@ -66,13 +66,6 @@ ReadResult readInput(const std::string& path) {
     return readPolygonFile(path, maxInputBytes);
 }
 
-// 1234567 -> "1,234,567".
-std::string grouped(size_t n) {
-    std::string s = std::to_string(n);
-    for (size_t i = s.size(); i > 3; i -= 3) s.insert(i - 3, ",");
-    return s;
-}
-
 // Reads and validates; on failure prints the diagnostic and returns its status.
 // With `check` false (--no-validate) validation is skipped, so the flood machine itself
 // diagnoses invalid input (docs/ERRORS.md, forbidden transitions); the T-junctions the machine
@@ -85,7 +78,7 @@ Status prepare(const std::string& path, Polygon& polygon, bool check = true,
     for (const std::string& w : rr.warnings) std::cerr << "warning: " << w << "\n";
     if (rr.warningsOmitted)
         std::cerr << "warning: " << (path == "-" ? "<stdin>" : path) << ": \u2026 and "
-                  << grouped(rr.warningsOmitted) << " more warnings like these\n";
+                  << cli::grouped(rr.warningsOmitted) << " more warnings like these\n";
     if (!rr.diagnostic.ok()) {
         std::cerr << "error: " << rr.diagnostic.message << "\n";
         return rr.diagnostic.status;
@@ -309,17 +302,24 @@ double medianNs(int repeat, F&& run) {
     return t[t.size() / 2];
 }
 
+// The generator's families, as --help and an unknown family's message list them.
+std::string familyList() {
+    std::string list;
+    for (const std::string& n : familyNames()) list += (list.empty() ? "" : ", ") + n;
+    list += "; invalid families (validation refuses them): ";
+    const std::vector<std::string> invalid = invalidFamilyNames();
+    for (size_t k = 0; k < invalid.size(); ++k) list += (k ? ", " : "") + invalid[k];
+    return list;
+}
+
 // Writes a generated polygon: ring array (one part) or GeoJSON MultiPolygon, streamed so a
 // 10^7-vertex file needs no second copy in memory.
 int cmdGenerate(const std::string& family, size_t size, uint64_t seed, const std::string& out) {
     auto names = familyNames(), invalid = invalidFamilyNames();
     bool isInvalid = std::find(invalid.begin(), invalid.end(), family) != invalid.end();
     if (!isInvalid && std::find(names.begin(), names.end(), family) == names.end()) {
-        std::cerr << "error: unknown family \"" << family << "\"; families:";
-        for (const std::string& n : names) std::cerr << " " << n;
-        std::cerr << "; invalid families (validate() refuses them):";
-        for (const std::string& n : invalid) std::cerr << " " << n;
-        std::cerr << "\n";
+        std::cerr << "error: unknown family \"" << family << "\"; families: " << familyList()
+                  << "\n";
         return code(Status::Usage);
     }
     Polygon p = isInvalid ? generateInvalid(family, seed, size) : generate(family, seed, size);
@@ -606,8 +606,7 @@ int run(int argc, char** argv) {
     auto* gen = app.add_subcommand(
         "generate",
         "Write a generated polygon (core/tools/generate.h): a valid family, or an invalid one");
-    gen->add_option("FAMILY", family, "Polygon family (see the error message for the list)")
-        ->required();
+    gen->add_option("FAMILY", family, "Polygon family: " + familyList())->required();
     gen->add_option("SIZE", size, "Approximate vertex count")
         ->required()
         ->check(CLI::Range(size_t(3), size_t(1) << 31));
@@ -633,8 +632,9 @@ int run(int argc, char** argv) {
     auto* chk = app.add_subcommand("check",
                                    "Check every polygon of a dataset: each feature of "
                                    "each file, folders recursively; a table or --json");
-    chk->add_option("FILE", checkOptions.inputs,
-                    "Files and folders (.json, .geojson, .wkt found recursively; - for stdin)")
+    chk->add_option(
+           "FILE", checkOptions.inputs,
+           "Files and folders (in folders, recursively: " + cli::folderFormats() + "; - for stdin)")
         ->required();
     chk->add_flag("--json", checkOptions.json,
                   "One JSON document: a record per feature and the summary");

@@ -12,6 +12,7 @@
 #include <atomic>
 #include <chrono>
 #include <cstddef>
+#include <cstdio>
 #include <cstring>
 #include <memory>
 #include <thread>
@@ -60,10 +61,34 @@ std::string badRingShape(const Array& a) {
     return "";
 }
 
+// A str's UTF-8 bytes in `text`, or "" and a Malformed diagnostic when it has a lone surrogate
+// (UTF-8 cannot hold one; the command line's JSON reader refuses "\ud800" as malformed too).
+// Needs the GIL.
+Diagnostic utf8Of(py::handle str, const std::string& name, std::string& text) {
+    Py_ssize_t size = 0;
+    if (const char* utf8 = PyUnicode_AsUTF8AndSize(str.ptr(), &size)) {
+        text.assign(utf8, size_t(size));
+        return {};
+    }
+    PyErr_Clear();
+    Py_ssize_t at = 0;
+    const Py_ssize_t length = PyUnicode_GET_LENGTH(str.ptr());
+    Py_UCS4 c = 0;
+    while (at < length && ((c = PyUnicode_READ_CHAR(str.ptr(), at)) < 0xD800 || c > 0xDFFF)) ++at;
+    char code[16];
+    std::snprintf(code, sizeof code, "U+%04X", unsigned(c));
+    return {Status::Malformed, name + ": the text holds a lone surrogate " + code +
+                                   " at character " + std::to_string(at) +
+                                   ": it is not Unicode, and UTF-8 cannot encode it"};
+}
+
 // Reads one input (see the file comment). Needs the GIL.
 ReadResult readInput(py::handle input, const std::string& name) {
     if (py::isinstance<py::str>(input)) {
-        std::string text = input.cast<std::string>();
+        std::string text;
+        ReadResult rr;
+        rr.diagnostic = utf8Of(input, name, text);
+        if (!rr.diagnostic.ok()) return rr;
         py::gil_scoped_release unlocked;
         return parsePolygon(text, name);
     }
@@ -73,7 +98,15 @@ ReadResult readInput(py::handle input, const std::string& name) {
         return parseWkb(bytes, name);
     }
     ReadResult rr;
+    size_t parts = 0;
     for (py::handle part : input) {
+        // An empty part is no polygon, as the command line's reader says of [].
+        if (py::len(part) == 0) {
+            rr.diagnostic = {Status::Malformed, name + ": polygon " + std::to_string(parts) +
+                                                    ": polygon has no rings"};
+            return rr;
+        }
+        ++parts;
         bool outer = true;
         for (py::handle ring : part) {
             Array a = Array::ensure(ring);
@@ -277,7 +310,8 @@ PYBIND11_MODULE(_flood, m) {
         if (names.size() != inputs.size()) throw py::value_error("one name per feature");
         std::vector<Outcome> outcomes(inputs.size());
         std::vector<std::string> texts(inputs.size());
-        // Texts and WKB are copied and read by the threads; arrays are read here.
+        // Texts and WKB are copied and read by the threads; arrays (and a text that is no
+        // UTF-8) are read here.
         enum class Kind : uint8_t { Arrays, Text, Wkb };
         std::vector<Kind> kind(inputs.size(), Kind::Arrays);
         for (size_t i = 0; i < inputs.size(); ++i) {
@@ -286,8 +320,10 @@ PYBIND11_MODULE(_flood, m) {
             py::handle input = inputs[i];
             if (py::isinstance<py::str>(input)) kind[i] = Kind::Text;
             else if (py::isinstance<py::bytes>(input)) kind[i] = Kind::Wkb;
-            if (kind[i] != Kind::Arrays) texts[i] = input.cast<std::string>();
-            else outcomes[i] = prepare(input, names[i]);
+            if (kind[i] == Kind::Wkb) texts[i] = input.cast<std::string>();
+            else if (kind[i] == Kind::Arrays) outcomes[i] = prepare(input, names[i]);
+            else if (Diagnostic d = utf8Of(input, names[i], texts[i]); !d.ok())
+                outcomes[i].diagnostic = d, kind[i] = Kind::Arrays;  // read: a verdict already
         }
         bool interrupted = false;
         {

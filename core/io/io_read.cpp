@@ -393,6 +393,7 @@ FeatureRead readFeature(const std::string& name, const json& item, size_t i, int
             throw BadStructure{ctx + ": not a Feature with a geometry"};
         int polygonCount = 0;
         readGeometry(f.read, name, item["geometry"], ctx + " ", polygonCount);
+        io_detail::nameFeature(f.read.warnings, name, ctx);
         if (f.read.polygon.rings.empty()) throw BadStructure{ctx + ": no polygon found"};
     } catch (const BadStructure& b) {
         f.read.polygon = Polygon{};

@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "geometry/number_text.h"
 #include "geometry/polygon.h"
@@ -56,6 +57,17 @@ inline std::string jsonReason(const char* what) {
 inline std::string binaryData(const std::string& name, size_t offset, const char* expected) {
     return name + ": binary data (a NUL byte at byte " + std::to_string(offset) + "), not " +
            expected;
+}
+
+// A feature's warnings name it, "NAME: ring 0 ..." becoming "NAME: feature 17: ring 0 ...":
+// flood check reads thousands of features, and a warning must say which one it is about.
+inline void nameFeature(std::vector<std::string>& warnings, const std::string& name,
+                        const std::string& feature) {
+    const std::string lead = name + ": ";
+    for (std::string& w : warnings)
+        if (w.compare(0, lead.size(), lead) == 0 &&
+            w.compare(lead.size(), feature.size(), feature) != 0)
+            w.insert(lead.size(), feature + ": ");
 }
 
 // 1-based line and column of byte `offset` in `text` (columns count bytes).

@@ -144,25 +144,37 @@ def _raise_for(d: Diagnostic):
 
 
 def _depth(x) -> int:
-    """Nesting depth: 1 for a point, 2 for a ring, 3 for a ring list, 4 for a multipolygon."""
+    """Nesting depth: 1 for a point, 2 for a ring, 3 for a ring list, 4 for a multipolygon.
+    An empty list ends the descent and is read as part of a ring list, as the command line
+    reads the same JSON (core/io/io_read.cpp, arrayDepth): [] is a polygon without rings
+    (malformed), [[]] one with an empty ring (invalid), the same verdict through both doors."""
     d = 0
     while True:
         if isinstance(x, np.ndarray):
             return d + x.ndim
-        if isinstance(x, (str, bytes)) or not isinstance(x, Sequence) or len(x) == 0:
-            return d + (1 if isinstance(x, Sequence) and not isinstance(x, (str, bytes)) else 0)
+        if isinstance(x, (str, bytes)) or not isinstance(x, Sequence):
+            return d
+        if len(x) == 0:
+            return max(d, 3)
         d += 1
         x = x[0]
 
 
 def _ring(coords) -> np.ndarray:
     a = np.asarray(coords)
+    if a.shape == (0,):
+        a = np.zeros((0, 2))  # an empty ring: the validator says what is wrong with it
     if a.dtype.kind not in "fiu":
         raise TypeError(f"ring coordinates must be numbers, got dtype {a.dtype}")
     # Any shape goes on: the C++ side takes (n, 2), (n, 3) or (n, 4) rows of x, y[, z[, m]]
     # (z and m dropped, as shapely and GeoJSON may carry them) and refuses the rest, a
     # transposed [xs, ys, zs] among them, as malformed (code 3) rather than misreading it.
     return np.ascontiguousarray(a, dtype=np.float64)
+
+
+def _name(name) -> str:
+    """A name as messages carry it: a lone surrogate (no UTF-8 for it) as its escape, \\ud800."""
+    return str(name).encode("utf-8", "backslashreplace").decode("utf-8")
 
 
 _HEX_WKB = re.compile(r"0[01][0-9A-Fa-f]{8,}")
@@ -218,7 +230,7 @@ def _normalize(polygon) -> Any:
 
 def validate(polygon, *, name: str = "polygon") -> Diagnostic:
     """The validator's verdict (docs/ERRORS.md): ``.ok``, or the first problem found."""
-    found, warnings = _flood.validate(_normalize(polygon), name)
+    found, warnings = _flood.validate(_normalize(polygon), _name(name))
     _warn(warnings)
     return Diagnostic._from(found, warnings)
 
@@ -226,7 +238,8 @@ def validate(polygon, *, name: str = "polygon") -> Diagnostic:
 def triangulate(polygon, *, validate: bool = True, up: str = "+y",
                 name: str = "polygon") -> Triangulation:
     """Triangulates like ``flood triangulate``: validate, flood, check exactly."""
-    found, warnings, vertices, triangles, _ = _flood.triangulate(_normalize(polygon), validate, up, name)
+    found, warnings, vertices, triangles, _ = _flood.triangulate(
+        _normalize(polygon), validate, up, _name(name))
     _warn(warnings)
     _raise_for(Diagnostic._from(found, warnings))
     return Triangulation(vertices, triangles)
@@ -265,7 +278,7 @@ class Trace:
 def trace(polygon, *, validate: bool = True, up: str = "+y", name: str = "polygon") -> Trace:
     """Floods with a recorder, like ``flood trace``. Malformed or invalid input raises
     InvalidPolygon; a run stopped in a forbidden state is returned (see Trace.diagnostic)."""
-    result = _flood.trace(_normalize(polygon), validate, up, name)
+    result = _flood.trace(_normalize(polygon), validate, up, _name(name))
     if isinstance(result, tuple):
         _raise_for(Diagnostic._from(result))
     return Trace(result)
@@ -281,7 +294,7 @@ def check(features, *, validate: bool = True, up: str = "+y", threads: int = 0,
     ids = list(range(len(features))) if ids is None else list(ids)
     if len(ids) != len(features):
         raise ValueError(f"{len(ids)} ids for {len(features)} features")
-    names = [f"feature {i}" for i in ids]
+    names = [_name(f"feature {i}") for i in ids]
     inputs = [_normalize(f) for f in features]
     out = _flood.check(inputs, validate, up, threads, names)
     return [Verdict._from(found[:5], index=ids[k], triangles=found[5]) for k, found in enumerate(out)]

@@ -51,3 +51,20 @@ def test_any_direction_equals_the_cli(up, flood_cli, tmp_path):
 def test_a_bad_direction_names_itself():
     with pytest.raises(ValueError, match="'banana'"):
         flood.triangulate([[[0, 0], [1, 0], [0, 1]]], up="banana")
+
+
+# Empty lists at every depth: `[[]]` was malformed (3) from Python but invalid (4) from the
+# command line. The same JSON, as a file and as nested lists, gets one verdict and one message.
+@pytest.mark.parametrize("doc", ["[]", "[[]]", "[[], []]", "[[[]]]", "[[[[]]]]",
+                                 "[[[0, 0], [1, 0], [0, 1]], []]",
+                                 "[[[[0, 0], [1, 0], [0, 1]]], []]", "[[[0, 0], [1, 0]]]"])
+def test_empty_lists_get_the_clis_verdict(doc, flood_cli, tmp_path):
+    path = tmp_path / "t.json"
+    path.write_text(doc)
+    run = subprocess.run([flood_cli, "triangulate", str(path), "-o", str(tmp_path / "o.json")],
+                         capture_output=True, text=True)
+    assert run.returncode in (3, 4), run.stderr
+    d = flood.validate(json.loads(doc), name=str(path))
+    assert d.code == run.returncode, (d, run.stderr)
+    if run.returncode == 4 or "no rings" in run.stderr:  # the readers' shared words
+        assert d.message in run.stderr, (d.message, run.stderr)

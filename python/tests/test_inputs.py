@@ -170,3 +170,25 @@ def test_a_transposed_or_misshapen_ring_is_refused_not_misread():
     assert flood.triangulate(np.array([xs, ys, zs, zs]).T).triangles.tolist() == square
     # One point with z, a Steiner hole, is no transposed ring.
     assert flood.validate([[(0, 0), (10, 0), (10, 10), (0, 10)], [(5, 5, 1)]]).ok
+
+
+# A str with a lone surrogate (no UTF-8 for it) raised RuntimeError "Unable to cast Python
+# instance to C++ type": it is malformed text, as the command line calls "\ud800" in a file.
+def test_a_lone_surrogate_is_malformed_text_named():
+    bad = "POLYGON((0 0, 10 0, 0 10, 0 0))\udc80"
+    d = flood.validate(bad, name="t.wkt")
+    assert d.code == 3 and d.status == "malformed", d
+    assert d.message == ("t.wkt: the text holds a lone surrogate U+DC80 at character 31: it is "
+                         "not Unicode, and UTF-8 cannot encode it"), d.message
+    with pytest.raises(flood.InvalidPolygon) as caught:  # a ValueError
+        flood.triangulate(bad)
+    assert isinstance(caught.value, ValueError) and "U+DC80" in str(caught.value)
+    with pytest.raises(flood.InvalidPolygon):
+        flood.trace("\ud800")
+    good = "POLYGON((0 0, 10 0, 0 10, 0 0))"
+    verdicts = flood.check([good, bad, good], ids=["a", "b\ud800", "c"])
+    assert [v.code for v in verdicts] == [0, 3, 0]
+    assert verdicts[1].message.startswith("feature b\\ud800: the text holds a lone surrogate")
+    # A name with one is shown escaped, not refused.
+    assert flood.validate(good, name="x\ud800").ok
+    assert flood.validate("[]", name="x\ud800").message.startswith("x\\ud800: ")

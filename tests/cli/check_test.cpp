@@ -189,7 +189,10 @@ TEST(Check, FoldersAreCheckedRecursivelyInSortedOrder) {
     // A folder with no polygon file is a row, not a silent pass.
     EXPECT_EQ(files[11], (d / "empty").string());
     EXPECT_EQ(doc["features"][11]["verdict"], "malformed");
-    EXPECT_EQ(doc["features"][11]["reason"], "folder holds no .json, .geojson or .wkt file");
+    EXPECT_EQ(doc["features"][11]["reason"].get<std::string>().rfind(
+                  "folder holds no polygon file (.json, .geojson, .wkt", 0),
+              0u)
+        << doc["features"][11];
     fs::remove_all(d);
 }
 
@@ -517,5 +520,79 @@ TEST(Check, ControlCharactersInNamesAreEscaped) {
     // The JSON keeps the text itself, escaped as JSON escapes it.
     json doc = checkJson((d / "ctl.json").string());
     EXPECT_EQ(doc["features"][0]["name"], "evil\x1b[31mred\nforged  row \xc2\x85x\x7f");
+    fs::remove_all(d);
+}
+
+// `check --help` said ".json, .geojson, .wkt found recursively" while a folder search found
+// .shp, .gpkg, .fgb, ... too (issue 30 §4): the help lists every format, and every format it
+// lists is found in a folder.
+TEST(Check, HelpListsEveryFormatAFolderSearchFinds) {
+    RunResult help = runCli("check --help");
+    ASSERT_EQ(help.code, 0) << help.out;
+    const std::string lead = "in folders, recursively: ";
+    const size_t at = help.out.find(lead);
+    ASSERT_NE(at, std::string::npos) << help.out;
+    const std::string list =
+        help.out.substr(at + lead.size(), help.out.find(';', at) - at - lead.size());
+    std::vector<std::string> exts;
+    for (size_t from = 0; from < list.size();) {
+        size_t comma = std::min(list.find(", ", from), list.size());
+        exts.push_back(list.substr(from, comma - from));
+        from = comma + 2;
+    }
+    ASSERT_GE(exts.size(), 3u) << list;
+#ifdef FLOOD_GDAL
+    for (const char* gis : {".shp", ".gpkg", ".fgb"})
+        EXPECT_NE(std::find(exts.begin(), exts.end(), gis), exts.end()) << list;
+#endif
+    fs::path d = scratch("help-formats");
+    for (const std::string& ext : exts) {
+        ASSERT_EQ(ext[0], '.') << list;
+        std::ofstream(d / ("x" + ext)) << "x";
+    }
+    std::ofstream(d / "x.txt") << "x";  // not listed: not found
+    json doc = checkJson(d.string());
+    EXPECT_EQ(doc["summary"]["files"], exts.size()) << doc["summary"];
+    // The message of a folder without any names them too.
+    fs::create_directories(d / "empty");
+    doc = checkJson((d / "empty").string());
+    EXPECT_EQ(doc["features"][0]["reason"], "folder holds no polygon file (" + list + ")");
+    fs::remove_all(d);
+}
+
+// 2,000 features with a repeated point printed 2,000 identical lines that named no feature
+// (issue 30 §4): each warning names its feature, and past the first few of a kind the rest of
+// that kind are one line with their count.
+TEST(Check, WarningsNameTheFeatureAndFoldRepeats) {
+    fs::path d = scratch("warnings");
+    json features = json::array();
+    for (int i = 0; i < 2000; ++i)
+        features.push_back({{"type", "Feature"},
+                            {"properties", json::object()},
+                            {"geometry",
+                             {{"type", "Polygon"},
+                              {"coordinates", {{{0, 0}, {10, 0}, {10, 0}, {10, 10}, {0, 0}}}}}}});
+    const std::string file = (d / "rep.geojson").string();
+    std::ofstream(file) << json{{"type", "FeatureCollection"}, {"features", features}}.dump();
+    CheckRun r = cli("check " + file);
+    EXPECT_EQ(r.code, 0) << r.err;
+    std::string want;
+    for (int i = 0; i < 3; ++i)
+        want += "warning: " + file + ": feature " + std::to_string(i) +
+                ": ring 0 vertex 2 (10, 0): repeated point dropped\n";
+    want += "warning: " + file + ": \u2026 and 1,997 more like it (repeated point dropped)\n";
+    EXPECT_EQ(r.err, want);
+#ifdef FLOOD_GDAL
+    // A GIS dataset's warnings name the feature by its FID.
+    const std::string gpkg = (d / "rep.gpkg").string();
+    RunResult g = runShell("ogr2ogr -f GPKG " + gpkg + " " + file + " -limit 2 2>&1");
+    ASSERT_EQ(g.code, 0) << g.out;
+    r = cli("check " + gpkg);
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_TRUE(has(r.err, "warning: " + gpkg +
+                               ": feature 2: ring 0 vertex 2 (10, 0): repeated "
+                               "point dropped\n"))
+        << r.err;
+#endif
     fs::remove_all(d);
 }

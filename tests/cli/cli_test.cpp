@@ -22,6 +22,7 @@
 
 #include "invalid_catalogue.h"
 #include "log/trace_io.h"
+#include "tools/generate.h"
 
 using namespace flood::testing;
 
@@ -433,4 +434,27 @@ TEST(Cli, TraceWithNaNReadsBack) {
     EXPECT_EQ(back.polygon.vertices[2].x, 10);
     EXPECT_EQ(back.diagnostic.status, flood::Status::Forbidden);
     fs::remove_all(d);
+}
+
+// `generate --help` said "see the error message for the list" (issue 30 §4): it lists every
+// family, valid and invalid, and each one it lists generates.
+TEST(Cli, GenerateHelpListsEveryFamily) {
+    RunResult help = runCli("generate --help");
+    ASSERT_EQ(help.code, 0) << help.out;
+    std::vector<std::string> want = flood::familyNames(), invalid = flood::invalidFamilyNames();
+    want.insert(want.end(), invalid.begin(), invalid.end());
+    for (const std::string& family : want) {
+        bool listed = false;  // as a whole word of the list: "circle" is no "circle-holes"
+        for (size_t at = help.out.find(" " + family); !listed && at != std::string::npos;
+             at = help.out.find(" " + family, at + 1))
+            listed =
+                std::string(",;\n ").find(help.out[at + 1 + family.size()]) != std::string::npos;
+        EXPECT_TRUE(listed) << family << "\n" << help.out;
+        RunResult r = runCli("generate " + family + " 30 -o /dev/null");
+        EXPECT_EQ(r.code, 0) << family << ": " << r.out;
+    }
+    RunResult unknown = runCli("generate nope 30");
+    EXPECT_EQ(unknown.code, 2);
+    EXPECT_NE(unknown.out.find("families: " + want.front() + ", "), std::string::npos)
+        << unknown.out;
 }

@@ -354,3 +354,37 @@ TEST(SpecialFiles, AnExistingGeoPackageKeepsItsOtherLayers) {
     fs::remove_all(d);
 }
 #endif
+
+// `check --extract DIR` never writes through a name that is taken: a FIFO there is not opened
+// (a write would block until a reader came), a dangling link not followed (its target is not
+// made), a device not written; a folder that cannot be written is exit 8 naming the file, with
+// nothing left in it.
+TEST(SpecialFiles, ExtractNeverWritesThroughATakenName) {
+    const fs::path d = scratch("extract-special"), out = d / "out";
+    fs::create_directories(out);
+    const std::string mixed = src("polygons/datasets/mixed.geojson");
+    ASSERT_EQ(mkfifo((out / "mixed_feature1.json").c_str(), 0644), 0);
+    fs::create_symlink(d / "victim", out / "mixed_feature1-2.json");
+    fs::create_symlink("/dev/null", out / "mixed_feature3.json");
+    const std::string check = std::string(FLOOD_CLI) + " check --extract ";
+    RunResult r = runShell(check + out.string() + " " + mixed + " 2>&1 >/dev/null");
+    EXPECT_EQ(r.code, 4) << r.out;
+    EXPECT_TRUE(fs::is_fifo(out / "mixed_feature1.json"));
+    EXPECT_TRUE(fs::is_symlink(out / "mixed_feature1-2.json"));
+    EXPECT_FALSE(fs::exists(d / "victim"));
+    EXPECT_TRUE(fs::is_symlink(out / "mixed_feature3.json"));
+    EXPECT_GT(fs::file_size(out / "mixed_feature1-3.json"), 10u);
+    EXPECT_GT(fs::file_size(out / "mixed_feature3-2.json"), 10u);
+    // A folder that cannot be written (root writes anywhere: then /proc).
+    const fs::path ro = d / "ro";
+    fs::create_directories(ro);
+    fs::permissions(ro, fs::perms::owner_read | fs::perms::owner_exec);
+    const fs::path dir = access(ro.c_str(), W_OK) == 0 ? fs::path("/proc") : ro;
+    r = runShell(check + dir.string() + " " + mixed + " 2>&1 >/dev/null");
+    EXPECT_EQ(r.code, 8) << r.out;
+    EXPECT_TRUE(has(r.out, "error: " + (dir / "mixed_feature1.json").string() + ": cannot write: "))
+        << r.out;
+    fs::permissions(ro, fs::perms::owner_all);
+    EXPECT_TRUE(listing(ro).empty());
+    fs::remove_all(d);
+}

@@ -14,6 +14,7 @@
 #include <string>
 #include <tuple>
 
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 #ifdef FLOOD_GIF
@@ -314,6 +315,73 @@ TEST(ExportGui, UnwritablePathExits8AndSaysWhy) {
         EXPECT_NE(r.out.find("No such file or directory"), std::string::npos) << r.out;
     }
     EXPECT_FALSE(fs::exists(missing));
+}
+
+// Every writer of the viewer against the files an output can hurt (issue 25; the command
+// line's are in tests/cli/special_files_test.cpp): through a symbolic link the target is
+// written and keeps its mode, the link stays; a FIFO and a device are written in place; a
+// folder that cannot be written is exit 8 naming OUT, nothing left in it.
+TEST(ExportGui, EveryWriterAgainstSpecialFiles) {
+    NEED_DISPLAY();
+    fs::path dir = scratch("special");
+    std::string input = squareWithHole(dir);
+    struct Writer {
+        std::string option, ext;
+    };
+    std::vector<Writer> writers = {
+        {"--screenshot", ".png"}, {"--screenshot", ".svg"}, {"--canvas-only --screenshot", ".png"}};
+#ifdef FLOOD_GIF
+    writers.push_back({"--steps 0:2 --export-gif", ".gif"});
+#endif
+    const fs::path fifo = dir / "fifo", got = dir / "got";
+    ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
+    fs::path ro = dir / "ro";
+    fs::create_directories(ro);
+    fs::permissions(ro, fs::perms::owner_read | fs::perms::owner_exec);
+    const fs::path unwritable = access(ro.c_str(), W_OK) == 0 ? fs::path("/proc") : ro;
+    for (const Writer& w : writers) {
+        SCOPED_TRACE(w.option + " OUT" + w.ext);
+        const std::string run = "'" + input + "' --size 160x120 " + w.option + " ";
+        const fs::path real = dir / ("real-" + std::to_string(&w - writers.data()));
+        fs::create_directories(real);
+        const fs::path target = real / ("target" + w.ext), link = dir / ("link" + w.ext);
+        { std::ofstream(target) << "old"; }
+        ASSERT_EQ(chmod(target.c_str(), 0600), 0);
+        fs::remove(link);
+        fs::create_symlink(real.filename() / target.filename(), link);
+        ViewerRun r = viewer(run + "'" + link.string() + "'");
+        EXPECT_EQ(r.code, 0) << r.out;
+        EXPECT_TRUE(fs::is_symlink(link));
+        EXPECT_GT(fs::file_size(target), 10u);
+        struct stat st;
+        ASSERT_EQ(stat(target.c_str(), &st), 0);
+        EXPECT_EQ(st.st_mode & 07777, 0600u);
+        EXPECT_EQ(fs::directory_iterator(real)->path(), target) << "a temporary left";
+        r = viewer(run + "/dev/null");
+        EXPECT_EQ(r.code, 0) << r.out;
+        // A FIFO: its reader gets the file (the format is chosen by OUT's name: a link to it).
+        const fs::path toFifo = dir / ("to-fifo" + w.ext);
+        fs::remove(toFifo);
+        fs::create_symlink(fifo, toFifo);
+        fs::remove(got);
+        std::string cmd = "cat '" + fifo.string() + "' > '" + got.string() + "' & '" +
+                          FLOOD_VIEWER + "' " + run + "'" + toFifo.string() + "' 2>&1; wait";
+        FILE* p = popen(cmd.c_str(), "r");
+        ASSERT_NE(p, nullptr);
+        char buf[256];
+        while (fgets(buf, sizeof buf, p)) {
+        }
+        int status = pclose(p);
+        EXPECT_TRUE(WIFEXITED(status) && WEXITSTATUS(status) == 0) << status;
+        EXPECT_GT(fs::file_size(got), 10u);
+        EXPECT_TRUE(fs::is_fifo(fifo));
+        const std::string out = (unwritable / ("new" + w.ext)).string();
+        r = viewer(run + "'" + out + "'");
+        EXPECT_EQ(r.code, 8) << r.out;
+        EXPECT_NE(r.out.find(out + ": cannot write"), std::string::npos) << r.out;
+    }
+    fs::permissions(ro, fs::perms::owner_all);
+    EXPECT_TRUE(fs::is_empty(ro));
 }
 
 TEST(ExportGui, BadExportOptionsAreUsageErrors) {

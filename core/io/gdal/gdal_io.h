@@ -25,6 +25,8 @@ bool handles(const std::string& path, const Selection& s);
 // A file a folder listing offers as a GIS dataset (flood check DIR, the viewer's browser):
 // .shp, .gpkg, .fgb, .geojsonl, .geojsons, .gml, .kml, .sqlite, .tab, .mif.
 bool gisFile(const std::string& path);
+// The extensions gisFile() knows, without their dot: what flood check --help lists.
+const std::vector<std::string>& gisExtensions();
 
 // One entry per polygonal feature: index is its position in the layer, id its FID, name its
 // "name" field. Non-polygonal features are skipped with a warning in `skipped`; a dataset that

@@ -17,6 +17,10 @@ std::string outputDriver(const std::string& format, const std::string& path);
 Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
                       const std::vector<TriangulatedFeature>& features,
                       std::vector<std::string>& warnings);
+// The layer `layer` (or the only one) of the dataset `file` read back as a user's tool reads it: "" when every
+// one of its `features` features reads without an error, else what is wrong ("reading it back
+// gives 12 of 16 features"). A writer's check: GDAL does not always report a failed write.
+std::string readBackProblem(const std::string& file, const std::string& layer, long long features);
 }  // namespace direct
 
 struct ModuleTable {

@@ -22,11 +22,15 @@ bool handles(const std::string& path, const Selection& s) {
     return !ext.empty() && ext != "json" && ext != "geojson" && ext != "wkt";
 }
 
+const std::vector<std::string>& gisExtensions() {
+    static const std::vector<std::string> known = {"shp", "gpkg", "fgb",    "geojsonl", "geojsons",
+                                                   "gml", "kml",  "sqlite", "tab",      "mif"};
+    return known;
+}
+
 bool gisFile(const std::string& path) {
-    static const char* const known[] = {"shp", "gpkg", "fgb",    "geojsonl", "geojsons",
-                                        "gml", "kml",  "sqlite", "tab",      "mif"};
-    std::string ext = extension(path);
-    return std::find(std::begin(known), std::end(known), ext) != std::end(known);
+    const std::vector<std::string>& known = gisExtensions();
+    return std::find(known.begin(), known.end(), extension(path)) != known.end();
 }
 
 }  // namespace flood::gdal

@@ -35,9 +35,22 @@ void registerOnce() {
     });
 }
 
-std::string lastError() {
+// GDAL's last message, or `silent` (what failed, said by us) when GDAL gave none.
+std::string lastError(const std::string& silent) {
     std::string m = CPLGetLastErrorMsg();
-    return m.empty() ? "unknown GDAL error" : io_detail::echo(m);
+    return m.empty() ? silent : io_detail::echo(m);
+}
+
+// A GDAL error that came without a message, named by its class (cpl_error.h) and number.
+std::string silentError(CPLErrorNum number) {
+    static const char* const names[] = {
+        "",           "AppDefined",   "OutOfMemory",     "FileIO",        "OpenFailed",
+        "IllegalArg", "NotSupported", "AssertionFailed", "NoWriteAccess", "UserInterrupt",
+        "ObjectNull"};
+    const bool named = number > 0 && number < CPLErrorNum(sizeof names / sizeof names[0]);
+    return std::string("GDAL reported a failure without a message (") +
+           (named ? std::string("CPLE_") + names[number] + ", " : "") + "error number " +
+           std::to_string(number) + ")";
 }
 
 // GDAL's failures while a feature is read, collected in this thread (flood check reads files
@@ -62,7 +75,7 @@ public:
     }
 
 private:
-    static void CPL_STDCALL collect(CPLErr level, CPLErrorNum, const char* message) {
+    static void CPL_STDCALL collect(CPLErr level, CPLErrorNum number, const char* message) {
         auto* self = static_cast<Failures*>(CPLGetErrorHandlerUserData());
         if (level < CE_Failure || !self || self->messages_.size() >= 4) return;
         std::string m = message ? message : "";
@@ -71,7 +84,7 @@ private:
         size_t n = std::min<size_t>(m.size(), 160);
         while (n > 0 && n < m.size() && (static_cast<unsigned char>(m[n]) & 0xC0) == 0x80) --n;
         if (n < m.size()) m.resize(n), m += "\u2026";
-        self->messages_.push_back(m.empty() ? "unknown GDAL error" : m);
+        self->messages_.push_back(m.empty() ? silentError(number) : m);
     }
     std::vector<std::string> messages_;
 };
@@ -99,20 +112,21 @@ void addPolygon(ReadResult& rr, const std::string& name, const OGRPolygon& poly)
 }
 
 // Polygons, and collections of them (MultiPolygon parts, GeometryCollection members), after
-// linearisation. Returns false for anything else.
-bool addGeometry(ReadResult& rr, const std::string& name, const OGRGeometry& g) {
+// linearisation. Returns the first geometry that is none of these (nullptr when all were).
+const OGRGeometry* addGeometry(ReadResult& rr, const std::string& name, const OGRGeometry& g) {
     OGRwkbGeometryType t = wkbFlatten(g.getGeometryType());
     if (t == wkbPolygon) {
         addPolygon(rr, name, *g.toPolygon());
-        return true;
+        return nullptr;
     }
     if (t == wkbMultiPolygon || t == wkbGeometryCollection) {
         const OGRGeometryCollection* c = g.toGeometryCollection();
         for (int k = 0; k < c->getNumGeometries(); ++k)
-            if (!addGeometry(rr, name, *c->getGeometryRef(k))) return false;
-        return true;
+            if (const OGRGeometry* other = addGeometry(rr, name, *c->getGeometryRef(k)))
+                return other;
+        return nullptr;
     }
-    return false;
+    return &g;
 }
 
 bool polygonalType(OGRwkbGeometryType t) {
@@ -149,7 +163,15 @@ struct Reader {
             if (path.rfind("/vsi", 0) != 0 && path.find(':') == std::string::npos &&
                 ::stat(path.c_str(), &st) != 0)
                 return malformed(std::string("cannot open file: ") + std::strerror(errno));
-            return malformed("not a vector dataset GDAL can open: " + lastError());
+            // GDAL says nothing either of a file a driver knows with nothing it opens (a
+            // GeoPackage without vector tables): named as the dataset without layers it is.
+            if (CPLGetLastErrorMsg()[0] == '\0')
+                if (GDALDriverH known =
+                        GDALIdentifyDriverEx(path.c_str(), GDAL_OF_VECTOR, nullptr, nullptr))
+                    return malformed(std::string("the dataset has no layers (GDAL's ") +
+                                     GDALGetDriverLongName(known) + " driver finds none)");
+            return malformed("not a vector dataset GDAL can open: " +
+                             lastError("no GDAL driver recognises it"));
         }
         OGRLayer* layer = nullptr;
         if (!s.layer.empty()) {
@@ -158,6 +180,8 @@ struct Reader {
                 return malformed("no layer \"" + io_detail::echo(s.layer) + "\"" + layerList(*ds));
         } else if (ds->GetLayerCount() == 1) {
             layer = ds->GetLayer(0);
+        } else if (ds->GetLayerCount() == 0) {
+            return malformed("the dataset has no layers");
         } else {
             return malformed(std::to_string(ds->GetLayerCount()) +
                              " layers: choose one with --layer" + layerList(*ds));
@@ -165,7 +189,8 @@ struct Reader {
         const std::string lname = layer->GetName();
         if (!s.where.empty() && layer->SetAttributeFilter(s.where.c_str()) != OGRERR_NONE)
             return malformed("layer " + lname + ": --where '" + io_detail::echo(s.where) +
-                             "' is not a valid attribute filter: " + lastError());
+                             "' is not a valid attribute filter: " +
+                             lastError("GDAL's SetAttributeFilter failed without a message"));
         // What the layer says it holds, where that is exactly what reading gives (FlatGeobuf's
         // header; not a Shapefile's, which counts records marked deleted too): -1 otherwise,
         // or with a filter. Elsewhere GDAL's errors are what tells a cut file.
@@ -214,6 +239,7 @@ struct Reader {
     }
 
     static std::string layerList(GDALDataset& ds) {
+        if (ds.GetLayerCount() == 0) return " (the dataset has no layers)";
         std::string l;
         for (int k = 0; k < ds.GetLayerCount(); ++k)
             l += (k ? ", " : " (layers: ") + std::string(ds.GetLayer(k)->GetName());
@@ -251,16 +277,30 @@ struct Reader {
             if (f.IsFieldSetAndNotNull(i))
                 r.attributes.emplace_back(io_detail::echo(f.GetFieldDefnRef(i)->GetNameRef()),
                                           io_detail::echo(f.GetFieldAsString(i)));
+        // Its WKT name (POLYGON, CURVEPOLYGON, ...), as the user's tools show it.
+        const std::string type = g->getGeometryName();
         std::unique_ptr<OGRGeometry> linear;
         if (g->hasCurveGeometry()) {
             linear.reset(g->getLinearGeometry());
             if (linear) g = linear.get();
         }
-        if (!addGeometry(r.read, name, *g) || r.read.polygon.rings.empty()) {
+        std::string problem;
+        const OGRGeometry* other = g->IsEmpty() ? nullptr : addGeometry(r.read, name, *g);
+        io_detail::nameFeature(r.read.warnings, name, ctx);
+        if (g->IsEmpty()) {
+            problem = type + " EMPTY has no rings";
+        } else if (other) {
+            problem = other == g ? "a " + type +
+                                       " is not read: only POLYGON, MULTIPOLYGON and collections "
+                                       "of them are triangulated"
+                                 : "the " + type + " holds a " + other->getGeometryName() +
+                                       ": only polygons are triangulated";
+        } else if (r.read.polygon.rings.empty()) {
+            problem = "every polygon of the " + type + " is empty: it has no rings";
+        }
+        if (!problem.empty()) {
             r.read.polygon = Polygon{};
-            r.read.diagnostic = {Status::Malformed,
-                                 name + ": " + ctx + ": no polygon found (" +
-                                     OGRGeometryTypeToName(g->getGeometryType()) + ")"};
+            r.read.diagnostic = {Status::Malformed, name + ": " + ctx + ": " + problem};
         }
         out.features.push_back(std::move(r));
     }
@@ -307,6 +347,30 @@ ReadResult readPolygon(const std::string& path, const Selection& s) {
             }
     }
     return rr;
+}
+
+std::string readBackProblem(const std::string& file, const std::string& layerName,
+                            long long features) {
+    registerOnce();
+    CPLErrorReset();
+    DatasetPtr ds(static_cast<GDALDataset*>(
+        GDALOpenEx(file.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+    if (!ds) return "it does not open: " + lastError("GDALOpenEx failed without a message");
+    // By name in a dataset of several (a GeoPackage keeps its other layers); a format of one
+    // layer names it after the file (Shapefile, CSV, GeoJSON) or a folder (KML).
+    OGRLayer* layer =
+        ds->GetLayerCount() == 1 ? ds->GetLayer(0) : ds->GetLayerByName(layerName.c_str());
+    if (!layer) return "it has no layer " + layerName;
+    Failures failures;
+    long long n = 0;
+    for (FeaturePtr f; (f.reset(layer->GetNextFeature()), f) && !failures.any();) ++n;
+    if (failures.any())
+        return "reading it back fails after " + std::to_string(n) + " of " +
+               std::to_string(features) + " features: " + failures.text();
+    if (n != features)
+        return "reading it back gives " + std::to_string(n) + " of " + std::to_string(features) +
+               " features";
+    return "";
 }
 
 }  // namespace gdal::direct

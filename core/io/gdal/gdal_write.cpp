@@ -369,6 +369,16 @@ Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
                 e = errno;
         }
     made.push_back(base);
+    // FlatGeobuf does not check the close of its files, where stdio writes its last buffer: a
+    // full disk there went unnoticed (tests/cli/write_faults_test.cpp). Read back, it shows.
+    long long written = 0;
+    for (const TriangulatedFeature& tf : features)
+        written += o.multipolygon ? 1 : (long long)tf.triangles.size();
+    if (std::string problem = readBackProblem(folder + "/" + base, kLayer, written);
+        !problem.empty()) {
+        removeFolder();
+        return cannot("GDAL reported no error, but the dataset written is incomplete: " + problem);
+    }
     for (const std::string& name : made) {
         if (e) break;
         e = adoptPermissions(-1, folder + "/" + name, target);

@@ -463,5 +463,134 @@ TEST(GeoJsonFids, FloodsReaderNumbersFeaturesAsGdalDoes) {
     fs::remove_all(d);
 }
 
+// A layer whose second feature comes with a GDAL error that has no message, and whose
+// attribute filter fails without one: what a driver may do (issue 25 item 11).
+class SilentLayer : public OGRLayer {
+public:
+    SilentLayer() : defn_(new OGRFeatureDefn("silent")) {
+        defn_->Reference();
+        defn_->SetGeomType(wkbPolygon);
+    }
+    ~SilentLayer() override { defn_->Release(); }
+    void ResetReading() override { next_ = 0; }
+    OGRFeature* GetNextFeature() override {
+        if (next_ == 2) return nullptr;
+        auto* f = new OGRFeature(defn_);
+        f->SetFID(next_++);
+        if (next_ == 2) {
+            CPLError(CE_Failure, CPLE_FileIO, "%s", "");
+        } else {
+            OGRGeometry* g = nullptr;
+            OGRGeometryFactory::createFromWkt("POLYGON((0 0,1 0,0 1,0 0))", nullptr, &g);
+            f->SetGeometryDirectly(g);
+        }
+        return f;
+    }
+    OGRErr SetAttributeFilter(const char*) override { return OGRERR_FAILURE; }
+    OGRFeatureDefn* GetLayerDefn() override { return defn_; }
+    int TestCapability(const char*) override { return FALSE; }
+
+private:
+    OGRFeatureDefn* defn_;
+    int next_ = 0;
+};
+
+class SilentDataset : public GDALDataset {
+public:
+    int GetLayerCount() override { return 1; }
+    OGRLayer* GetLayer(int k) override { return k == 0 ? &layer_ : nullptr; }
+
+private:
+    SilentLayer layer_;
+};
+
+// GDAL's own words where it has some; where it has none, what failed is named, never "unknown
+// GDAL error"; "0 layers: choose one with --layer" and "no polygon found (Polygon)" for POLYGON
+// EMPTY said nothing of what was wrong.
+TEST_F(Gdal, MessagesSayWhatIsWrong) {
+    GDALAllRegister();
+    auto message = [](const std::string& file, const gdal::Selection& s = {}) {
+        DatasetRead d = gdal::readFeatures(file, s);
+        EXPECT_EQ(d.features.size(), 1u) << file;
+        return d.features.empty() ? std::string() : d.features[0].read.diagnostic.message;
+    };
+    { std::ofstream(path("notes.txt")) << "hello\n"; }
+    EXPECT_EQ(message(path("notes.txt")),
+              path("notes.txt") +
+                  ": not a vector dataset GDAL can open: no GDAL driver "
+                  "recognises it");
+    // A GeoPackage without tables (GDAL opens it as no vector dataset), a KML without any.
+    GDALDriver* gpkg = GetGDALDriverManager()->GetDriverByName("GPKG");
+    GDALClose(gpkg->Create(path("empty.gpkg").c_str(), 0, 0, 0, GDT_Unknown, nullptr));
+    EXPECT_EQ(
+        message(path("empty.gpkg")),
+        path("empty.gpkg") + ": the dataset has no layers (GDAL's GeoPackage driver finds none)");
+    std::ofstream(path("empty.kml"))
+        << "<?xml version=\"1.0\"?><kml xmlns=\"http://www.opengis.net/kml/2.2\">"
+           "<Document></Document></kml>";
+    EXPECT_EQ(message(path("empty.kml")), path("empty.kml") + ": the dataset has no layers");
+    EXPECT_EQ(message(path("empty.kml"), {"parcels", -1, ""}),
+              path("empty.kml") + ": no layer \"parcels\" (the dataset has no layers)");
+
+    // Empty polygons and collections holding other things: the feature and what it holds.
+    const std::string file = path("empties.gpkg");
+    GDALDataset* ds = gpkg->Create(file.c_str(), 0, 0, 0, GDT_Unknown, nullptr);
+    ASSERT_NE(ds, nullptr);
+    OGRLayer* layer = ds->CreateLayer("shapes", nullptr, wkbUnknown, nullptr);
+    const std::vector<std::pair<std::string, std::string>> cases = {
+        {"POLYGON EMPTY", "feature 1: POLYGON EMPTY has no rings"},
+        {"MULTIPOLYGON EMPTY", "feature 2: MULTIPOLYGON EMPTY has no rings"},
+        {"GEOMETRYCOLLECTION(POLYGON EMPTY)", "feature 3: GEOMETRYCOLLECTION EMPTY has no rings"},
+        {"GEOMETRYCOLLECTION(POLYGON((0 0,1 0,0 1,0 0)),POINT(1 2))",
+         "feature 4: the GEOMETRYCOLLECTION holds a POINT: only polygons are triangulated"},
+        {"TIN(((0 0,1 0,0 1,0 0)))",
+         "feature 5: a TIN is not read: only POLYGON, MULTIPOLYGON and collections of them are "
+         "triangulated"},
+    };
+    for (const auto& [wkt, _] : cases) {
+        OGRGeometry* g = nullptr;
+        ASSERT_EQ(OGRGeometryFactory::createFromWkt(wkt.c_str(), nullptr, &g), OGRERR_NONE) << wkt;
+        OGRFeature* f = OGRFeature::CreateFeature(layer->GetLayerDefn());
+        f->SetGeometryDirectly(g);
+        ASSERT_EQ(layer->CreateFeature(f), OGRERR_NONE);
+        OGRFeature::DestroyFeature(f);
+    }
+    GDALClose(ds);
+    DatasetRead d = gdal::readFeatures(file, {});
+    ASSERT_EQ(d.features.size(), cases.size());
+    for (size_t k = 0; k < cases.size(); ++k) {
+        EXPECT_EQ(d.features[k].read.diagnostic.status, Status::Malformed) << cases[k].first;
+        EXPECT_EQ(d.features[k].read.diagnostic.message, file + ": " + cases[k].second);
+    }
+    RunResult r = runCli("triangulate " + file + " --feature 1 -o " + path("never.json"));
+    EXPECT_EQ(r.code, 3) << r.out;
+    EXPECT_EQ(r.out, "error: " + file + ": " + cases[0].second + "\n");
+
+    // A driver's failure without a message: its class and number.
+    auto* silent = new GDALDriver();
+    silent->SetDescription("FloodTestSilent");
+    silent->SetMetadataItem(GDAL_DCAP_VECTOR, "YES");
+    silent->pfnOpen = [](GDALOpenInfo* info) -> GDALDataset* {
+        const std::string name = info->pszFilename;
+        return name.size() > 7 && name.substr(name.size() - 7) == ".silent" ? new SilentDataset
+                                                                            : nullptr;
+    };
+    GetGDALDriverManager()->RegisterDriver(silent);
+    { std::ofstream(path("x.silent")) << "x"; }
+    d = gdal::readFeatures(path("x.silent"), {});
+    ASSERT_EQ(d.features.size(), 2u);
+    EXPECT_TRUE(d.features[0].read.diagnostic.ok()) << d.features[0].read.diagnostic.message;
+    EXPECT_EQ(d.features[1].read.diagnostic.message,
+              path("x.silent") +
+                  ": feature 1: unreadable: GDAL reported a failure without a "
+                  "message (CPLE_FileIO, error number 3)");
+    EXPECT_EQ(message(path("x.silent"), {"", -1, "a = 1"}),
+              path("x.silent") +
+                  ": layer silent: --where 'a = 1' is not a valid attribute "
+                  "filter: GDAL's SetAttributeFilter failed without a message");
+    GetGDALDriverManager()->DeregisterDriver(silent);
+    delete silent;
+}
+
 }  // namespace
 }  // namespace flood::testing

@@ -13,6 +13,7 @@
 #include <memory>
 #include <mutex>
 
+#include "io/gdal/gdal_handles.h"
 #include "io/gdal/gdal_module.h"
 #include "io/io_util.h"
 
@@ -88,16 +89,6 @@ private:
     }
     std::vector<std::string> messages_;
 };
-
-struct DatasetCloser {
-    void operator()(GDALDataset* d) const { GDALClose(d); }
-};
-using DatasetPtr = std::unique_ptr<GDALDataset, DatasetCloser>;
-
-struct FeatureCloser {
-    void operator()(OGRFeature* f) const { OGRFeature::DestroyFeature(f); }
-};
-using FeaturePtr = std::unique_ptr<OGRFeature, FeatureCloser>;
 
 void addPolygon(ReadResult& rr, const std::string& name, const OGRPolygon& poly) {
     auto ring = [&](const OGRLinearRing* r, bool outer) {

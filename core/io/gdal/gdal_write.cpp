@@ -26,6 +26,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "io/gdal/gdal_handles.h"
 #include "io/gdal/gdal_module.h"
 #include "io/output.h"
 
@@ -33,15 +34,6 @@ namespace flood::gdal::direct {
 namespace {
 
 constexpr const char* kLayer = "triangles";
-
-struct DatasetCloser {
-    void operator()(GDALDataset* d) const { GDALClose(d); }
-};
-using DatasetPtr = std::unique_ptr<GDALDataset, DatasetCloser>;
-struct FeatureCloser {
-    void operator()(OGRFeature* f) const { OGRFeature::DestroyFeature(f); }
-};
-using FeaturePtr = std::unique_ptr<OGRFeature, FeatureCloser>;
 
 // A byte copy of `from` as the new file `to`; 0 or the errno of what failed.
 int copyFile(const std::string& from, const std::string& to) {

@@ -7,6 +7,10 @@
 #include "geometry/up.h"
 #include "platform_glfw.h"  // the --press keys
 
+#ifndef FLOOD_VERSION  // set by viewer/CMakeLists.txt, as the CLI's
+#define FLOOD_VERSION "unknown"
+#endif
+
 namespace flood::view {
 
 namespace {
@@ -33,6 +37,7 @@ const char* const kUsage =
     "       flood-viewer FILE --screenshot OUT.png|OUT.svg --canvas-only [--size WxH] [--caption]\n"
     "       flood-viewer FILE --export-gif OUT.gif|--export-png-dir DIR [--steps A:B] [--every K]\n"
     "                    [--fps F] [--caption] [--size WxH]\n"
+    "       flood-viewer --help | --version\n"
     "  FILE              polygon (GeoJSON, ring arrays or WKT) or a trace from `flood trace`\n"
     "                    (*.jsonl); default: polygons/paper-figure-7.json\n"
     "  --feature N       open the feature of FID N (as `flood check` and `flood\n"
@@ -87,6 +92,9 @@ int parseArgs(int argc, char** argv, Args& a) {
         };
         if (s == "-h" || s == "--help") {
             std::fputs(kUsage, stdout);
+            return 1;
+        } else if (s == "--version") {
+            std::puts("flood-viewer " FLOOD_VERSION);
             return 1;
         } else if (s == "--step") {
             const char* v = value("--step");

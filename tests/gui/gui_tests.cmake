@@ -21,6 +21,11 @@ add_test(NAME viewer/screenshot_test COMMAND screenshot_test)
 set_tests_properties(viewer/screenshot_test PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
   ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
 
+# ---- --version: the version and exit 0, as `flood --version` (needs no display) ------------
+add_test(NAME viewer/version COMMAND sh -c
+  "out=$(\"$0\" --version) && echo \"$out\" | grep -Eqx 'flood-viewer [0-9]+[.][0-9]+([.][0-9]+)?'"
+  $<TARGET_FILE:flood-viewer>)
+
 # ---- the exports: runs flood-viewer headless, reads what it wrote ------------------------
 add_executable(export_test ${GUI_TESTS}/export_test.cpp)
 target_link_libraries(export_test PRIVATE floodviewmodel PkgConfig::IMGUI GTest::gtest_main)

@@ -5,6 +5,7 @@
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config ninja-build
+  help2man                                            # man pages from --help, at build time
   nlohmann-json3-dev libcli11-dev libgmp-dev          # core + CLI
   libsimdjson-dev                                     #   the fast JSON reader
   libgtest-dev libbenchmark-dev                       # tests, benchmarks

@@ -38,6 +38,13 @@ for static in "" --static; do
 done
 
 "$prefix/bin/flood" generate star 50 -o "$tmp/star.json" && "$prefix/bin/flood" verify "$tmp/star.json" >/dev/null
+# The conventions of a command-line tool: its bash completion, and its man page where the
+# build could make it (help2man).
+[ -s "$prefix/share/bash-completion/completions/flood" ] ||
+    { echo "package-test: the bash completion is not installed" >&2; exit 1; }
+if [ -e "$build/man/flood.1" ] && [ ! -s "$prefix/share/man/man1/flood.1" ]; then
+    echo "package-test: the man page is not installed" >&2; exit 1
+fi
 
 # The installed viewer opens the installed polygons (share/flood/polygons beside bin/), also
 # once the prefix has moved, never the build's source tree; its desktop entry names its icon.

@@ -435,6 +435,30 @@ std::vector<int64_t> gdalFids(const json& items) {
 
 }  // namespace
 
+// A GeoJSON text sequence (RFC 8142; GDAL's GeoJSONSeq, .geojsonl/.geojsons; what
+// `ogr2ogr -f GeoJSONSeq /vsistdout/` pipes): a Feature per line, or after each record
+// separator (0x1E). The features as an array, or null when `text` is not one: fewer than two
+// records without a separator, or a record that is not a Feature (then the text is read as
+// one document, and its reader's message says what is wrong).
+json featureSequence(std::string_view text) {
+    const bool separated = text.find('\x1e') != std::string_view::npos;
+    const char cut = separated ? '\x1e' : '\n';
+    json items = json::array();
+    for (size_t pos = 0; pos <= text.size();) {
+        size_t end = text.find(cut, pos);
+        if (end == std::string_view::npos) end = text.size();
+        std::string_view record = text.substr(pos, end - pos);
+        pos = end + 1;
+        if (record.find_first_not_of(" \t\r\n") == std::string_view::npos) continue;
+        if (tooDeep(record) != std::string_view::npos) return nullptr;
+        json f = json::parse(record.begin(), record.end(), nullptr, false);
+        if (!f.is_object() || !f.contains("type") || f["type"] != "Feature") return nullptr;
+        items.push_back(std::move(f));
+    }
+    if (items.empty() || (!separated && items.size() < 2)) return nullptr;
+    return items;
+}
+
 DatasetRead parseFeatures(std::string_view text, const std::string& name, bool keepSource) {
     DatasetRead out;
     auto whole = [&] {
@@ -443,20 +467,22 @@ DatasetRead parseFeatures(std::string_view text, const std::string& name, bool k
         out.features.push_back(std::move(f));
         return std::move(out);
     };
-    if (text.find("\"FeatureCollection\"") == std::string_view::npos ||
-        text.find('\0') != std::string_view::npos || tooDeep(text) != std::string_view::npos)
+    if (text.find("\"Feature") == std::string_view::npos ||
+        text.find('\0') != std::string_view::npos ||
+        io_detail::firstUnderflow(text) != std::string_view::npos)  // as 1e400
         return whole();
-    json doc;
-    try {
-        doc = json::parse(text.begin(), text.end());
-    } catch (const json::exception&) {
-        return whole();  // parsePolygon says where and why
+    json items = featureSequence(text);
+    if (items.is_null()) {
+        if (text.find("\"FeatureCollection\"") == std::string_view::npos ||
+            tooDeep(text) != std::string_view::npos)
+            return whole();
+        json doc = json::parse(text.begin(), text.end(), nullptr, false);
+        if (doc.is_discarded()) return whole();  // parsePolygon says where and why
+        if (!doc.is_object() || !doc.contains("type") || doc["type"] != "FeatureCollection" ||
+            !doc.contains("features") || !doc["features"].is_array() || doc["features"].empty())
+            return whole();
+        items = std::move(doc["features"]);
     }
-    if (io_detail::firstUnderflow(text) != std::string_view::npos) return whole();  // as 1e400
-    if (!doc.is_object() || !doc.contains("type") || doc["type"] != "FeatureCollection" ||
-        !doc.contains("features") || !doc["features"].is_array() || doc["features"].empty())
-        return whole();
-    const json& items = doc["features"];
     const std::vector<int64_t> fid = gdalFids(items);
     for (size_t i = 0; i < items.size(); ++i) {
         if (!polygonal(items[i])) {

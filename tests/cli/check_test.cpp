@@ -596,3 +596,43 @@ TEST(Check, WarningsNameTheFeatureAndFoldRepeats) {
 #endif
     fs::remove_all(d);
 }
+
+namespace {
+
+// A GeoJSON text sequence piped in (GeoJSONSeq, RFC 8142: a Feature per line, or after each
+// record separator 0x1E, as `ogr2ogr -f GeoJSONSeq /vsistdout/` writes it) is a dataset of
+// features, not one malformed document; a broken record leaves it one document, whose reader
+// names the line.
+TEST(Check, GeoJsonSequenceOnStdin) {
+    const fs::path dir = scratch("check-geojsonseq");
+    const std::string a =
+        R"({"type":"Feature","properties":{"name":"a"},"geometry":{"type":"Polygon",)"
+        R"("coordinates":[[[0,0],[1,0],[0,1],[0,0]]]}})";
+    const std::string bowtie =
+        R"({"type":"Feature","properties":{"name":"b"},"geometry":{"type":"Polygon",)"
+        R"("coordinates":[[[0,0],[2,2],[2,0],[0,2],[0,0]]]}})";
+    const std::vector<std::pair<std::string, std::string>> forms = {
+        {"lines.geojsonl", a + "\n" + bowtie + "\n"},
+        {"separated.geojsons", "\x1e" + a + "\n\x1e" + bowtie + "\n"},
+    };
+    for (const auto& [file, text] : forms) {
+        SCOPED_TRACE(file);
+        std::ofstream((dir / file).string(), std::ios::binary) << text;
+        int code = -1;
+        json doc = checkJson("- < " + (dir / file).string(), &code);
+        ASSERT_TRUE(doc.contains("features")) << doc.dump();
+        ASSERT_EQ(doc["features"].size(), 2u) << doc.dump();
+        EXPECT_EQ(doc["features"][0]["verdict"], "ok");
+        EXPECT_EQ(doc["features"][0]["name"], "a");
+        EXPECT_EQ(doc["features"][1]["verdict"], "invalid");
+        EXPECT_EQ(code, 4);
+    }
+    std::ofstream((dir / "broken.geojsonl").string()) << a << "\n" << R"({"type":"Feature")";
+    CheckRun broken = cli("check - < " + (dir / "broken.geojsonl").string());
+    EXPECT_EQ(broken.code, 3);
+    EXPECT_TRUE(has(broken.out, "malformed")) << broken.out;
+    EXPECT_TRUE(has(broken.out, "2:")) << broken.out;
+    fs::remove_all(dir);
+}
+
+}  // namespace

@@ -475,6 +475,16 @@ static bool isTracePath(const std::string& path) {
 }
 
 void Model::open(const std::string& path) {
+    // A gallery file opens the gallery: its first polygon, and its list in the Open panel.
+    if (std::filesystem::path(path).filename() == "gallery.json") {
+        std::string dir = std::filesystem::path(path).parent_path().string();
+        if (dir.empty()) dir = ".";
+        if (std::vector<GalleryEntry> entries = readGallery(dir); !entries.empty()) {
+            galleryDir_ = dir;
+            ++galleryOpens_;
+            return open(entries.front().file);
+        }
+    }
     ReadResult r;
     Trace t;
     const bool isTrace = isTracePath(path);
@@ -1186,6 +1196,8 @@ std::vector<std::string> listPolygonFiles(const std::string& dir) {
     std::sort(out.begin(), out.end());
     return out;
 }
+
+std::string Model::galleryDir() const { return galleryDir_.empty() ? polygonsDir() : galleryDir_; }
 
 std::vector<GalleryEntry> readGallery(const std::string& dir) {
     std::vector<GalleryEntry> out;

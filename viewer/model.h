@@ -368,6 +368,11 @@ public:
     const std::vector<Index>& offenders() const { return offenders_; }  // vertices to blame
     const std::vector<TranscriptItem>& transcript() const { return transcript_; }
     const std::vector<std::string>& recentFiles() const { return recent_; }
+    // The folder whose gallery the Open panel lists: polygonsDir(), or the folder of the
+    // gallery file last opened (open(".../gallery.json") opens its first polygon). Each such
+    // open counts, so the UI can show the gallery when the count moves.
+    std::string galleryDir() const;
+    uint32_t galleryOpens() const { return galleryOpens_; }
     void loadRecent(const std::string& file);  // one path per line; missing file: no-op
     void saveRecent(const std::string& file) const;
     const std::string& verdict() const {
@@ -558,6 +563,8 @@ private:
     void computeVerdictLines();
     void remember(const std::string& path);
     Diagnostic openDiag_;
+    std::string galleryDir_;
+    uint32_t galleryOpens_ = 0;
     size_t feature_ = kNoFeature;
     std::string origin_, originName_;  // the shrunk polygon's source file, and its display name
     size_t originFeature_ = kNoFeature;

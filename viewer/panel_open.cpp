@@ -16,8 +16,10 @@
 namespace flood::view {
 
 void drawOpen(Ui& ui) {
-    if (!ui.showOpen) return;
     Model& m = ui.model;
+    if (m.galleryOpens() != ui.openPanel.galleryOpensSeen)  // a gallery file was opened
+        ui.openPanel.galleryOpensSeen = m.galleryOpens(), ui.showOpen = true;
+    if (!ui.showOpen) return;
     if (!beginFloating(ui, "Open polygon", &ui.showOpen, 460, 420, 20, 20)) return;
     char* path = ui.openPanel.path;
     bool go = ImGui::InputText("path", path, sizeof ui.openPanel.path,
@@ -79,11 +81,13 @@ void drawOpen(Ui& ui) {
         for (const auto& f : m.recentFiles())
             if (ImGui::Selectable(f.c_str(), f == m.path())) chosen = f;
 
-    std::string dir = polygonsDir();
+    const std::string dir = m.galleryDir();
     // The teaching gallery first (polygons/gallery.json, docs/TUTORIAL.md), in teaching order,
     // each with its one-line description.
-    if (!ui.openPanel.galleryRead)
+    if (!ui.openPanel.galleryRead || ui.openPanel.galleryDir != dir) {
         ui.openPanel.gallery = readGallery(dir), ui.openPanel.galleryRead = true;
+        ui.openPanel.galleryDir = dir;
+    }
     const std::vector<GalleryEntry>& gallery = ui.openPanel.gallery;
     if (!gallery.empty() && ImGui::CollapsingHeader("Gallery", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::PushTextWrapPos(0);

@@ -96,6 +96,8 @@ struct OpenUi {
     char path[1024] = "";
     bool galleryRead = false;  // read the first time the panel shows: it changes with the sources
     std::vector<GalleryEntry> gallery;
+    std::string galleryDir;         // the folder `gallery` was read from
+    uint32_t galleryOpensSeen = 0;  // Model::galleryOpens() when the panel last looked
 };
 
 struct Ui {

@@ -1431,3 +1431,26 @@ TEST(ViewerDirection, EditsFloodAlongTheDialsDirection) {
 }
 
 #endif
+
+// Opening the gallery file opens the gallery (issue 27 §4): its first polygon, its folder's
+// list for the Open panel, and a count the UI shows the panel on; a gallery.json that lists
+// nothing is read as a polygon file and fails as one.
+TEST(ViewerGallery, OpeningTheGalleryFileOpensItsFirstPolygon) {
+    const std::string dir = flood::testing::sourcePath("polygons");
+    const std::vector<GalleryEntry> gallery = readGallery(dir);
+    ASSERT_FALSE(gallery.empty());
+    Model m;
+    m.open(dir + "/gallery.json");
+    EXPECT_TRUE(m.openDiagnostic().ok()) << m.openDiagnostic().message;
+    EXPECT_EQ(m.path(), gallery.front().file);
+    EXPECT_GT(m.steps(), 0u);
+    EXPECT_EQ(m.galleryOpens(), 1u);
+    EXPECT_EQ(m.galleryDir(), dir);
+
+    const auto empty = flood::testing::scratch("empty-gallery");
+    std::ofstream((empty / "gallery.json").string()) << "[]";
+    Model none;
+    none.open((empty / "gallery.json").string());
+    EXPECT_EQ(none.openDiagnostic().status, Status::Malformed);
+    EXPECT_EQ(none.galleryOpens(), 0u);
+}

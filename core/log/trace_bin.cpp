@@ -128,7 +128,7 @@ void putVarint(std::string& out, uint64_t v) {
     out.push_back(char(v));
 }
 void putZigzag(std::string& out, int64_t v) {
-    putVarint(out, (uint64_t(v) << 1) ^ uint64_t(v >> 63));
+    putVarint(out, (uint64_t(v) << 1) ^ (v < 0 ? ~uint64_t(0) : 0));  // zigzag: -1 -> 1, 1 -> 2
 }
 void putDouble(std::string& out, double d) {
     uint64_t bits;

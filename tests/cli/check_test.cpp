@@ -627,7 +627,8 @@ TEST(Check, GeoJsonSequenceOnStdin) {
         EXPECT_EQ(doc["features"][1]["verdict"], "invalid");
         EXPECT_EQ(code, 4);
     }
-    std::ofstream((dir / "broken.geojsonl").string()) << a << "\n" << R"({"type":"Feature")";
+    std::ofstream((dir / "broken.geojsonl").string()) << a << "\n"
+                                                      << R"({"type":"Feature")";
     CheckRun broken = cli("check - < " + (dir / "broken.geojsonl").string());
     EXPECT_EQ(broken.code, 3);
     EXPECT_TRUE(has(broken.out, "malformed")) << broken.out;

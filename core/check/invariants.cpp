@@ -75,8 +75,12 @@ void InvariantChecker::buildGrid() {
     gridStart_.assign(size_t(gw_) * gh_ + 1, 0);
     for (Index v = 0; v < vs.size(); ++v) {
         if (!std::isfinite(vs[v].x) || !std::isfinite(vs[v].y)) continue;
-        uint32_t cx = std::min(gw_ - 1, uint32_t((vs[v].x - gx0_) / gcell_));
-        uint32_t cy = std::min(gh_ - 1, uint32_t((vs[v].y - gy0_) / gcell_));
+        // Clamped as doubles: a cell of 1e-300 makes the quotient far beyond any integer type.
+        const auto cellIndex = [&](double offset, uint32_t count) {
+            return uint32_t(std::min(double(count - 1), std::max(0.0, offset / gcell_)));
+        };
+        uint32_t cx = cellIndex(vs[v].x - gx0_, gw_);
+        uint32_t cy = cellIndex(vs[v].y - gy0_, gh_);
         cellOf[v] = cy * gw_ + cx;
         ++gridStart_[cellOf[v] + 1];
     }
@@ -108,8 +112,14 @@ Violation InvariantChecker::triangleEmpty(const Triangle& t, uint32_t number) {
         }
         return false;
     };
-    auto cellX = [&](double x) { return int64_t(std::floor((x - gx0_) / gcell_)); };
-    auto cellY = [&](double y) { return int64_t(std::floor((y - gy0_) / gcell_)); };
+    // Cell numbers clamped to [-1, count] while still doubles (a far or non-finite corner
+    // would overflow the integer; NaN goes to -1).
+    auto toCell = [&](double q, uint32_t count) -> int64_t {
+        if (!(q >= -1)) return -1;
+        return q > double(count) ? int64_t(count) : int64_t(q);
+    };
+    auto cellX = [&](double x) { return toCell(std::floor((x - gx0_) / gcell_), gw_); };
+    auto cellY = [&](double y) { return toCell(std::floor((y - gy0_) / gcell_), gh_); };
     const int64_t y0 = std::max<int64_t>(0, cellY(std::min({a.y, b.y, c.y})) - 1);
     const int64_t y1 = std::min<int64_t>(gh_ - 1, cellY(std::max({a.y, b.y, c.y})) + 1);
     // The triangle's x extent within the band [lo, hi]: its corners there and its sides'

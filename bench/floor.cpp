@@ -8,7 +8,7 @@
 #include <memory>
 #include <vector>
 
-#include "geometry/predicates.h"
+#include "flood/geometry/predicates.h"
 
 namespace bench {
 

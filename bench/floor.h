@@ -7,7 +7,7 @@
 #pragma once
 #include <cstdint>
 
-#include "geometry/polygon.h"
+#include "flood/geometry/polygon.h"
 
 namespace bench {
 

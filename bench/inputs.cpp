@@ -7,7 +7,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "tools/generate.h"
+#include "flood/tools/generate.h"
 
 namespace bench {
 

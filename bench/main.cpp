@@ -31,13 +31,13 @@
 #include <string>
 #include <vector>
 
-#include "check/checker.h"
+#include "flood/check/checker.h"
+#include "flood/geometry/work.h"
+#include "flood/io/io.h"
+#include "flood/log/replay.h"
+#include "flood/machine/flood.h"
 #include "floor.h"
-#include "geometry/work.h"
 #include "inputs.h"
-#include "io/io.h"
-#include "log/replay.h"
-#include "machine/flood.h"
 #include "peers.h"
 
 namespace fs = std::filesystem;
@@ -156,7 +156,7 @@ Row measure(const std::string& who, const Polygon& p, const CoordIndex& index) {
         else v = judge(p, result.triangles, 0, "");
         Polygon copy = p;  // validate() records the T-junctions it finds into its polygon
         Timing tv = timeRuns([&] { (void)validate(copy, "input"); });
-        // One more run counted (core/geometry/work.h): the sag search's share of the
+        // One more run counted (flood/geometry/work.h): the sag search's share of the
         // machine's work.
         work() = {};
         (void)triangulate(p);

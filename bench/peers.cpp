@@ -13,7 +13,7 @@
 #include <GL/glu.h>
 #include <geos_c.h>
 
-#include "geometry/predicates.h"
+#include "flood/geometry/predicates.h"
 
 namespace bench {
 

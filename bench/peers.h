@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/polygon.h"
+#include "flood/geometry/polygon.h"
 
 namespace bench {
 

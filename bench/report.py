@@ -126,7 +126,7 @@ class Data:
         return exact[0] if exact else (ns[-1] if ns else None)
 
     def sag_share(self, name):
-        """The sag search's share of the machine's counted work (core/geometry/work.h), or None."""
+        """The sag search's share of the machine's counted work (flood/geometry/work.h), or None."""
         e = self.extra(name, "flood")
         if "machine_work" not in e or int(e["machine_work"]) == 0:
             return None
@@ -210,7 +210,7 @@ def goals(D):
         sh = D.sag_share(n) if n else None
         ok = ok and sh is not None and sh <= 0.5
         lines.append("%s %s" % (fam, "–" if sh is None else "%.0f%%" % (100 * sh)))
-    out.append(("The sag search ≤ the rest of the machine on every family (its share of the counted work, core/geometry/work.h)",
+    out.append(("The sag search ≤ the rest of the machine on every family (its share of the counted work, flood/geometry/work.h)",
                 "; ".join(lines), ok))
     # Flood within 6x of the floor.
     lines, ok = [], True
@@ -453,10 +453,10 @@ def markdown(D, svg_name):
         "written out (memory bandwidth); *orient*, one exact orientation test per vertex with its ring "
         "neighbours; *sort sags*, finding the sags (vertices below both neighbours) and sorting them. "
         "Each part is the median of ≥ 7 runs; the floor is their sum.\n"
-        "- **Sag search share**: one extra untimed Flood run counted with core/geometry/work.h: the sag search's "
+        "- **Sag search share**: one extra untimed Flood run counted with flood/geometry/work.h: the sag search's "
         "node visits, sag tests and orientation tests (`sagSearch`) over all the machine's "
         "(`nodeVisits + sagTests + orientCalls`). Above 50%% the sag search costs more than the rest.\n"
-        "- **Validity**: every output goes through Flood's exact checker (`core/check/checker.h`). Peer "
+        "- **Validity**: every output goes through Flood's exact checker (`flood/check/checker.h`). Peer "
         "triangles are mapped to input vertices by exact coordinates (the Node and Python peers "
         "return indices) and oriented counter-clockwise first (orientation is a convention); a "
         "triangle count different from n + 2h − 2 − 2d is reported as such (earcut drops collinear "

@@ -31,14 +31,14 @@
 #include <sstream>
 #include <thread>
 
-#include "check/checker.h"
-#include "check/diagnostic_where.h"
-#include "io/io.h"
-#include "io/output.h"
-#include "machine/flood.h"
-#include "tools/shrink.h"
+#include "flood/check/checker.h"
+#include "flood/check/diagnostic_where.h"
+#include "flood/io/io.h"
+#include "flood/io/output.h"
+#include "flood/machine/flood.h"
+#include "flood/tools/shrink.h"
 #ifdef FLOOD_GDAL
-#include "io/gdal/gdal_io.h"
+#include "flood/io/gdal/gdal_io.h"
 #endif
 
 namespace flood::cli {

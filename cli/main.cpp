@@ -9,7 +9,7 @@
 //   written) -> flood (Forbidden -> exit 5) -> exact check of our own output (failure -> exit 6)
 //   -> write (`triangulate -o FILE`: the check and the writing at once, see checkWhileWriting).
 //   Exit codes are flood::Status values. "-" means stdin for input, stdout for output.
-// Outputs are written whole or not at all (core/io/output.h; a failed write exits 8).
+// Outputs are written whole or not at all (flood/io/output.h; a failed write exits 8).
 #include <malloc.h>
 #include <unistd.h>
 
@@ -28,21 +28,21 @@
 #include <thread>
 
 #include "check.h"
-#include "check/checker.h"
-#include "check/touches.h"
-#include "check/verify.h"
-#include "io/io.h"
-#include "io/output.h"
-#include "log/replay.h"
-#include "log/trace_io.h"
-#include "machine/flood.h"
-#include "teach/narrate.h"
-#include "teach/transcript.h"
-#include "tools/generate.h"
-#include "tools/shrink.h"
+#include "flood/check/checker.h"
+#include "flood/check/touches.h"
+#include "flood/check/verify.h"
+#include "flood/io/io.h"
+#include "flood/io/output.h"
+#include "flood/log/replay.h"
+#include "flood/log/trace_io.h"
+#include "flood/machine/flood.h"
+#include "flood/teach/narrate.h"
+#include "flood/teach/transcript.h"
+#include "flood/tools/generate.h"
+#include "flood/tools/shrink.h"
 #include "triangulate_gis.h"
 #ifdef FLOOD_GDAL
-#include "io/gdal/gdal_io.h"
+#include "flood/io/gdal/gdal_io.h"
 #endif
 
 namespace {
@@ -147,7 +147,7 @@ void addUp(CLI::App* cmd, std::string& up) {
 }
 
 // The exact check and the writing at once, on two threads (the machine and CI have two
-// cores): the other thread checks each triangle alone (checkTriangles, core/check/checker.h), then
+// cores): the other thread checks each triangle alone (checkTriangles, flood/check/checker.h), then
 // writes, while this one checks the rest. The output must be discardable: a failed check
 // leaves it uncommitted, so nothing of it is seen and every message is the serial path's.
 template <typename Write>
@@ -260,7 +260,7 @@ int cmdTranscript(const std::string& in, bool narrate, const std::string& up, bo
     if (!narrate) {
         std::cout << transcript(t.events) << "\n";
     } else {
-        // One numbered sentence per event in the flood metaphor (core/teach/narrate.h),
+        // One numbered sentence per event in the flood metaphor (flood/teach/narrate.h),
         // numbered as the viewer's timeline and describeForbidden() number them: step N is the
         // Nth event.
         for (const Event& e : t.events)
@@ -328,7 +328,7 @@ int cmdGenerate(const std::string& family, size_t size, uint64_t seed, const std
     return code(o.commit());
 }
 
-// Shrinks a failing polygon (validation skipped; see core/tools/shrink.h) and writes the repro: a
+// Shrinks a failing polygon (validation skipped; see flood/tools/shrink.h) and writes the repro: a
 // GeoJSON Feature that says where it came from. It is written only once its bytes, read back
 // as the user will read them, fail the same way; a file is read back from disk after writing.
 int cmdShrink(const std::string& in, const std::string& out, const std::string& up,
@@ -505,7 +505,7 @@ int cmdBench(const std::string& in, int repeat, const std::string& up) {
         sink += triangulate(polygon, &rec, o).triangles.size();
     });
     double n = double(std::max<size_t>(1, polygon.vertices.size()));
-    // Formatted into std::cout, which keeps the reason of a failed write (core/io/output.h).
+    // Formatted into std::cout, which keeps the reason of a failed write (flood/io/output.h).
     auto line = [](const char* format, auto... values) {
         char text[256];
         std::snprintf(text, sizeof text, format, values...);
@@ -605,7 +605,7 @@ int run(int argc, char** argv) {
 
     auto* gen = app.add_subcommand(
         "generate",
-        "Write a generated polygon (core/tools/generate.h): a valid family, or an invalid one");
+        "Write a generated polygon (flood/tools/generate.h): a valid family, or an invalid one");
     gen->add_option("FAMILY", family, "Polygon family: " + familyList())->required();
     gen->add_option("SIZE", size, "Approximate vertex count")
         ->required()

@@ -8,11 +8,11 @@
 #include <iostream>
 #include <memory>
 
-#include "check/checker.h"
-#include "check/touches.h"
-#include "io/io.h"
+#include "flood/check/checker.h"
+#include "flood/check/touches.h"
+#include "flood/io/io.h"
 #ifdef FLOOD_GDAL
-#include "io/gdal/gdal_io.h"
+#include "flood/io/gdal/gdal_io.h"
 #endif
 
 namespace flood::cli {

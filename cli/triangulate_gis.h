@@ -5,7 +5,7 @@
 #include <string>
 
 #include "check.h"
-#include "machine/flood.h"
+#include "flood/machine/flood.h"
 
 namespace flood::cli {
 

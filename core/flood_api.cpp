@@ -1,7 +1,7 @@
 // The front door (flood_api.h): validation first, then the flood machine.
-#include "flood_api.h"
+#include "flood/flood_api.h"
 
-#include "io/io.h"
+#include "flood/io/io.h"
 
 namespace flood {
 

@@ -10,10 +10,10 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "check/checker.h"
+#include "flood/check/checker.h"
+#include "flood/io/io.h"
+#include "flood/machine/flood.h"
 #include "fuzz_poly.h"
-#include "io/io.h"
-#include "machine/flood.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     fuzzpoly::Decoded d = fuzzpoly::decode(data, size);

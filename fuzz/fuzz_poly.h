@@ -14,8 +14,8 @@
 #include <cstring>
 #include <vector>
 
-#include "geometry/polygon.h"
-#include "machine/flood.h"
+#include "flood/geometry/polygon.h"
+#include "flood/machine/flood.h"
 
 namespace fuzzpoly {
 

@@ -1,6 +1,6 @@
-// libFuzzer harness: parseTrace (core/log/trace_io.h) on arbitrary bytes, then a Replay of the
+// libFuzzer harness: parseTrace (flood/log/trace_io.h) on arbitrary bytes, then a Replay of the
 // loaded trace seeking to pseudo-random steps (forward, backward, past the end), and the
-// invariant scan the viewer runs on every trace it opens (core/check/invariants.h), which reads the
+// invariant scan the viewer runs on every trace it opens (flood/check/invariants.h), which reads the
 // vertices the events name.
 // A malformed trace must be a diagnostic; a loaded one must replay and scan without crashing.
 #include <cstddef>
@@ -8,9 +8,9 @@
 #include <cstdlib>
 #include <string_view>
 
-#include "check/invariants.h"
-#include "log/replay.h"
-#include "log/trace_io.h"
+#include "flood/check/invariants.h"
+#include "flood/log/replay.h"
+#include "flood/log/trace_io.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::string_view text(reinterpret_cast<const char*>(data), size);

@@ -18,12 +18,12 @@
 #include <thread>
 #include <type_traits>
 
-#include "check/checker.h"
-#include "check/diagnostic_where.h"
-#include "io/io.h"
-#include "log/replay.h"
-#include "machine/flood.h"
-#include "tools/generate.h"
+#include "flood/check/checker.h"
+#include "flood/check/diagnostic_where.h"
+#include "flood/io/io.h"
+#include "flood/log/replay.h"
+#include "flood/machine/flood.h"
+#include "flood/tools/generate.h"
 
 namespace py = pybind11;
 using namespace flood;
@@ -128,7 +128,7 @@ ReadResult readInput(py::handle input, const std::string& name) {
     return rr;
 }
 
-// The CLI's --up: an axis, an angle in degrees or "X,Y" (core/geometry/up.h).
+// The CLI's --up: an axis, an angle in degrees or "X,Y" (flood/geometry/up.h).
 Up upOf(const std::string& up) {
     Up d;
     std::string why;
@@ -201,14 +201,14 @@ std::vector<Index> ringCounts(const Polygon& p) {
 py::object index(Index i) { return i == kNone ? py::object(py::none()) : py::object(py::int_(i)); }
 
 // (status code, message, reason, ring, vertex): where it points read from its culprits
-// (core/check/diagnostic_where.h), None for "names none".
+// (flood/check/diagnostic_where.h), None for "names none".
 py::tuple diagnosticTuple(const Diagnostic& d, const Polygon& polygon, const std::string& name) {
     Where w = whereOf(polygon, d.culprits);
     return py::make_tuple(int(d.status), d.message, reasonOf(d.message, name, w), index(w.ring),
                           index(w.vertex));
 }
 
-// The numpy dtype of flood::Event: field names, types and offsets as core/machine/events.h has
+// The numpy dtype of flood::Event: field names, types and offsets as flood/machine/events.h has
 // them, so the log is copied into the array byte for byte.
 py::dtype eventDtype() {
     py::dict fingers;
@@ -435,7 +435,7 @@ PYBIND11_MODULE(_flood, m) {
         .def_readonly("bridges", &ReplayState::bridges)
         .def_readonly("forbidden", &ReplayState::forbidden);
 
-    // The replay of a trace (core/log/replay.h); seek returns a copy of the state, so a state read
+    // The replay of a trace (flood/log/replay.h); seek returns a copy of the state, so a state read
     // earlier does not change under the caller when the replay moves on.
     py::class_<TraceHandle, std::shared_ptr<TraceHandle>>(m, "Trace")
         .def_property_readonly(

@@ -16,7 +16,9 @@ core_sources = sorted(s for s in glob.glob(os.path.join(core, "**", "*.cpp"), ro
 setup(ext_modules=[Extension(
     "flood._flood",
     sources=["flood_module.cpp"] + core_sources,
-    include_dirs=[core],
+    # The public headers (core/include: all the binding may use, as CMake's Flood::core gives
+    # it), and core/ for the core's own sources' internal ones.
+    include_dirs=[os.path.join(core, "include"), core],
     libraries=["gmp", "simdjson"],
     language="c++",
     extra_compile_args=["-std=c++17", "-O2", "-ffp-contract=off", "-fvisibility=hidden"],

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Static checks, any finding fails: the layers of core/ (scripts/check-layers.py: no #include
-# climbs the stack of core/LAYERS), clang-tidy (.clang-tidy) over core/ (every layer's folder)
-# and cli/, cppcheck over the same, and clang-format (.clang-format) on the C++ files given as
+# climbs the stack of core/LAYERS, none reaches past the public headers), clang-tidy
+# (.clang-tidy) over core/ (every layer's folder) and cli/, cppcheck over the same, and
+# clang-format (.clang-format) on the C++ files given as
 # arguments, or else on every tracked C++ file.
 # Needs only a configured build tree (compile_commands.json), never a built one.
 set -euo pipefail
@@ -21,7 +22,7 @@ run-clang-tidy-14 -p "$B" -j2 -quiet "$PWD/(core|cli)/.*\.cpp$" >"$B/clang-tidy.
 
 echo "lint: cppcheck"
 cppcheck --quiet --std=c++17 --language=c++ --enable=warning,performance,portability \
-  --error-exitcode=1 --inline-suppr -j2 -I core -I cli core cli
+  --error-exitcode=1 --inline-suppr -j2 -I core/include -I core -I cli core cli
 
 # The whole tree was formatted once, in a commit of its own; from then on every file stays so.
 files=("$@")

@@ -18,9 +18,21 @@ if [ -z "$build" ]; then
 fi
 prefix=$tmp/prefix
 cmake --install "$build" --prefix "$prefix" >/dev/null
-for f in include/flood/flood_api.h bin/flood; do
+for f in include/flood/flood.h include/flood/teach.h include/flood/flood_api.h bin/flood; do
     [ -e "$prefix/$f" ] || { echo "package-test: $f not installed" >&2; exit 1; }
 done
+# Only the public headers are installed (core/include/flood/, but for the GDAL module's
+# interface), and each compiles alone on the prefix's include path: a public header that
+# includes an internal one, or misses an include of its own, fails here.
+[ ! -e "$prefix/include/flood/io/gdal" ] || { echo "package-test: io/gdal/ installed" >&2; exit 1; }
+headers=$(cd "$prefix/include" && find flood -name '*.h' | sort)
+expected=$(cd "$src/core/include" && find flood -name '*.h' -not -path '*/gdal/*' | sort)
+[ "$headers" = "$expected" ] || { echo "package-test: installed headers differ from core/include" >&2; exit 1; }
+for h in $headers; do
+    printf '#include <%s>\n' "$h" | ${CXX:-c++} -std=c++17 -fsyntax-only -I"$prefix/include" -x c++ - ||
+        { echo "package-test: <$h> does not compile alone" >&2; exit 1; }
+done
+echo "package-test: $(echo "$headers" | wc -l) installed headers, each compiles alone"
 
 echo "package-test: find_package(Flood) consumer"
 cmake -S "$src/tests/package" -B "$tmp/consumer" -DCMAKE_BUILD_TYPE=Release \

@@ -1,9 +1,9 @@
-// The front door (core/flood_api.h) as a C++ caller meets it: rings open or closed (as OGR,
+// The front door (flood/flood_api.h) as a C++ caller meets it: rings open or closed (as OGR,
 // GEOS and WKT store them) give the same triangles; invalid input gets a diagnostic.
 #include <gtest/gtest.h>
 
-#include "check/checker.h"
-#include "flood_api.h"
+#include "flood/check/checker.h"
+#include "flood/flood_api.h"
 
 using namespace flood;
 

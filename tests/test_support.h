@@ -14,11 +14,11 @@
 #include <string>
 #include <vector>
 
-#include "check/checker.h"
-#include "io/io.h"
-#include "log/replay.h"
-#include "log/trace_io.h"
-#include "machine/flood.h"
+#include "flood/check/checker.h"
+#include "flood/io/io.h"
+#include "flood/log/replay.h"
+#include "flood/log/trace_io.h"
+#include "flood/machine/flood.h"
 
 namespace flood::testing {
 

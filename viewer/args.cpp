@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "geometry/up.h"
+#include "flood/geometry/up.h"
 #include "platform_glfw.h"  // the --press keys
 
 #ifndef FLOOD_VERSION  // set by viewer/CMakeLists.txt, as the CLI's

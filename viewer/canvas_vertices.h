@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/polygon.h"  // Point
+#include "flood/geometry/polygon.h"  // Point
 #include "palette.h"
 
 namespace flood::view {

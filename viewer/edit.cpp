@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <utility>
 
-#include "geometry/predicates.h"
-#include "io/io.h"
+#include "flood/geometry/predicates.h"
+#include "flood/io/io.h"
 
 namespace flood::view {
 

@@ -15,7 +15,7 @@
 
 #include "canvas_geometry.h"
 #include "edit.h"
-#include "tools/generate.h"
+#include "flood/tools/generate.h"
 
 using namespace flood;
 using namespace flood::view;

@@ -8,8 +8,8 @@
 #include <cstdlib>
 #include <cstring>
 
+#include "flood/teach/narrate.h"
 #include "presenter.h"
-#include "teach/narrate.h"
 
 namespace flood::view {
 

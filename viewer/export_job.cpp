@@ -9,7 +9,7 @@
 #include <cmath>
 #include <optional>
 
-#include "io/output.h"  // atomic files
+#include "flood/io/output.h"  // atomic files
 #include "offscreen.h"
 #include "quantize.h"
 #ifdef FLOOD_GIF

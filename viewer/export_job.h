@@ -3,13 +3,13 @@
 // step (PNG, SVG) or a range of steps (a numbered PNG sequence, an animated GIF: rendered once
 // to build the palette, once more to encode). The Export panel advances it a slice per frame
 // so the window stays live; the command line runs it to the end. Every file is written
-// atomically (core/io/output.h): a failure leaves no half-written file and says why.
+// atomically (flood/io/output.h): a failure leaves no half-written file and says why.
 #pragma once
 #include <memory>
 #include <string>
 
 #include "export.h"
-#include "geometry/status.h"
+#include "flood/geometry/status.h"
 #include "panels.h"
 
 namespace flood::view {

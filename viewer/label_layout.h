@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "flood/geometry/polygon.h"
 #include "geometry.h"
-#include "geometry/polygon.h"
 
 namespace flood::view {
 

@@ -16,11 +16,11 @@
 
 #include "args.h"
 #include "export_job.h"
+#include "flood/teach/transcript.h"
 #include "model.h"
 #include "panels.h"
 #include "platform_glfw.h"
 #include "renderer.h"
-#include "teach/transcript.h"
 
 using namespace flood;
 using namespace flood::view;

@@ -17,12 +17,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "check/diagnostic_where.h"
-#include "geometry/predicates.h"
-#include "io/io.h"
-#include "log/trace_io.h"
+#include "flood/check/diagnostic_where.h"
+#include "flood/geometry/predicates.h"
+#include "flood/io/io.h"
+#include "flood/log/trace_io.h"
 #ifdef FLOOD_GDAL
-#include "io/gdal/gdal_io.h"
+#include "flood/io/gdal/gdal_io.h"
 #endif
 
 #ifndef FLOOD_DATA_SUBDIR  // share/flood, relative to the install prefix

@@ -14,20 +14,20 @@
 #include <string>
 #include <vector>
 
-#include "check/checker.h"
-#include "check/invariants.h"
+#include "flood/check/checker.h"
+#include "flood/check/invariants.h"
+#include "flood/geometry/polygon.h"
+#include "flood/geometry/status.h"
+#include "flood/io/io.h"
+#include "flood/log/replay.h"
+#include "flood/machine/events.h"
+#include "flood/machine/flood.h"
+#include "flood/machine/vertex_class.h"
+#include "flood/teach/describe.h"
+#include "flood/teach/state_table.h"
+#include "flood/teach/transcript.h"
+#include "flood/tools/shrink.h"
 #include "geometry.h"  // Vec2, Rect
-#include "geometry/polygon.h"
-#include "geometry/status.h"
-#include "io/io.h"
-#include "log/replay.h"
-#include "machine/events.h"
-#include "machine/flood.h"
-#include "machine/vertex_class.h"
-#include "teach/describe.h"
-#include "teach/state_table.h"
-#include "teach/transcript.h"
-#include "tools/shrink.h"
 
 #include <thread>
 
@@ -90,8 +90,8 @@ struct Breakpoints {
 bool hits(const Breakpoints& b, const Event& e);
 
 // ----------------------------------------------------------------------------------------
-// Text views of the log: an event in one line (core/teach/describe.h), the transcript's items
-// (core/teach/transcript.h).
+// Text views of the log: an event in one line (flood/teach/describe.h), the transcript's items
+// (flood/teach/transcript.h).
 
 // ----------------------------------------------------------------------------------------
 // The verdict, one line per finding. Ok only when the exact checker passed on valid input;
@@ -224,7 +224,7 @@ private:
 };
 
 // ----------------------------------------------------------------------------------------
-// Shrink from the viewer: core/tools/shrink.h run in a background thread, with the tries made as
+// Shrink from the viewer: flood/tools/shrink.h run in a background thread, with the tries made as
 // progress and a Cancel that stops it before its next classification. An `onTry` in the
 // options is still called (before the cancel is looked at).
 class ShrinkJob {
@@ -488,7 +488,7 @@ public:
         std::array<std::array<uint32_t, size_t(Action::Count)>, size_t(Action::Count)>;
     const Transitions& transitions() const { return transitions_; }
 
-    // Invariant lane: core/check/invariants.h run over the trace in a background thread, started
+    // Invariant lane: flood/check/invariants.h run over the trace in a background thread, started
     // by every open. Results are readable once done; progress counts the steps checked.
     bool invariantsDone() const { return scan_.done.load(std::memory_order_acquire); }
     uint32_t invariantProgress() const { return scan_.progress.load(std::memory_order_relaxed); }

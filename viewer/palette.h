@@ -8,7 +8,7 @@
 #include <iterator>
 #include <utility>
 
-#include "machine/events.h"
+#include "flood/machine/events.h"
 
 namespace flood::view {
 

@@ -3,7 +3,7 @@
 #include <cstdio>
 #include <fstream>
 
-#include "io/output.h"  // atomic files
+#include "flood/io/output.h"  // atomic files
 #include "panels.h"
 
 namespace flood::view {

@@ -1,4 +1,4 @@
-// The paper's Fig. 9 drawn live: the decision tree (core/teach/decision_tree.h) as boxes and edges,
+// The paper's Fig. 9 drawn live: the decision tree (flood/teach/decision_tree.h) as boxes and edges,
 // the current event's path lit, the nodes it did not reach (or reached without running) grey,
 // forbidden states red; below it the event narrated in a sentence, and the vertices, triangles
 // and step it names, each clickable. The panel's tree is a thumbnail (a dozen rows in a fifth of
@@ -11,9 +11,9 @@
 #include <cstdio>
 #include <string>
 
+#include "flood/teach/decision_tree.h"
+#include "flood/teach/narrate.h"
 #include "panels.h"
-#include "teach/decision_tree.h"
-#include "teach/narrate.h"
 
 namespace flood::view {
 
@@ -205,7 +205,7 @@ void eventNumbers(Ui& ui, const Event& e) {
         any = true;
         number(ui, label, value, kind);
     };
-    // The subject fields share storage (core/machine/events.h): only the event's own
+    // The subject fields share storage (flood/machine/events.h): only the event's own
     // action's are shown.
     auto subject = [&](const char* label, Index value, Field f) {
         if (usesField(e.action, f)) item(label, value, 'v');
@@ -245,7 +245,7 @@ void drawDecision(Ui& ui) {
         ImGui::TextDisabled("no event yet: step forward to see the decision tree at work");
     } else {
         ImGui::PushTextWrapPos(0);
-        // What happened and why, in one sentence of the flood metaphor (core/teach/narrate.h).
+        // What happened and why, in one sentence of the flood metaphor (flood/teach/narrate.h).
         ImGui::TextUnformatted(narrate(m.polygon(), *e).c_str());
         if (e->action == Action::Forbidden)
             ImGui::TextColored(toImVec4(palette::kCulprit), "%s", forbiddenText(e->reason));

@@ -1,5 +1,5 @@
 // The flood direction dial: the paper's "chosen vertical" (§3) turned to any angle. Turning it
-// floods the polygon again along the new direction (heights stay exact: core/geometry/up.h) and
+// floods the polygon again along the new direction (heights stay exact: flood/geometry/up.h) and
 // shows how the decomposition changed against the direction before: the gorges, the vertex classes
 // and each action (the decomposition into gorges is not unique). The floods go through the
 // editor's (viewer/edit.h): in the background, one at a time, so dragging the dial over a

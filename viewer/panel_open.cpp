@@ -10,7 +10,7 @@
 
 #include "panels.h"
 #ifdef FLOOD_GDAL
-#include "io/gdal/gdal_io.h"
+#include "flood/io/gdal/gdal_io.h"
 #endif
 
 namespace flood::view {

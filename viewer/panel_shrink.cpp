@@ -1,4 +1,4 @@
-// Shrink from the viewer (issue 11): on any failure, shrink the polygon (core/tools/shrink.h) in
+// Shrink from the viewer (issue 11): on any failure, shrink the polygon (flood/tools/shrink.h) in
 // the background with a progress bar and Cancel, open the minimal repro with the original one
 // click away (and in Recent), and save it as GeoJSON.
 #include <imgui.h>

@@ -5,8 +5,8 @@
 
 #include <string>
 
+#include "flood/teach/state_table.h"
 #include "panels.h"
-#include "teach/state_table.h"
 
 namespace flood::view {
 

@@ -1,4 +1,4 @@
-// The to-do list of §4 at the current step (core/teach/todo_list.h): the pending gorges in stack
+// The to-do list of §4 at the current step (flood/teach/todo_list.h): the pending gorges in stack
 // order, the next to be flooded first, and the held gorges with their tops and jump pointers.
 // Clicking one brings it into view and draws its chain and top on the canvas until another is
 // chosen, the window closes, or the step no longer has it.

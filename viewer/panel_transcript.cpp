@@ -1,13 +1,13 @@
 // The run told like the caption of the paper's Fig. 7 ("Raise 0-7, Spill; ..."), flowing
-// like text with the paper's ", " and "; " between items (the core's, core/teach/transcript.h); the
+// like text with the paper's ", " and "; " between items (the core's, flood/teach/transcript.h); the
 // item holding the current step is highlighted, and clicking an item goes there.
 #include <imgui.h>
 
 #include <algorithm>
 #include <vector>
 
+#include "flood/teach/transcript.h"
 #include "panels.h"
-#include "teach/transcript.h"
 
 namespace flood::view {
 

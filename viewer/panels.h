@@ -13,11 +13,11 @@
 #include "canvas_geometry.h"
 #include "edit.h"
 #include "export.h"
+#include "flood/teach/todo_list.h"
 #include "model.h"
 #include "presenter.h"
 #include "renderer.h"
 #include "scene.h"
-#include "teach/todo_list.h"
 
 struct ImVec4;
 struct ImFont;

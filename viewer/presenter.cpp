@@ -6,7 +6,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "teach/narrate.h"
+#include "flood/teach/narrate.h"
 
 namespace flood::view {
 

@@ -9,8 +9,8 @@
 #include <cmath>
 #include <initializer_list>
 
-#include "io/output.h"  // atomic files
-#include "shaders.h"    // generated from shaders/ by embed_shaders.cmake
+#include "flood/io/output.h"  // atomic files
+#include "shaders.h"          // generated from shaders/ by embed_shaders.cmake
 
 namespace flood::view {
 

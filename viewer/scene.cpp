@@ -4,9 +4,9 @@
 #include <cmath>
 #include <ostream>
 
-#include "io/svg.h"
+#include "flood/io/svg.h"
+#include "flood/teach/narrate.h"
 #include "scene_labels.h"
-#include "teach/narrate.h"
 
 namespace flood::view {
 

@@ -77,7 +77,7 @@ struct SceneOptions {
 };
 
 Scene buildScene(const Model& model, const SceneOptions& options = {});
-// The labels and rings of what the sentence of event `e` names (core/teach/narrate.h): each
+// The labels and rings of what the sentence of event `e` names (flood/teach/narrate.h): each
 // vertex once, "35 sag", with its first role; its triangles, "triangle 18", all of them up to
 // kNamedTriangles, else the first and the last. buildScene adds them at the current event.
 constexpr uint32_t kNamedTriangles = 6;

@@ -18,8 +18,8 @@
 #include <cstring>
 #include <string>
 
-#include "io/io.h"
-#include "machine/flood.h"
+#include "flood/io/io.h"
+#include "flood/machine/flood.h"
 
 using namespace flood;
 

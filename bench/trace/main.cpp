@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "log/replay.h"
-#include "log/trace_io.h"
-#include "tools/generate.h"
+#include "flood/log/replay.h"
+#include "flood/log/trace_io.h"
+#include "flood/tools/generate.h"
 
 using namespace flood;
 

@@ -33,7 +33,7 @@
 // must meet both copies' edges. Without repeated coordinates this is plain index identity.
 // Rules 1-7 take linear time but for sorting each vertex's few outgoing edges (EdgeLists, 4
 // bytes an edge); rule 8 is a sweep, O(n log n), skipped for a single part.
-#include "check/checker.h"
+#include "flood/check/checker.h"
 
 #include <algorithm>
 #include <cmath>
@@ -44,8 +44,8 @@
 #include <utility>
 
 #include "check/checker_parts.h"
-#include "geometry/predicates.h"
-#include "geometry/ring_area.h"  // AreaEstimate only
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/ring_area.h"  // AreaEstimate only
 
 namespace flood {
 

@@ -28,9 +28,9 @@
 #include <set>
 #include <sstream>
 
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
 #include "geometry/number_text.h"  // formatPoint: shortest round-trip
-#include "geometry/predicates.h"
-#include "geometry/work.h"
 
 namespace flood {
 

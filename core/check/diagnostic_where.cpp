@@ -1,4 +1,4 @@
-#include "check/diagnostic_where.h"
+#include "flood/check/diagnostic_where.h"
 
 #include <cmath>
 

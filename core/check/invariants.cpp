@@ -1,10 +1,10 @@
-#include "check/invariants.h"
+#include "flood/check/invariants.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "geometry/predicates.h"
-#include "geometry/work.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
 
 namespace flood {
 

@@ -12,14 +12,14 @@
 // short as its neighbourhood, O(sqrt m) at most for a long one — plus the points of those
 // leaves. Clustered adversaries (many long edges through dense points) can
 // still make it super-linear, hence the cap.
-#include "check/touches.h"
+#include "flood/check/touches.h"
 
 #include <algorithm>
 #include <cmath>
 
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
 #include "geometry/coincident.h"
-#include "geometry/predicates.h"
-#include "geometry/work.h"
 
 namespace flood {
 namespace {

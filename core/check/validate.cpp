@@ -30,7 +30,7 @@
 // arithmetic decides anything. Cost: O(n log n) — a sort of the vertices for the sweep (which
 // puts coincident vertices side by side, so no search finds them) and a sort of those, a treap
 // sweep (sweep_tree.h) with O(1) tests per event, and at a point shared by k rings a sort of
-// their 2k rays and O(log k) per ring to find a crossing (validatorSteps in core/geometry/work.h
+// their 2k rays and O(log k) per ring to find a crossing (validatorSteps in flood/geometry/work.h
 // counts the work, tests/check/validate_growth_test.cpp bounds it). A small single ring is checked
 // by testing its pairs of edges instead of sweeping (pairsClear()), with the sweep's verdicts
 // (tests/check/validate_paths_test.cpp). The sweep itself runs first with only the tests
@@ -44,7 +44,7 @@
 
 #include "check/validate_paths.h"
 #include "check/validator.h"
-#include "geometry/ring_area.h"
+#include "flood/geometry/ring_area.h"
 
 namespace flood {
 namespace validate_detail {

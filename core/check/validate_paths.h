@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "io/io.h"
+#include "flood/io/io.h"
 
 namespace flood {
 

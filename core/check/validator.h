@@ -11,11 +11,11 @@
 #include <utility>
 #include <vector>
 
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
+#include "flood/io/io.h"
 #include "geometry/number_text.h"
-#include "geometry/predicates.h"
 #include "geometry/sweep_tree.h"
-#include "geometry/work.h"
-#include "io/io.h"
 
 namespace flood {
 namespace validate_detail {

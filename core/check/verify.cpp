@@ -1,13 +1,13 @@
-#include "check/verify.h"
+#include "flood/check/verify.h"
 
 #include <algorithm>
 #include <cfloat>
 #include <cmath>
 
-#include "check/touches.h"
 #include "check/validate_paths.h"
-#include "geometry/predicates.h"
-#include "geometry/work.h"
+#include "flood/check/touches.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
 
 namespace flood {
 namespace {

@@ -7,7 +7,7 @@
 #include <cstddef>
 #include <string>
 
-#include "geometry/polygon.h"
+#include "flood/geometry/polygon.h"
 
 namespace flood {
 

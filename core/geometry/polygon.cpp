@@ -1,4 +1,4 @@
-#include "geometry/polygon.h"
+#include "flood/geometry/polygon.h"
 
 #include <algorithm>
 

@@ -18,8 +18,8 @@
 //     |coordinate| lies in [2^-450, 2^450]: products then stay in [2^-900, 2^901], their
 //     rounding errors are normal doubles, and no sum can overflow.
 //  3. GMP rationals otherwise (mpq_set_d is exact for every finite double).
-#include "geometry/predicates.h"
-#include "geometry/work.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
 
 #include <gmp.h>
 

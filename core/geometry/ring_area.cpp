@@ -1,6 +1,6 @@
-#include "geometry/ring_area.h"
+#include "flood/geometry/ring_area.h"
 
-#include "geometry/predicates.h"
+#include "flood/geometry/predicates.h"
 
 namespace flood {
 

@@ -1,5 +1,5 @@
 // Names of the exit statuses (docs/ERRORS.md).
-#include "geometry/status.h"
+#include "flood/geometry/status.h"
 
 namespace flood {
 

@@ -9,7 +9,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/polygon.h"
+#include "flood/geometry/polygon.h"
 
 namespace flood {
 

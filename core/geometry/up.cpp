@@ -1,4 +1,4 @@
-#include "geometry/up.h"
+#include "flood/geometry/up.h"
 
 #include <cctype>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "io/io.h"
+#include "flood/io/io.h"
 
 namespace flood::io_detail {
 

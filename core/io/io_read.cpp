@@ -19,7 +19,7 @@
 #include <nlohmann/json.hpp>
 #include <optional>
 
-#include "io/io.h"
+#include "flood/io/io.h"
 #include "io/io_json.h"
 #include "io/io_util.h"
 

@@ -8,8 +8,8 @@
 #include <string_view>
 #include <vector>
 
+#include "flood/geometry/polygon.h"
 #include "geometry/number_text.h"
-#include "geometry/polygon.h"
 
 namespace flood::io_detail {
 

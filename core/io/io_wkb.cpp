@@ -7,7 +7,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/io.h"
+#include "flood/io/io.h"
 
 namespace flood {
 

@@ -11,7 +11,7 @@
 #include <cstring>
 #include <string>
 
-#include "io/io.h"
+#include "flood/io/io.h"
 #include "io/io_util.h"
 
 namespace flood {

@@ -7,9 +7,9 @@
 #include <ostream>
 #include <string_view>
 
-#include "io/io.h"
+#include "flood/io/io.h"
+#include "flood/io/svg.h"
 #include "io/io_util.h"
-#include "io/svg.h"
 
 namespace flood {
 

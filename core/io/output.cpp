@@ -1,6 +1,6 @@
 // Atomic output files and the checked standard output (output.h). POSIX calls throughout:
 // each failure keeps its errno, so the message gives the system's reason.
-#include "io/output.h"
+#include "flood/io/output.h"
 
 #include <fcntl.h>
 #include <signal.h>

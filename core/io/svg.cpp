@@ -1,5 +1,5 @@
 // The SVG writer (svg.h): markup only; callers place the points and choose the colours.
-#include "io/svg.h"
+#include "flood/io/svg.h"
 
 #include <cstdio>
 #include <utility>

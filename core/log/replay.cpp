@@ -1,4 +1,4 @@
-#include "log/replay.h"
+#include "flood/log/replay.h"
 
 #include <algorithm>
 #include <cstdint>

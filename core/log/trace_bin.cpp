@@ -18,7 +18,7 @@
 #include <cstring>
 #include <ostream>
 
-#include "log/trace_io.h"
+#include "flood/log/trace_io.h"
 
 namespace flood {
 namespace {

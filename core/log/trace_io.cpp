@@ -1,13 +1,13 @@
 // JSON Lines traces (see trace_io.h). nlohmann::json (Debian nlohmann-json3-dev, header-only)
 // reads and writes each line; a bracket scan bounds nesting before parsing.
-#include "log/trace_io.h"
+#include "flood/log/trace_io.h"
 
 #include <cmath>
 #include <cstring>
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "io/io.h"
+#include "flood/io/io.h"
 #include "io/io_util.h"
 
 namespace flood {

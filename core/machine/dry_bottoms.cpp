@@ -1,7 +1,7 @@
 // The bottoms the water has not reached (dry_bottoms.h).
 #include "machine/dry_bottoms.h"
 
-#include "geometry/work.h"
+#include "flood/geometry/work.h"
 
 namespace flood {
 

@@ -1,4 +1,4 @@
-#include "machine/events.h"
+#include "flood/machine/events.h"
 
 namespace flood {
 

@@ -35,8 +35,8 @@
 #include <cstdint>
 #include <type_traits>
 
-#include "geometry/predicates.h"
-#include "geometry/work.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
 #include "machine/machine.h"
 #include "machine/spill_walk.h"
 

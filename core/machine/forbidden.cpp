@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <sstream>
 
+#include "flood/machine/flood.h"
 #include "geometry/number_text.h"
-#include "machine/flood.h"
 
 namespace flood {
 

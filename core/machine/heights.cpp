@@ -5,8 +5,8 @@
 #include <cmath>
 #include <numeric>
 
-#include "geometry/predicates.h"
-#include "geometry/work.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
 
 namespace flood {
 namespace {

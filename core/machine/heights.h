@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/polygon.h"
-#include "geometry/up.h"
+#include "flood/geometry/polygon.h"
+#include "flood/geometry/up.h"
 #include "machine/loops.h"
 #include "machine/sags/sag_index.h"
 

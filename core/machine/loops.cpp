@@ -2,9 +2,9 @@
 
 #include <algorithm>
 
-#include "geometry/predicates.h"
-#include "geometry/ring_area.h"
-#include "geometry/work.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/ring_area.h"
+#include "flood/geometry/work.h"
 
 namespace flood {
 namespace {

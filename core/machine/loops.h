@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
+#include "flood/geometry/polygon.h"
 #include "geometry/coincident.h"
-#include "geometry/polygon.h"
 #include "machine/node_id.h"
 
 namespace flood {

@@ -4,8 +4,8 @@
 #pragma once
 #include <vector>
 
+#include "flood/machine/flood.h"
 #include "machine/dry_bottoms.h"
-#include "machine/flood.h"
 #include "machine/heights.h"
 #include "machine/loops.h"
 #include "machine/sags/sag_search.h"

@@ -4,7 +4,7 @@
 #pragma once
 #include <cstdint>
 
-#include "geometry/polygon.h"
+#include "flood/geometry/polygon.h"
 
 namespace flood {
 

@@ -1,8 +1,8 @@
 // The walk of a Spill (spill_walk.h).
 #include "machine/spill_walk.h"
 
-#include "geometry/predicates.h"
-#include "geometry/work.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
 #include "machine/machine.h"
 
 namespace flood {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "geometry/work.h"
+#include "flood/geometry/work.h"
 
 namespace flood {
 

@@ -1,11 +1,11 @@
-#include "machine/vertex_class.h"
+#include "flood/machine/vertex_class.h"
 
 #include <cmath>
 
 #include <utility>
 
-#include "geometry/predicates.h"
-#include "geometry/ring_area.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/ring_area.h"
 
 namespace flood {
 

@@ -1,4 +1,4 @@
-#include "teach/decision_tree.h"
+#include "flood/teach/decision_tree.h"
 
 #include <algorithm>
 #include <unordered_map>

@@ -1,10 +1,10 @@
-#include "teach/describe.h"
+#include "flood/teach/describe.h"
 
 #include <sstream>
 
-#include "machine/flood.h"
-#include "teach/narrate.h"
-#include "teach/transcript.h"
+#include "flood/machine/flood.h"
+#include "flood/teach/narrate.h"
+#include "flood/teach/transcript.h"
 
 namespace flood {
 

@@ -1,7 +1,7 @@
-#include "teach/narrate.h"
+#include "flood/teach/narrate.h"
 
-#include "machine/flood.h"
-#include "teach/transcript.h"
+#include "flood/machine/flood.h"
+#include "flood/teach/transcript.h"
 
 namespace flood {
 namespace {

@@ -1,4 +1,4 @@
-#include "teach/state_table.h"
+#include "flood/teach/state_table.h"
 
 namespace flood {
 

@@ -1,4 +1,4 @@
-#include "teach/todo_list.h"
+#include "flood/teach/todo_list.h"
 
 #include <unordered_map>
 

@@ -1,4 +1,4 @@
-#include "teach/transcript.h"
+#include "flood/teach/transcript.h"
 
 namespace flood {
 

@@ -7,14 +7,14 @@
 //
 // [SECTION] index: PRNG and math | helpers | families | table and API | transform |
 //                 (the invalid families: generate_invalid.cpp)
-#include "tools/generate.h"
+#include "flood/tools/generate.h"
 
 #include <algorithm>
 #include <cassert>
 #include <cmath>
 
-#include "geometry/predicates.h"
-#include "io/io.h"
+#include "flood/geometry/predicates.h"
+#include "flood/io/io.h"
 #include "tools/generate_parts.h"
 
 namespace flood {

@@ -2,8 +2,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "io/io.h"
-#include "tools/generate.h"
+#include "flood/io/io.h"
+#include "flood/tools/generate.h"
 #include "tools/generate_parts.h"
 
 namespace flood {

@@ -1,6 +1,6 @@
 // The shrinker (see shrink.h): failure classification in a forked child, then greedy
 // reduction of parts, holes, vertices and coordinate precision.
-#include "tools/shrink.h"
+#include "flood/tools/shrink.h"
 
 #include <sys/wait.h>
 #include <unistd.h>
@@ -15,10 +15,10 @@
 #include <ostream>
 #include <sstream>
 
-#include "check/checker.h"
-#include "check/touches.h"
-#include "check/verify.h"
-#include "io/io.h"
+#include "flood/check/checker.h"
+#include "flood/check/touches.h"
+#include "flood/check/verify.h"
+#include "flood/io/io.h"
 
 namespace flood {
 

@@ -24,7 +24,7 @@ classes (docs/ERRORS.md).
 - ``validate(polygon)`` returns a Diagnostic (``.ok`` true when valid); it raises only for
   inputs that are not polygons at all (TypeError).
 - ``trace(polygon)`` returns a Trace: ``.events``, a numpy structured array (EVENT_DTYPE, fields
-  named as core/machine/events.h names them), and ``.replay``, whose ``seek(step)`` gives the state
+  named as flood/machine/events.h names them), and ``.replay``, whose ``seek(step)`` gives the state
   after ``step`` events (fingers Left/Right/NextLeft/NextRight, the active chain, ...).
 - ``check(features)`` triangulates many polygons on C++ threads and returns one Verdict each.
 - ``generate(family, size, seed)`` returns a generated valid polygon as a list of parts.
@@ -246,7 +246,7 @@ def triangulate(polygon, *, validate: bool = True, up: str = "+y",
 
 
 class Replay:
-    """The machine's state at any step, rebuilt from the log (core/log/replay.h)."""
+    """The machine's state at any step, rebuilt from the log (flood/log/replay.h)."""
 
     def __init__(self, handle):
         self._handle = handle

@@ -6,12 +6,12 @@
 #include <cmath>
 #include <random>
 
-#include "check/checker.h"
-#include "geometry/predicates.h"
-#include "geometry/work.h"
-#include "io/io.h"
-#include "machine/flood.h"
-#include "tools/generate.h"
+#include "flood/check/checker.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
+#include "flood/io/io.h"
+#include "flood/machine/flood.h"
+#include "flood/tools/generate.h"
 
 using namespace flood;
 

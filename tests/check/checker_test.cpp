@@ -6,10 +6,10 @@
 #include <future>
 #include <set>
 
-#include "check/checker.h"
-#include "io/io.h"
-#include "machine/flood.h"
-#include "tools/generate.h"
+#include "flood/check/checker.h"
+#include "flood/io/io.h"
+#include "flood/machine/flood.h"
+#include "flood/tools/generate.h"
 
 using flood::checkTriangulation;
 using flood::Point;

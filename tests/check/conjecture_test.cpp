@@ -2,11 +2,11 @@
 // are invalid, and what the unvalidated verification sees of each kind of defect.
 #include <gtest/gtest.h>
 
-#include "check/touches.h"
-#include "check/verify.h"
+#include "flood/check/touches.h"
+#include "flood/check/verify.h"
+#include "flood/tools/generate.h"
+#include "flood/tools/shrink.h"
 #include "test_support.h"
-#include "tools/generate.h"
-#include "tools/shrink.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -1,11 +1,11 @@
-// Where a diagnostic points (core/check/diagnostic_where.h) comes from its culprits: on every
+// Where a diagnostic points (flood/check/diagnostic_where.h) comes from its culprits: on every
 // invalid sample it is the location validate() puts first in its message, and `flood check`'s
 // AT column shows exactly it (never a cut of the message text).
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
-#include "check/diagnostic_where.h"
+#include "flood/check/diagnostic_where.h"
 #include "test_support.h"
 
 using namespace flood;

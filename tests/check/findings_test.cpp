@@ -4,9 +4,9 @@
 
 #include <set>
 
-#include "io/io.h"
+#include "flood/io/io.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 

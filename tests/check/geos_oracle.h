@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "geometry/polygon.h"
+#include "flood/geometry/polygon.h"
 
 namespace flood::testing {
 

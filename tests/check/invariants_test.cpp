@@ -1,16 +1,16 @@
-// The machine's invariants checked on the replay (core/check/invariants.h): none broken on valid
+// The machine's invariants checked on the replay (flood/check/invariants.h): none broken on valid
 // input, broken on invalid input before the machine stops (or where it never does), a
 // tampered log caught, and the whole check in work linear in the trace.
 #include <gtest/gtest.h>
 
 #include <cstdio>
 
-#include "check/invariants.h"
-#include "geometry/work.h"
-#include "log/replay.h"
-#include "log/trace_io.h"
+#include "flood/check/invariants.h"
+#include "flood/geometry/work.h"
+#include "flood/log/replay.h"
+#include "flood/log/trace_io.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -1,15 +1,15 @@
-// T-junctions found without validation (core/check/touches.h): the same splits as validate() on
+// T-junctions found without validation (flood/check/touches.h): the same splits as validate() on
 // every valid input, exact and complete on invalid input (against a brute-force search),
 // linear work on the t-junctions family, and a cap that ends adversarial searches.
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "check/touches.h"
-#include "geometry/predicates.h"
-#include "geometry/work.h"
+#include "flood/check/touches.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -1,13 +1,13 @@
 // The validator's work grows as n log n on its adversaries: k rings through one point (as parts
 // and as holes), an invalid crossing at a point shared by k rings, k parts. Work is counted, not
-// timed (core/geometry/work.h): exact orientation tests plus validatorSteps (pair tests, wedge
+// timed (flood/geometry/work.h): exact orientation tests plus validatorSteps (pair tests, wedge
 // comparisons, loop iterations). Per vertex it must stay within 3x of the smallest k's figure
 // (log n alone grows about 2x from 10^2 to 10^5).
 #include <gtest/gtest.h>
 
 #include <functional>
 
-#include "geometry/work.h"
+#include "flood/geometry/work.h"
 #include "test_support.h"
 
 using namespace flood;

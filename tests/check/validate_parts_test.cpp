@@ -6,8 +6,8 @@
 // generated cases with GEOS itself).
 #include <gtest/gtest.h>
 
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -10,9 +10,9 @@
 #include <cstdint>
 
 #include "check/validate_paths.h"
-#include "geometry/work.h"
+#include "flood/geometry/work.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

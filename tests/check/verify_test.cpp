@@ -6,10 +6,10 @@
 #include <functional>
 #include <limits>
 
-#include "check/touches.h"
-#include "check/verify.h"
+#include "flood/check/touches.h"
+#include "flood/check/verify.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

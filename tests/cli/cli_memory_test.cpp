@@ -9,9 +9,9 @@
 #include <filesystem>
 #include <string>
 
+#include "flood/tools/generate.h"
+#include "flood/tools/shrink.h"
 #include "test_support.h"
-#include "tools/generate.h"
-#include "tools/shrink.h"
 
 namespace {
 

@@ -20,9 +20,9 @@
 #include <string>
 #include <vector>
 
+#include "flood/log/trace_io.h"
+#include "flood/tools/generate.h"
 #include "invalid_catalogue.h"
-#include "log/trace_io.h"
-#include "tools/generate.h"
 
 using namespace flood::testing;
 

@@ -2,7 +2,7 @@
 // example file in polygons/invalid/, the `flood` arguments, the exit code and a substring of
 // the exact message. Forbidden-machine examples run with --no-validate (validation would
 // reject them first). A second test checks that every forbidden reason of the machine
-// (FLOOD_FORBIDDEN in core/machine/events.h) and every validation rule has a row.
+// (FLOOD_FORBIDDEN in flood/machine/events.h) and every validation rule has a row.
 #include <gtest/gtest.h>
 
 #include "invalid_catalogue.h"
@@ -13,7 +13,7 @@
 #include <cstdio>
 #include <string>
 
-#include "machine/events.h"
+#include "flood/machine/events.h"
 
 using namespace flood::testing;
 

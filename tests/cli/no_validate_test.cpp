@@ -1,5 +1,5 @@
 // The unvalidated path through the `flood` command (--no-validate): T-junctions found without
-// validation (core/check/touches.h), the exact self-check still run, and `flood verify
+// validation (flood/check/touches.h), the exact self-check still run, and `flood verify
 // --no-validate` telling which check caught an invalid input (docs/ALGORITHM.md §7).
 #include <gtest/gtest.h>
 

@@ -7,8 +7,8 @@
 #include <limits>
 #include <random>
 
-#include "geometry/predicates.h"
-#include "geometry/work.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
 
 using flood::ExactSum;
 using flood::inside;

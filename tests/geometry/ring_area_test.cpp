@@ -1,4 +1,4 @@
-// The filtered ring orientation (core/geometry/ring_area.h) against exact arithmetic: the same sign
+// The filtered ring orientation (flood/geometry/ring_area.h) against exact arithmetic: the same sign
 // on every ring, also where doubles alone cannot tell, and error bounds that hold.
 #include <gtest/gtest.h>
 
@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <type_traits>
 
-#include "geometry/predicates.h"
-#include "geometry/ring_area.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/ring_area.h"
 
 namespace {
 

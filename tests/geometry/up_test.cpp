@@ -11,17 +11,17 @@
 
 #include <sstream>
 
-#include "check/invariants.h"
-#include "check/touches.h"
-#include "check/verify.h"
-#include "geometry/predicates.h"
-#include "geometry/work.h"
-#include "log/replay.h"
-#include "log/trace_io.h"
-#include "machine/vertex_class.h"
-#include "teach/transcript.h"
+#include "flood/check/invariants.h"
+#include "flood/check/touches.h"
+#include "flood/check/verify.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
+#include "flood/log/replay.h"
+#include "flood/log/trace_io.h"
+#include "flood/machine/vertex_class.h"
+#include "flood/teach/transcript.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -7,7 +7,7 @@
 
 #include <cmath>
 
-#include "flood_api.h"
+#include "flood/flood_api.h"
 #include "panels.h"
 #include "windowless_imgui.h"
 

@@ -18,11 +18,11 @@
 
 #include <sys/wait.h>
 
+#include "flood/teach/decision_tree.h"
 #include "gui_test_display.h"
 #include "model.h"
 #include "palette.h"
 #include "presenter.h"
-#include "teach/decision_tree.h"
 
 using namespace flood;
 using namespace flood::view;

@@ -4,9 +4,9 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
-#include "flood_api.h"
+#include "flood/flood_api.h"
+#include "flood/tools/generate.h"
 #include "panels.h"
-#include "tools/generate.h"
 #include "windowless_imgui.h"
 
 using namespace flood;

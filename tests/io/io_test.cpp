@@ -12,10 +12,10 @@
 #include <set>
 #include <sstream>
 
-#include "check/checker.h"
-#include "io/io.h"
-#include "log/replay.h"
-#include "log/trace_io.h"
+#include "flood/check/checker.h"
+#include "flood/io/io.h"
+#include "flood/log/replay.h"
+#include "flood/log/trace_io.h"
 #include "test_support.h"
 
 using namespace flood;

@@ -7,11 +7,11 @@
 #include <cstring>
 #include <sstream>
 
+#include "flood/tools/generate.h"
+#include "flood/tools/shrink.h"
 #include "io/io_json.h"
 #include "io/io_util.h"
 #include "test_support.h"
-#include "tools/generate.h"
-#include "tools/shrink.h"
 
 namespace {
 

@@ -1,4 +1,4 @@
-// The core's atomic outputs (core/io/output.h), as the CLI and the viewer use them: a file
+// The core's atomic outputs (flood/io/output.h), as the CLI and the viewer use them: a file
 // appears whole on commit, an output never committed leaves the old file and no temporary,
 // and a failed commit says which path and why.
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include "io/output.h"
+#include "flood/io/output.h"
 #include "test_support.h"
 
 using namespace flood;

@@ -1,4 +1,4 @@
-// The one SVG writer (core/io/svg.h) that the CLI's picture and the viewer's export share: the
+// The one SVG writer (flood/io/svg.h) that the CLI's picture and the viewer's export share: the
 // markup of each shape, points placed by the caller, attributes only where a style sets them,
 // text escaped, and the document closed however its writer leaves it.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <sstream>
 #include <string>
 
-#include "io/svg.h"
+#include "flood/io/svg.h"
 
 using namespace flood;
 

@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "io/io.h"
+#include "flood/io/io.h"
 
 using namespace flood;
 

@@ -4,9 +4,9 @@
 
 #include <string>
 
-#include "log/prefix_tree.h"
-#include "log/replay.h"
-#include "tools/generate.h"
+#include "flood/log/prefix_tree.h"
+#include "flood/log/replay.h"
+#include "flood/tools/generate.h"
 
 using namespace flood;
 

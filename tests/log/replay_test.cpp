@@ -1,9 +1,9 @@
 // Replay rebuilds the machine-visible state from the event log alone, with keyframes.
 #include <gtest/gtest.h>
 
-#include "log/replay.h"
+#include "flood/log/replay.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;
@@ -71,7 +71,7 @@ TEST(Replay, ForbiddenRunEndsOnTheForbiddenStep) {
 
 }  // namespace
 
-// The replay state's operator== (core/log/replay.h) sees a change in any one field, a dormant
+// The replay state's operator== (flood/log/replay.h) sees a change in any one field, a dormant
 // gorge's included.
 TEST(Replay, StatesDifferingInAnyFieldAreUnequal) {
     Trace t = record(generate("staircase", 1, 60));

@@ -9,11 +9,11 @@
 #include <sstream>
 #include <string>
 
-#include "io/io.h"
-#include "log/replay.h"
-#include "log/trace_io.h"
+#include "flood/io/io.h"
+#include "flood/log/replay.h"
+#include "flood/log/trace_io.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

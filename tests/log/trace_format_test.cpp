@@ -1,4 +1,4 @@
-// The trace file (core/log/trace_io.h), version 2: an event line leaves out what its action does
+// The trace file (flood/log/trace_io.h), version 2: an event line leaves out what its action does
 // not use and what is at its initial value, reads back to the same events on every family,
 // and version 1 files (every field written) still read.
 #include <gtest/gtest.h>
@@ -6,10 +6,10 @@
 #include <sstream>
 #include <string>
 
-#include "log/replay.h"
-#include "log/trace_io.h"
+#include "flood/log/replay.h"
+#include "flood/log/trace_io.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using flood::testing::readOrFail;

@@ -7,14 +7,14 @@
 #include <cstdlib>
 #include <string>
 
-#include "log/replay.h"
-#include "tools/generate.h"
+#include "flood/log/replay.h"
+#include "flood/tools/generate.h"
 
 using namespace flood;
 
 namespace {
 
-// An event is 96 bytes (core/machine/events.h); a log kept at the size it needs is 96 an event
+// An event is 96 bytes (flood/machine/events.h); a log kept at the size it needs is 96 an event
 // (tests/log/trace_format_test.cpp: a log read back from its file too). Before:
 // 112-byte events in a log reserved for 1.5 events a vertex and doubled when that ran out,
 // 112 to 224 bytes an event (grid-holes 185, touching-holes 224 at 10^5 vertices).

@@ -12,14 +12,14 @@
 #include <string>
 #include <vector>
 
-#include "check/invariants.h"
-#include "log/replay.h"
-#include "log/trace_io.h"
-#include "teach/describe.h"
-#include "teach/narrate.h"
-#include "teach/transcript.h"
+#include "flood/check/invariants.h"
+#include "flood/log/replay.h"
+#include "flood/log/trace_io.h"
+#include "flood/teach/describe.h"
+#include "flood/teach/narrate.h"
+#include "flood/teach/transcript.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 #if __has_include("model.h")
 #include "canvas_geometry.h"
 #include "model.h"

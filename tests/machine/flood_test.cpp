@@ -2,11 +2,11 @@
 // exact checker; small cases also have golden transcripts (the paper's Fig. 7 notation).
 #include <gtest/gtest.h>
 
+#include "flood/log/replay.h"
+#include "flood/teach/transcript.h"
+#include "flood/tools/generate.h"
 #include "golden_transcripts.h"
-#include "log/replay.h"
-#include "teach/transcript.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

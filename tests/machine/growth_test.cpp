@@ -1,5 +1,5 @@
 // Growth held to linear without clocks (issue 10, issue 13): the work counters of
-// core/geometry/work.h (node visits, sag tests, orientation tests) are deterministic, so a family
+// flood/geometry/work.h (node visits, sag tests, orientation tests) are deterministic, so a family
 // whose work per vertex grows with N is super-linear whatever the machine it runs on.
 //
 // Each case runs validate() + triangulate() at N = 10^3, 10^4, 10^5 and asserts that the
@@ -16,13 +16,13 @@
 #include <string>
 #include <vector>
 
-#include "check/checker.h"
-#include "check/verify.h"
-#include "geometry/work.h"
-#include "io/io.h"
-#include "machine/flood.h"
+#include "flood/check/checker.h"
+#include "flood/check/verify.h"
+#include "flood/geometry/work.h"
+#include "flood/io/io.h"
+#include "flood/machine/flood.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 namespace flood {
 namespace {

@@ -14,10 +14,10 @@
 #include <string>
 #include <vector>
 
-#include "check/touches.h"
-#include "check/verify.h"
+#include "flood/check/touches.h"
+#include "flood/check/verify.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using flood::testing::filesIn;

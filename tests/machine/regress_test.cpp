@@ -1,5 +1,5 @@
 // Regression inputs found by fuzzing and random search (polygons/regress/). Each file is run
-// in a forked child with a time limit (core/tools/shrink.h classify), with validation skipped, so a
+// in a forked child with a time limit (flood/tools/shrink.h classify), with validation skipped, so a
 // crash or a hang fails the test instead of killing the suite.
 //   - A file must never crash or hang: the machine ends in a Forbidden diagnostic or an exact
 //     triangulation; if validate() accepts it, an exact triangulation.
@@ -15,8 +15,8 @@
 #include <iterator>
 
 #include "../../fuzz/fuzz_poly.h"
+#include "flood/tools/shrink.h"
 #include "test_support.h"
-#include "tools/shrink.h"
 
 using namespace flood;
 using namespace flood::testing;

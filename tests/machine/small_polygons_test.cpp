@@ -11,13 +11,13 @@
 #include <string>
 #include <vector>
 
-#include "geometry/predicates.h"
-#include "geometry/up.h"
-#include "geometry/work.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/up.h"
+#include "flood/geometry/work.h"
+#include "flood/machine/vertex_class.h"
+#include "flood/tools/generate.h"
 #include "machine/sags/sag_banks.h"
-#include "machine/vertex_class.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 // Allocations made by this thread, counted by the replaced global operator new (it forwards
 // to malloc; the rest of the suite sees no difference).

@@ -1,12 +1,12 @@
-// The vertex classes (core/machine/vertex_class.h) orient each ring by the machine's own rule
+// The vertex classes (flood/machine/vertex_class.h) orient each ring by the machine's own rule
 // (ring_area.h's ringOrientation), so that on a ring that is not simple too they are the
 // classes the machine sees: the vertex it starts from is a bottom.
 #include <gtest/gtest.h>
 
 #include <vector>
 
-#include "machine/flood.h"
-#include "machine/vertex_class.h"
+#include "flood/machine/flood.h"
+#include "flood/machine/vertex_class.h"
 
 using namespace flood;
 

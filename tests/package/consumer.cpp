@@ -1,7 +1,10 @@
 // A program that uses the installed Flood as a user would: triangulate a square with a hole
 // and a MultiPolygon, refuse a bow-tie with its diagnostic, replay a recorded trace. Built by
 // scripts/package-test.sh against a temporary prefix, once with CMake and once with pkg-config.
-#include <flood/flood_api.h>
+// It includes the two umbrella headers, so every installed header must compile on its own
+// include path (an installed header that includes an internal one fails here).
+#include <flood/flood.h>
+#include <flood/teach.h>
 #include <cstdio>
 
 namespace {
@@ -38,6 +41,9 @@ int main() {
     expect(!trace.events.empty() && trace.diagnostic.ok(), "a trace is recorded");
     expect(replay.seek(replay.size()).triangleCount == 8, "the replay ends with every triangle");
     expect(replay.seek(0).triangleCount == 0, "and starts with none");
+
+    const std::string paper = flood::transcript(trace.events);  // the teaching layer
+    expect(paper.rfind("Raise", 0) == 0, "the transcript starts as the paper's: Raise ...");
 
     std::printf("consumer: %zu triangles, %zu events, bow-tie: %s\n", t.triangles.size(),
                 trace.events.size(), d.message.c_str());

@@ -1,4 +1,4 @@
-// The paper's Fig. 9 as a model (core/teach/decision_tree.h): every event of the samples, the
+// The paper's Fig. 9 as a model (flood/teach/decision_tree.h): every event of the samples, the
 // invalid inputs and the generated families follows a path of the tree that ends in its own
 // action (a forbidden event: in a stop naming its reason), the answers on the path are the
 // ones the event recorded, and the layout draws no box over another.
@@ -7,11 +7,11 @@
 #include <algorithm>
 #include <set>
 
-#include "io/io.h"
-#include "log/replay.h"
-#include "teach/decision_tree.h"
+#include "flood/io/io.h"
+#include "flood/log/replay.h"
+#include "flood/teach/decision_tree.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

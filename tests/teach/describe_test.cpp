@@ -1,11 +1,11 @@
-// An event in one line (core/teach/describe.h), as the viewer's Events panel, timeline and caption
+// An event in one line (flood/teach/describe.h), as the viewer's Events panel, timeline and caption
 // show it: the action, the vertices it moved, the triangles it cut.
 #include <gtest/gtest.h>
 
-#include "log/replay.h"
-#include "teach/describe.h"
-#include "teach/narrate.h"
-#include "teach/transcript.h"
+#include "flood/log/replay.h"
+#include "flood/teach/describe.h"
+#include "flood/teach/narrate.h"
+#include "flood/teach/transcript.h"
 #include "test_support.h"
 
 using namespace flood;

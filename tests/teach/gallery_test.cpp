@@ -9,11 +9,11 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "flood/io/io.h"
+#include "flood/log/replay.h"
+#include "flood/machine/flood.h"
+#include "flood/teach/transcript.h"
 #include "golden_transcripts.h"
-#include "io/io.h"
-#include "log/replay.h"
-#include "machine/flood.h"
-#include "teach/transcript.h"
 #include "test_support.h"
 
 using namespace flood;

@@ -1,4 +1,4 @@
-// Narration (core/teach/narrate.h): one sentence per event, for every action and every forbidden
+// Narration (flood/teach/narrate.h): one sentence per event, for every action and every forbidden
 // reason, naming the fingers, the triangles and why the machine chose what it did.
 #include <gtest/gtest.h>
 
@@ -6,11 +6,11 @@
 #include <cmath>
 #include <cstring>
 
-#include "io/io.h"
-#include "log/replay.h"
-#include "teach/narrate.h"
+#include "flood/io/io.h"
+#include "flood/log/replay.h"
+#include "flood/teach/narrate.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

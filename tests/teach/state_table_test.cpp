@@ -1,12 +1,12 @@
-// The paper's Fig. 10 as a model (core/teach/state_table.h): every event has exactly one cell, the
+// The paper's Fig. 10 as a model (flood/teach/state_table.h): every event has exactly one cell, the
 // counts add up to the run, and the cells say what the paper says of each state.
 #include <gtest/gtest.h>
 
-#include "io/io.h"
-#include "log/replay.h"
-#include "teach/state_table.h"
+#include "flood/io/io.h"
+#include "flood/log/replay.h"
+#include "flood/teach/state_table.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -1,14 +1,14 @@
-// The to-do list model (core/teach/todo_list.h): at every step of runs with bridges and spills it
+// The to-do list model (flood/teach/todo_list.h): at every step of runs with bridges and spills it
 // holds exactly the replay state's pending and held gorges, the pending ones in the order the
 // machine takes them, the held ones with the top and jump pointer their Jump will use.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 
-#include "log/replay.h"
-#include "teach/todo_list.h"
+#include "flood/log/replay.h"
+#include "flood/teach/todo_list.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

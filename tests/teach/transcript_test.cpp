@@ -1,13 +1,13 @@
-// Transcript items (core/teach/transcript.h): each covers its events (a whole run of raises, or one
+// Transcript items (flood/teach/transcript.h): each covers its events (a whole run of raises, or one
 // other action), shows the triangles they cut, and carries the paper's separator; joined they
 // are flood::transcript(), the golden transcripts where there are some.
 #include <gtest/gtest.h>
 
+#include "flood/log/replay.h"
+#include "flood/teach/transcript.h"
+#include "flood/tools/generate.h"
 #include "golden_transcripts.h"
-#include "log/replay.h"
-#include "teach/transcript.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -9,8 +9,8 @@
 #include <numeric>
 #include <sstream>
 
-#include "geometry/predicates.h"
-#include "tools/generate.h"
+#include "flood/geometry/predicates.h"
+#include "flood/tools/generate.h"
 
 using flood::Index;
 using flood::orient;

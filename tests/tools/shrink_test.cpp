@@ -1,4 +1,4 @@
-// The shrinker (core/tools/shrink.h) on planted failures: a crossing buried in a large valid ring,
+// The shrinker (flood/tools/shrink.h) on planted failures: a crossing buried in a large valid ring,
 // a checker failure planted by the test-only corrupt hook, and a polygon that does not fail.
 #include <gtest/gtest.h>
 
@@ -6,10 +6,10 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "check/touches.h"
+#include "flood/check/touches.h"
+#include "flood/tools/generate.h"
+#include "flood/tools/shrink.h"
 #include "test_support.h"
-#include "tools/generate.h"
-#include "tools/shrink.h"
 
 using namespace flood;
 using namespace flood::testing;

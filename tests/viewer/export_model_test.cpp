@@ -10,9 +10,9 @@
 #include <sstream>
 
 #include "export.h"
+#include "flood/teach/narrate.h"
 #include "quantize.h"
 #include "scene.h"
-#include "teach/narrate.h"
 #include "test_support.h"
 #ifdef FLOOD_GIF
 #include <gif_lib.h>

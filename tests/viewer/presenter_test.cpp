@@ -7,8 +7,8 @@
 #include <cmath>
 #include <fstream>
 
+#include "flood/teach/narrate.h"
 #include "presenter.h"
-#include "teach/narrate.h"
 #include "test_support.h"
 
 using namespace flood;

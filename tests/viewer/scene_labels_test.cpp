@@ -8,10 +8,10 @@
 #include <algorithm>
 #include <sstream>
 
+#include "flood/teach/narrate.h"
 #include "model.h"
 #include "presenter.h"
 #include "scene_labels.h"
-#include "teach/narrate.h"
 
 using namespace flood;
 using namespace flood::view;

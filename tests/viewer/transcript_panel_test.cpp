@@ -1,14 +1,14 @@
 // The viewer's Transcript panel (viewer/panel_transcript.cpp) draws Model::transcript()'s items
-// each followed by its separator: they are the core's items (core/teach/transcript.h), so read in
+// each followed by its separator: they are the core's items (flood/teach/transcript.h), so read in
 // order they are `flood transcript`'s string, with the paper's ", " and "; " (Fig. 7's caption).
 #if __has_include("model.h")
 #include <gtest/gtest.h>
 
-#include "log/replay.h"
+#include "flood/log/replay.h"
+#include "flood/teach/transcript.h"
+#include "flood/tools/generate.h"
 #include "model.h"
-#include "teach/transcript.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::testing;

@@ -8,10 +8,10 @@
 #include <filesystem>
 
 #include "edit.h"
-#include "flood_api.h"
-#include "io/io.h"
+#include "flood/flood_api.h"
+#include "flood/io/io.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::view;

@@ -6,9 +6,9 @@
 #include <algorithm>
 #include <cmath>
 
+#include "flood/tools/generate.h"
 #include "gorge_focus.h"
 #include "model.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::view;

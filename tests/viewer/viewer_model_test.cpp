@@ -12,16 +12,16 @@
 
 #include "canvas_geometry.h"
 #include "edit.h"
-#include "geometry/work.h"
+#include "flood/geometry/work.h"
+#include "flood/io/io.h"
+#include "flood/log/trace_io.h"
+#include "flood/teach/transcript.h"
+#include "flood/tools/generate.h"
 #include "gorge_focus.h"
-#include "io/io.h"
 #include "key_queue.h"
-#include "log/trace_io.h"
 #include "model.h"
 #include "scene.h"
-#include "teach/transcript.h"
 #include "test_support.h"
-#include "tools/generate.h"
 
 using namespace flood;
 using namespace flood::view;

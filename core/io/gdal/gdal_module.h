@@ -5,7 +5,7 @@
 // gives this table.
 // Internal to core/io/gdal/.
 #pragma once
-#include "io/gdal/gdal_io.h"
+#include "flood/io/gdal/gdal_io.h"
 
 namespace flood::gdal {
 

@@ -2,7 +2,7 @@
 #include <algorithm>
 #include <cctype>
 
-#include "io/gdal/gdal_io.h"
+#include "flood/io/gdal/gdal_io.h"
 
 namespace flood::gdal {
 namespace {

@@ -26,9 +26,9 @@
 #include <unordered_map>
 #include <vector>
 
+#include "flood/io/output.h"
 #include "io/gdal/gdal_handles.h"
 #include "io/gdal/gdal_module.h"
-#include "io/output.h"
 
 namespace flood::gdal::direct {
 namespace {

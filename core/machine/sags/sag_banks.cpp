@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <memory>
 
-#include "geometry/predicates.h"
+#include "flood/geometry/predicates.h"
 #include "geometry/sweep_tree.h"
 
 namespace flood {

@@ -14,8 +14,8 @@
 #include <utility>
 #include <vector>
 
-#include "geometry/polygon.h"
-#include "geometry/work.h"
+#include "flood/geometry/polygon.h"
+#include "flood/geometry/work.h"
 #include "machine/node_id.h"
 
 namespace flood {

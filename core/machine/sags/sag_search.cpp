@@ -3,8 +3,8 @@
 
 #include <algorithm>
 
-#include "geometry/predicates.h"
-#include "geometry/work.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
 
 namespace flood {
 

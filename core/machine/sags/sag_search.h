@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "machine/events.h"
+#include "flood/machine/events.h"
 #include "machine/heights.h"
 #include "machine/sags/sag_banks.h"
 #include "machine/sags/sag_index.h"

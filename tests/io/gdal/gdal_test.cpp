@@ -7,7 +7,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
-#include "io/gdal/gdal_io.h"
+#include "flood/io/gdal/gdal_io.h"
 #include "test_support.h"
 
 namespace flood::testing {

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
-#include "geometry/predicates.h"
-#include "geometry/work.h"
-#include "io/io.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
+#include "flood/io/io.h"
+#include "flood/tools/generate.h"
 #include "machine/sags/sag_banks.h"
-#include "tools/generate.h"
 
 using namespace flood;
 

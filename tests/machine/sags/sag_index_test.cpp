@@ -8,13 +8,13 @@
 #include <functional>
 #include <random>
 
-#include "geometry/predicates.h"
-#include "geometry/work.h"
-#include "io/io.h"
-#include "machine/flood.h"
+#include "flood/geometry/predicates.h"
+#include "flood/geometry/work.h"
+#include "flood/io/io.h"
+#include "flood/machine/flood.h"
+#include "flood/tools/generate.h"
 #include "machine/sags/sag_banks.h"
 #include "machine/sags/sag_index.h"
-#include "tools/generate.h"
 
 using namespace flood;
 

@@ -24,9 +24,9 @@
 #include <string_view>
 #include <vector>
 
-#include "geometry/polygon.h"
-#include "machine/events.h"
-#include "machine/flood.h"
+#include "flood/geometry/polygon.h"
+#include "flood/machine/events.h"
+#include "flood/machine/flood.h"
 
 namespace flood {
 

@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
-#include "log/prefix_tree.h"
-#include "machine/events.h"
-#include "machine/flood.h"
+#include "flood/log/prefix_tree.h"
+#include "flood/machine/events.h"
+#include "flood/machine/flood.h"
 
 namespace flood {
 
@@ -59,7 +59,7 @@ public:
     // costing more than kKeyframeRatio indices per event since the last one waits, but never
     // past kMaxWorkFactor intervals of work (so seeks stay bounded on heavy logs). A keyframe
     // costs its active chain plus what changed since the last one: dormant gorges and jump
-    // pointers are stacks in practice, stored as shared prefixes (core/log/prefix_tree.h).
+    // pointers are stacks in practice, stored as shared prefixes (flood/log/prefix_tree.h).
     explicit Replay(const Trace& trace, uint32_t keyframeInterval = 256);
     static constexpr uint32_t kKeyframeRatio = 16, kMaxWorkFactor = 128;
     uint32_t size() const { return uint32_t(trace_->events.size()); }

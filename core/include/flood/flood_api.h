@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "log/replay.h"     // Trace, Replay: seek to any step of a recorded flood
-#include "machine/flood.h"  // Options, Triangle, Diagnostic, Status, triangulate() without validation
+#include "flood/log/replay.h"  // Trace, Replay: seek to any step of a recorded flood
+#include "flood/machine/flood.h"  // Options, Triangle, Diagnostic, Status, triangulate() without validation
 
 namespace flood {
 

@@ -7,8 +7,8 @@
 #include <utility>
 #include <vector>
 
-#include "geometry/polygon.h"
-#include "geometry/status.h"
+#include "flood/geometry/polygon.h"
+#include "flood/geometry/status.h"
 
 namespace flood {
 

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
-#include "check/checker.h"
-#include "machine/flood.h"
+#include "flood/check/checker.h"
+#include "flood/machine/flood.h"
 
 namespace flood {
 

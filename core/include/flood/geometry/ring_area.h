@@ -14,8 +14,8 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "geometry/polygon.h"
-#include "geometry/up.h"
+#include "flood/geometry/polygon.h"
+#include "flood/geometry/up.h"
 
 namespace flood {
 

@@ -3,7 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "machine/events.h"
+#include "flood/machine/events.h"
 
 namespace flood {
 

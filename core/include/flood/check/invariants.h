@@ -14,7 +14,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "log/replay.h"
+#include "flood/log/replay.h"
 
 namespace flood {
 

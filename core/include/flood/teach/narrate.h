@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "geometry/polygon.h"
-#include "machine/events.h"
+#include "flood/geometry/polygon.h"
+#include "flood/machine/events.h"
 
 namespace flood {
 

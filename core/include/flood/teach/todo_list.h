@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "log/replay.h"
+#include "flood/log/replay.h"
 
 namespace flood {
 

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "geometry/polygon.h"
-#include "geometry/ring_area.h"  // AreaEstimate
-#include "geometry/status.h"
+#include "flood/geometry/polygon.h"
+#include "flood/geometry/ring_area.h"  // AreaEstimate
+#include "flood/geometry/status.h"
 
 namespace flood {
 

@@ -4,10 +4,10 @@
 #include <string>
 #include <vector>
 
-#include "geometry/polygon.h"
-#include "geometry/status.h"
-#include "geometry/up.h"
-#include "machine/events.h"
+#include "flood/geometry/polygon.h"
+#include "flood/geometry/status.h"
+#include "flood/geometry/up.h"
+#include "flood/machine/events.h"
 
 namespace flood {
 

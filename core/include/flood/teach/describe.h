@@ -1,10 +1,10 @@
 // An event in one line, for lists and tooltips: "Bridge sag 12 to 7, gorge 3 pending;
-// triangles 8-9". Terser than narration (core/teach/narrate.h), which says why in sentences.
+// triangles 8-9". Terser than narration (flood/teach/narrate.h), which says why in sentences.
 #pragma once
 #include <string>
 
-#include "geometry/polygon.h"
-#include "machine/events.h"
+#include "flood/geometry/polygon.h"
+#include "flood/machine/events.h"
 
 namespace flood {
 

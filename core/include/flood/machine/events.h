@@ -6,7 +6,7 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "geometry/polygon.h"
+#include "flood/geometry/polygon.h"
 
 namespace flood {
 

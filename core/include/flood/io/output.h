@@ -7,7 +7,7 @@
 #include <ostream>
 #include <string>
 
-#include "geometry/status.h"
+#include "flood/geometry/status.h"
 
 namespace flood {
 

@@ -4,8 +4,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/polygon.h"
-#include "geometry/up.h"
+#include "flood/geometry/polygon.h"
+#include "flood/geometry/up.h"
 
 namespace flood {
 

@@ -17,7 +17,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "machine/events.h"
+#include "flood/machine/events.h"
 
 namespace flood {
 

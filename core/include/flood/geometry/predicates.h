@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <memory>
 
-#include "geometry/polygon.h"
-#include "geometry/up.h"
-#include "geometry/work.h"
+#include "flood/geometry/polygon.h"
+#include "flood/geometry/up.h"
+#include "flood/geometry/work.h"
 
 namespace flood {
 

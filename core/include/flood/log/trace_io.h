@@ -21,8 +21,8 @@
 #include <string>
 #include <string_view>
 
-#include "geometry/status.h"
-#include "log/replay.h"
+#include "flood/geometry/status.h"
+#include "flood/log/replay.h"
 
 namespace flood {
 

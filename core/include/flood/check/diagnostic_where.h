@@ -3,8 +3,8 @@
 #pragma once
 #include <string>
 
-#include "geometry/polygon.h"
-#include "geometry/status.h"
+#include "flood/geometry/polygon.h"
+#include "flood/geometry/status.h"
 
 namespace flood {
 

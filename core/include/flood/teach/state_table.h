@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "geometry/polygon.h"
-#include "machine/events.h"
-#include "machine/vertex_class.h"
+#include "flood/geometry/polygon.h"
+#include "flood/machine/events.h"
+#include "flood/machine/vertex_class.h"
 
 namespace flood {
 

@@ -40,6 +40,7 @@
 #include "flood/teach/transcript.h"
 #include "flood/tools/generate.h"
 #include "flood/tools/shrink.h"
+#include "run.h"
 #include "triangulate_gis.h"
 #ifdef FLOOD_GDAL
 #include "flood/io/gdal/gdal_io.h"
@@ -524,7 +525,7 @@ int cmdBench(const std::string& in, int repeat, const std::string& up) {
 
 }  // namespace
 
-int run(int argc, char** argv) {
+int flood::cli::run(int argc, char** argv) {
     takeOverStdout();
     // Large blocks always come from (and go back to) the system: glibc otherwise raises this
     // threshold after the first large free, and what each step of the pipeline (read,
@@ -751,5 +752,3 @@ int run(int argc, char** argv) {
     }
     return code(Status::Usage);
 }
-
-int main(int argc, char** argv) { return flood::finishStdout(run(argc, argv)); }

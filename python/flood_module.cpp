@@ -18,9 +18,11 @@
 #include <thread>
 #include <type_traits>
 
+#include "cli/run.h"  // the flood command, for python -m flood
 #include "flood/check/checker.h"
 #include "flood/check/diagnostic_where.h"
 #include "flood/io/io.h"
+#include "flood/io/output.h"
 #include "flood/log/replay.h"
 #include "flood/machine/flood.h"
 #include "flood/tools/generate.h"
@@ -402,6 +404,17 @@ PYBIND11_MODULE(_flood, m) {
         return parts;
     });
     m.def("families", &familyNames);
+    // `python -m flood ARGS` and the `flood` console script: the command itself (cli/run.h),
+    // not a re-implementation, so every option, message and exit code is the CLI's. It writes
+    // to file descriptors 1 and 2 directly; the caller flushes Python's streams first.
+    m.def("_cli", [](const std::vector<std::string>& args) {
+        std::vector<std::string> copy = args;
+        std::vector<char*> argv;
+        for (std::string& a : copy) argv.push_back(a.data());
+        argv.push_back(nullptr);
+        py::gil_scoped_release unlocked;
+        return flood::finishStdout(flood::cli::run(int(copy.size()), argv.data()));
+    });
     m.def("wkb_like", [](const py::bytes& b) { return wkbLike(std::string_view(b)); });
 
     py::class_<Fingers>(m, "Fingers")

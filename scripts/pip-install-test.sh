@@ -22,7 +22,7 @@ if ! "$python" -m venv --system-site-packages --without-pip "$tmp/venv" >"$tmp/v
     exit 77
 fi
 mkdir "$tmp/src"
-cp -r "$src/python" "$src/core" "$tmp/src/"
+cp -r "$src/python" "$src/core" "$src/cli" "$tmp/src/"
 rm -rf "$tmp/src/python/build" "$tmp/src/python/"*.egg-info
 echo "pip-install-test: pip install --no-build-isolation --no-index $tmp/src/python"
 PIP_DISABLE_PIP_VERSION_CHECK=1 PIP_NO_CACHE_DIR=1 "$tmp/venv/bin/python" -m pip install -q --no-build-isolation \
@@ -39,3 +39,14 @@ assert triangles.shape == (2, 3), triangles
 assert sorted(set(triangles.ravel().tolist())) == [0, 1, 2, 3], triangles
 print(f"pip-install-test: ok: flood from {where} triangulates a square into {len(triangles)} triangles")
 PY
+# The console script pip put on the venv's PATH is the flood command: its version, an output
+# equal to the one `python -m flood` writes, and the exit code of invalid input.
+"$tmp/venv/bin/flood" --version | grep -qx "flood $("$tmp/venv/bin/python" -c 'import flood; print(flood.__version__)')"
+printf '[[[0,0],[4,0],[4,4],[0,4]]]' >"$tmp/square.json"
+"$tmp/venv/bin/flood" triangulate "$tmp/square.json" -o "$tmp/a.json"
+"$tmp/venv/bin/python" -m flood triangulate "$tmp/square.json" -o "$tmp/b.json"
+cmp "$tmp/a.json" "$tmp/b.json"
+printf '[[[0,0],[4,4],[4,0],[0,4]]]' >"$tmp/bowtie.json"
+rc=0; "$tmp/venv/bin/flood" triangulate "$tmp/bowtie.json" -o "$tmp/c.json" 2>/dev/null || rc=$?
+[ "$rc" = 4 ] || { echo "pip-install-test: flood on a bow-tie exited $rc, not 4" >&2; exit 1; }
+echo "pip-install-test: ok: the flood console script and python -m flood are the command"

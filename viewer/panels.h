@@ -17,8 +17,10 @@
 #include "presenter.h"
 #include "renderer.h"
 #include "scene.h"
+#include "teach/decision_tree.h"
 #include "teach/todo_list.h"
 
+struct ImVec2;
 struct ImVec4;
 struct ImFont;
 struct ImDrawList;
@@ -168,6 +170,13 @@ struct Ui {
     // The step's labels this frame (scene_labels.h), each named for what it labels:
     // "named-vertex-35", "finger-vertex-36", "ghost-vertex-14", "named-triangle-18", ...
     std::vector<std::pair<std::string, Rect>> stepLabels;
+    QuizActions quizAsked = QuizActions::all();  // what Q starts the quiz with (panel_quiz.cpp)
+    Rect quizBox;     // the quiz window this frame; empty when off (--print-layout)
+    Rect quizColumn;  // presenter view: the quiz's column, carved from the canvas (main.cpp)
+    bool quizColumnWas = false;  // ... last frame: a change refits the canvas
+    // The pending question's words, and the generation and step they were made for (a scan of
+    // the events before the step: once per step, not per frame).
+    std::pair<uint64_t, std::string> quizPrompt{~0ull, ""};
 };
 
 void drawCanvas(Ui& ui);  // panel_canvas.cpp: geometry to the renderer, labels, input
@@ -178,14 +187,22 @@ void paintCanvas(Ui& ui, ImDrawList* dl);
 void drawTimeline(Ui& ui);      // panel_timeline.cpp: strip, transport, go-to, play
 void drawStateMachine(Ui& ui);  // panel_state_machine.cpp: the six states of §4
 void drawDecision(Ui& ui);      // panel_decision.cpp: the Fig. 9 tree, the current path lit
-void drawPredicates(Ui& ui);    // panel_predicates.cpp: those tests' predicates, values, stages
-void drawStateTable(Ui& ui);    // panel_state_table.cpp: Fig. 10, combinations against states
-void drawBreakpoints(Ui& ui);   // panel_breakpoints.cpp: breakpoints, legend, display options
-void drawEvents(Ui& ui);        // panel_events.cpp: every event, clipped
-void drawTranscript(Ui& ui);    // panel_transcript.cpp: the paper-style transcript
-void drawOpen(Ui& ui);          // panel_open.cpp: polygons/ and recent files
-void drawShrink(Ui& ui);        // panel_shrink.cpp: shrink a failure, open and save the repro
-void drawFindings(Ui& ui);      // panel_findings.cpp: every finding, click to frame, F8 / Shift+F8
+// The Fig. 9 tree as "Tree..." draws it (labels where they fit, bars, a leaf's click seeks) with
+// `path` lit, `size` logical pixels at the cursor.
+void drawDecisionTree(Ui& ui, ImVec2 size, const DecisionPath& path);
+// panel_quiz.cpp: predict the next action. drawQuiz: the question and its choices, or the
+// answer revealed, and the score, while the quiz is on; quizShortcuts: Q, and 1-5 / R B S J F
+// answering a pending question (true when a key answered it: F then does not fit).
+void drawQuiz(Ui& ui);
+bool quizShortcuts(Ui& ui);
+void drawPredicates(Ui& ui);   // panel_predicates.cpp: those tests' predicates, values, stages
+void drawStateTable(Ui& ui);   // panel_state_table.cpp: Fig. 10, combinations against states
+void drawBreakpoints(Ui& ui);  // panel_breakpoints.cpp: breakpoints, legend, display options
+void drawEvents(Ui& ui);       // panel_events.cpp: every event, clipped
+void drawTranscript(Ui& ui);   // panel_transcript.cpp: the paper-style transcript
+void drawOpen(Ui& ui);         // panel_open.cpp: polygons/ and recent files
+void drawShrink(Ui& ui);       // panel_shrink.cpp: shrink a failure, open and save the repro
+void drawFindings(Ui& ui);     // panel_findings.cpp: every finding, click to frame, F8 / Shift+F8
 // The height the findings panel wants (0: none): its header and up to four findings.
 double findingsHeight(const Model& m, float scale);
 void drawHelp(Ui& ui);             // panel_help.cpp: keys and glossary

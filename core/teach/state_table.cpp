@@ -128,7 +128,7 @@ std::string formatStateTable(const StateTable& table) {
     };
     size_t width = 8;
     for (int r = 0; r < StateTable::kRows; ++r) width = std::max(width, cell(r).size() + 2);
-    auto pad = [](std::string s, size_t w) {
+    auto pad = [](const std::string& s, size_t w) {
         return s.size() < w ? s + std::string(w - s.size(), ' ') : s;
     };
     std::ostringstream os;

@@ -187,22 +187,14 @@ void paintCanvas(Ui& ui, ImDrawList* dl);
 void drawTimeline(Ui& ui);      // panel_timeline.cpp: strip, transport, go-to, play
 void drawStateMachine(Ui& ui);  // panel_state_machine.cpp: the six states of §4
 void drawDecision(Ui& ui);      // panel_decision.cpp: the Fig. 9 tree, the current path lit
-// The Fig. 9 tree as "Tree..." draws it (labels where they fit, bars, a leaf's click seeks) with
-// `path` lit, `size` logical pixels at the cursor.
-void drawDecisionTree(Ui& ui, ImVec2 size, const DecisionPath& path);
-// panel_quiz.cpp: predict the next action. drawQuiz: the question and its choices, or the
-// answer revealed, and the score, while the quiz is on; quizShortcuts: Q, and 1-5 / R B S J F
-// answering a pending question (true when a key answered it: F then does not fit).
-void drawQuiz(Ui& ui);
-bool quizShortcuts(Ui& ui);
-void drawPredicates(Ui& ui);   // panel_predicates.cpp: those tests' predicates, values, stages
-void drawStateTable(Ui& ui);   // panel_state_table.cpp: Fig. 10, combinations against states
-void drawBreakpoints(Ui& ui);  // panel_breakpoints.cpp: breakpoints, legend, display options
-void drawEvents(Ui& ui);       // panel_events.cpp: every event, clipped
-void drawTranscript(Ui& ui);   // panel_transcript.cpp: the paper-style transcript
-void drawOpen(Ui& ui);         // panel_open.cpp: polygons/ and recent files
-void drawShrink(Ui& ui);       // panel_shrink.cpp: shrink a failure, open and save the repro
-void drawFindings(Ui& ui);     // panel_findings.cpp: every finding, click to frame, F8 / Shift+F8
+void drawPredicates(Ui& ui);    // panel_predicates.cpp: those tests' predicates, values, stages
+void drawStateTable(Ui& ui);    // panel_state_table.cpp: Fig. 10, combinations against states
+void drawBreakpoints(Ui& ui);   // panel_breakpoints.cpp: breakpoints, legend, display options
+void drawEvents(Ui& ui);        // panel_events.cpp: every event, clipped
+void drawTranscript(Ui& ui);    // panel_transcript.cpp: the paper-style transcript
+void drawOpen(Ui& ui);          // panel_open.cpp: polygons/ and recent files
+void drawShrink(Ui& ui);        // panel_shrink.cpp: shrink a failure, open and save the repro
+void drawFindings(Ui& ui);      // panel_findings.cpp: every finding, click to frame, F8 / Shift+F8
 // The height the findings panel wants (0: none): its header and up to four findings.
 double findingsHeight(const Model& m, float scale);
 void drawHelp(Ui& ui);             // panel_help.cpp: keys and glossary
@@ -224,6 +216,14 @@ void editOverlay(Ui& ui, ImDrawList* dl);
 void editBar(Ui& ui);
 void editShortcuts(Ui& ui);
 void drawDirection(Ui& ui);  // panel_direction.cpp: the flood direction dial and its changes
+// The Fig. 9 tree as "Tree..." draws it (labels where they fit, bars, a leaf's click seeks) with
+// `path` lit, `size` logical pixels at the cursor.
+void drawDecisionTree(Ui& ui, ImVec2 size, const DecisionPath& path);
+// panel_quiz.cpp: predict the next action. drawQuiz: the question and its choices, or the
+// answer revealed, and the score, while the quiz is on; quizShortcuts: Q, and 1-5 / R B S J F
+// answering a pending question (true when a key answered it: F then does not fit).
+void drawQuiz(Ui& ui);
+bool quizShortcuts(Ui& ui);
 
 // Helpers shared by panels (panel_common.cpp).
 // Begins a panel's window tiled at a layout rectangle: placed and sized every frame, never

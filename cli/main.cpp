@@ -37,6 +37,8 @@
 #include "flood/log/trace_io.h"
 #include "flood/machine/flood.h"
 #include "flood/teach/narrate.h"
+#include "flood/teach/quiz.h"
+#include "flood/teach/state_table.h"
 #include "flood/teach/transcript.h"
 #include "flood/tools/generate.h"
 #include "flood/tools/shrink.h"
@@ -251,14 +253,39 @@ int cmdTrace(const std::string& in, const std::string& out, const std::string& u
     return code(s != Status::Ok ? s : w);
 }
 
-int cmdTranscript(const std::string& in, bool narrate, const std::string& up, bool check) {
+// What `flood transcript` prints besides the paper's line: --narrate, --quiz, --table.
+struct TranscriptWants {
+    bool narrate = false, quiz = false, table = false;
+    std::string quizActions = "all", answers;  // answers: a file for them, "" after the questions
+};
+
+int cmdTranscript(const std::string& in, const TranscriptWants& want, const std::string& up,
+                  bool check) {
+    QuizActions asked;
+    std::string why;
+    if (!parseQuizActions(want.quizActions, asked, why)) {
+        std::cerr << "error: --quiz-actions: " << why << "\n";
+        return code(Status::Usage);
+    }
     Polygon polygon;
     Status s = prepare(in, polygon, check);
     if (s != Status::Ok) return code(s);
     Trace t = record(polygon, makeOptions(up));
     Status j = judge(polygon, t.triangles, t.diagnostic, check);
     if (j == Status::Internal) return code(j);  // never narrate a wrong triangulation
-    if (!narrate) {
+    if (want.quiz) {
+        // A handout: the questions, then the answers on a page of their own (a form feed)
+        // or in their own file.
+        std::cout << quizQuestionsText(polygon, t.events, asked, t.up);
+        const std::string answers = quizAnswersText(polygon, t.events, asked);
+        if (want.answers.empty()) {
+            std::cout << "\f\n" << answers;
+        } else {
+            Output o(want.answers);
+            o.stream() << answers;
+            if (Status w = o.commit(); w != Status::Ok) return code(w);
+        }
+    } else if (!want.narrate) {
         std::cout << transcript(t.events) << "\n";
     } else {
         // One numbered sentence per event in the flood metaphor (flood/teach/narrate.h),
@@ -268,6 +295,7 @@ int cmdTranscript(const std::string& in, bool narrate, const std::string& up, bo
             std::cout << "step " << e.step + 1 << ": " << actionName(e.action) << ": "
                       << flood::narrate(polygon, e) << "\n";
     }
+    if (want.table) std::cout << "\n" << formatStateTable(buildStateTable(polygon, t.events, t.up));
     return code(j);
 }
 
@@ -538,7 +566,7 @@ int flood::cli::run(int argc, char** argv) {
     app.set_version_flag("--version", std::string("flood ") + FLOOD_VERSION);
     app.require_subcommand(1);
     std::string in, out = "-", format, up = "+y";
-    bool narrate = false, noValidate = false, slipping = false, noExactCheck = false;
+    bool noValidate = false, slipping = false, noExactCheck = false;
     std::string family;
     size_t size = 0;
     uint64_t seed = 1;
@@ -593,7 +621,23 @@ int flood::cli::run(int argc, char** argv) {
 
     auto* tr = app.add_subcommand("transcript", "Print the paper-style transcript (Fig. 7)");
     flooding(tr, polygonIn, false);
-    tr->add_flag("--narrate", narrate, "One numbered sentence per event: what happened and why");
+    TranscriptWants want;
+    tr->add_flag("--narrate", want.narrate,
+                 "One numbered sentence per event: what happened and why");
+    auto* quiz = tr->add_flag("--quiz", want.quiz,
+                              "A handout: predict the next action. Numbered questions (the state "
+                              "before each asked step), then the answers after a form feed");
+    quiz->excludes("--narrate");
+    tr->add_option("--quiz-actions", want.quizActions,
+                   "The actions --quiz asks about, comma separated: raise, bridge, spill, jump, "
+                   "fill or all (default all)")
+        ->needs(quiz);
+    tr->add_option("--answers", want.answers,
+                   "Write --quiz's answers to this file instead of after the questions")
+        ->needs(quiz);
+    tr->add_flag("--table", want.table,
+                 "Also print the complete Fig. 10 table: every vertex combination, its states "
+                 "or X, this run's counts");
 
     auto* ver = app.add_subcommand("verify", "Triangulate and check the result exactly");
     flooding(ver, polygonIn, false);
@@ -735,7 +779,7 @@ int flood::cli::run(int argc, char** argv) {
                                                    out.compare(out.size() - 4, 4, ".bin") == 0);
             return cmdTrace(in, out, up, !noValidate, !noExactCheck, binary);
         }
-        if (tr->parsed()) return cmdTranscript(in, narrate, up, !noValidate);
+        if (tr->parsed()) return cmdTranscript(in, want, up, !noValidate);
         if (gen->parsed()) return cmdGenerate(family, size, seed, out);
         if (shr->parsed()) return cmdShrink(in, out, up, timeout, slipping, quiet);
         if (ver->parsed()) return cmdVerify(in, up, !noValidate);

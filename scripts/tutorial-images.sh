@@ -77,4 +77,16 @@ viewer polygons/sag.json --theme light --step "$(step_after sag.json Bridge 1)" 
   --screenshot docs/img/teach-slide-light.png --size 900x600
 viewer polygons/sag.json --theme light --up +x --step 2 --screenshot docs/img/teach-dial.png --size 1100x700
 viewer polygons/sag.json --theme light --export-gif docs/img/teach-sag.gif --fps 1 --caption --size 480x320
+# The whole Fig. 10 (the State table) at Fig. 7's first bridge, its cell outlined; the quiz before Fig. 7's first
+# bridge, that question answered, and the answer in presenter view (the tree drawn in the window).
+bridge_step=$(step_after paper-figure-7.json Bridge 1)
+viewer polygons/paper-figure-7.json --state-table --step "$bridge_step" \
+  --screenshot docs/img/teach-state-table.png --size 1280x800
+quiz_step=$((bridge_step - 1))
+viewer polygons/paper-figure-7.json --quiz bridge,spill --step "$quiz_step" \
+  --screenshot docs/img/teach-quiz-question.png --size 1280x800
+viewer polygons/paper-figure-7.json --quiz bridge,spill --step "$quiz_step" --answer bridge \
+  --screenshot docs/img/teach-quiz-answer.png --size 1280x800
+viewer polygons/paper-figure-7.json --presenter --theme light --quiz bridge,spill --step "$quiz_step" \
+  --answer bridge --screenshot docs/img/teach-quiz-presenter.png --size 1280x800
 echo "docs/img: $(ls docs/img/*.png | wc -l) images, $(ls docs/img/*.gif | wc -l) GIF"

@@ -33,7 +33,7 @@ const char* const kUsage =
     "                    [--show-error] [--predicates] [--gorge-focus] [--screenshot OUT.png]\n"
     "                    [--size WxH] [--mouse X,Y] [--scale S] [--presenter] [--theme "
     "light|dark]\n"
-    "                    [--up DIRECTION]\n"
+    "                    [--up DIRECTION] [--quiz ACTIONS [--answer ACTION]] [--state-table]\n"
     "       flood-viewer FILE --screenshot OUT.png|OUT.svg --canvas-only [--size WxH] [--caption]\n"
     "       flood-viewer FILE --export-gif OUT.gif|--export-png-dir DIR [--steps A:B] [--every K]\n"
     "                    [--fps F] [--caption] [--size WxH]\n"
@@ -71,6 +71,10 @@ const char* const kUsage =
     "  --where 'SQL'     only the GIS features an OGR SQL attribute filter keeps\n"
     "                    (with --feature N: FID N, if the filter keeps it)\n"
     "  --predicates      open the predicate inspector; --gorge-focus: current gorge only\n"
+    "  --quiz ACTIONS    start in the quiz (key Q), asking about ACTIONS: raise, bridge, spill,\n"
+    "                    jump, fill, comma separated, or all\n"
+    "  --answer ACTION   with --quiz: answer the question before the last --step's next event\n"
+    "  --state-table     open the State table (Fig. 10)\n"
     "  --mouse X,Y       with --screenshot: the pointer at X,Y (what hovering there shows)\n"
     "  --bench           time opening, seeking and drawing (hidden window), print, exit\n"
     "  --up DIRECTION    flood along +y, -y, +x, -x, an angle in degrees (90 is +y) or X,Y,\n"
@@ -153,6 +157,31 @@ int parseArgs(int argc, char** argv, Args& a) {
             const char* v = value(s.c_str());
             if (!v) return 2 + 1;
             (s == "--layer" ? a.layer : a.where) = v;
+        } else if (s == "--quiz") {
+            const char* v = value("--quiz");
+            std::string why;
+            if (!v || !parseQuizActions(v, a.quizAsked, why)) {
+                if (v) std::fprintf(stderr, "flood-viewer: --quiz: %s\n", why.c_str());
+                return 2 + 1;
+            }
+            a.quiz = true;
+        } else if (s == "--answer") {
+            const char* v = value("--answer");
+            QuizActions one;
+            std::string why;
+            if (v && parseQuizActions(v, one, why))
+                for (Action c : kQuizChoices)  // exactly one of them
+                    if (one.bits == uint8_t(1u << int(c))) a.answer = c;
+            if (a.answer == Action::Count) {
+                if (v)
+                    std::fprintf(stderr,
+                                 "flood-viewer: --answer wants raise, bridge, spill, jump or "
+                                 "fill, got '%s'\n",
+                                 v);
+                return 2 + 1;
+            }
+        } else if (s == "--state-table") {
+            a.stateTable = true;
         } else if (s == "--predicates") {
             a.predicates = true;
         } else if (s == "--gorge-focus") {
@@ -257,6 +286,7 @@ int parseArgs(int argc, char** argv, Args& a) {
     else if (a.exports.caption && !a.exporting())
         needs = "--caption needs --canvas-only, an SVG or an export";
     else if (a.exporting() && a.bench) needs = "--bench cannot be combined with exports";
+    else if (a.answer != Action::Count && !a.quiz) needs = "--answer needs --quiz";
 #ifndef FLOOD_GIF
     if (!a.exports.gif.empty())
         needs = "--export-gif: this flood-viewer was built without giflib (FLOOD_GIF)";

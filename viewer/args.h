@@ -4,7 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "export.h"   // ExportSettings
+#include "export.h"  // ExportSettings
+#include "flood/teach/quiz.h"
 #include "palette.h"  // Theme
 
 namespace flood::view {
@@ -41,7 +42,11 @@ struct Args {
     bool gorgeFocus = false;   // --gorge-focus: "current gorge only"
     bool mouse = false;        // --mouse X,Y (screenshots): the pointer there, for hover pictures
     float mouseX = 0, mouseY = 0;
-    std::string up;  // --up: flood along this direction, with the dial open
+    std::string up;     // --up: flood along this direction, with the dial open
+    bool quiz = false;  // --quiz ACTIONS: start in the quiz, asking about those
+    QuizActions quizAsked;
+    Action answer = Action::Count;  // --answer ACTION: answer the question at the last --step
+    bool stateTable = false;        // --state-table: the State table (Fig. 10) open
 };
 
 // Parses argv into `a`. Returns 0 to go on, or an exit code + 1 (so 1 means "exit 0", e.g.

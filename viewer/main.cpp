@@ -240,10 +240,22 @@ DrawnFrame drawFrame(Ui& ui, const Args& args, int frame, const FrameInput& inpu
     // While the first frames settle the layout (the timeline's and the caption's heights are
     // measured) the camera is fitted to the canvas it ends up with; the error view keeps its
     // own zoom.
+    // The quiz in presenter view takes a column at the canvas's right (panel_quiz.cpp).
+    ui.quizColumn = {};
+    if (ui.presenter && model.quizOn()) {
+        Rect& canvas = ui.layout.canvas;
+        const double w = std::min(canvas.w * 0.4, 460.0 * ui.scale);
+        canvas.w -= w;
+        ui.quizColumn = {canvas.x + canvas.w, canvas.y, w, canvas.h};
+    }
     const Rect& c = ui.layout.canvas;
     bool moved =
         c.x != canvasWas.x || c.y != canvasWas.y || c.w != canvasWas.w || c.h != canvasWas.h;
-    if (frame > 0 && frame < 3 && moved && !model.errorView()) model.requestFit();
+    // The quiz's column coming or going refits too.
+    const bool quizColumn = ui.quizColumn.w > 0;
+    if (((frame > 0 && frame < 3) || quizColumn != ui.quizColumnWas) && moved && !model.errorView())
+        model.requestFit();
+    ui.quizColumnWas = quizColumn;
     if (frame == 0 && args.showError) {
         model.setViewport(ui.layout.canvas);
         model.showError();
@@ -256,6 +268,7 @@ DrawnFrame drawFrame(Ui& ui, const Args& args, int frame, const FrameInput& inpu
     if (input.keyboard) handleShortcuts(ui);
     if (input.presenterKeys) handlePresenterKeys(ui);
     drawCanvas(ui);
+    drawQuiz(ui);  // in either view
     if (ui.presenter) {
         drawCaption(ui);
     } else {
@@ -266,8 +279,10 @@ DrawnFrame drawFrame(Ui& ui, const Args& args, int frame, const FrameInput& inpu
         drawPredicates(ui);
         drawStateTable(ui);
         drawBreakpoints(ui);
-        drawEvents(ui);
-        drawTranscript(ui);
+        if (!model.quizOn()) {  // they list the steps to come: the quiz takes their place
+            drawEvents(ui);
+            drawTranscript(ui);
+        }
         drawOpen(ui);
         drawShrink(ui);
         drawHelp(ui);
@@ -351,6 +366,12 @@ FrameInput scriptedInput(Ui& ui, const Args& args, int frame, const ImVec2& mous
     input.mouse = args.mouse ? &mouse : nullptr;
     if (size_t(frame) < args.steps.size())
         input.seeks = [&ui, step = args.steps[size_t(frame)]] { ui.model.seek(step); };
+    // --answer: the quiz question pending at the last --step answered, as its key would.
+    if (args.answer != Action::Count && frame + 1 == int(std::max<size_t>(args.steps.size(), 1)))
+        input.seeks = [&ui, seek = input.seeks, a = args.answer] {
+            if (seek) seek();
+            ui.model.answerQuiz(a);
+        };
     return input;
 }
 
@@ -385,7 +406,8 @@ int runScreenshot(Ui& ui, const Args& args, Styled& styled) {
                 {"caption", ui.captionRect},  {"toolbar-end", ui.toolbarEnd},
                 {"canvas", ui.layout.canvas}, {"findings", ui.layout.findings},
                 {"find-box", ui.findBox},     {"edit-box", ui.editBox},
-                {"shrink-box", ui.shrinkBox}, {"inset", ui.inset}};
+                {"shrink-box", ui.shrinkBox}, {"inset", ui.inset},
+                {"quiz-box", ui.quizBox}};
             for (size_t i = 0; i < ui.findingRows.size(); ++i)
                 printed.push_back({"finding-" + std::to_string(i), ui.findingRows[i]});
             for (size_t i = 0; i < ui.labels.size(); ++i)
@@ -457,6 +479,7 @@ int main(int argc, char** argv) {
     double openStart = now();
     if (int rc = openArgs(model, args)) return rc;
     double openSeconds = now() - openStart;
+    if (args.quiz) model.startQuiz(args.quizAsked);
     if (!args.steps.empty()) model.seek(args.steps.front());
     if (!exportRangeFits(model, args)) return int(Status::Usage);
     BenchStats bench;
@@ -492,6 +515,8 @@ int main(int argc, char** argv) {
     applyStyle(ui);
     Styled styled{ui.uiScale.generation(), ui.theme, config.settings};
     ui.showPredicates = args.predicates;
+    ui.showStateTable = args.stateTable;
+    if (args.quiz) ui.quizAsked = args.quizAsked;
     ui.sceneOptions.gorgeFocus = args.gorgeFocus;
     // A picture shows the invariant lane complete (and the landing on its first violation).
     if (shot) model.waitForInvariants();

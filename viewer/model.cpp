@@ -1082,7 +1082,7 @@ void Model::advance(double seconds) {
     playClock_ += seconds * std::max(speed_, 0.01);
     while (playClock_ >= 1 && playing_) {
         playClock_ -= 1;
-        if (step_ >= steps()) {
+        if (step_ >= steps() || pendingQuestion() >= 0) {  // the end, or a question
             playing_ = false;
             break;
         }

@@ -24,6 +24,7 @@
 #include "flood/machine/flood.h"
 #include "flood/machine/vertex_class.h"
 #include "flood/teach/describe.h"
+#include "flood/teach/quiz.h"
 #include "flood/teach/state_table.h"
 #include "flood/teach/transcript.h"
 #include "flood/tools/shrink.h"
@@ -432,7 +433,9 @@ public:
     // empty at step 0. Found by a seek back and forth, cached per step.
     const std::vector<Index>& chainBefore() const;
     void seek(uint32_t step);  // clamps to [0, steps()]
-    void stepForward() { seek(step_ + 1); }
+    void stepForward() {       // never past a quiz question not answered yet
+        if (pendingQuestion() < 0) seek(step_ + 1);
+    }
     void stepBack() { seek(step_ == 0 ? 0 : step_ - 1); }
     void first() { seek(0); }
     void last() { seek(steps()); }
@@ -447,6 +450,24 @@ public:
     // when the breakpoints or the trace change.
     const std::vector<uint32_t>& breakpointSteps() const { return breakpointSteps_; }
     TimelineView timeline;  // reset by every open
+
+    // The quiz (flood/teach/quiz.h; model_quiz.cpp): predict the next action. While it is on,
+    // stepping forward and playback stop before each asked step until it is answered, so
+    // the canvas never shows the answer first; answering shows the step, its Fig. 9 path
+    // lit. Seeking (the timeline, Home/End, breakpoints) is the teacher's and may pass a
+    // question: it stays unanswered and counts for nothing until the student is back
+    // before it. A new session with every open or edit (the events change).
+    void startQuiz(QuizActions asked);  // a new session: no answers yet
+    void stopQuiz() { quizOn_ = false; }
+    bool quizOn() const { return quizOn_; }
+    const QuizSession& quiz() const;
+    // The question asked about the next event and not answered yet; -1 when none (or off).
+    int pendingQuestion() const;
+    // Answers the pending question and steps onto its event; false when none is pending or
+    // `choice` is not one of the five actions.
+    bool answerQuiz(Action choice);
+    // The answered question whose event is the current one (what the panels reveal), -1.
+    int revealedQuestion() const;
 
     // Playback: speed() steps per second; advance() is fed the frame time.
     bool playing() const { return playing_; }
@@ -594,6 +615,9 @@ private:
     uint32_t step_ = 0;
     double playClock_ = 0;
     uint64_t generation_ = 0;
+    bool quizOn_ = false;
+    mutable QuizSession quiz_;  // for the trace of generation quizFor_
+    mutable uint64_t quizFor_ = ~0ull;
     mutable StateTable stateTable_;           // cache of stateTable()
     mutable uint64_t stateTableFor_ = ~0ull;  // the generation it was built for
 };

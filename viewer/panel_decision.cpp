@@ -225,6 +225,10 @@ void eventNumbers(Ui& ui, const Event& e) {
 
 }  // namespace
 
+void drawDecisionTree(Ui& ui, ImVec2 size, const DecisionPath& path) {
+    drawTree(ui, size, path, true);
+}
+
 void drawDecision(Ui& ui) {
     Model& m = ui.model;
     const Rect& col = ui.layout.left;

@@ -27,7 +27,8 @@ void handleShortcuts(Ui& ui) {
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_End), false)) m.last();
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageDown))) m.seekAction(ui.seekKind, +1);
     if (ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_PageUp))) m.seekAction(ui.seekKind, -1);
-    if (ImGui::IsKeyPressed(platform::kKeyF, false) && !io.KeyCtrl) m.requestFit();
+    const bool answered = quizShortcuts(ui);  // F answers a quiz question before it fits
+    if (ImGui::IsKeyPressed(platform::kKeyF, false) && !io.KeyCtrl && !answered) m.requestFit();
     if (ImGui::IsKeyPressed(platform::kKeyF1, false)) ui.showHelp = !ui.showHelp;
     if (io.KeyCtrl && ImGui::IsKeyPressed('O', false)) ui.showOpen = true;
     for (ImWchar c : io.InputQueueCharacters)
@@ -61,6 +62,8 @@ void drawHelp(Ui& ui) {
         {"hover", "vertex or triangle details"},
         {"click a triangle", "go to the step that cut it"},
         {"right-click a vertex", "break when it becomes Left, Right, NextLeft or NextRight"},
+        {"Q", "quiz: predict the next action (again: off); the Quiz panel chooses what is asked"},
+        {"1-5 or R B S J F (quiz)", "answer: raise, bridge, spill, jump, fill"},
         {"Tab", "presenter view: only the canvas and a large caption (again: back)"},
         {"F11", "fullscreen on the window's monitor (again: back)"},
         {"Ctrl + / Ctrl - / Ctrl+0", "larger / smaller UI and fonts / back to 100%"},

@@ -1,6 +1,9 @@
-// The paper's Fig. 10 drawn live: the vertex combinations the run met (classes of C and Next,
-// fingers meeting) against the states R F B S J X, each cell's count over the whole trace, and
-// the cell of the current step lit. The table itself is core/teach/state_table.h.
+// The paper's Fig. 10 drawn live and whole: every vertex combination, as two grids (fingers
+// apart, fingers meeting) of C's class against Next's, each cell listing the states the
+// decision tree allows there (flood/teach/state_table.h, allowedStates) or X, a forbidden
+// combination. A state the run reached shows its count and tints the cell; an allowed state
+// never reached stays dim, the cell empty of colour; the current step's cell is outlined in its
+// action's colour.
 #include <imgui.h>
 
 #include <string>
@@ -11,49 +14,92 @@
 namespace flood::view {
 
 namespace {
-const char* className(int c) { return c == kNoClass ? "-" : vertexClassName(VertexClass(c)); }
+
+constexpr int kClasses = int(VertexClass::Count);
+
+// Draws a cell's states: each allowed one (dim when not reached, else with its count in its
+// action's colour), an X for a forbidden combination, and any state the run went to.
+void drawCell(const StateTable& table, int row) {
+    const uint8_t allowed = allowedStates(Combination::ofRow(row));
+    const int x = columnOf(Action::Forbidden);
+    bool first = true;
+    for (int c = 0; c < StateTable::kColumns; ++c) {
+        const Action a = kStateColumns[size_t(c)];
+        const uint64_t n = table.count(row, c);
+        const bool shown = (allowed >> c & 1) || n || (c == x && !allowed);
+        if (!shown || a == Action::Start) continue;
+        if (!first) ImGui::SameLine(0, 4);
+        first = false;
+        if (n) {
+            ImGui::TextColored(toImVec4(palette::action(a)), "%s%llu", actionLetter(a),
+                               static_cast<unsigned long long>(n));
+        } else if (c == x) {
+            ImGui::TextColored(toImVec4(palette::kCulprit), "X");
+        } else {
+            ImGui::TextDisabled("%s", actionLetter(a));
+        }
+    }
+}
+
+void drawGrid(const StateTable& table, bool meet, const StateCell* cur) {
+    ImGui::TextUnformatted(meet ? "Fingers meet (C: Left; Next: where NextLeft and NextRight meet)"
+                                : "Fingers apart (C: the end that acts; Next: its finger)");
+    if (!ImGui::BeginTable(meet ? "fig10meet" : "fig10apart", kClasses + 1,
+                           ImGuiTableFlags_Borders | ImGuiTableFlags_SizingStretchSame))
+        return;
+    ImGui::TableSetupColumn("C \\ Next");
+    for (int n = 0; n < kClasses; ++n) ImGui::TableSetupColumn(vertexClassName(VertexClass(n)));
+    ImGui::TableHeadersRow();
+    for (int c = 0; c < kClasses; ++c) {
+        ImGui::TableNextRow();
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(vertexClassName(VertexClass(c)));
+        for (int n = 0; n < kClasses; ++n) {
+            ImGui::TableNextColumn();
+            const int row = Combination{c, n, meet}.row();
+            const bool forbidden = forbiddenCombination(row);
+            const bool reached = table.rowTotal(row) > 0;
+            // Reached: tinted; forbidden: a faint red; allowed, never reached: no colour.
+            if (reached || forbidden) {
+                Rgba tint = reached ? palette::kTreePath : palette::kCulprit;
+                tint.a = reached ? 70 : 40;
+                ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, toImU32(tint));
+            }
+            if (cur && cur->row == row) {
+                const ImVec2 p = ImGui::GetCursorScreenPos();
+                const float w = ImGui::GetContentRegionAvail().x, h = ImGui::GetTextLineHeight();
+                ImGui::GetWindowDrawList()->AddRect(
+                    ImVec2(p.x - 2, p.y - 1), ImVec2(p.x + w + 2, p.y + h + 1),
+                    toImU32(palette::action(kStateColumns[size_t(cur->column)])), 0, 0, 2);
+            }
+            drawCell(table, row);
+        }
+    }
+    ImGui::EndTable();
+}
+
 }  // namespace
 
 void drawStateTable(Ui& ui) {
     if (!ui.showStateTable) return;
     Model& m = ui.model;
-    if (!beginFloating(ui, "State table (Fig. 10)", &ui.showStateTable, 520, 320, 40, 40)) return;
+    if (!beginFloating(ui, "State table (Fig. 10)", &ui.showStateTable, 560, 420, 40, 40)) return;
     const StateTable& table = m.stateTable();  // one scan of the log per opened trace
     const StateCell* cur =
         m.step() == 0 || m.step() > table.cellOf.size() ? nullptr : &table.cellOf[m.step() - 1];
-    ImGui::TextDisabled("C: the end of the chain that acts; Next: its finger; rows the run met");
-    constexpr int kLead = 3;
-    if (ImGui::BeginTable("fig10", kLead + StateTable::kColumns,
-                          ImGuiTableFlags_RowBg | ImGuiTableFlags_Borders |
-                              ImGuiTableFlags_ScrollY | ImGuiTableFlags_SizingFixedFit)) {
-        ImGui::TableSetupScrollFreeze(0, 1);
-        ImGui::TableSetupColumn("C");
-        ImGui::TableSetupColumn("Next");
-        ImGui::TableSetupColumn("meet");
-        for (Action a : kStateColumns) ImGui::TableSetupColumn(actionLetter(a));
-        ImGui::TableHeadersRow();
-        for (int r = 0; r < StateTable::kRows; ++r) {
-            bool curRow = cur && cur->row == r;
-            if (table.rowTotal(r) == 0 && !curRow) continue;
-            Combination k = Combination::ofRow(r);
-            ImGui::TableNextRow();
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(className(k.c));
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(className(k.next));
-            ImGui::TableNextColumn();
-            ImGui::TextUnformatted(k.meet ? "yes" : "no");
-            for (int c = 0; c < StateTable::kColumns; ++c) {
-                ImGui::TableNextColumn();
-                uint64_t n = table.count(r, c);
-                if (curRow && cur->column == c)
-                    ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg,
-                                           toImU32(palette::action(kStateColumns[size_t(c)])));
-                if (n) ImGui::Text("%llu", static_cast<unsigned long long>(n));
-            }
-        }
-        ImGui::EndTable();
-    }
+    ImGui::PushTextWrapPos(0);
+    ImGui::TextDisabled(
+        "R raise, F fill, B bridge, S spill, J jump, X forbidden. A count: this run went there "
+        "that often (tinted); dim: allowed, never reached; X alone: a forbidden combination.");
+    ImGui::PopTextWrapPos();
+    drawGrid(table, false, cur);
+    ImGui::Spacing();
+    drawGrid(table, true, cur);
+    const int none = Combination{}.row();
+    ImGui::TextDisabled(
+        "No chain yet: Start %llu, forbidden before a chain %llu",
+        static_cast<unsigned long long>(table.count(none, columnOf(Action::Start))),
+        static_cast<unsigned long long>(table.count(none, columnOf(Action::Forbidden))));
     ImGui::End();
 }
 

@@ -89,6 +89,13 @@ void strip(Ui& ui) {
                               toImU32(palette::action(folded[size_t(b)])));
         }
     }
+    // The quiz: the steps to come are veiled, their colours would give the answers away.
+    if (m.quizOn() && xOf(m.step()) < p0.x + w) {
+        ImVec4 veil = ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
+        veil.w = 1;  // opaque: nothing of the marks shows through
+        dl->AddRectFilled(ImVec2(std::max(p0.x, xOf(m.step())), p0.y + 3),
+                          ImVec2(p0.x + w, p0.y + h - 3), ImGui::GetColorU32(veil));
+    }
     // Ticks: breakpoints above, the first error across, invariant violations in the lane.
     auto tick = [&](uint32_t step, float y0, float y1, ImU32 colour, float width) {
         if (step + 1 < i0 || step > i1 + 1) return;

@@ -13,12 +13,14 @@
 #include "canvas_geometry.h"
 #include "edit.h"
 #include "export.h"
+#include "flood/teach/decision_tree.h"
 #include "flood/teach/todo_list.h"
 #include "model.h"
 #include "presenter.h"
 #include "renderer.h"
 #include "scene.h"
 
+struct ImVec2;
 struct ImVec4;
 struct ImFont;
 struct ImDrawList;
@@ -168,6 +170,13 @@ struct Ui {
     // The step's labels this frame (scene_labels.h), each named for what it labels:
     // "named-vertex-35", "finger-vertex-36", "ghost-vertex-14", "named-triangle-18", ...
     std::vector<std::pair<std::string, Rect>> stepLabels;
+    QuizActions quizAsked = QuizActions::all();  // what Q starts the quiz with (panel_quiz.cpp)
+    Rect quizBox;     // the quiz window this frame; empty when off (--print-layout)
+    Rect quizColumn;  // presenter view: the quiz's column, carved from the canvas (main.cpp)
+    bool quizColumnWas = false;  // ... last frame: a change refits the canvas
+    // The pending question's words, and the generation and step they were made for (a scan of
+    // the events before the step: once per step, not per frame).
+    std::pair<uint64_t, std::string> quizPrompt{~0ull, ""};
 };
 
 void drawCanvas(Ui& ui);  // panel_canvas.cpp: geometry to the renderer, labels, input
@@ -207,6 +216,14 @@ void editOverlay(Ui& ui, ImDrawList* dl);
 void editBar(Ui& ui);
 void editShortcuts(Ui& ui);
 void drawDirection(Ui& ui);  // panel_direction.cpp: the flood direction dial and its changes
+// The Fig. 9 tree as "Tree..." draws it (labels where they fit, bars, a leaf's click seeks) with
+// `path` lit, `size` logical pixels at the cursor.
+void drawDecisionTree(Ui& ui, ImVec2 size, const DecisionPath& path);
+// panel_quiz.cpp: predict the next action. drawQuiz: the question and its choices, or the
+// answer revealed, and the score, while the quiz is on; quizShortcuts: Q, and 1-5 / R B S J F
+// answering a pending question (true when a key answered it: F then does not fit).
+void drawQuiz(Ui& ui);
+bool quizShortcuts(Ui& ui);
 
 // Helpers shared by panels (panel_common.cpp).
 // Begins a panel's window tiled at a layout rectangle: placed and sized every frame, never

@@ -81,3 +81,25 @@ target_include_directories(state_machine_test PRIVATE ${CMAKE_CURRENT_BINARY_DIR
 target_link_libraries(state_machine_test PRIVATE floodviewmodel floodglad glfw PkgConfig::IMGUI
                       GTest::gtest_main)
 add_test(NAME viewer/state_machine_test COMMAND state_machine_test)
+
+# ---- the quiz: the choices before an answer, the verdict and the lit path after -------------
+add_executable(quiz_screenshot_test ${GUI_TESTS}/quiz_screenshot_test.cpp)
+target_link_libraries(quiz_screenshot_test PRIVATE floodviewmodel PkgConfig::IMGUI)
+target_compile_definitions(quiz_screenshot_test PRIVATE
+  FLOOD_VIEWER="$<TARGET_FILE:flood-viewer>"
+  FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
+  FLOOD_WORK_DIR="${CMAKE_CURRENT_BINARY_DIR}")
+add_dependencies(quiz_screenshot_test flood-viewer)
+add_test(NAME viewer/quiz_screenshot_test COMMAND quiz_screenshot_test)
+set_tests_properties(viewer/quiz_screenshot_test PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
+  ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+
+# ---- the quiz's keys: Q, 1-5 and R B S J F (window-free ImGui, no display needed) -----------
+add_executable(quiz_keys_test ${GUI_TESTS}/quiz_keys_test.cpp panel_quiz.cpp panel_help.cpp
+               panel_decision.cpp panel_common.cpp panel_edit.cpp renderer.cpp platform_glfw.cpp
+               ${SHADER_HEADER})
+target_include_directories(quiz_keys_test PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
+target_compile_definitions(quiz_keys_test PRIVATE FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+target_link_libraries(quiz_keys_test PRIVATE floodviewmodel floodglad glfw PkgConfig::IMGUI
+                      GTest::gtest_main)
+add_test(NAME viewer/quiz_keys_test COMMAND quiz_keys_test)

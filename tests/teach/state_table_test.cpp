@@ -126,3 +126,123 @@ TEST(StateTable, Fig11bForbiddenAtACeiling) {
     EXPECT_EQ(k.c, int(VertexClass::Ceiling));
     EXPECT_FALSE(k.meet);
 }
+
+// ---- the complete table: every combination, each cell's states or X -----------------------
+
+namespace {
+// Every event of a run lands in a cell the table allows, or is a forbidden state; an event in a
+// forbidden combination is always a forbidden state. Returns the forbidden events.
+size_t expectCellsAllowed(const Polygon& p, const std::string& what) {
+    Trace t = record(p);
+    StateTable table = buildStateTable(p, t.events);
+    size_t forbidden = 0;
+    for (size_t i = 0; i < t.events.size(); ++i) {
+        const StateCell c = table.cellOf[i];
+        if (t.events[i].action == Action::Forbidden) {
+            ++forbidden;
+            continue;
+        }
+        EXPECT_TRUE(allowedCell(c.row, c.column))
+            << what << " step " << i + 1 << ": " << actionName(t.events[i].action) << " at C "
+            << Combination::ofRow(c.row).c << " Next " << Combination::ofRow(c.row).next
+            << (Combination::ofRow(c.row).meet ? " meet" : "");
+        EXPECT_FALSE(forbiddenCombination(c.row)) << what << " step " << i + 1;
+    }
+    return forbidden;
+}
+}  // namespace
+
+TEST(StateTable, EveryCellReachedIsAllowedOnGalleryAndFamilies) {
+    size_t runs = 0;
+    for (const std::string& f : filesIn(sourcePath("polygons"), ".json")) {
+        ReadResult r = readPolygonFile(f);
+        if (!r.diagnostic.ok() || !validate(r.polygon, f).ok()) continue;
+        EXPECT_EQ(expectCellsAllowed(r.polygon, f), 0u) << f;
+        ++runs;
+    }
+    EXPECT_GE(runs, 14u);
+    for (const std::string& family : familyNames())
+        for (uint64_t seed : {1, 2, 3})
+            for (size_t size : {8, 60, 400})
+                EXPECT_EQ(expectCellsAllowed(generate(family, seed, size), family), 0u) << family;
+}
+
+// Forbidden combinations are where the machine rejects: valid runs never reach them (above),
+// and a ceiling met as an end with the fingers apart (CeilingAsEnd, Fig. 11-B) is one on every
+// invalid sample and family. (On invalid input the machine may also act where the table says
+// X: the classes are the rings', and crossing rings make a loop that is no ring.)
+TEST(StateTable, ForbiddenCombinationsAreWhereTheMachineRejects) {
+    size_t ceilings = 0;
+    auto check = [&](const Polygon& p, const std::string& what) {
+        Trace t = record(p);
+        StateTable table = buildStateTable(p, t.events);
+        for (size_t i = 0; i < t.events.size(); ++i)
+            if (t.events[i].action == Action::Forbidden &&
+                t.events[i].reason == Forbidden::CeilingAsEnd) {
+                EXPECT_TRUE(forbiddenCombination(table.cellOf[i].row)) << what << " step " << i + 1;
+                ++ceilings;
+            }
+    };
+    for (const std::string& f : filesIn(sourcePath("polygons/invalid"), ".json")) {
+        ReadResult r = readPolygonFile(f);
+        if (r.diagnostic.ok()) check(r.polygon, f);
+    }
+    for (const std::string& family : invalidFamilyNames())
+        for (uint64_t seed : {1, 2, 3}) check(generateInvalid(family, seed, 40), family);
+    EXPECT_GE(ceilings, 1u);
+    // Each forbidden combination has no action cell; an allowed one has at least one.
+    for (int r = 0; r < StateTable::kRows; ++r) {
+        uint8_t states = allowedStates(Combination::ofRow(r));
+        EXPECT_EQ(states >> columnOf(Action::Forbidden) & 1, 0) << r;
+        EXPECT_EQ(forbiddenCombination(r), states == 0) << r;
+    }
+}
+
+// What the paper says of the states (§4, Fig. 9), read off the derived table: raises and
+// bridges go up from a vertex that is no maximum, spills and jumps happen at a top, a ceiling
+// as an end with the fingers apart is forbidden (Fig. 11-B), the fingers meeting allow a fill
+// or a bridge to a sag below, Start has no chain; Next's class decides nothing.
+TEST(StateTable, DerivedCellsSayWhatThePaperSays) {
+    using V = VertexClass;
+    auto states = [](V c, V next, bool meet) {
+        return allowedStates(Combination{int(c), int(next), meet});
+    };
+    auto bit = [](Action a) { return uint8_t(1u << columnOf(a)); };
+    const uint8_t sj = bit(Action::Spill) | bit(Action::Jump);
+    const uint8_t rb = bit(Action::Raise) | bit(Action::Bridge);
+    const uint8_t fb = bit(Action::Fill) | bit(Action::Bridge);
+    for (int n = 0; n < int(V::Count); ++n) {
+        const V next = V(n);
+        for (V c : {V::Regular, V::Bottom, V::Sag}) EXPECT_EQ(states(c, next, false), rb);
+        EXPECT_EQ(states(V::Top, next, false), sj);
+        EXPECT_EQ(states(V::Ceiling, next, false), 0);
+        for (int c = 0; c < int(V::Count); ++c) EXPECT_EQ(states(V(c), next, true), fb);
+    }
+    EXPECT_EQ(allowedStates(Combination{}), bit(Action::Start));
+    EXPECT_EQ(allowedStates(Combination{kNoClass, int(V::Regular), false}), 0);
+    EXPECT_EQ(allowedStates(Combination{kNoClass, kNoClass, true}), 0);
+}
+
+// The printed table: the two grids, each cell's states with the run's counts.
+TEST(StateTable, FormattedTableCountsTheRun) {
+    Polygon p = readOrFail(sourcePath("polygons/two-gorges.json"));
+    Trace t = record(p);
+    StateTable table = buildStateTable(p, t.events);
+    std::string text = formatStateTable(table);
+    EXPECT_NE(text.find("Fingers apart"), std::string::npos) << text;
+    EXPECT_NE(text.find("Fingers meet"), std::string::npos) << text;
+    EXPECT_NE(text.find("No chain yet: Start 1, forbidden before a chain 0"), std::string::npos)
+        << text;
+    // The Fill of two-gorges: one, in the meet grid at a ceiling; the spill: "S1" in a top row.
+    std::string meet = text.substr(text.find("Fingers meet"));
+    EXPECT_NE(meet.find("F1"), std::string::npos) << meet;
+    std::string apart = text.substr(0, text.find("Fingers meet"));
+    size_t topRow = apart.find("\ntop ");
+    ASSERT_NE(topRow, std::string::npos) << apart;
+    std::string top = apart.substr(topRow, apart.find('\n', topRow + 1) - topRow);
+    EXPECT_NE(top.find("S1"), std::string::npos) << top;
+    EXPECT_NE(top.find("J1"), std::string::npos) << top;
+    size_t ceilingRow = apart.find("\nceiling ");
+    std::string ceiling = apart.substr(ceilingRow, apart.find('\n', ceilingRow + 1) - ceilingRow);
+    EXPECT_NE(ceiling.find("X"), std::string::npos) << ceiling;
+}

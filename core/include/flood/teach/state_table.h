@@ -1,7 +1,9 @@
 // The paper's Fig. 10, "Vertex combinations and states": for every event, the combination the
 // machine looked at (the classes of C and Next, and whether the fingers meet) against the state
 // it went to (raise, fill, bridge, spill, jump, forbidden), and how often each cell occurs over
-// a trace. GUI-free: the viewer's State table panel draws it with the current cell lit.
+// a trace; and the whole table, every combination with the states the decision tree allows in
+// it (allowedStates) or X, a forbidden state. GUI-free: the viewer's State table panel and
+// `flood transcript --table` draw it with the run's counts.
 #pragma once
 #include <array>
 #include <cstdint>
@@ -56,5 +58,25 @@ Combination combinationOf(const Event& e, const std::vector<VertexClass>& classe
 
 StateTable buildStateTable(const Polygon& polygon, const std::vector<Event>& events,
                            Up up = Up::PlusY);
+
+// The complete table. The states the machine can go to from combination `k` on valid input:
+// bit columnOf(a) for each action a (Start only without a chain), derived from the decision
+// tree (decision_tree.h) by following every path whose tests' answers the classes allow
+// (what a test's answer says of C's class and of the fingers meeting: see state_table.cpp; no
+// test looks at Next's class, so it only says where a run's events fell). 0: a
+// forbidden combination, where every step ends in a forbidden state (X). The forbidden
+// column itself is never set: any step may end in X on invalid input.
+uint8_t allowedStates(const Combination& k);
+inline bool allowedCell(int row, int column) {
+    return allowedStates(Combination::ofRow(row)) >> column & 1;
+}
+inline bool forbiddenCombination(int row) { return allowedStates(Combination::ofRow(row)) == 0; }
+
+// The table as text, as the paper draws it: for fingers apart and fingers meeting, a grid of
+// C's class (rows) against Next's (columns); in each cell the states allowed there, with the
+// run's count after each state it reached ("R12 b": 12 raises, bridges allowed but none
+// made), or X for a forbidden combination; then the events without a chain (Start, and the
+// forbidden states met before one).
+std::string formatStateTable(const StateTable& table);
 
 }  // namespace flood

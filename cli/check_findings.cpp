@@ -156,10 +156,11 @@ int writeFindings(const std::vector<Row*>& rows, const std::string& out) {
         std::cerr << "error: " << d.message << "\n";
         return int(d.status);
     }
-    std::cerr << "check: " << out << ": " << grouped(items.size())
-              << (items.size() == 1 ? " finding, " : " findings, ") << grouped(edgeList.size())
-              << (edgeList.size() == 1 ? " culprit edge" : " culprit edges")
-              << (edgesOut.empty() ? " (layer finding_edges)" : " in " + edgesOut) << "\n";
+    std::cerr << "check: wrote " << grouped(items.size())
+              << (items.size() == 1 ? " finding" : " findings") << " to " << out
+              << " (layer findings) and " << grouped(edgeList.size())
+              << (edgeList.size() == 1 ? " culprit edge" : " culprit edges") << " to "
+              << (edgesOut.empty() ? out + " (layer finding_edges)" : edgesOut) << "\n";
     return 0;
 }
 

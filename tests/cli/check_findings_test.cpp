@@ -140,7 +140,12 @@ TEST_F(CheckFindings, EveryFindingIsAPointWithItsFieldsInTheInputCrs) {
             const std::string out = path("out." + std::string(ext));
             RunResult r = runCli("check " + path(input) + " --findings " + out);
             EXPECT_EQ(r.code, 4) << r.out;  // the verdict's code, the findings written
-            EXPECT_TRUE(has(r.out, "check: " + out + ": 3 findings, 6 culprit edges")) << r.out;
+            EXPECT_TRUE(has(
+                r.out, "check: wrote 3 findings to " + out +
+                           " (layer findings) and 6 culprit edges to " +
+                           (std::string(ext) == "gpkg" ? out + " (layer finding_edges)"
+                                                       : path("out_edges." + std::string(ext)))))
+                << r.out;
             Layer l = byFinding(readBack(out, std::string(ext) == "gpkg" ? "findings" : ""));
             ASSERT_TRUE(l.found);
             EXPECT_EQ(l.crsCode, crs);
@@ -227,6 +232,21 @@ TEST_F(CheckFindings, ForbiddenAndMalformedRowsAreFindingsToo) {
     EXPECT_EQ(l.fields[1]["status"], "malformed");
     EXPECT_EQ(l.wkt[1], "");
     EXPECT_TRUE(has(l.fields[1]["reason"], "JSON syntax error")) << l.fields[1]["reason"];
+}
+
+// The feature's name is its "name" or, as Natural Earth spells it, "NAME" property.
+TEST_F(CheckFindings, ANameOrNAMEPropertyNamesTheFinding) {
+    const fs::path in = dir_ / "upper.geojson";
+    std::ofstream(in)
+        << R"({"type":"FeatureCollection","features":[{"type":"Feature","properties":{"NAME":"Canada"},"geometry":{"type":"Polygon","coordinates":[[[0,0],[2,2],[2,0],[0,2],[0,0]]]}}]})";
+    const std::string out = path("upper.geojson-findings.gpkg");
+    RunResult r = runCli("check " + in.string() + " --findings " + out);
+    EXPECT_EQ(r.code, 4) << r.out;
+    Layer l = readBack(out, "findings");
+    ASSERT_EQ(l.fields.size(), 1u);
+    EXPECT_EQ(l.fields[0]["name"], "Canada");
+    EXPECT_EQ(l.fields[0]["fid"], "0");
+    EXPECT_EQ(l.crsCode, "EPSG:4326");  // GeoJSON's, as ogrinfo reads the file
 }
 
 // Inputs in different CRSs: the layer has none, and the warning names each.

@@ -24,6 +24,7 @@
 #include <filesystem>
 #include <memory>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "io/gdal/gdal_handles.h"
@@ -406,13 +407,19 @@ Diagnostic writeLayers(const std::string& path, const DatasetOutput& o,
                 l.feature(i, g);
                 if (g.source >= 0) bySource[g.source].push_back(i);
             }
-        // A few (a feature kept by --extract): each read by its FID, not the whole layer.
-        if (!bySource.empty() && bySource.size() <= 16 &&
+        // Features kept as they were (--extract: one of a layer of any size): each read by
+        // its FID, in the order given, not the whole layer.
+        if (!bySource.empty() && l.geometry == GisGeometry::Source &&
             source->layer->TestCapability(OLCRandomRead)) {
-            for (auto& [fid, list] : bySource) {
+            std::unordered_set<int64_t> fetched;
+            for (size_t i = 0; i < l.count; ++i) {
+                g.clear();
+                l.feature(i, g);
+                if (g.source < 0 || !fetched.insert(g.source).second) continue;
+                const int64_t fid = g.source;
                 FeaturePtr src(source->layer->GetFeature(fid));
-                for (size_t i : list)
-                    if (src && !(done[i] = write(i, src.get())))
+                for (size_t k : bySource[fid])
+                    if (src && !(done[k] = write(k, src.get())))
                         return discard(l.name + ": feature " + std::to_string(fid));
             }
         } else if (!bySource.empty()) {

@@ -10,6 +10,8 @@
 // input order and printed at the end: the output is the same for any -j.
 #include "check.h"
 
+#include "check_rows.h"
+
 #include <unistd.h>
 
 #include <algorithm>
@@ -46,65 +48,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// In increasing severity: the exit code of a run is that of its worst row.
-#define FLOOD_VERDICTS(X)                \
-    X(Ok, "ok", Ok)                      \
-    X(Malformed, "malformed", Malformed) \
-    X(Invalid, "invalid", Invalid)       \
-    X(Forbidden, "forbidden", Forbidden) \
-    X(Checker, "checker", Internal)      \
-    X(Internal, "internal", Internal)
-
-enum class Verdict {
-#define FLOOD_X(name, word, status) name,
-    FLOOD_VERDICTS(FLOOD_X)
-#undef FLOOD_X
-        Count
-};
-
-const char* verdictName(Verdict v) {
-    static const char* const names[] = {
-#define FLOOD_X(name, word, status) word,
-        FLOOD_VERDICTS(FLOOD_X)
-#undef FLOOD_X
-    };
-    return names[int(v)];
-}
-
-Status verdictStatus(Verdict v) {
-    static const Status statuses[] = {
-#define FLOOD_X(name, word, status) Status::status,
-        FLOOD_VERDICTS(FLOOD_X)
-#undef FLOOD_X
-    };
-    return statuses[int(v)];
-}
-
-// One problem of an invalid feature (validateAll()): where and why, and the point it is at.
-struct Finding {
-    std::string at, reason;
-    Index ring = kNone, vertex = kNone;  // vertex within its ring
-    bool located = false;                // x, y known (a crossing's is computed, not exact)
-    double x = 0, y = 0;
-};
-
-struct Row {
-    std::string file;
-    bool wholeFile = true;
-    int64_t feature = 0;  // the FID (FeatureRead::fid), what --feature and the viewer take
-    std::string id, name;
-    std::vector<std::pair<std::string, std::string>> attributes;  // the feature's properties
-    size_t vertices = 0;
-    Verdict verdict = Verdict::Ok;
-    std::string at;                 // ring and vertex, or the forbidden transition
-    std::string reason;             // one line
-    std::vector<Finding> findings;  // invalid: every finding, the first being at/reason
-    size_t findingsOmitted = 0;     // beyond --max-findings
-    bool findingsComplete = true;   // false: the search for crossings gave up
-    std::string repro;              // --extract: GeoJSON text that fails the same way ("" = none)
-    std::string extracted;
-};
-
 // One input file: its features while they wait, then their rows.
 struct File {
     explicit File(std::string p, std::string e = "") : path(std::move(p)), error(std::move(e)) {}
@@ -130,7 +73,15 @@ Finding findingOf(const Diagnostic& d, const std::string& name, const Polygon& p
     Where where = whereOf(p, d.culprits);
     f.at = where.text;
     f.reason = oneLine(reasonOf(d.message, name, where));
+    f.message = oneLine(d.message);
     f.ring = where.ring, f.vertex = where.vertex;
+    for (uint32_t e : d.culprits.edges)
+        if (e < p.vertices.size()) {
+            const Index r = p.ringOf(e);
+            const Ring& ring = p.rings[r];
+            const Index next = e + 1 == ring.first + ring.count ? ring.first : e + 1;
+            f.edges.push_back({r, e - ring.first, p.vertices[e], p.vertices[next]});
+        }
     Point q;
     if (diagnosticPoint(p, d.culprits, q, true)) f.located = true, f.x = q.x, f.y = q.y;
     if (p.parts.size() > 1 && where.ring != kNone)
@@ -176,6 +127,7 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
     row.feature = f.fid;
     row.id = f.id;
     row.name = f.name;
+    row.layer = f.layer;
     row.attributes = f.attributes;
     bool readable = f.read.diagnostic.ok();
     try {
@@ -194,6 +146,7 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
                 row.verdict = Verdict::Forbidden;
                 row.at = forbiddenAt(p, r.failure);
                 row.reason = r.diagnostic.message;
+                row.place = findingOf(r.diagnostic, name, p);
             } else if (CheckResult c = checkTriangulation(p, r.triangles); !c.ok) {
                 row.verdict = Verdict::Checker;
                 row.reason = "the exact checker rejects the triangulation: " + c.reason;
@@ -313,24 +266,28 @@ private:
     };
 
     // GIS datasets through GDAL (core/io/gdal/), the rest by the core's readers.
-    DatasetRead readDataset(const std::string& path) {
+    DatasetRead readDataset(const std::string& path, bool& gis) {
 #ifdef FLOOD_GDAL
         const Selection& s = o_.selection;
         gdal::Selection g{s.layer, s.feature, s.where};
-        if (gdal::handles(path, g)) return gdal::readFeatures(path, g);
+        g.allLayers = true;  // each layer's features, each row naming its layer
+        gis = gdal::handles(path, g);
+        if (gis) return gdal::readFeatures(path, g);
 #endif
+        gis = false;
         return readFeaturesFile(path, o_.maxInputBytes, !o_.extractDir.empty());
     }
 
     void read(size_t i, std::vector<Job>& more) {
         File& f = files_[i];
+        bool gis = false;
         if (!f.error.empty()) {
             FeatureRead failed;
             failed.read.diagnostic = {Status::Malformed, f.error};
             f.features.push_back(std::move(failed));
         } else {
             try {
-                DatasetRead d = readDataset(f.path);
+                DatasetRead d = readDataset(f.path, gis);
                 f.features = std::move(d.features);
                 f.warnings = std::move(d.skipped);
             } catch (const std::bad_alloc&) {
@@ -352,8 +309,12 @@ private:
             }
         }
         f.rows.resize(f.features.size());
+        std::set<std::string> layers;
+        for (const FeatureRead& r : f.features) layers.insert(r.layer);
         for (size_t k = 0; k < f.features.size(); ++k) {
             f.rows[k].file = f.path;
+            f.rows[k].gis = gis;
+            f.rows[k].severalLayers = layers.size() > 1;
             more.push_back({i, k});
         }
         featuresKnown += f.features.size();
@@ -388,18 +349,23 @@ bool extract(std::vector<Row*>& rows, const CheckOptions& o) {
     std::string lastFile, stem;
     for (Row* r : rows) {
         if (r->verdict == Verdict::Ok) continue;
-        std::string text = std::move(r->repro), ext = ".json";
-        if (r->wholeFile && r->file != "-") {
-            ext = fs::path(r->file).extension().string();
-            if (!readInputFile(r->file, text, o.maxInputBytes, "GeoJSON or WKT").ok()) continue;
-        }
-        if (text.empty()) continue;  // unreadable: there is nothing to extract
         if (r->file != lastFile) {
             lastFile = r->file;
             std::string base = r->file == "-" ? "stdin" : fs::path(r->file).stem().string();
             stem = base;
             for (int k = 2; !stems.insert(stem).second; ++k) stem = base + "-" + std::to_string(k);
         }
+        // A GIS feature, copied as it was through GDAL (an unreadable one has no FID).
+        if (r->gis) {
+            if (!r->wholeFile && r->feature >= 0 && !extractGis(*r, o.extractDir, stem)) ok = false;
+            continue;
+        }
+        std::string text = std::move(r->repro), ext = ".json";
+        if (r->wholeFile && r->file != "-") {
+            ext = fs::path(r->file).extension().string();
+            if (!readInputFile(r->file, text, o.maxInputBytes, "GeoJSON or WKT").ok()) continue;
+        }
+        if (text.empty()) continue;  // unreadable: there is nothing to extract
         // Never over an existing file (an earlier run's, or an input being checked): the
         // first free name of STEM_featureN.EXT, STEM_featureN-2.EXT, ... (made atomically).
         const std::string base =
@@ -499,10 +465,13 @@ void printTable(const std::vector<Row*>& rows) {
     cells.push_back({"FILE", "FEATURE", "ID/NAME", "VERTICES", "VERDICT", "AT", "REASON"});
     for (const Row* r : rows) {
         const std::string& label = !r->id.empty() ? r->id : r->name;
-        cells.push_back({printable(r->file), r->wholeFile ? "-" : std::to_string(r->feature),
-                         label.empty() ? "-" : printable(label), std::to_string(r->vertices),
-                         verdictName(r->verdict), r->at.empty() ? "-" : cell(printable(r->at), 80),
-                         r->reason.empty() ? "-" : cell(printable(r->reason), 120)});
+        // A dataset of several layers: each row says its layer.
+        cells.push_back(
+            {printable(r->file) + (r->severalLayers ? " (layer " + printable(r->layer) + ")" : ""),
+             r->wholeFile ? "-" : std::to_string(r->feature),
+             label.empty() ? "-" : printable(label), std::to_string(r->vertices),
+             verdictName(r->verdict), r->at.empty() ? "-" : cell(printable(r->at), 80),
+             r->reason.empty() ? "-" : cell(printable(r->reason), 120)});
         // The feature's other findings under it, in the AT and REASON columns.
         for (size_t k = 1; k < r->findings.size(); ++k)
             cells.push_back({"", "", "", "", "", cell(printable(r->findings[k].at), 80),
@@ -582,6 +551,8 @@ int runCheck(const CheckOptions& o) {
         code = std::max(code, int(verdictStatus(r->verdict)));
     }
     if (!o.extractDir.empty() && !extract(rows, o)) code = int(Status::WriteFailed);
+    if (!o.findingsOut.empty() && writeFindings(rows, o.findingsOut) != 0)
+        code = int(Status::WriteFailed);
 
     std::string summary = "check: " + std::to_string(rows.size()) +
                           (rows.size() == 1 ? " feature in " : " features in ") +
@@ -623,6 +594,7 @@ int runCheck(const CheckOptions& o) {
         json attributes = json::object();
         for (const auto& [key, value] : r->attributes) attributes[key] = value;
         records.push_back({{"file", r->file},
+                           {"layer", orNull(r->layer)},
                            {"feature", r->wholeFile ? json(nullptr) : json(r->feature)},
                            {"id", orNull(r->id)},
                            {"name", orNull(r->name)},

@@ -684,8 +684,16 @@ int flood::cli::run(int argc, char** argv) {
     chk->add_flag("--json", checkOptions.json,
                   "One JSON document: a record per feature and the summary");
     chk->add_option("--extract", checkOptions.extractDir,
-                    "Write each failing feature to DIR/STEM_featureN.json")
+                    "Write each failing feature to DIR/STEM_featureN.json, or, from a GIS dataset, "
+                    "as the feature it was (fields, FID, CRS) in its format: "
+                    "DIR/STEM_featureFID.gpkg, .shp, ...")
         ->type_name("DIR");
+    chk->add_option("--findings", checkOptions.findingsOut,
+                    "Write every finding as a GIS layer OUT (.gpkg, .geojson, .fgb, .shp, ...: by "
+                    "its extension): a point per finding with its file, layer, fid, name, status, "
+                    "reason, ring, vertex and message, and the culprit edges as lines (layer "
+                    "finding_edges of a .gpkg, else OUT_edges.EXT beside it)")
+        ->type_name("OUT");
     chk->add_option("-j,--jobs", checkOptions.jobs,
                     "Features checked in parallel (default: all cores)")
         ->type_name("N")
@@ -788,6 +796,8 @@ int flood::cli::run(int argc, char** argv) {
             checkOptions.maxInputBytes = maxInputBytes;
             checkOptions.validate = !noValidate;
             checkOptions.selection = selection;
+            if (!checkOptions.findingsOut.empty())
+                if (int c = cli::findingsFormat(checkOptions.findingsOut)) return c;
             return cli::runCheck(checkOptions);
         }
     } catch (const std::exception& e) {

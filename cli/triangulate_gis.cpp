@@ -41,7 +41,18 @@ int outputFormat(const std::string& out, std::string& format, std::string& drive
         return 0;
     }
     if (own(format)) return 0;
+    return gisFormat("-o", out, format, driver);
+}
+
+int gisFormat(const std::string& option, const std::string& out, std::string& format,
+              std::string& driver) {
+    const std::string ext = extensionOf(out);
     const std::string asked = format.empty() ? "." + ext : "--format " + format;
+    const bool o = option == "-o";
+    if (out == "-" && format.empty() && !o) {
+        std::cerr << "error: " << option << " needs a file (OUT.gpkg, .geojson, ...), not -\n";
+        return int(Status::Usage);
+    }
 #ifdef FLOOD_GDAL
     if (std::string why = gdal::unavailable(out); !why.empty()) {
         std::cerr << "error: " << why << "\n";
@@ -49,20 +60,24 @@ int outputFormat(const std::string& out, std::string& format, std::string& drive
     }
     driver = gdal::outputDriver(format, out);
     if (driver.empty()) {
-        std::cerr << "error: -o " << out << ": no format writes " << asked
-                  << ": Flood writes .json, .svg and .obj, and through GDAL any vector format it "
-                     "creates (.geojson, .shp, .gpkg, .fgb, .kml, .csv, ...: `ogrinfo --formats`)"
-                  << (format.empty() ? "; name one with --format" : "") << "\n";
+        std::cerr << "error: " << option << " " << out << ": no format writes " << asked << ": "
+                  << (o ? "Flood writes .json, .svg and .obj, and through GDAL any vector format "
+                          "it creates"
+                        : "it is written through GDAL, in any vector format it creates")
+                  << " (.geojson, .shp, .gpkg, .fgb, .kml, .csv, ...: `ogrinfo --formats`)"
+                  << (format.empty() && o ? "; name one with --format" : "") << "\n";
         return int(Status::Usage);
     }
     if (format.empty()) format = ext;
     if (out == "-") {
-        std::cerr << "error: --format " << format << " needs a file: give -o FILE\n";
+        std::cerr << "error: --format " << format << " needs a file: give " << option << " FILE\n";
         return int(Status::Usage);
     }
     return 0;
 #else
-    std::cerr << "error: -o " << out << ": " << asked << " is a GIS format, written through GDAL: "
+    (void)driver;
+    std::cerr << "error: " << option << " " << out << ": " << asked
+              << " is a GIS format, written through GDAL: "
               << "this flood was built without it (install libgdal-dev, reconfigure with "
                  "-DFLOOD_GDAL=ON)\n";
     return int(Status::Usage);
@@ -88,7 +103,12 @@ int triangulateGis(const GisTriangulation& t) {
         worst = std::max(worst, why.status);
         ++failed;
     };
-    std::vector<gdal::TriangulatedFeature> done;
+    struct Done {
+        int64_t fid;
+        const Polygon* polygon;
+        std::vector<Triangle> triangles;
+    };
+    std::vector<Done> done;
     for (FeatureRead& f : d.features) {
         for (const std::string& w : f.read.warnings) std::cerr << "warning: " << w << "\n";
         if (f.read.warningsOmitted)
@@ -123,14 +143,43 @@ int triangulateGis(const GisTriangulation& t) {
         done.push_back({f.fid, &p, std::move(r.triangles)});
     }
     if (done.empty()) return int(worst);
-    gdal::LayerOutput o;
+    // One feature per triangle (its number in its feature, "triangle"), or one MultiPolygon
+    // per source feature (its FID kept); each with the source's fields and its FID, "src_fid".
+    gdal::GisLayer layer;
+    layer.name = "triangles";
+    layer.geometry = t.multipolygon ? gdal::GisGeometry::MultiPolygon : gdal::GisGeometry::Polygon;
+    layer.sourceFields = true;
+    layer.fields = {{"src_fid", true}};
+    if (!t.multipolygon) layer.fields.push_back({"triangle", true});
+    std::vector<size_t> first;  // the first output feature of each done feature
+    for (const Done& f : done) {
+        first.push_back(layer.count);
+        layer.count += t.multipolygon ? 1 : f.triangles.size();
+    }
+    layer.feature = [&](size_t i, gdal::GisFeature& g) {
+        const size_t k =
+            size_t(std::upper_bound(first.begin(), first.end(), i) - first.begin()) - 1;
+        const Done& f = done[k];
+        g.source = f.fid;
+        g.values = {f.fid};
+        auto corners = [&](const Triangle& tri) {
+            const auto& v = f.polygon->vertices;
+            return std::vector<Point>{v[tri[0]], v[tri[1]], v[tri[2]]};
+        };
+        if (t.multipolygon) {
+            g.fid = f.fid;  // kept where the format can (ogr2ogr -preserve_fid)
+            for (const Triangle& tri : f.triangles) g.parts.push_back(corners(tri));
+        } else {
+            g.values.emplace_back(int64_t(i - first[k]));
+            g.parts.push_back(corners(f.triangles[i - first[k]]));
+        }
+    };
+    gdal::DatasetOutput o;
     o.driver = t.driver;
     o.format = t.format;
-    o.source = t.in;
-    o.selection = s;
-    o.multipolygon = t.multipolygon;
+    o.sources = {{t.in, s}};
     std::vector<std::string> warnings;
-    Diagnostic w = gdal::writeLayer(t.out, o, done, warnings);
+    Diagnostic w = gdal::writeLayers(t.out, o, {layer}, warnings);
     for (const std::string& m : warnings) std::cerr << "warning: " << m << "\n";
     if (!w.ok()) {
         std::cerr << "error: " << w.message << "\n";

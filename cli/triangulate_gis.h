@@ -15,6 +15,12 @@ namespace flood::cli {
 // is asked for stdout, or when this flood has no GDAL.
 int outputFormat(const std::string& out, std::string& format, std::string& driver);
 
+// The GIS part of outputFormat(), for any option writing a GIS dataset (`-o`, `flood check
+// --findings`): the GDAL driver for `out` (by `format`, else its extension), or the usage
+// exit code after a message naming `option` and `out`.
+int gisFormat(const std::string& option, const std::string& out, std::string& format,
+              std::string& driver);
+
 struct GisTriangulation {
     std::string in, out;
     std::string format, driver;  // as outputFormat() gave them

@@ -382,9 +382,12 @@ FeatureRead readFeature(const std::string& name, const json& item, size_t i, int
     try {
         if (item.is_object() && item.contains("id") && !item["id"].is_null())
             f.id = propertyText(item["id"]);
-        if (item.is_object() && item.contains("properties") && item["properties"].is_object() &&
-            item["properties"].contains("name") && !item["properties"]["name"].is_null())
-            f.name = propertyText(item["properties"]["name"]);
+        // "name", else "NAME" (Natural Earth's), as GDAL finds a field by name in any case.
+        if (item.is_object() && item.contains("properties") && item["properties"].is_object())
+            for (const char* key : {"name", "NAME"})
+                if (f.name.empty() && item["properties"].contains(key) &&
+                    !item["properties"][key].is_null())
+                    f.name = propertyText(item["properties"][key]);
         if (item.is_object() && item.contains("properties") && item["properties"].is_object())
             for (const auto& [key, value] : item["properties"].items())
                 if (!value.is_null()) f.attributes.emplace_back(echo(key), propertyText(value));

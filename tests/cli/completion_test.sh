@@ -21,6 +21,7 @@ expect "triangulate trace transcript" tr
 expect "--format" trace --fo
 expect "jsonl bin" trace x.json --format ""
 expect "--max-findings --max-input-bytes" check --ma
+expect "--findings" check x.gpkg --fi
 expect "star staircase steiner" generate st
 expect "bowtie-star" generate bow
 expect "multipolygon" triangulate x --per-feature m

@@ -46,7 +46,8 @@ std::vector<std::string> listing(const fs::path& d) {
 struct Writer {
     std::string name, args;
     bool gis = false;
-    std::string ext = ".out";  // of OUT: a GIS writer's choice of format is explicit anyway
+    std::string ext = ".out";   // of OUT: a GIS writer's choice of format is explicit anyway
+    std::string option = "-o";  // what names OUT
 };
 
 std::vector<Writer> writers() {
@@ -63,6 +64,8 @@ std::vector<Writer> writers() {
 #ifdef FLOOD_GDAL
     w.push_back({"triangulate gpkg", "triangulate --format gpkg " + hole, true, ".gpkg"});
     w.push_back({"triangulate fgb", "triangulate --format fgb " + hole, true, ".fgb"});
+    // A valid input: exit 0, its findings layer empty.
+    w.push_back({"check --findings gpkg", "check " + hole, true, ".gpkg", "--findings"});
 #endif
     return w;
 }
@@ -168,8 +171,9 @@ TEST(SpecialFiles, EveryStreamWriterWritesAFifoInPlace) {
     for (const Writer& w : writers()) {
         if (w.gis) continue;
         SCOPED_TRACE(w.name);
-        RunResult r = runShell("cat " + fifo.string() + " > " + got.string() + " & timeout 60 " +
-                               FLOOD_CLI + " " + w.args + " -o " + fifo.string() + " 2>&1; wait");
+        RunResult r =
+            runShell("cat " + fifo.string() + " > " + got.string() + " & timeout 60 " + FLOOD_CLI +
+                     " " + w.args + " " + w.option + " " + fifo.string() + " 2>&1; wait");
         EXPECT_EQ(r.code, 0) << r.out;
         EXPECT_GT(fs::file_size(got), 10u);
         EXPECT_TRUE(fs::is_fifo(fifo));
@@ -199,7 +203,7 @@ TEST(SpecialFiles, EveryWriterWritesThroughASymlinkAndKeepsTheMode) {
         { std::ofstream(target) << "old"; }
         ASSERT_EQ(chmod(target.c_str(), 0600), 0);
         fs::create_symlink(fs::path("real") / target.filename(), link);  // relative
-        RunResult r = runCli(w.args + " -o " + link.string());
+        RunResult r = runCli(w.args + " " + w.option + " " + link.string());
         EXPECT_EQ(r.code, 0) << r.out;
         EXPECT_TRUE(fs::is_symlink(link));
         EXPECT_NE(slurp(target), "old");
@@ -210,14 +214,14 @@ TEST(SpecialFiles, EveryWriterWritesThroughASymlinkAndKeepsTheMode) {
         // A chain of links, the last one dangling: its target is made, with a new file's mode.
         fs::remove(target);
         fs::create_symlink(link.filename(), d / ("chain" + ext));
-        r = runCli(w.args + " -o " + (d / ("chain" + ext)).string());
+        r = runCli(w.args + " " + w.option + " " + (d / ("chain" + ext)).string());
         EXPECT_EQ(r.code, 0) << r.out;
         EXPECT_TRUE(fs::is_symlink(link));
         EXPECT_TRUE(fs::is_regular_file(fs::symlink_status(target)));
         fs::remove(d / ("chain" + ext));
         // Without a link, an existing file keeps its mode too.
         ASSERT_EQ(chmod(target.c_str(), 0640), 0);
-        r = runCli(w.args + " -o " + target.string());
+        r = runCli(w.args + " " + w.option + " " + target.string());
         EXPECT_EQ(r.code, 0) << r.out;
         ASSERT_EQ(stat(target.c_str(), &st), 0);
         EXPECT_EQ(st.st_mode & 07777, 0640u);
@@ -227,10 +231,14 @@ TEST(SpecialFiles, EveryWriterWritesThroughASymlinkAndKeepsTheMode) {
     const fs::path& d = top;
     fs::create_symlink("loop-b", d / "loop-a");
     fs::create_symlink("loop-a", d / "loop-b");
+    fs::create_symlink("loop-b.gpkg", d / "loop-a.gpkg");  // --findings: its format by its name
+    fs::create_symlink("loop-a.gpkg", d / "loop-b.gpkg");
     for (const Writer& w : writers()) {
-        RunResult r = runCli(w.args + " -o " + (d / "loop-a").string());
+        const std::string loop = (d / "loop-a").string() + (w.option == "-o" ? "" : w.ext);
+        RunResult r = runCli(w.args + " " + w.option + " " + loop);
         EXPECT_EQ(r.code, 8) << w.name << ": " << r.out;
-        EXPECT_TRUE(has(r.out, "loop-a: cannot write: Too many levels of symbolic links"))
+        EXPECT_TRUE(has(r.out, fs::path(loop).filename().string() +
+                                   ": cannot write: Too many levels of symbolic links"))
             << w.name << ": " << r.out;
     }
     fs::remove_all(d);
@@ -242,21 +250,24 @@ TEST(SpecialFiles, EveryWriterFailsInAReadOnlyFolderLeavingNothing) {
     fs::path ro = d / "ro";
     fs::create_directories(ro);
     { std::ofstream(ro / "old.out") << "old"; }
+    { std::ofstream(ro / "old.gpkg") << "old"; }
     fs::permissions(ro, fs::perms::owner_read | fs::perms::owner_exec);
     // Root writes anywhere: then /proc, which no one may create files in.
     const fs::path dir = access(ro.c_str(), W_OK) == 0 ? fs::path("/proc") : ro;
     for (const Writer& w : writers()) {
         SCOPED_TRACE(w.name);
-        for (const std::string name : {"new.out", "old.out"}) {
-            const std::string out = (dir / name).string();
-            RunResult r = runCli(w.args + " -o " + out);
+        for (const std::string name : {"new", "old"}) {
+            // (--findings: its format by its name)
+            const std::string out = (dir / name).string() + (w.option == "-o" ? ".out" : w.ext);
+            RunResult r = runCli(w.args + " " + w.option + " " + out);
             EXPECT_EQ(r.code, 8) << r.out;
             EXPECT_EQ(r.out.rfind("error: " + out + ": cannot write: ", 0), 0u) << r.out;
         }
     }
     fs::permissions(ro, fs::perms::owner_all);
-    EXPECT_EQ(listing(ro), std::vector<std::string>{"old.out"});
+    EXPECT_EQ(listing(ro), (std::vector<std::string>{"old.gpkg", "old.out"}));
     EXPECT_EQ(slurp(ro / "old.out"), "old");
+    EXPECT_EQ(slurp(ro / "old.gpkg"), "old");
     fs::remove_all(d);
 }
 

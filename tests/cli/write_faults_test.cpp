@@ -32,9 +32,13 @@ RunResult faulted(const std::string& env, const std::string& args) {
                     " 2>&1");
 }
 
+// The names in `d`, but for the edges `check --findings` writes beside OUT in a format of one
+// layer (out_edges.fgb: written first, so OUT stays as it was when either fails).
 std::vector<std::string> listing(const fs::path& d) {
     std::vector<std::string> names;
-    for (auto& e : fs::directory_iterator(d)) names.push_back(e.path().filename().string());
+    for (auto& e : fs::directory_iterator(d))
+        if (e.path().filename().string().find("_edges.") == std::string::npos)
+            names.push_back(e.path().filename().string());
     std::sort(names.begin(), names.end());
     return names;
 }
@@ -50,13 +54,14 @@ std::vector<unsigned long long> budgets(unsigned long long total) {
 }
 
 #ifdef FLOOD_GDAL
-// The triangles layer's feature count, or -1 when the file is no dataset with that layer.
-long long triangleCount(const fs::path& file) {
+// The feature count of a layer (triangles, findings), or -1 when the file is no dataset with
+// that layer.
+long long featureCount(const fs::path& file, const std::string& name) {
     GDALAllRegister();
     GDALDataset* ds = static_cast<GDALDataset*>(
         GDALOpenEx(file.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr));
     if (!ds) return -1;
-    OGRLayer* layer = ds->GetLayerByName("triangles");
+    OGRLayer* layer = ds->GetLayerByName(name.c_str());
     long long n = -1;
     if (layer) {
         n = 0;
@@ -71,6 +76,7 @@ long long triangleCount(const fs::path& file) {
 struct Writer {
     std::string name, format, ext;
     bool existingGeoPackage = false;  // OUT is a GeoPackage of two layers: the update path
+    bool findings = false;            // `check --findings OUT` (exit 4: the input's findings)
 };
 
 }  // namespace
@@ -86,6 +92,17 @@ TEST(WriteFaults, AFullDiskFailsEveryWriterAndKeepsTheOldFile) {
     writers.push_back({"gpkg", "gpkg", ".gpkg"});
     writers.push_back({"fgb", "fgb", ".fgb"});
     writers.push_back({"gpkg into an existing GeoPackage", "gpkg", ".gpkg", true});
+    writers.push_back({"check --findings gpkg", "gpkg", ".gpkg", false, true});
+    writers.push_back({"check --findings fgb", "fgb", ".fgb", false, true});
+    // A face with 400 separate crossings: 400 findings, in many pages.
+    {
+        std::ofstream crossings(d / "crossings.json");
+        crossings << "[[[0,0],[10000,0],[10000,10000],[0,10000]]";
+        for (int i = 0; i < 400; ++i)
+            crossings << ",[[" << 2 + 3 * i << ",2],[" << 3 + 3 * i << ",3],[" << 3 + 3 * i
+                      << ",2],[" << 2 + 3 * i << ",3]]";
+        crossings << "]";
+    }
 #endif
     for (const Writer& w : writers) {
         SCOPED_TRACE(w.name);
@@ -93,7 +110,10 @@ TEST(WriteFaults, AFullDiskFailsEveryWriterAndKeepsTheOldFile) {
         fs::create_directories(dir);
         const fs::path out = dir / ("out" + w.ext), report = d / "report";
         const std::string args =
-            "triangulate " + in.string() + " --format " + w.format + " -o " + out.string();
+            w.findings
+                ? "check " + (d / "crossings.json").string() + " --findings " + out.string()
+                : "triangulate " + in.string() + " --format " + w.format + " -o " + out.string();
+        const int ok = w.findings ? 4 : 0;  // the exit code of a run whose writing succeeds
         auto makeOld = [&] {
             fs::remove(out);
             if (w.existingGeoPackage) {
@@ -110,13 +130,14 @@ TEST(WriteFaults, AFullDiskFailsEveryWriterAndKeepsTheOldFile) {
         makeOld();
         fs::remove(report);
         RunResult r = faulted("FLOOD_FAULT_REPORT=" + report.string(), args);
-        ASSERT_EQ(r.code, 0) << r.out;
+        ASSERT_EQ(r.code, ok) << r.out;
         unsigned long long total = 0;
         std::ifstream(report) >> total;
         ASSERT_GT(total, 20000u) << "the fault library counted no writes";
         const std::string good = slurp(out);
 #ifdef FLOOD_GDAL
-        const long long triangles = w.format == "json" ? 0 : triangleCount(out);
+        const std::string layer = w.findings ? "findings" : "triangles";
+        const long long triangles = w.format == "json" ? 0 : featureCount(out, layer);
         ASSERT_NE(triangles, -1);
 #endif
         const std::vector<unsigned long long> ns = budgets(total);
@@ -135,7 +156,12 @@ TEST(WriteFaults, AFullDiskFailsEveryWriterAndKeepsTheOldFile) {
             }
             r = faulted("FLOOD_FAULT_BYTES=" + std::to_string(n), args);
             EXPECT_EQ(r.code, 8) << r.out;
-            EXPECT_EQ(r.out.rfind("error: " + out.string() + ": cannot write: ", 0), 0u) << r.out;
+            // (check --findings fgb: OUT or the edges beside it, out_edges.fgb, written first)
+            const std::string named =
+                w.findings && w.format == "fgb" && r.out.find("_edges.fgb") != std::string::npos
+                    ? (dir / "out_edges.fgb").string()
+                    : out.string();
+            EXPECT_EQ(r.out.rfind("error: " + named + ": cannot write: ", 0), 0u) << r.out;
             EXPECT_EQ(listing(dir), existing ? std::vector<std::string>{out.filename()}
                                              : std::vector<std::string>{})
                 << "a temporary left beside OUT, or OUT made";
@@ -151,10 +177,10 @@ TEST(WriteFaults, AFullDiskFailsEveryWriterAndKeepsTheOldFile) {
             SCOPED_TRACE("writes cut short after " + std::to_string(n) + " bytes");
             makeOld();
             r = faulted("FLOOD_FAULT=short FLOOD_FAULT_BYTES=" + std::to_string(n), args);
-            EXPECT_EQ(r.code, 0) << r.out;
+            EXPECT_EQ(r.code, ok) << r.out;
 #ifdef FLOOD_GDAL
             if (w.format != "json") {
-                EXPECT_EQ(triangleCount(out), triangles);
+                EXPECT_EQ(featureCount(out, layer), triangles);
                 continue;
             }
 #endif

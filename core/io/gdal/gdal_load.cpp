@@ -85,10 +85,9 @@ std::string outputDriver(const std::string& format, const std::string& path) {
     return "";
 }
 
-Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
-                      const std::vector<TriangulatedFeature>& features,
-                      std::vector<std::string>& warnings) {
-    if (const ModuleTable* t = module().table) return t->writeLayer(path, o, features, warnings);
+Diagnostic writeLayers(const std::string& path, const DatasetOutput& o,
+                       const std::vector<GisLayer>& layers, std::vector<std::string>& warnings) {
+    if (const ModuleTable* t = module().table) return t->writeLayers(path, o, layers, warnings);
     return {Status::WriteFailed, unavailable(path)};
 }
 

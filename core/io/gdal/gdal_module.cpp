@@ -5,6 +5,6 @@ extern "C" __attribute__((visibility("default"))) const flood::gdal::ModuleTable
 flood_gdal_module() {
     using namespace flood::gdal;
     static const ModuleTable table{kModuleVersion, direct::readFeatures, direct::readPolygon,
-                                   direct::outputDriver, direct::writeLayer};
+                                   direct::outputDriver, direct::writeLayers};
     return &table;
 }

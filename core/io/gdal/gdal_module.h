@@ -14,9 +14,8 @@ namespace direct {
 DatasetRead readFeatures(const std::string& path, const Selection& s);
 ReadResult readPolygon(const std::string& path, const Selection& s);
 std::string outputDriver(const std::string& format, const std::string& path);
-Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
-                      const std::vector<TriangulatedFeature>& features,
-                      std::vector<std::string>& warnings);
+Diagnostic writeLayers(const std::string& path, const DatasetOutput& o,
+                       const std::vector<GisLayer>& layers, std::vector<std::string>& warnings);
 // The layer `layer` (or the only one) of the dataset `file` read back as a user's tool reads it: "" when every
 // one of its `features` features reads without an error, else what is wrong ("reading it back
 // gives 12 of 16 features"). A writer's check: GDAL does not always report a failed write.
@@ -28,10 +27,10 @@ struct ModuleTable {
     DatasetRead (*readFeatures)(const std::string&, const Selection&);
     ReadResult (*readPolygon)(const std::string&, const Selection&);
     std::string (*outputDriver)(const std::string&, const std::string&);
-    Diagnostic (*writeLayer)(const std::string&, const LayerOutput&,
-                             const std::vector<TriangulatedFeature>&, std::vector<std::string>&);
+    Diagnostic (*writeLayers)(const std::string&, const DatasetOutput&,
+                              const std::vector<GisLayer>&, std::vector<std::string>&);
 };
-constexpr int kModuleVersion = 2;
+constexpr int kModuleVersion = 3;
 
 }  // namespace flood::gdal
 

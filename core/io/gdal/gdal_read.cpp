@@ -164,28 +164,52 @@ struct Reader {
             return malformed("not a vector dataset GDAL can open: " +
                              lastError("no GDAL driver recognises it"));
         }
-        OGRLayer* layer = nullptr;
+        std::vector<OGRLayer*> layers;
         if (!s.layer.empty()) {
-            layer = ds->GetLayerByName(s.layer.c_str());
+            OGRLayer* layer = ds->GetLayerByName(s.layer.c_str());
             if (!layer)
                 return malformed("no layer \"" + io_detail::echo(s.layer) + "\"" + layerList(*ds));
-        } else if (ds->GetLayerCount() == 1) {
-            layer = ds->GetLayer(0);
+            layers.push_back(layer);
+        } else if (ds->GetLayerCount() == 1 || (s.allLayers && ds->GetLayerCount() > 1)) {
+            for (int k = 0; k < ds->GetLayerCount(); ++k) layers.push_back(ds->GetLayer(k));
         } else if (ds->GetLayerCount() == 0) {
             return malformed("the dataset has no layers");
         } else {
             return malformed(std::to_string(ds->GetLayerCount()) +
                              " layers: choose one with --layer" + layerList(*ds));
         }
+        // Of several layers, one without polygons (points, lines) is skipped with a warning;
+        // none with any is the dataset's failure.
+        size_t polygonal = 0;
+        for (OGRLayer* layer : layers) {
+            const size_t before = out.features.size();
+            if (!readLayer(*ds, *layer, s, layers.size() == 1)) return;
+            if (out.features.size() > before) ++polygonal;
+            else if (layers.size() > 1)
+                out.skipped.push_back(name + ": layer " + layer->GetName() +
+                                      ": no polygon found, skipped");
+        }
+        if (layers.size() > 1 && polygonal == 0)
+            return malformed("no polygon found in any of its " + std::to_string(layers.size()) +
+                             " layers" + layerList(*ds));
+    }
+
+    // Reads one layer's features into `out`; false after a failure of the whole dataset (a
+    // layer of no polygon is one when it is the `only` layer read).
+    bool readLayer(GDALDataset& ds, OGRLayer& layerRef, const Selection& s, bool only) {
+        OGRLayer* layer = &layerRef;
+        const size_t first = out.features.size();
         const std::string lname = layer->GetName();
-        if (!s.where.empty() && layer->SetAttributeFilter(s.where.c_str()) != OGRERR_NONE)
-            return malformed("layer " + lname + ": --where '" + io_detail::echo(s.where) +
-                             "' is not a valid attribute filter: " +
-                             lastError("GDAL's SetAttributeFilter failed without a message"));
+        if (!s.where.empty() && layer->SetAttributeFilter(s.where.c_str()) != OGRERR_NONE) {
+            malformed("layer " + lname + ": --where '" + io_detail::echo(s.where) +
+                      "' is not a valid attribute filter: " +
+                      lastError("GDAL's SetAttributeFilter failed without a message"));
+            return false;
+        }
         // What the layer says it holds, where that is exactly what reading gives (FlatGeobuf's
         // header; not a Shapefile's, which counts records marked deleted too): -1 otherwise,
         // or with a filter. Elsewhere GDAL's errors are what tells a cut file.
-        const GDALDriver* driver = ds->GetDriver();
+        const GDALDriver* driver = ds.GetDriver();
         const bool exactCount = driver && std::string(driver->GetDescription()) == "FlatGeobuf" &&
                                 layer->TestCapability(OLCFastFeatureCount);
         const GIntBig announced =
@@ -223,10 +247,14 @@ struct Reader {
                        "layer " + lname + ": reading stopped after " + features(index) +
                            " without an error: the file is "
                            "truncated or corrupt");
-        if (out.features.empty())
-            return malformed("layer " + lname + ": no polygon found" +
-                             (s.feature >= 0 ? " (FID " + std::to_string(s.feature) + ")" : "") +
-                             (s.where.empty() ? "" : " where " + io_detail::echo(s.where)));
+        for (size_t k = first; k < out.features.size(); ++k) out.features[k].layer = lname;
+        if (out.features.size() == first && only) {
+            malformed("layer " + lname + ": no polygon found" +
+                      (s.feature >= 0 ? " (FID " + std::to_string(s.feature) + ")" : "") +
+                      (s.where.empty() ? "" : " where " + io_detail::echo(s.where)));
+            return false;
+        }
+        return true;
     }
 
     static std::string layerList(GDALDataset& ds) {

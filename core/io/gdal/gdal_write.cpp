@@ -1,14 +1,14 @@
-// Writing triangles as a GIS layer (for QGIS and the like), in any vector format GDAL creates:
-// one Polygon feature per triangle, or one MultiPolygon per source feature, its corners the
-// exact doubles of the polygon's vertices; with the source layer's CRS and fields copied, and
-// each source feature's FID and attribute values (as ogr2ogr copies them).
+// Writing Flood's layers (triangles, findings, a kept feature) in any vector format GDAL
+// creates, for QGIS and the like: points, lines and polygons at the exact doubles given, with
+// the sources' CRS and, where asked, the source layer's fields and each source feature's values
+// (as ogr2ogr copies them).
 //
 // The dataset is made in a hidden folder beside the file it replaces (core/output.h: the end of
 // OUT's symbolic links), under OUT's own name (drivers choose by the extension, and a
 // Shapefile's side files take its stem), with its side files (a GeoPackage's -journal,
 // FlatGeobuf's _temp.fgb, a Shapefile's .dbf, .shx, .prj) kept in there too; once closed each
 // file is given the old file's permissions and renamed beside it, the main file last. An
-// existing GeoPackage is copied there first and only its layer "triangles" is replaced, so its
+// existing GeoPackage is copied there first and only the layers written are replaced, so its
 // other layers stay. Anything that fails leaves the old files as they were, and
 // SIGINT/SIGTERM remove the folder.
 #include <cpl_error.h>
@@ -24,6 +24,7 @@
 #include <filesystem>
 #include <memory>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 #include "flood/io/output.h"
@@ -32,8 +33,6 @@
 
 namespace flood::gdal::direct {
 namespace {
-
-constexpr const char* kLayer = "triangles";
 
 // A byte copy of `from` as the new file `to`; 0 or the errno of what failed.
 int copyFile(const std::string& from, const std::string& to) {
@@ -110,24 +109,52 @@ std::string stemOf(const std::string& file) {
                : file.substr(0, dot);
 }
 
-// The source layer whose CRS, fields and attribute values are copied: the layer read, with
-// the same filter, so it lists the same features. Null (nothing copied) when GDAL cannot open
-// the source: a ring array or WKT has no CRS and no fields.
+// A source layer (LayerSource): the layer read, with the same filter, so it lists the same
+// features. No layer when GDAL cannot open it: a ring array or WKT has no CRS and no fields.
 struct Source {
     DatasetPtr ds;
     OGRLayer* layer = nullptr;
-    Source(const LayerOutput& o) {
-        if (o.source.empty() || o.source == "-") return;
+    explicit Source(const LayerSource& s) {
+        if (s.file.empty() || s.file == "-") return;
         ds.reset(static_cast<GDALDataset*>(GDALOpenEx(
-            o.source.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
+            s.file.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
         if (!ds) return;
-        layer = o.selection.layer.empty() ? (ds->GetLayerCount() == 1 ? ds->GetLayer(0) : nullptr)
-                                          : ds->GetLayerByName(o.selection.layer.c_str());
-        if (layer && !o.selection.where.empty() &&
-            layer->SetAttributeFilter(o.selection.where.c_str()) != OGRERR_NONE)
+        layer = s.selection.layer.empty() ? (ds->GetLayerCount() == 1 ? ds->GetLayer(0) : nullptr)
+                                          : ds->GetLayerByName(s.selection.layer.c_str());
+        if (layer && !s.selection.where.empty() &&
+            layer->SetAttributeFilter(s.selection.where.c_str()) != OGRERR_NONE)
             layer = nullptr;
     }
 };
+
+// The CRS the sources agree on (a clone, or null); when they disagree, null and a warning.
+OGRSpatialReference* agreedCrs(const std::vector<LayerSource>& sources, const std::string& out,
+                               std::vector<std::string>& warnings) {
+    std::vector<std::pair<std::string, std::unique_ptr<OGRSpatialReference>>> seen;
+    bool differ = false;
+    for (const LayerSource& s : sources) {
+        Source source(s);
+        const OGRSpatialReference* crs = source.layer ? source.layer->GetSpatialRef() : nullptr;
+        if (!crs) continue;
+        if (!seen.empty() && !crs->IsSame(seen.front().second.get())) differ = true;
+        const std::string name =
+            s.file + (s.selection.layer.empty() ? "" : " (layer " + s.selection.layer + ")");
+        if (seen.empty() || !crs->IsSame(seen.back().second.get()))
+            seen.emplace_back(name, std::unique_ptr<OGRSpatialReference>(crs->Clone()));
+    }
+    CPLErrorReset();  // a source GDAL cannot open (a ring array) is no failure of the writing
+    if (!differ) return seen.empty() ? nullptr : seen.front().second.release();
+    std::string list;
+    for (auto& [name, crs] : seen) {
+        crs->AutoIdentifyEPSG();
+        const char* code = crs->GetAuthorityCode(nullptr);
+        list += (list.empty() ? "" : ", ") + name + ": " +
+                (code ? "EPSG:" + std::string(code) : std::string(crs->GetName()));
+    }
+    warnings.push_back(out + ": the inputs have different CRSs (" + list +
+                       "): the layers are written without one");
+    return nullptr;
+}
 
 // The name of a field Flood adds: `want`, or "flood_" + want when the source has a field so
 // named.
@@ -164,9 +191,55 @@ std::string outputDriver(const std::string& format, const std::string& path) {
     return "";
 }
 
-Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
-                      const std::vector<TriangulatedFeature>& features,
-                      std::vector<std::string>& warnings) {
+namespace {
+
+OGRGeometry* geometryOf(GisGeometry type, const GisFeature& f) {
+    if (f.parts.empty() || f.parts[0].empty()) return nullptr;
+    auto points = [](OGRSimpleCurve* c, const std::vector<Point>& ps, bool close) {
+        for (const Point& p : ps) c->addPoint(p.x, p.y);
+        if (close && !(ps.front() == ps.back())) c->addPoint(ps.front().x, ps.front().y);
+        return c;
+    };
+    switch (type) {
+        case GisGeometry::Point: return new OGRPoint(f.parts[0][0].x, f.parts[0][0].y);
+        case GisGeometry::LineString: return points(new OGRLineString, f.parts[0], false);
+        case GisGeometry::Polygon: {
+            auto* poly = new OGRPolygon;
+            for (const auto& ring : f.parts)
+                poly->addRingDirectly(
+                    static_cast<OGRLinearRing*>(points(new OGRLinearRing, ring, true)));
+            return poly;
+        }
+        case GisGeometry::MultiPolygon: {
+            auto* mp = new OGRMultiPolygon;
+            for (const auto& ring : f.parts) {
+                auto* poly = new OGRPolygon;
+                poly->addRingDirectly(
+                    static_cast<OGRLinearRing*>(points(new OGRLinearRing, ring, true)));
+                mp->addGeometryDirectly(poly);
+            }
+            return mp;
+        }
+        case GisGeometry::Source: break;
+    }
+    return nullptr;
+}
+
+OGRwkbGeometryType ogrType(GisGeometry type, OGRLayer* source) {
+    switch (type) {
+        case GisGeometry::Point: return wkbPoint;
+        case GisGeometry::LineString: return wkbLineString;
+        case GisGeometry::Polygon: return wkbPolygon;
+        case GisGeometry::MultiPolygon: return wkbMultiPolygon;
+        case GisGeometry::Source: break;
+    }
+    return source ? source->GetGeomType() : wkbUnknown;
+}
+
+}  // namespace
+
+Diagnostic writeLayers(const std::string& path, const DatasetOutput& o,
+                       const std::vector<GisLayer>& layers, std::vector<std::string>& warnings) {
     GDALAllRegister();
     CPLSetErrorHandler(CPLQuietErrorHandler);
     const bool gpkg = o.driver == "GPKG";
@@ -183,6 +256,7 @@ Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
     const OutputTarget target = outputTarget(path);
     if (target.error) return cannot(std::strerror(target.error));
     if (target.directory()) return cannot(std::strerror(EISDIR));
+    if (o.noReplace && target.exists) return cannot(std::strerror(EEXIST));
     if (target.exists && !target.regular())
         return cannot(std::string("--format ") + o.format + " needs a regular file, and " +
                       (target.file == path ? path : target.file) + " is " + target.kind() +
@@ -238,107 +312,144 @@ Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
         removeFolder();
         return d;
     };
-    for (int k = 0; update && k < ds->GetLayerCount(); ++k)
-        if (std::string(ds->GetLayer(k)->GetName()) == kLayer) {
-            if (ds->DeleteLayer(k) != OGRERR_NONE)
-                return discard("cannot replace the layer " + std::string(kLayer));
-            break;
-        }
-    Source source(o);
+    for (const GisLayer& l : layers)
+        for (int k = 0; update && k < ds->GetLayerCount(); ++k)
+            if (l.name == ds->GetLayer(k)->GetName()) {
+                if (ds->DeleteLayer(k) != OGRERR_NONE)
+                    return discard("cannot replace the layer " + l.name);
+                break;
+            }
+    std::unique_ptr<Source> source =
+        std::make_unique<Source>(o.sources.empty() ? LayerSource{} : o.sources.front());
+    std::unique_ptr<OGRSpatialReference, void (*)(OGRSpatialReference*)> crs(
+        agreedCrs(o.sources, path, warnings), [](OGRSpatialReference* c) {
+            if (c) c->Release();
+        });
     CPLErrorReset();  // a source GDAL cannot open (a ring array) is no failure of the writing
-    OGRFeatureDefn* from = source.layer ? source.layer->GetLayerDefn() : nullptr;
-    const OGRSpatialReference* sourceCrs = source.layer ? source.layer->GetSpatialRef() : nullptr;
-    OGRSpatialReference* crs = sourceCrs ? sourceCrs->Clone() : nullptr;
+    OGRFeatureDefn* from = source->layer ? source->layer->GetLayerDefn() : nullptr;
     // CSV keeps the geometry only as a WKT column when asked.
     CPLStringList options;
     if (o.driver == "CSV") {
         options.SetNameValue("GEOMETRY", "AS_WKT");
         options.SetNameValue("CREATE_CSVT", "YES");  // the fields' types, for readers
     }
-    OGRLayer* layer =
-        ds->CreateLayer(kLayer, crs, o.multipolygon ? wkbMultiPolygon : wkbPolygon, options.List());
-    if (crs) crs->Release();  // the layer holds its own reference
-    if (!layer) return discard("cannot create the layer");
-    // The source's fields, then the source FID, then the triangle's number in its feature;
-    // each found by where it was added (a Shapefile cuts names to 10 bytes; KML has fields of
-    // its own first).
-    auto addField = [&](OGRFieldDefn* field) {
-        OGRFeatureDefn* defn = layer->GetLayerDefn();
-        const int before = defn->GetFieldCount();
-        if (layer->CreateField(field, TRUE) != OGRERR_NONE) return -1;
-        return defn->GetFieldCount() == before + 1 ? before : -1;
-    };
-    const int fieldCount = from ? from->GetFieldCount() : 0;
-    std::vector<int> map;
-    for (int i = 0; i < fieldCount; ++i) {
-        map.push_back(addField(from->GetFieldDefn(i)));
-        if (map.back() < 0)
-            return discard(std::string("cannot create the field ") +
-                           from->GetFieldDefn(i)->GetNameRef());
-    }
-    OGRFieldDefn fidDefn(freeName(from, "src_fid").c_str(), OFTInteger64);
-    OGRFieldDefn triDefn(freeName(from, "triangle").c_str(), OFTInteger64);
-    const int fidField = addField(&fidDefn);
-    const int triField = o.multipolygon ? 0 : addField(&triDefn);
-    if (fidField < 0 || triField < 0) return discard("cannot create the fields");
-
-    // One transaction: GeoPackage otherwise commits every feature on its own.
-    const bool transaction = ds->StartTransaction() == OGRERR_NONE;
-    auto ring = [&](const Polygon& p, const Triangle& t) {
-        auto* r = new OGRLinearRing;
-        for (int k = 0; k < 4; ++k) r->addPoint(p.vertices[t[k % 3]].x, p.vertices[t[k % 3]].y);
-        auto* tri = new OGRPolygon;
-        tri->addRingDirectly(r);
-        return tri;
-    };
-    auto write = [&](const TriangulatedFeature& tf, OGRFeature* src) -> bool {
-        FeaturePtr f(OGRFeature::CreateFeature(layer->GetLayerDefn()));
-        if (src && f->SetFieldsFrom(src, map.data(), TRUE) != OGRERR_NONE) return false;
-        f->SetField(fidField, GIntBig(tf.fid));
-        if (o.multipolygon) {
-            auto* mp = new OGRMultiPolygon;
-            for (const Triangle& t : tf.triangles) mp->addGeometryDirectly(ring(*tf.polygon, t));
-            f->SetGeometryDirectly(mp);
-            f->SetFID(tf.fid);  // kept where the format can (ogr2ogr -preserve_fid)
+    std::vector<long long> written;
+    // One transaction per layer: GeoPackage otherwise commits every feature on its own.
+    for (const GisLayer& l : layers) {
+        // A field "fid" (flood check's findings) is no GeoPackage FID column: that is named
+        // ogc_fid then (as SQLite names it).
+        CPLStringList layerOptions(options);
+        for (const GisField& field : l.fields)
+            if (gpkg && EQUAL(field.name.c_str(), "fid"))
+                layerOptions.SetNameValue("FID", "ogc_fid");
+        OGRLayer* layer = ds->CreateLayer(l.name.c_str(), crs.get(),
+                                          ogrType(l.geometry, source->layer), layerOptions.List());
+        if (!layer) return discard("cannot create the layer " + l.name);
+        // The source's fields, then Flood's; each found by where it was added (a Shapefile
+        // cuts names to 10 bytes; KML has fields of its own first).
+        auto addField = [&](OGRFieldDefn* field) {
+            OGRFeatureDefn* defn = layer->GetLayerDefn();
+            const int before = defn->GetFieldCount();
+            if (layer->CreateField(field, TRUE) != OGRERR_NONE) return -1;
+            return defn->GetFieldCount() == before + 1 ? before : -1;
+        };
+        const OGRFeatureDefn* copied = l.sourceFields ? from : nullptr;
+        const int fieldCount = copied ? copied->GetFieldCount() : 0;
+        std::vector<int> map;
+        for (int i = 0; i < fieldCount; ++i) {
+            map.push_back(addField(from->GetFieldDefn(i)));
+            if (map.back() < 0)
+                return discard(std::string("cannot create the field ") +
+                               from->GetFieldDefn(i)->GetNameRef());
+        }
+        std::vector<int> own;
+        for (const GisField& field : l.fields) {
+            OGRFieldDefn defn(freeName(copied, field.name.c_str()).c_str(),
+                              field.integer ? OFTInteger64 : OFTString);
+            own.push_back(addField(&defn));
+            if (own.back() < 0) return discard("cannot create the field " + field.name);
+        }
+        const bool transaction = ds->StartTransaction() == OGRERR_NONE;
+        GisFeature g;
+        auto write = [&](size_t i, OGRFeature* src) -> bool {
+            g.clear();
+            l.feature(i, g);
+            FeaturePtr f(OGRFeature::CreateFeature(layer->GetLayerDefn()));
+            if (src && copied && f->SetFieldsFrom(src, map.data(), TRUE) != OGRERR_NONE)
+                return false;
+            for (size_t k = 0; k < own.size() && k < g.values.size(); ++k) {
+                if (const auto* n = std::get_if<int64_t>(&g.values[k]))
+                    f->SetField(own[k], GIntBig(*n));
+                else if (const auto* t = std::get_if<std::string>(&g.values[k]))
+                    f->SetField(own[k], t->c_str());
+                else f->SetFieldNull(own[k]);
+            }
+            if (l.geometry == GisGeometry::Source) {
+                if (src && src->GetGeometryRef()) f->SetGeometry(src->GetGeometryRef());
+            } else if (OGRGeometry* geometry = geometryOf(l.geometry, g)) {
+                f->SetGeometryDirectly(geometry);
+            }
+            f->SetFID(g.fid >= 0 ? g.fid : OGRNullFID);  // kept where the format can
             OGRErr e = layer->CreateFeature(f.get());
-            if (e != OGRERR_NONE) {  // the FID taken or refused: a new one
+            if (e != OGRERR_NONE && g.fid >= 0) {  // the FID taken or refused: a new one
                 f->SetFID(OGRNullFID);
                 e = layer->CreateFeature(f.get());
             }
             return e == OGRERR_NONE;
-        }
-        for (size_t i = 0; i < tf.triangles.size(); ++i) {
-            f->SetField(triField, GIntBig(i));
-            f->SetGeometryDirectly(ring(*tf.polygon, tf.triangles[i]));
-            f->SetFID(OGRNullFID);
-            if (layer->CreateFeature(f.get()) != OGRERR_NONE) return false;
-        }
-        return true;
-    };
-    // In the source's order, each with its own attributes; features the source does not list
-    // (a ring array has no fields) after, without.
-    std::unordered_map<int64_t, size_t> byFid;
-    for (size_t i = 0; i < features.size(); ++i) byFid.emplace(features[i].fid, i);
-    std::vector<bool> done(features.size());
-    if (source.layer) {
-        source.layer->ResetReading();
-        for (FeaturePtr src; (src.reset(source.layer->GetNextFeature()), src);) {
-            auto it = byFid.find(src->GetFID());
-            if (it == byFid.end()) continue;
-            if (done[it->second]) {
-                warnings.push_back(o.source + ": FID " + std::to_string(src->GetFID()) +
-                                   " is not unique: its triangles carry the first one's fields");
-                continue;
+        };
+        // Features copying a source feature in the source's order, each with its values;
+        // those the source does not list (a ring array has no fields) after, without.
+        std::unordered_map<int64_t, std::vector<size_t>> bySource;
+        std::vector<bool> done(l.count);
+        if (source->layer && (copied || l.geometry == GisGeometry::Source))
+            for (size_t i = 0; i < l.count; ++i) {
+                g.clear();
+                l.feature(i, g);
+                if (g.source >= 0) bySource[g.source].push_back(i);
             }
-            done[it->second] = true;
-            if (!write(features[it->second], src.get()))
-                return discard("feature " + std::to_string(src->GetFID()));
+        // Features kept as they were (--extract: one of a layer of any size): each read by
+        // its FID, in the order given, not the whole layer.
+        if (!bySource.empty() && l.geometry == GisGeometry::Source &&
+            source->layer->TestCapability(OLCRandomRead)) {
+            std::unordered_set<int64_t> fetched;
+            for (size_t i = 0; i < l.count; ++i) {
+                g.clear();
+                l.feature(i, g);
+                if (g.source < 0 || !fetched.insert(g.source).second) continue;
+                const int64_t fid = g.source;
+                FeaturePtr src(source->layer->GetFeature(fid));
+                for (size_t k : bySource[fid])
+                    if (src && !(done[k] = write(k, src.get())))
+                        return discard(l.name + ": feature " + std::to_string(fid));
+            }
+        } else if (!bySource.empty()) {
+            source->layer->ResetReading();
+            for (FeaturePtr src; (src.reset(source->layer->GetNextFeature()), src);) {
+                auto it = bySource.find(src->GetFID());
+                if (it == bySource.end()) continue;
+                if (done[it->second.front()]) {
+                    warnings.push_back(o.sources.front().file + ": FID " +
+                                       std::to_string(src->GetFID()) + " is not unique: its " +
+                                       l.name + " carry the first one's fields");
+                    continue;
+                }
+                for (size_t i : it->second) {
+                    done[i] = true;
+                    if (!write(i, src.get()))
+                        return discard(l.name + ": feature " + std::to_string(src->GetFID()));
+                }
+            }
         }
+        for (size_t i = 0; i < l.count; ++i)
+            if (!done[i] && l.geometry == GisGeometry::Source)
+                return discard(l.name + ": feature " + std::to_string(i) +
+                               ": its source feature is not found");
+            else if (!done[i] && !write(i, nullptr))
+                return discard(l.name + ": feature " + std::to_string(i));
+        if (transaction && ds->CommitTransaction() != OGRERR_NONE) return discard("commit");
+        written.push_back((long long)l.count);
     }
-    for (size_t i = 0; i < features.size(); ++i)
-        if (!done[i] && !write(features[i], nullptr))
-            return discard("feature " + std::to_string(features[i].fid));
-    if (transaction && ds->CommitTransaction() != OGRERR_NONE) return discard("commit");
+    source.reset();
     CPLErrorReset();
     GDALClose(ds);
     if (CPLGetLastErrorType() >= CE_Failure) {
@@ -353,7 +464,7 @@ Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
         if (entry.path().filename() != base) made.push_back(entry.path().filename().string());
     int e = 0;
     for (const std::string& side : sideSuffixes(o.driver))
-        if (side[0] == '.') {
+        if (side[0] == '.' && !o.noReplace) {
             const std::string old = stemOf(target.file) + side;
             if (std::find(made.begin(), made.end(), fs::path(old).filename().string()) ==
                     made.end() &&
@@ -363,19 +474,29 @@ Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
     made.push_back(base);
     // FlatGeobuf does not check the close of its files, where stdio writes its last buffer: a
     // full disk there went unnoticed (tests/cli/write_faults_test.cpp). Read back, it shows.
-    long long written = 0;
-    for (const TriangulatedFeature& tf : features)
-        written += o.multipolygon ? 1 : (long long)tf.triangles.size();
-    if (std::string problem = readBackProblem(folder + "/" + base, kLayer, written);
-        !problem.empty()) {
-        removeFolder();
-        return cannot("GDAL reported no error, but the dataset written is incomplete: " + problem);
-    }
+    for (size_t k = 0; k < layers.size(); ++k)
+        if (std::string problem = readBackProblem(folder + "/" + base, layers[k].name, written[k]);
+            !problem.empty()) {
+            removeFolder();
+            return cannot("GDAL reported no error, but the dataset written is incomplete: " +
+                          problem);
+        }
+    // Without replacing: each name linked (which fails on a name taken), the folder's names
+    // removed with it; a failure unlinks what was linked.
+    std::vector<std::string> linked;
     for (const std::string& name : made) {
         if (e) break;
         e = adoptPermissions(-1, folder + "/" + name, target);
-        if (!e && ::rename((folder + "/" + name).c_str(), (dir + name).c_str()) != 0) e = errno;
+        if (e) break;
+        if (o.noReplace) {
+            if (::link((folder + "/" + name).c_str(), (dir + name).c_str()) != 0) e = errno;
+            else linked.push_back(dir + name);
+        } else if (::rename((folder + "/" + name).c_str(), (dir + name).c_str()) != 0) {
+            e = errno;
+        }
     }
+    if (e)
+        for (const std::string& name : linked) ::unlink(name.c_str());
     removeFolder();
     if (e) return cannot(std::strerror(e));
     return {};

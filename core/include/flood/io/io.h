@@ -55,7 +55,9 @@ struct FeatureRead {
     // when every feature has a distinct one, else its position; 0 for a whole file. What
     // --feature, `flood check`'s FEATURE column and messages ("feature N") call it.
     int64_t fid = 0;
-    std::string id, name;  // the Feature's "id" and "properties.name" (cut to 60 bytes), or ""
+    std::string id,
+        name;  // the Feature's "id" and its "name" or "NAME" property (cut to 60 bytes), or ""
+    std::string layer;  // a GIS dataset's layer it is in, or "" (Flood's own readers)
     // Every property (a GIS feature's fields) as text, in file order, each cut to 60 bytes:
     // what `flood check --json` reports beside the verdict. Null values are left out.
     std::vector<std::pair<std::string, std::string>> attributes;

@@ -1,9 +1,11 @@
 // Vector datasets through GDAL/OGR (Shapefile, GeoPackage, FlatGeobuf, GeoJSONSeq, GML, KML,
-// ...): each feature's polygonal geometry read as a Flood polygon, and triangles written as a
-// layer of triangle polygons. Built only when GDAL is found (FLOOD_GDAL).
+// ...): each feature's polygonal geometry read as a Flood polygon, and Flood's layers (triangles,
+// findings, a feature kept as it was) written. Built only when GDAL is found (FLOOD_GDAL).
 #pragma once
 #include <cstdint>
+#include <functional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "flood/io/io.h"
@@ -15,6 +17,9 @@ struct Selection {
     std::string layer;     // "" = the dataset's only layer
     int64_t feature = -1;  // an FID, or -1 for all
     std::string where;     // an OGR SQL attribute filter, or ""
+    // flood check: a dataset of several layers is read layer by layer (FeatureRead::layer),
+    // not refused, when no layer is named.
+    bool allLayers = false;
     bool any() const { return !layer.empty() || feature >= 0 || !where.empty(); }
 };
 
@@ -47,30 +52,63 @@ std::string unavailable(const std::string& path);
 // "" when no driver that creates vector datasets matches.
 std::string outputDriver(const std::string& format, const std::string& path);
 
-// One source feature's triangles, as `flood triangulate` writes them.
-struct TriangulatedFeature {
-    int64_t fid = 0;  // the source feature's FID (FeatureRead::fid)
-    const Polygon* polygon = nullptr;
-    std::vector<Triangle> triangles;
+// A layer Flood writes (the triangles of `flood triangulate -o`, the findings of `flood check
+// --findings`, a feature kept by `flood check --extract`), in any vector format GDAL creates,
+// by one writer: writeLayers().
+enum class GisGeometry { Point, LineString, Polygon, MultiPolygon, Source };
+struct GisField {
+    std::string name;
+    bool integer = false;  // a 64-bit integer, else text
+};
+using GisValue = std::variant<std::monostate, int64_t, std::string>;  // monostate: null
+struct GisFeature {
+    int64_t source = -1;  // the source feature (its FID) whose fields, or geometry, it copies
+    int64_t fid = -1;     // kept as its FID where the format can (else a new one), or -1
+    std::vector<GisValue> values;  // one per GisLayer::fields
+    // Point: parts[0][0]; LineString: parts[0]; Polygon: its rings, the outer first;
+    // MultiPolygon: one polygon of one ring per part. No part: a null geometry.
+    std::vector<std::vector<Point>> parts;
+    void clear() { source = fid = -1, values.clear(), parts.clear(); }
+};
+struct GisLayer {
+    std::string name;
+    GisGeometry geometry = GisGeometry::Point;  // Source: each feature's source geometry
+    // With `sourceFields`, the source layer's fields come first (each feature's values from
+    // its source feature, as ogr2ogr copies them), then these; one the source already has
+    // is named "flood_" + its name.
+    bool sourceFields = false;
+    std::vector<GisField> fields;
+    size_t count = 0;
+    std::function<void(size_t, GisFeature&)> feature;  // fills feature i of count (cleared)
 };
 
-struct LayerOutput {
+// A layer read: the dataset and which of its layers, with which filter.
+struct LayerSource {
+    std::string file;  // "" or "-" or a file GDAL cannot open (a ring array): none
+    Selection selection;
+};
+
+struct DatasetOutput {
     std::string driver;  // outputDriver()
     std::string format;  // as the user named it (--format, or OUT's extension), for messages
-    // The dataset read: its layer's CRS and fields are copied, and each feature's values from
-    // the source feature of the same FID ("" or a file GDAL cannot open: FID only, no CRS).
-    std::string source;
-    Selection selection;        // which layer of it, which filter
-    bool multipolygon = false;  // one MultiPolygon per feature, else one Polygon per triangle
+    // The layer whose fields and features the layers copy (the first), and the layers whose
+    // CRS the output takes: the one they agree on; when they disagree, none, with a warning
+    // naming them. Sources without a CRS (a ring array, WKT) have no say.
+    std::vector<LayerSource> sources;
+    bool noReplace = false;  // an existing OUT (or side file) is an error, never replaced
 };
 
-// Writes the features' triangles as a layer "triangles" to `path` with `o.driver`: the source
-// fields, then "src_fid" (the source FID) and, per triangle, "triangle" (its number in its
-// feature); "flood_src_fid", "flood_triangle" when the source has fields so named. The files
-// are made beside `path` and renamed over it once complete. Returns WriteFailed with a message
-// naming the file on failure; `warnings` gets what was written but not as asked.
-Diagnostic writeLayer(const std::string& path, const LayerOutput& o,
-                      const std::vector<TriangulatedFeature>& features,
-                      std::vector<std::string>& warnings);
+// Writes `layers` to the dataset `path` with `o.driver`. The files are made beside `path` and
+// renamed over it once complete and read back (each layer's count); an existing GeoPackage
+// keeps its other layers (those of the same names are replaced). Returns WriteFailed with a
+// message naming the file on failure; `warnings` gets what was written but not as asked.
+Diagnostic writeLayers(const std::string& path, const DatasetOutput& o,
+                       const std::vector<GisLayer>& layers, std::vector<std::string>& warnings);
+
+// Whether the driver keeps several layers in one file (GeoPackage, SQLite): else a second
+// layer goes to a file of its own.
+inline bool severalLayers(const std::string& driver) {
+    return driver == "GPKG" || driver == "SQLite";
+}
 
 }  // namespace flood::gdal

@@ -62,6 +62,7 @@ int outputFormat(const std::string& out, std::string& format, std::string& drive
     }
     return 0;
 #else
+    (void)driver;  // only GDAL names one
     std::cerr << "error: -o " << out << ": " << asked << " is a GIS format, written through GDAL: "
               << "this flood was built without it (install libgdal-dev, reconfigure with "
                  "-DFLOOD_GDAL=ON)\n";

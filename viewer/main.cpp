@@ -25,6 +25,23 @@
 using namespace flood;
 using namespace flood::view;
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten.h>
+// What the page shows, for its tests (tests/web/page_test.mjs): Module._flood_web_step() ...
+namespace {
+const Model* g_shown = nullptr;
+int g_frames = 0;
+}  // namespace
+extern "C" {
+EMSCRIPTEN_KEEPALIVE int flood_web_frames() { return g_frames; }
+EMSCRIPTEN_KEEPALIVE int flood_web_step() { return g_shown ? int(g_shown->step()) : -1; }
+EMSCRIPTEN_KEEPALIVE int flood_web_steps() { return g_shown ? int(g_shown->steps()) : -1; }
+EMSCRIPTEN_KEEPALIVE int flood_web_vertices() {
+    return g_shown ? int(g_shown->polygon().vertices.size()) : -1;
+}
+}
+#endif
+
 namespace {
 
 // No display: say so, then print what can be known without one.
@@ -344,6 +361,9 @@ void runInteractive(Ui& ui, const Args& args, Styled& styled) {
             ui.exportJob.reset();
         }
         platform::swapBuffers();
+#ifdef __EMSCRIPTEN__
+        g_shown = &model, ++g_frames;
+#endif
 
         double now = platform::time();
         model.advance(now - lastTime);

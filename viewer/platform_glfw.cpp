@@ -8,6 +8,35 @@
 
 #include <cstdlib>
 
+#ifdef __EMSCRIPTEN__
+// The page (cmake/web.cmake): Emscripten's GLFW is 3.2.1, without content scales; the canvas
+// is sized here to the page in device pixels, and the loop yields to the browser each frame.
+#include <emscripten.h>
+#include <emscripten/html5.h>
+
+// Resolves at the next animation frame, or, when `idle`, at the next one after an input event
+// or `timeout` seconds, whichever comes first (the desktop's glfwWaitEventsTimeout).
+// clang-format off
+EM_ASYNC_JS(void, flood_web_next_frame, (int idle, double timeout), {
+    if (idle) {
+        await new Promise(resolve => {
+            const events = ["keydown", "keyup", "pointerdown", "pointerup", "pointermove",
+                            "wheel", "resize", "drop"];
+            let timer;
+            const done = () => {
+                clearTimeout(timer);
+                for (const e of events) window.removeEventListener(e, done, true);
+                resolve();
+            };
+            timer = setTimeout(done, timeout * 1000);
+            for (const e of events) window.addEventListener(e, done, true);
+        });
+    }
+    await new Promise(resolve => requestAnimationFrame(resolve));
+});
+// clang-format on
+#endif
+
 namespace flood::view::platform {
 
 const int kKeyF = GLFW_KEY_F;
@@ -67,6 +96,9 @@ GLFWmonitor* monitorOfWindow() {
 }  // namespace
 
 bool displayNamed() {
+#ifdef __EMSCRIPTEN__
+    return true;  // the page's canvas
+#endif
     const char* x = std::getenv("DISPLAY");
     const char* w = std::getenv("WAYLAND_DISPLAY");
     return (x && *x) || (w && *w);
@@ -95,8 +127,10 @@ bool createWindow(const WindowOptions& o, std::string* error) {
     glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
     glfwWindowHint(GLFW_STENCIL_BITS, 8);  // the even-odd polygon fill needs a stencil
     glfwWindowHint(GLFW_VISIBLE, o.hidden ? GLFW_FALSE : GLFW_TRUE);
+#ifndef __EMSCRIPTEN__
     // Screenshots must be exactly the requested size, whatever the monitor's scale.
     glfwWindowHint(GLFW_SCALE_TO_MONITOR, o.hidden ? GLFW_FALSE : GLFW_TRUE);
+#endif
     g_window = glfwCreateWindow(o.width, o.height, o.title.c_str(), nullptr, nullptr);
     if (!g_window) {
         if (error) *error = "cannot create an OpenGL 3.3 core window: " + g_glfwError;
@@ -109,7 +143,13 @@ bool createWindow(const WindowOptions& o, std::string* error) {
         return false;
     }
     glfwSetDropCallback(g_window, onDrop);
+#ifndef __EMSCRIPTEN__
     glfwSetWindowContentScaleCallback(g_window, onContentScale);
+#else
+    (void)onContentScale;
+    g_scale = float(emscripten_get_device_pixel_ratio());
+    glfwSetWindowTitle(g_window, o.title.c_str());  // Emscripten's window leaves it unset
+#endif
     ImGui_ImplGlfw_InitForOpenGL(g_window, true);
     g_imguiKey = glfwSetKeyCallback(g_window, onKey);
     return true;
@@ -125,8 +165,39 @@ void destroyWindow() {
 
 bool shouldClose() { return glfwWindowShouldClose(g_window); }
 void requestClose() { glfwSetWindowShouldClose(g_window, GLFW_TRUE); }
+#ifdef __EMSCRIPTEN__
+// The page's file picker (web/shell.html, Ctrl+O) writes the chosen file into the in-memory
+// file system and opens it here, as a file dropped on the canvas.
+extern "C" EMSCRIPTEN_KEEPALIVE void flood_web_open(const char* path) {
+    g_dropped.emplace_back(path);
+}
+
+namespace {
+// The canvas fills the page at the device's resolution; ImGui is scaled by the pixel ratio
+// (contentScale), as on a hi-DPI monitor.
+void followPage() {
+    double cssW = 0, cssH = 0;
+    emscripten_get_element_css_size("#canvas", &cssW, &cssH);
+    const double ratio = emscripten_get_device_pixel_ratio();
+    if (float(ratio) != g_scale) onContentScale(g_window, float(ratio), float(ratio));
+    const int w = int(cssW * ratio + 0.5), h = int(cssH * ratio + 0.5);
+    int nowW = 0, nowH = 0;
+    glfwGetWindowSize(g_window, &nowW, &nowH);
+    if (w > 0 && h > 0 && (w != nowW || h != nowH)) glfwSetWindowSize(g_window, w, h);
+}
+}  // namespace
+void pollEvents() {
+    flood_web_next_frame(0, 0);
+    followPage();
+}
+void waitEvents(double timeout) {
+    flood_web_next_frame(1, timeout);
+    followPage();
+}
+#else
 void pollEvents() { glfwPollEvents(); }
 void waitEvents(double timeout) { glfwWaitEventsTimeout(timeout); }
+#endif
 void wake() { glfwPostEmptyEvent(); }
 void newFrame() { ImGui_ImplGlfw_NewFrame(); }
 void swapBuffers() { glfwSwapBuffers(g_window); }
@@ -141,9 +212,13 @@ Vec2 windowSize() {
 void framebufferSize(int* w, int* h) { glfwGetFramebufferSize(g_window, w, h); }
 
 float contentScale() {
+#ifdef __EMSCRIPTEN__
+    return g_scale > 0 ? g_scale : 1;
+#else
     float x = 1, y = 1;
     glfwGetWindowContentScale(g_window, &x, &y);
     return x > 0 ? x : 1;
+#endif
 }
 
 void setTitle(const std::string& title) { glfwSetWindowTitle(g_window, title.c_str()); }

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <initializer_list>
 
 #include "flood/io/output.h"  // atomic files
@@ -16,11 +17,25 @@ namespace flood::view {
 
 namespace {
 
+#ifdef __EMSCRIPTEN__
+// WebGL 2 speaks GLSL ES 3.00, which wants default precisions; the shaders are the same.
+const char* const kVersion = "#version 300 es\nprecision highp float;\nprecision highp int;\n";
+#else
+const char* const kVersion = "#version 330 core\n";
+#endif
+
 // Compiles `parts` joined (glShaderSource takes a list: the version line, shared code, body).
 GLuint compile(GLenum type, std::initializer_list<const char*> parts, const char* name,
                std::string* error) {
     GLuint s = glCreateShader(type);
-    std::vector<const char*> src(parts);
+    std::vector<const char*> src;
+    for (const char* part : parts) {
+        // A shader file's own version line becomes this platform's (kVersion).
+        static const char kFileVersion[] = "#version 330 core\n";
+        if (std::strncmp(part, kFileVersion, sizeof kFileVersion - 1) == 0)
+            src.push_back(kVersion), part += sizeof kFileVersion - 1;
+        src.push_back(part);
+    }
     glShaderSource(s, GLsizei(src.size()), src.data(), nullptr);
     glCompileShader(s);
     GLint ok = 0;
@@ -57,8 +72,6 @@ GLuint link(GLuint vs, GLuint fs, const char* name, std::string* error) {
     }
     return p;
 }
-
-const char* const kVersion = "#version 330 core\n";
 
 // A world-space program: the vertex shader gets the camera (shaders/camera.glsl) prepended.
 GLuint worldProgram(const char* vert, const char* frag, const char* name, std::string* error) {
@@ -327,10 +340,14 @@ void Renderer::drawWorld(const WorldView& v, Vec2 windowSize, float pixelRatio) 
 
     useWorld(marker_, v, windowSize);
     glUniform1f(marker_.pixelRatio, pixelRatio);
+#ifndef __EMSCRIPTEN__  // GL ES (WebGL) always takes gl_PointSize from the shader
     glEnable(GL_PROGRAM_POINT_SIZE);
+#endif
     if (v.classes) markers(Classes);
     markers(OverlayMarkers);
+#ifndef __EMSCRIPTEN__
     glDisable(GL_PROGRAM_POINT_SIZE);
+#endif
 }
 
 void Renderer::render(Vec2 windowSize, int fbW, int fbH, const Rect& clip, Rgba bg,
@@ -390,7 +407,13 @@ bool Renderer::readPixels(int width, int height, std::vector<uint8_t>& rgba) con
     return readFramebuffer(GL_BACK, width, height, rgba);
 }
 
-bool imguiGlInit() { return ImGui_ImplOpenGL3_Init("#version 330 core"); }
+bool imguiGlInit() {
+#ifdef __EMSCRIPTEN__
+    return ImGui_ImplOpenGL3_Init("#version 300 es");
+#else
+    return ImGui_ImplOpenGL3_Init("#version 330 core");
+#endif
+}
 void imguiGlNewFrame() { ImGui_ImplOpenGL3_NewFrame(); }
 void imguiGlRender() { ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData()); }
 void imguiGlShutdown() { ImGui_ImplOpenGL3_Shutdown(); }

@@ -264,6 +264,17 @@ OutputTarget outputTarget(const std::string& path) {
     }
 }
 
+// rename() that fails on an existing name: false with errno set.
+static bool renameNoReplace(const std::string& from, const std::string& to) {
+#ifdef RENAME_NOREPLACE
+    return ::renameat2(AT_FDCWD, from.c_str(), AT_FDCWD, to.c_str(), RENAME_NOREPLACE) == 0;
+#else  // Emscripten's libc has no renameat2: as on a file system without RENAME_NOREPLACE
+    (void)from, (void)to;
+    errno = ENOSYS;
+    return false;
+#endif
+}
+
 std::string temporaryPattern(const std::string& file) {
     size_t slash = file.rfind('/');
     return slash == std::string::npos
@@ -285,6 +296,12 @@ int adoptPermissions(int fd, const std::string& path, const OutputTarget& target
     } else {
         mode_t mask = ::umask(0);
         ::umask(mask);
+#ifdef __EMSCRIPTEN__
+        // Emscripten starts every program with umask 0777 (nobody there sets one): outputs
+        // would be mode 000, unreadable by the page or, under Node, by the user. A shell's
+        // usual mask instead.
+        mask = 022;
+#endif
         mode = 0666 & ~mask;
     }
     int r = fd >= 0 ? ::fchmod(fd, mode) : ::chmod(path.c_str(), mode);
@@ -378,8 +395,7 @@ Status Output::commit(std::string* message) {
     if (!o.buf.error() && !o.temp.empty() && !o.noReplace &&
         ::rename(o.temp.c_str(), o.file.c_str()) != 0)
         o.buf.fail(errno);
-    if (!o.buf.error() && !o.temp.empty() && o.noReplace &&
-        ::renameat2(AT_FDCWD, o.temp.c_str(), AT_FDCWD, o.file.c_str(), RENAME_NOREPLACE) != 0) {
+    if (!o.buf.error() && !o.temp.empty() && o.noReplace && !renameNoReplace(o.temp, o.file)) {
         // A file system without RENAME_NOREPLACE: a hard link fails on an existing name too.
         const bool unsupported = errno == EINVAL || errno == ENOSYS;
         if (!unsupported || ::link(o.temp.c_str(), o.file.c_str()) != 0) o.buf.fail(errno);

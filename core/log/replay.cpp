@@ -320,7 +320,9 @@ bool operator==(const ReplayState& a, const ReplayState& b) {
            a.jumps == b.jumps && a.bridges == b.bridges && a.forbidden == b.forbidden;
 }
 // A field added to Gorge or ReplayState must be compared above: the sizes say when one was.
-static_assert(sizeof(Gorge) == 40 && sizeof(ReplayState) == 136,
+// They depend on the pointer width (a vector is three pointers): 64-bit, and 32-bit (wasm32).
+static_assert(sizeof(void*) == 8 ? sizeof(Gorge) == 40 && sizeof(ReplayState) == 136
+                                 : sizeof(Gorge) == 24 && sizeof(ReplayState) == 84,
               "Gorge or ReplayState changed: compare the new field in operator==");
 
 }  // namespace flood

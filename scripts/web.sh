@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# The web page: flood-viewer (and the flood CLI, for the tests) built for WebAssembly with
+# Debian's emscripten into build-web/ (docs/WEB.md). The page is the static folder
+# build-web/site/: index.html, index.js, index.wasm, index.data (polygons/ preloaded).
+#   scripts/web.sh            install what is missing, build the page and the CLI
+#   scripts/web.sh --serve    ... then serve build-web/site on http://127.0.0.1:PORT/
+#                             (PORT: $FLOOD_WEB_PORT, default 8029)
+#   scripts/web.sh --test     ... then tests/web/run.sh: the page in headless Chromium, and
+#                             the CLI under Node against the native build/flood
+set -euo pipefail
+cd "$(dirname "$0")/.."
+mode=${1:-build}
+case "$mode" in build | --serve | --test) ;; *)
+  echo "usage: scripts/web.sh [--serve | --test]" >&2
+  exit 2
+  ;;
+esac
+out=build-web
+scripts/web-deps.sh "$out/deps/src"
+# Header-only packages the native build uses too.
+FLOOD_INSTALL_LABEL=web-deps scripts/install-deps.sh nlohmann-json3-dev libcli11-dev libstb-dev
+
+# Emscripten's JavaScript tools need Debian's node modules (acorn) wherever node comes from.
+export NODE_PATH=/usr/share/nodejs
+# Configured every time (seconds; a failed configure is not kept), built incrementally.
+{
+  # Release at -O2 (not CMake's -O3: smaller, and the link is quicker). The cross-compiling
+  # emulator emcmake sets (node --experimental-wasm-threads) is refused by Node 20: none.
+  emcmake cmake -S . -B "$out" -DCMAKE_BUILD_TYPE=Release -DFLOOD_WERROR=ON \
+    -DCMAKE_CXX_FLAGS_RELEASE="-O2 -DNDEBUG" -DCMAKE_C_FLAGS_RELEASE="-O2 -DNDEBUG" \
+    -DCMAKE_CROSSCOMPILING_EMULATOR= >"$out/configure.log" 2>&1 ||
+    { cat "$out/configure.log"; exit 1; }
+}
+cmake --build "$out" -j2 --target flood-viewer flood
+echo "web: the page is $out/site/ ($(du -sh "$out/site" | cut -f1)); the CLI is node $out/flood.js"
+
+case "$mode" in
+--serve)
+  port=${FLOOD_WEB_PORT:-8029}
+  echo "web: serving http://127.0.0.1:$port/index.html (Ctrl+C stops)"
+  exec python3 -m http.server --bind 127.0.0.1 --directory "$out/site" "$port"
+  ;;
+--test) exec tests/web/run.sh "$out" ;;
+esac

@@ -1,0 +1,214 @@
+// The page in headless Chromium, driven over the DevTools protocol with no npm package
+// (Node 20: --experimental-websocket). Run by tests/web/run.sh, which serves the site and
+// makes the native screenshot to compare with:
+//   node --experimental-websocket page_test.mjs URL NATIVE.png CANVAS_X,Y,W,H DROP_FILE PICK_FILE OUT_DIR
+// Checks: the page loads with no console error; the URL's polygon and step are shown; the
+// canvas matches the native viewer's at that step; the arrow keys step (counter and picture);
+// a file dropped on the canvas opens; Ctrl+O opens the browser's file picker and a file chosen
+// there opens. DROP_FILE must have 5 vertices, PICK_FILE 3. Prints the time to the first frame.
+import { spawn } from "node:child_process";
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+import { tmpdir } from "node:os";
+import { join } from "node:path";
+import { inflateSync } from "node:zlib";
+
+const [url, nativePng, canvasArg, dropFile, pickFile, outDir] = process.argv.slice(2);
+const canvas = canvasArg.split(",").map(Number);  // x, y, w, h in pixels (scale 1)
+const W = 1280, H = 800;
+let failures = 0;
+const check = (ok, what) => {
+  console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
+  if (!ok) failures++;
+};
+
+// ---- PNG: 8-bit RGB or RGBA, as Chromium and stb write them ----------------------------
+function decodePng(buf) {
+  let p = 8, width = 0, height = 0, channels = 0;
+  const idat = [];
+  while (p < buf.length) {
+    const len = buf.readUInt32BE(p), type = buf.toString("latin1", p + 4, p + 8);
+    const data = buf.subarray(p + 8, p + 8 + len);
+    if (type === "IHDR") {
+      width = data.readUInt32BE(0), height = data.readUInt32BE(4);
+      if (data[8] !== 8 || data[12] !== 0) throw new Error("PNG: not 8-bit non-interlaced");
+      channels = { 2: 3, 6: 4 }[data[9]];
+      if (!channels) throw new Error("PNG: colour type " + data[9]);
+    } else if (type === "IDAT") idat.push(data);
+    p += 12 + len;
+  }
+  const raw = inflateSync(Buffer.concat(idat)), row = width * channels;
+  const out = Buffer.alloc(width * height * 4);
+  let prev = Buffer.alloc(row);
+  for (let y = 0; y < height; y++) {
+    const f = raw[y * (row + 1)], line = Buffer.from(raw.subarray(y * (row + 1) + 1, (y + 1) * (row + 1)));
+    for (let i = 0; i < row; i++) {
+      const a = i >= channels ? line[i - channels] : 0, b = prev[i], c = i >= channels ? prev[i - channels] : 0;
+      const pa = Math.abs(b - c), pb = Math.abs(a - c), pc = Math.abs(a + b - 2 * c);
+      const pred = [0, a, b, (a + b) >> 1, pa <= pb && pa <= pc ? a : pb <= pc ? b : c][f];
+      line[i] = (line[i] + pred) & 255;
+    }
+    for (let x = 0; x < width; x++)
+      for (let k = 0; k < 4; k++)
+        out[(y * width + x) * 4 + k] = k < channels ? line[x * channels + k] : 255;
+    prev = line;
+  }
+  return { width, height, rgba: out };
+}
+
+// Pixels of the canvas rectangle that differ by more than `tolerance` in some channel.
+function canvasDiff(a, b, tolerance = 24) {
+  const [cx, cy, cw, ch] = canvas;
+  let differ = 0;
+  for (let y = cy; y < cy + ch; y++)
+    for (let x = cx; x < cx + cw; x++) {
+      const i = (y * a.width + x) * 4;
+      for (let k = 0; k < 3; k++)
+        if (Math.abs(a.rgba[i + k] - b.rgba[(y * b.width + x) * 4 + k]) > tolerance) { differ++; break; }
+    }
+  return differ / (cw * ch);
+}
+function colours(img) {  // distinct colours in the canvas rectangle
+  const [cx, cy, cw, ch] = canvas, seen = new Set();
+  for (let y = cy; y < cy + ch; y++)
+    for (let x = cx; x < cx + cw; x++) seen.add(img.rgba.readUInt32BE((y * img.width + x) * 4));
+  return seen.size;
+}
+
+// ---- Chromium and the DevTools protocol ----------------------------------------------
+const profile = mkdtempSync(join(tmpdir(), "flood-web-chromium-"));
+const chromium = spawn(process.env.CHROMIUM || "chromium", [
+  "--headless", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+  "--remote-debugging-port=0", `--user-data-dir=${profile}`, `--window-size=${W},${H}`,
+  "--force-device-scale-factor=1", "--no-first-run", "--disable-gpu-sandbox", "about:blank",
+], { stdio: ["ignore", "ignore", "pipe"] });
+const cleanup = () => { chromium.kill(); try { rmSync(profile, { recursive: true, force: true }); } catch {} };
+process.on("exit", cleanup);
+setTimeout(() => { console.log("FAIL the page test took over 240 s"); process.exit(1); }, 240000).unref();
+
+const browserWs = await new Promise((resolve, reject) => {
+  let text = "";
+  chromium.stderr.on("data", (d) => {
+    text += d;
+    const m = text.match(/DevTools listening on (ws:\/\/\S+)/);
+    if (m) resolve(m[1]);
+  });
+  chromium.on("exit", (code) => reject(new Error("chromium exited " + code + ":\n" + text)));
+});
+const port = new URL(browserWs).port;
+const pages = await (await fetch(`http://127.0.0.1:${port}/json/list`)).json();
+const ws = new WebSocket(pages.find((t) => t.type === "page").webSocketDebuggerUrl);
+await new Promise((resolve) => ws.addEventListener("open", resolve));
+let nextId = 1;
+const pending = new Map(), errors = [];
+let chooserOpened = false;
+ws.addEventListener("message", (e) => {
+  const m = JSON.parse(e.data);
+  if (m.id && pending.has(m.id)) {
+    const { resolve, reject } = pending.get(m.id);
+    pending.delete(m.id);
+    m.error ? reject(new Error(JSON.stringify(m.error))) : resolve(m.result);
+  } else if (m.method === "Page.fileChooserOpened") {
+    chooserOpened = true;
+  } else if (m.method === "Runtime.consoleAPICalled" && m.params.type === "error") {
+    errors.push("console.error: " + m.params.args.map((a) => a.value ?? a.description).join(" "));
+  } else if (m.method === "Runtime.exceptionThrown") {
+    errors.push("exception: " + (m.params.exceptionDetails.exception?.description ?? m.params.exceptionDetails.text));
+  } else if (m.method === "Log.entryAdded" && m.params.entry.level === "error") {
+    errors.push("log: " + m.params.entry.text + " " + (m.params.entry.url ?? ""));
+  }
+});
+const send = (method, params = {}) => new Promise((resolve, reject) => {
+  const id = nextId++;
+  pending.set(id, { resolve, reject });
+  ws.send(JSON.stringify({ id, method, params }));
+});
+const evaluate = async (expr) => (await send("Runtime.evaluate", { expression: expr, returnByValue: true })).result.value;
+const sleep = (ms) => new Promise((r) => setTimeout(r, ms));
+async function until(what, expr, test, ms = 90000) {
+  const start = Date.now();
+  for (;;) {
+    let v;
+    try { v = await evaluate(expr); } catch { v = undefined; }
+    if (test(v)) return v;
+    if (Date.now() - start > ms) { check(false, `${what} (last: ${JSON.stringify(v)})`); return v; }
+    await sleep(100);
+  }
+}
+const frames = () => until("a frame drawn", "typeof Module === 'object' && Module._flood_web_frames ? Module._flood_web_frames() : -1", (v) => v >= 0);
+async function settle(n = 4) {  // n more frames drawn
+  const f = await frames();
+  await until(`${n} more frames`, "Module._flood_web_frames()", (v) => v >= f + n);
+}
+async function screenshot(name) {
+  const { data } = await send("Page.captureScreenshot", { format: "png" });
+  const buf = Buffer.from(data, "base64");
+  writeFileSync(join(outDir, name), buf);
+  return decodePng(buf);
+}
+async function key(name, code, modifiers = 0) {
+  for (const type of ["keyDown", "keyUp"])
+    await send("Input.dispatchKeyEvent", { type, modifiers, key: name, code: name.length === 1 ? "Key" + name.toUpperCase() : name,
+                                          windowsVirtualKeyCode: code, nativeVirtualKeyCode: code });
+  await settle();
+}
+const step = () => evaluate("Module._flood_web_step()");
+
+await send("Runtime.enable");
+await send("Log.enable");
+await send("Page.enable");
+await send("Emulation.setDeviceMetricsOverride", { width: W, height: H, deviceScaleFactor: 1, mobile: false });
+
+// ---- the URL's polygon at the URL's step -------------------------------------------------
+const t0 = Date.now();
+await send("Page.navigate", { url: url + "?polygon=paper-figure-7.json&step=23" });
+await until("the first frame", "typeof Module === 'object' && Module._flood_web_frames ? Module._flood_web_frames() : 0", (v) => v >= 1);
+console.log(`time to first frame: ${((Date.now() - t0) / 1000).toFixed(2)} s`);
+await settle(6);
+check(await step() === 23, `the URL's step=23 is shown (step ${await step()})`);
+check((await evaluate("document.title")).includes("paper-figure-7.json"), "the title names paper-figure-7.json");
+const native = decodePng(readFileSync(nativePng));
+const at23 = await screenshot("page-step-23.png");
+check(at23.width === W && at23.height === H, `the page is ${W}x${H} (${at23.width}x${at23.height})`);
+const c = colours(native);
+check(c > 3, `the native canvas is a picture (${c} colours)`);
+const d23 = canvasDiff(at23, native);
+check(d23 < 0.02, `the canvas matches the native viewer's at step 23 (${(d23 * 100).toFixed(2)} % of pixels differ)`);
+
+// ---- arrow keys ----------------------------------------------------------------------------
+await key("ArrowRight", 39);
+check(await step() === 24, `ArrowRight: step 24 (step ${await step()})`);
+const at24 = await screenshot("page-step-24.png");
+const moved = canvasDiff(at24, at23, 0);
+check(moved > 0.0005, `ArrowRight changes the picture (${(moved * 100).toFixed(2)} % of pixels)`);
+await key("ArrowLeft", 37);
+await key("ArrowLeft", 37);
+check(await step() === 22, `ArrowLeft twice: step 22 (step ${await step()})`);
+
+// ---- a dropped file --------------------------------------------------------------------------
+const name = dropFile.split("/").pop();
+const [x, y] = [canvas[0] + canvas[2] / 2, canvas[1] + canvas[3] / 2];
+const data = { items: [], files: [dropFile], dragOperationsMask: 1 };
+for (const type of ["dragEnter", "dragOver", "drop"])
+  await send("Input.dispatchDragEvent", { type, x, y, data });
+await until(`the dropped ${name} opens`, "document.title", (t) => typeof t === "string" && t.includes(name), 30000);
+await settle();
+check(await evaluate("Module._flood_web_vertices()") === 5, `the dropped polygon has its 5 vertices (${await evaluate("Module._flood_web_vertices()")})`);
+await screenshot("page-dropped.png");
+
+// ---- the file picker -----------------------------------------------------------------------
+await send("Page.setInterceptFileChooserDialog", { enabled: true });
+await key("o", 79, 2);  // Ctrl+O
+await until("Ctrl+O opens the file picker", "0", () => chooserOpened, 10000);
+const picked = pickFile.split("/").pop();
+const { root } = await send("DOM.getDocument");
+const { nodeId } = await send("DOM.querySelector", { nodeId: root.nodeId, selector: "#picker" });
+await send("DOM.setFileInputFiles", { nodeId, files: [pickFile] });
+await until(`the picked ${picked} opens`, "document.title", (t) => typeof t === "string" && t.includes(picked), 30000);
+await settle();
+check(await evaluate("Module._flood_web_vertices()") === 3, `the picked polygon has its 3 vertices (${await evaluate("Module._flood_web_vertices()")})`);
+await screenshot("page-picked.png");
+
+check(errors.length === 0, "no console error" + (errors.length ? ":\n  " + errors.join("\n  ") : ""));
+ws.close();
+console.log(failures ? `page test: ${failures} failed` : "page test: all passed");
+process.exit(failures ? 1 : 0);

@@ -42,6 +42,7 @@
 #include "flood/teach/transcript.h"
 #include "flood/tools/generate.h"
 #include "flood/tools/shrink.h"
+#include "pipeline.h"
 #include "run.h"
 #include "triangulate_gis.h"
 #ifdef FLOOD_GDAL
@@ -51,89 +52,7 @@
 namespace {
 
 using namespace flood;
-
-int code(Status s) { return int(s); }
-
-// --max-input-bytes of the subcommand that reads.
-uint64_t maxInputBytes = kDefaultMaxInputBytes;
-// --layer, --feature, --where of the subcommand that reads (GDAL datasets).
-cli::Selection selection;
-
-// GIS datasets go to GDAL (core/io/gdal/), everything else to the core's own readers: the
-// dispatch is here and in cli/check.cpp, so the core library never depends on GDAL.
-ReadResult readInput(const std::string& path) {
-#ifdef FLOOD_GDAL
-    gdal::Selection s{selection.layer, selection.feature, selection.where};
-    if (gdal::handles(path, s)) return gdal::readPolygon(path, s);
-#endif
-    return readPolygonFile(path, maxInputBytes);
-}
-
-// Reads and validates; on failure prints the diagnostic and returns its status.
-// With `check` false (--no-validate) validation is skipped, so the flood machine itself
-// diagnoses invalid input (docs/ERRORS.md, forbidden transitions); the T-junctions the machine
-// needs are then found by findTouches(), which is safe on invalid input.
-// With `floodInvalid` an invalid polygon is still handed back, prepared as --no-validate
-// prepares it, with the status Invalid (`flood trace` floods it anyway).
-Status prepare(const std::string& path, Polygon& polygon, bool check = true,
-               bool floodInvalid = false) {
-    ReadResult rr = readInput(path);
-    for (const std::string& w : rr.warnings) std::cerr << "warning: " << w << "\n";
-    if (rr.warningsOmitted)
-        std::cerr << "warning: " << (path == "-" ? "<stdin>" : path) << ": \u2026 and "
-                  << cli::grouped(rr.warningsOmitted) << " more warnings like these\n";
-    if (!rr.diagnostic.ok()) {
-        std::cerr << "error: " << rr.diagnostic.message << "\n";
-        return rr.diagnostic.status;
-    }
-    Diagnostic d = check ? validate(rr.polygon, path == "-" ? "<stdin>" : path) : Diagnostic{};
-    if (!d.ok()) {
-        std::cerr << "error: invalid polygon: " << d.message << "\n";
-        if (!floodInvalid) return d.status;
-        std::cerr << "note: flooding it anyway (as --no-validate), up to where the machine "
-                     "stops\n";
-        check = false;
-    }
-    if (!check && !findTouches(rr.polygon).complete)
-        std::cerr << "warning: " << path << ": the search for T-junctions gave up (work cap): "
-                  << "the polygon is flooded without them\n";
-    polygon = std::move(rr.polygon);
-    return d.status;
-}
-
-// Checks a finished run. Forbidden -> 5 (its explanation), checker rejects -> 6. The exact
-// check runs with --no-validate too (`validated` false): there it is what catches invalid
-// input the machine cannot see, such as overlapping parts (flooded apart). --no-exact-check
-// (`exactCheck` false) skips it: the output is then unproven.
-// `triangleCheck`, when given, waits for checkTriangles() run on another thread.
-Status judge(const Polygon& polygon, const std::vector<Triangle>& triangles, const Diagnostic& run,
-             bool validated = true, bool exactCheck = true,
-             const std::function<TriangleCheck()>& triangleCheck = {}) {
-    if (!run.ok()) {
-        std::cerr << "error: flooding stopped in a forbidden state: " << run.message << "\n";
-        return run.status;
-    }
-    if (!exactCheck) return Status::Ok;
-    CheckResult c = checkTriangulation(polygon, triangles, triangleCheck);
-    if (!c.ok) {
-        if (validated)
-            std::cerr << "internal error: the exact checker rejects our triangulation: " << c.reason
-                      << "\n";
-        else
-            std::cerr << "error: the exact checker rejects our triangulation: " << c.reason
-                      << " (validation was skipped; the check of the output caught it: the input "
-                         "is probably invalid, run without --no-validate to see why)\n";
-        return Status::Internal;
-    }
-    return Status::Ok;
-}
-
-Options makeOptions(const std::string& up) {
-    Options o;
-    std::string why;
-    parseUp(up, o.up, why);  // addUp's check has accepted it
-    return o;
-}
+using namespace flood::cli;
 
 void addUp(CLI::App* cmd, std::string& up) {
     cmd->add_option("--up", up,
@@ -147,49 +66,6 @@ void addUp(CLI::App* cmd, std::string& up) {
                 return parseUp(v, d, why) ? std::string() : why;
             },
             "DIRECTION"));
-}
-
-// The exact check and the writing at once, on two threads (the machine and CI have two
-// cores): the other thread checks each triangle alone (checkTriangles, flood/check/checker.h), then
-// writes, while this one checks the rest. The output must be discardable: a failed check
-// leaves it uncommitted, so nothing of it is seen and every message is the serial path's.
-template <typename Write>
-Status checkWhileWriting(const Polygon& polygon, const std::vector<Triangle>& triangles,
-                         bool validated, Write&& write) {
-    std::promise<TriangleCheck> each;
-    std::future<TriangleCheck> eachReady = each.get_future();
-    std::exception_ptr failed;  // of the writing
-    std::thread other;
-    try {
-        other = std::thread([&] {
-            try {
-                each.set_value(checkTriangles(polygon, triangles));
-            } catch (...) {
-                each.set_exception(std::current_exception());
-                return;
-            }
-            try {
-                write();
-            } catch (...) {
-                failed = std::current_exception();
-            }
-        });
-    } catch (const std::system_error&) {  // no thread to be had: one after the other
-        Status s = judge(polygon, triangles, Diagnostic{}, validated);
-        if (s == Status::Ok) write();
-        return s;
-    }
-    Status s;
-    try {
-        s = judge(polygon, triangles, Diagnostic{}, validated, true,
-                  [&] { return eachReady.get(); });
-    } catch (...) {
-        other.join();
-        throw;
-    }
-    other.join();
-    if (failed) std::rethrow_exception(failed);
-    return s;
 }
 
 int cmdTriangulate(const std::string& in, const std::string& out, std::string format,

@@ -7,6 +7,32 @@ find_package(GTest REQUIRED)
 # The top level enables testing after adding the viewer's directory; add_test needs it now.
 enable_testing()
 
+# A test that runs flood-viewer itself (a screenshot, read back pixel by pixel): Xvfb needed,
+# skipped (77) without a display. Mesa's unloaded driver looks like a leak to ASan; leak checks
+# stay on for the other tests.
+function(flood_screenshot_test name)
+  add_executable(${name} ${GUI_TESTS}/${name}.cpp)
+  target_link_libraries(${name} PRIVATE floodviewmodel PkgConfig::IMGUI)
+  target_compile_definitions(${name} PRIVATE FLOOD_VIEWER="$<TARGET_FILE:flood-viewer>"
+    FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}" FLOOD_WORK_DIR="${CMAKE_CURRENT_BINARY_DIR}")
+  add_dependencies(${name} flood-viewer)
+  add_test(NAME viewer/${name} COMMAND ${name})
+  set_tests_properties(viewer/${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
+    ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+endfunction()
+
+# A test that drives panels through a window-free ImGui context (no display needed): its
+# source, then the viewer's sources it compiles (panels, with the generated shaders header).
+function(flood_windowless_test name)
+  add_executable(${name} ${GUI_TESTS}/${name}.cpp ${ARGN} panel_common.cpp panel_edit.cpp
+                 renderer.cpp platform_glfw.cpp ${SHADER_HEADER})
+  target_include_directories(${name} PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
+  target_compile_definitions(${name} PRIVATE FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
+  target_link_libraries(${name} PRIVATE floodviewmodel floodglad glfw PkgConfig::IMGUI
+                        GTest::gtest_main)
+  add_test(NAME viewer/${name} COMMAND ${name})
+endfunction()
+
 # ---- a real screenshot, checked pixel by pixel --------------------------------------------
 add_executable(screenshot_test ${GUI_TESTS}/screenshot_test.cpp)
 target_link_libraries(screenshot_test PRIVATE floodviewmodel PkgConfig::IMGUI)
@@ -36,70 +62,22 @@ add_test(NAME viewer/export_test COMMAND export_test)
 set_tests_properties(viewer/export_test PROPERTIES TIMEOUT 300 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
 
 # ---- the Fig. 9 tree in the Decision panel, its path lit ---------------------------------
-add_executable(tree_screenshot_test ${GUI_TESTS}/tree_screenshot_test.cpp)
-target_link_libraries(tree_screenshot_test PRIVATE floodviewmodel PkgConfig::IMGUI)
-target_compile_definitions(tree_screenshot_test PRIVATE
-  FLOOD_VIEWER="$<TARGET_FILE:flood-viewer>"
-  FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
-  FLOOD_WORK_DIR="${CMAKE_CURRENT_BINARY_DIR}")
-add_dependencies(tree_screenshot_test flood-viewer)
-add_test(NAME viewer/tree_screenshot_test COMMAND tree_screenshot_test)
-set_tests_properties(viewer/tree_screenshot_test PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
-  ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+flood_screenshot_test(tree_screenshot_test)
 
 # ---- edit mode's mouse and keys, through a window-free ImGui context (no display needed) ----
-add_executable(edit_input_test ${GUI_TESTS}/edit_input_test.cpp panel_edit.cpp panel_common.cpp
-               renderer.cpp platform_glfw.cpp ${SHADER_HEADER})
-target_include_directories(edit_input_test PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
-target_link_libraries(edit_input_test PRIVATE floodviewmodel floodglad glfw PkgConfig::IMGUI GTest::gtest_main)
-add_test(NAME viewer/edit_input_test COMMAND edit_input_test)
+flood_windowless_test(edit_input_test)
 
 # ---- the panels' per-trace state, kept per Ui (window-free ImGui, no display needed) ----------
-add_executable(ui_state_test ${GUI_TESTS}/ui_state_test.cpp panel_transcript.cpp panel_timeline.cpp
-               panel_common.cpp panel_edit.cpp renderer.cpp platform_glfw.cpp ${SHADER_HEADER})
-target_include_directories(ui_state_test PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
-target_link_libraries(ui_state_test PRIVATE floodviewmodel floodglad glfw PkgConfig::IMGUI
-                      GTest::gtest_main)
-add_test(NAME viewer/ui_state_test COMMAND ui_state_test)
+flood_windowless_test(ui_state_test panel_transcript.cpp panel_timeline.cpp)
 
 # ---- the picture shows what the sentence says: Fig. 7 step 23 in presenter view -------------
-add_executable(narration_screenshot_test ${GUI_TESTS}/narration_screenshot_test.cpp)
-target_link_libraries(narration_screenshot_test PRIVATE floodviewmodel PkgConfig::IMGUI)
-target_compile_definitions(narration_screenshot_test PRIVATE
-  FLOOD_VIEWER="$<TARGET_FILE:flood-viewer>"
-  FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
-  FLOOD_WORK_DIR="${CMAKE_CURRENT_BINARY_DIR}")
-add_dependencies(narration_screenshot_test flood-viewer)
-add_test(NAME viewer/narration_screenshot_test COMMAND narration_screenshot_test)
-set_tests_properties(viewer/narration_screenshot_test PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
-  ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+flood_screenshot_test(narration_screenshot_test)
 
 # ---- the State machine panel: no state's name cut (window-free ImGui, no display needed) -----
-add_executable(state_machine_test ${GUI_TESTS}/state_machine_test.cpp panel_state_machine.cpp
-               panel_common.cpp panel_edit.cpp renderer.cpp platform_glfw.cpp ${SHADER_HEADER})
-target_include_directories(state_machine_test PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
-target_link_libraries(state_machine_test PRIVATE floodviewmodel floodglad glfw PkgConfig::IMGUI
-                      GTest::gtest_main)
-add_test(NAME viewer/state_machine_test COMMAND state_machine_test)
+flood_windowless_test(state_machine_test panel_state_machine.cpp)
 
 # ---- the quiz: the choices before an answer, the verdict and the lit path after -------------
-add_executable(quiz_screenshot_test ${GUI_TESTS}/quiz_screenshot_test.cpp)
-target_link_libraries(quiz_screenshot_test PRIVATE floodviewmodel PkgConfig::IMGUI)
-target_compile_definitions(quiz_screenshot_test PRIVATE
-  FLOOD_VIEWER="$<TARGET_FILE:flood-viewer>"
-  FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
-  FLOOD_WORK_DIR="${CMAKE_CURRENT_BINARY_DIR}")
-add_dependencies(quiz_screenshot_test flood-viewer)
-add_test(NAME viewer/quiz_screenshot_test COMMAND quiz_screenshot_test)
-set_tests_properties(viewer/quiz_screenshot_test PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
-  ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+flood_screenshot_test(quiz_screenshot_test)
 
 # ---- the quiz's keys: Q, 1-5 and R B S J F (window-free ImGui, no display needed) -----------
-add_executable(quiz_keys_test ${GUI_TESTS}/quiz_keys_test.cpp panel_quiz.cpp panel_help.cpp
-               panel_decision.cpp panel_common.cpp panel_edit.cpp renderer.cpp platform_glfw.cpp
-               ${SHADER_HEADER})
-target_include_directories(quiz_keys_test PRIVATE ${CMAKE_CURRENT_BINARY_DIR}/generated)
-target_compile_definitions(quiz_keys_test PRIVATE FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
-target_link_libraries(quiz_keys_test PRIVATE floodviewmodel floodglad glfw PkgConfig::IMGUI
-                      GTest::gtest_main)
-add_test(NAME viewer/quiz_keys_test COMMAND quiz_keys_test)
+flood_windowless_test(quiz_keys_test panel_quiz.cpp panel_help.cpp panel_decision.cpp)

@@ -1,6 +1,6 @@
 #include "offscreen.h"
 
-#include <glad/gl.h>
+#include "gl.h"
 
 #include "renderer.h"  // readFramebuffer
 

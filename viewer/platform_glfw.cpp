@@ -1,6 +1,6 @@
 #include "platform_glfw.h"
 
-#include <glad/gl.h>  // before GLFW, so GLFW does not pull in a GL header of its own
+#include "gl.h"  // before GLFW, so GLFW does not pull in a GL header of its own
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
@@ -138,7 +138,7 @@ bool createWindow(const WindowOptions& o, std::string* error) {
     }
     glfwMakeContextCurrent(g_window);
     glfwSwapInterval(o.hidden ? 0 : 1);
-    if (!gladLoadGL(reinterpret_cast<GLADloadfunc>(glfwGetProcAddress))) {
+    if (!loadGL(glfwGetProcAddress)) {
         if (error) *error = "cannot load OpenGL functions";
         return false;
     }

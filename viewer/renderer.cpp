@@ -1,7 +1,7 @@
 #include "renderer.h"
 
 #include <backends/imgui_impl_opengl3.h>
-#include <glad/gl.h>
+#include "gl.h"
 #include <imgui.h>
 #include <stb_image_write.h>  // implementation lives in Debian's libstb, not here
 

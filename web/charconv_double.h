@@ -1,6 +1,8 @@
 // The web build only (cmake/web.cmake passes it with -include): Emscripten 3.1.6's libc++ has
 // no std::to_chars / std::from_chars for double, which the core uses for every number it reads
-// and writes. These overloads give the same text as libstdc++'s (the shortest that reads back
+// and writes. geometry/number_text.h's writeDouble and readDouble call these instead when
+// FLOOD_DOUBLE_CHARCONV is defined (adding overloads to namespace std would be undefined
+// behaviour). They give the same text as libstdc++'s (the shortest that reads back
 // as the same double, %f or %e whichever is shorter, %f on a tie) and the same values (correctly
 // rounded), through double-conversion; printf and strtod are exact there too but 30-50x slower.
 #pragma once
@@ -13,9 +15,16 @@
 #include <double-conversion/double-to-string.h>
 #include <double-conversion/string-to-double.h>
 
-namespace std {
+// Tells geometry/number_text.h to use these.
+#define FLOOD_DOUBLE_CHARCONV 1
 
-inline to_chars_result to_chars(char* first, char* last, double v) {
+namespace flood::web {
+
+using std::errc;
+using std::from_chars_result;
+using std::to_chars_result;
+
+inline to_chars_result toChars(char* first, char* last, double v) {
     using double_conversion::DoubleToStringConverter;
     char text[40];  // sign, digits, point or zeros, exponent
     char* p = text;
@@ -65,7 +74,7 @@ inline to_chars_result to_chars(char* first, char* last, double v) {
 // As libstdc++ does: the longest prefix that is a number (no '+', no leading space, no hex),
 // result_out_of_range (value untouched) for one beyond the double range or a nonzero one that
 // rounds to zero.
-inline from_chars_result from_chars(const char* first, const char* last, double& value) {
+inline from_chars_result fromChars(const char* first, const char* last, double& value) {
     using double_conversion::StringToDoubleConverter;
     static const StringToDoubleConverter converter(StringToDoubleConverter::ALLOW_TRAILING_JUNK,
                                                    0.0, std::nan(""), "inf", "nan");
@@ -86,5 +95,5 @@ inline from_chars_result from_chars(const char* first, const char* last, double&
     return {end, errc()};
 }
 
-}  // namespace std
+}  // namespace flood::web
 #endif

@@ -18,7 +18,20 @@ inline char* writeDouble(char* to, double v) {
     if (v != v) return copy("nan", 3);
     if (v == 1.0 / 0.0) return copy("inf", 3);
     if (v == -1.0 / 0.0) return copy("-inf", 4);
+#ifdef FLOOD_DOUBLE_CHARCONV  // the web build's libc++ has none for double (web/charconv_double.h)
+    return web::toChars(to, to + kDoubleChars, v).ptr;
+#else
     return std::to_chars(to, to + kDoubleChars, v).ptr;
+#endif
+}
+
+// Reads the longest number at [first, last), correctly rounded, as std::from_chars does.
+inline std::from_chars_result readDouble(const char* first, const char* last, double& v) {
+#ifdef FLOOD_DOUBLE_CHARCONV
+    return web::fromChars(first, last, v);
+#else
+    return std::from_chars(first, last, v);
+#endif
 }
 inline std::string formatDouble(double v) {
     char buf[kDoubleChars];

@@ -68,7 +68,7 @@ private:
         return i;
     }
 
-    // A coordinate, read by std::from_chars (correctly rounded, like the tree reader's strtod;
+    // A coordinate, read as std::from_chars reads it (correctly rounded, like the tree reader's strtod;
     // simdjson 3.0.1's own reading of literals past 19 digits is not: it read
     // 0.1000000000000000055511151231257827 as 4.1e-16). nlohmann reads an integer literal as
     // an integer, so "-0" is +0.0. A value beyond the double range, or a nonzero one below it
@@ -77,7 +77,7 @@ private:
         std::string_view token = v.raw_json_token();  // up to the next structural character
         size_t k = literalLength(token);
         if (k == 0 || token.find_first_not_of(" \t\r\n", k) != std::string_view::npos) return false;
-        auto [end, error] = std::from_chars(token.data(), token.data() + k, d);
+        auto [end, error] = readDouble(token.data(), token.data() + k, d);
         if (error != std::errc() || end != token.data() + k) return false;
         if (d == 0 && std::signbit(d) &&
             token.substr(0, k).find_first_of(".eE") == std::string_view::npos)

@@ -6,7 +6,6 @@
 #include <unistd.h>
 #include <algorithm>
 #include <cerrno>
-#include <charconv>
 #include <cmath>
 #include <csignal>
 #include <cstdlib>
@@ -19,6 +18,7 @@
 #include "flood/check/touches.h"
 #include "flood/check/verify.h"
 #include "flood/io/io.h"
+#include "geometry/number_text.h"
 
 namespace flood {
 
@@ -239,9 +239,11 @@ public:
         }
         result_.origin.clear();
         result_.polygon = toPolygon(best_, &result_.origin);
-        // The final word: the repro's own bytes, read back, fail the same way.
-        Failure back = classifyText(geometryJson(result_.polygon), o_, result_.inputValid);
-        result_.reproduces = back.sameClass(result_.failure);
+        // The final word: the repro's own bytes, read back, fail the same way. accept() has
+        // seen that of every candidate it kept; only the input itself is left to read back.
+        result_.reproduces =
+            keptCandidate_ || classifyText(geometryJson(result_.polygon), o_, result_.inputValid)
+                                  .sameClass(result_.failure);
         return result_;
     }
 
@@ -276,6 +278,7 @@ private:
         if (!f.sameClass(result_.failure)) return false;
         best_ = candidate;
         result_.failure = f;
+        keptCandidate_ = true;
         return true;
     }
 
@@ -366,6 +369,7 @@ private:
     ShrinkOptions o_;
     ShrinkResult result_;
     Parts best_;
+    bool keptCandidate_ = false;  // best_ is a candidate accept() read back and kept
 };
 
 void writeNumber(std::ostream& out, double x) {
@@ -373,9 +377,8 @@ void writeNumber(std::ostream& out, double x) {
         out << (std::isnan(x) ? "null" : x > 0 ? "1e999" : "-1e999");
         return;
     }
-    char buf[32];
-    auto r = std::to_chars(buf, buf + sizeof buf, x);
-    out.write(buf, r.ptr - buf);
+    char buf[kDoubleChars];
+    out.write(buf, writeDouble(buf, x) - buf);
 }
 
 void writeRings(std::ostream& out, const Polygon& p, const Part& part) {

@@ -28,7 +28,7 @@
 static pthread_mutex_t lock = PTHREAD_MUTEX_INITIALIZER;
 static int configured, limited, shortMode;
 static unsigned long long budget, written;
-static FILE* failed[64]; /* streams that lost data: their fflush and fclose fail */
+static FILE* failed[64];           /* streams that lost data: their fflush and fclose fail */
 static unsigned long long dropped; /* stream bytes taken as if buffered, never written */
 #define BUFFERED 4096ull
 static int failedCount;
@@ -68,8 +68,9 @@ static long long allowed(size_t n) {
     pthread_mutex_lock(&lock);
     long long k = (long long)n;
     if (limited && written + n > budget) {
-        if (shortMode) k = written >= budget ? (n > 1 ? (long long)n / 2 : (long long)n)
-                                            : (long long)(budget - written);
+        if (shortMode)
+            k = written >= budget ? (n > 1 ? (long long)n / 2 : (long long)n)
+                                  : (long long)(budget - written);
         else k = written >= budget ? -1 : (long long)(budget - written);
     }
     pthread_mutex_unlock(&lock);
@@ -104,31 +105,34 @@ static int lostData(FILE* f, int forget) {
     return found;
 }
 
-ssize_t write(int fd, const void* buf, size_t n) {
-    if (!regular(fd)) return REAL(write)(fd, buf, n);
+/* The three doors to a file descriptor differ only in the offset they take. */
+enum Door { WRITE, PWRITE, PWRITE64 };
+
+static ssize_t realWrite(enum Door door, int fd, const void* buf, size_t n, off64_t at) {
+    switch (door) {
+        case WRITE: return REAL(write)(fd, buf, n);
+        case PWRITE: return REAL(pwrite)(fd, buf, n, (off_t)at);
+        default: return REAL(pwrite64)(fd, buf, n, at);
+    }
+}
+
+static ssize_t faultyWrite(enum Door door, int fd, const void* buf, size_t n, off64_t at) {
+    if (!regular(fd)) return realWrite(door, fd, buf, n, at);
     long long k = allowed(n);
     if (k < 0) return -1;
-    ssize_t r = REAL(write)(fd, buf, (size_t)k);
+    ssize_t r = realWrite(door, fd, buf, (size_t)k, at);
     count(r);
     return r;
 }
 
+ssize_t write(int fd, const void* buf, size_t n) { return faultyWrite(WRITE, fd, buf, n, 0); }
+
 ssize_t pwrite(int fd, const void* buf, size_t n, off_t at) {
-    if (!regular(fd)) return REAL(pwrite)(fd, buf, n, at);
-    long long k = allowed(n);
-    if (k < 0) return -1;
-    ssize_t r = REAL(pwrite)(fd, buf, (size_t)k, at);
-    count(r);
-    return r;
+    return faultyWrite(PWRITE, fd, buf, n, at);
 }
 
 ssize_t pwrite64(int fd, const void* buf, size_t n, off64_t at) {
-    if (!regular(fd)) return REAL(pwrite64)(fd, buf, n, at);
-    long long k = allowed(n);
-    if (k < 0) return -1;
-    ssize_t r = REAL(pwrite64)(fd, buf, (size_t)k, at);
-    count(r);
-    return r;
+    return faultyWrite(PWRITE64, fd, buf, n, at);
 }
 
 /* Streams: a short count is an error (C11 7.21.8.2), so `short` mode leaves them alone. */

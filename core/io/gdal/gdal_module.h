@@ -16,10 +16,12 @@ ReadResult readPolygon(const std::string& path, const Selection& s);
 std::string outputDriver(const std::string& format, const std::string& path);
 Diagnostic writeLayers(const std::string& path, const DatasetOutput& o,
                        const std::vector<GisLayer>& layers, std::vector<std::string>& warnings);
-// The layer `layer` (or the only one) of the dataset `file` read back as a user's tool reads it: "" when every
-// one of its `features` features reads without an error, else what is wrong ("reading it back
-// gives 12 of 16 features"). A writer's check: GDAL does not always report a failed write.
-std::string readBackProblem(const std::string& file, const std::string& layer, long long features);
+// The dataset `file` read back as a user's tool reads it, opened once: "" when each layer
+// (name, features written; the only layer of a one-layer format) gives every one of its
+// features without an error, else what is wrong ("reading it back gives 12 of 16 features").
+// A writer's check: GDAL does not always report a failed write.
+std::string readBackProblem(const std::string& file,
+                            const std::vector<std::pair<std::string, long long>>& layers);
 }  // namespace direct
 
 struct ModuleTable {

@@ -368,27 +368,27 @@ ReadResult readPolygon(const std::string& path, const Selection& s) {
     return rr;
 }
 
-std::string readBackProblem(const std::string& file, const std::string& layerName,
-                            long long features) {
+std::string readBackProblem(const std::string& file,
+                            const std::vector<std::pair<std::string, long long>>& layers) {
     registerOnce();
     CPLErrorReset();
     DatasetPtr ds(static_cast<GDALDataset*>(
         GDALOpenEx(file.c_str(), GDAL_OF_VECTOR | GDAL_OF_READONLY, nullptr, nullptr, nullptr)));
     if (!ds) return "it does not open: " + lastError("GDALOpenEx failed without a message");
-    // By name in a dataset of several (a GeoPackage keeps its other layers); a format of one
-    // layer names it after the file (Shapefile, CSV, GeoJSON) or a folder (KML).
-    OGRLayer* layer =
-        ds->GetLayerCount() == 1 ? ds->GetLayer(0) : ds->GetLayerByName(layerName.c_str());
-    if (!layer) return "it has no layer " + layerName;
-    Failures failures;
-    long long n = 0;
-    for (FeaturePtr f; (f.reset(layer->GetNextFeature()), f) && !failures.any();) ++n;
-    if (failures.any())
-        return "reading it back fails after " + std::to_string(n) + " of " +
-               std::to_string(features) + " features: " + failures.text();
-    if (n != features)
-        return "reading it back gives " + std::to_string(n) + " of " + std::to_string(features) +
-               " features";
+    for (const auto& [name, features] : layers) {
+        // By name in a dataset of several (a GeoPackage keeps its other layers); a format of
+        // one layer names it after the file (Shapefile, CSV, GeoJSON) or a folder (KML).
+        OGRLayer* layer =
+            ds->GetLayerCount() == 1 ? ds->GetLayer(0) : ds->GetLayerByName(name.c_str());
+        if (!layer) return "it has no layer " + name;
+        Failures failures;
+        long long n = 0;
+        for (FeaturePtr f; (f.reset(layer->GetNextFeature()), f) && !failures.any();) ++n;
+        const std::string of = std::to_string(n) + " of " + std::to_string(features);
+        if (failures.any())
+            return "reading it back fails after " + of + " features: " + failures.text();
+        if (n != features) return "reading it back gives " + of + " features";
+    }
     return "";
 }
 

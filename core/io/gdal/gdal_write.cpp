@@ -333,7 +333,7 @@ Diagnostic writeLayers(const std::string& path, const DatasetOutput& o,
         options.SetNameValue("GEOMETRY", "AS_WKT");
         options.SetNameValue("CREATE_CSVT", "YES");  // the fields' types, for readers
     }
-    std::vector<long long> written;
+    std::vector<std::pair<std::string, long long>> written;  // each layer's name and features
     // One transaction per layer: GeoPackage otherwise commits every feature on its own.
     for (const GisLayer& l : layers) {
         // A field "fid" (flood check's findings) is no GeoPackage FID column: that is named
@@ -447,7 +447,7 @@ Diagnostic writeLayers(const std::string& path, const DatasetOutput& o,
             else if (!done[i] && !write(i, nullptr))
                 return discard(l.name + ": feature " + std::to_string(i));
         if (transaction && ds->CommitTransaction() != OGRERR_NONE) return discard("commit");
-        written.push_back((long long)l.count);
+        written.emplace_back(l.name, (long long)l.count);
     }
     source.reset();
     CPLErrorReset();
@@ -474,13 +474,10 @@ Diagnostic writeLayers(const std::string& path, const DatasetOutput& o,
     made.push_back(base);
     // FlatGeobuf does not check the close of its files, where stdio writes its last buffer: a
     // full disk there went unnoticed (tests/cli/write_faults_test.cpp). Read back, it shows.
-    for (size_t k = 0; k < layers.size(); ++k)
-        if (std::string problem = readBackProblem(folder + "/" + base, layers[k].name, written[k]);
-            !problem.empty()) {
-            removeFolder();
-            return cannot("GDAL reported no error, but the dataset written is incomplete: " +
-                          problem);
-        }
+    if (std::string problem = readBackProblem(folder + "/" + base, written); !problem.empty()) {
+        removeFolder();
+        return cannot("GDAL reported no error, but the dataset written is incomplete: " + problem);
+    }
     // Without replacing: each name linked (which fails on a name taken), the folder's names
     // removed with it; a failure unlinks what was linked.
     std::vector<std::string> linked;

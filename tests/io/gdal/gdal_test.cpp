@@ -83,6 +83,24 @@ std::vector<std::array<std::pair<double, double>, 3>> geometric(const Polygon& p
 
 gdal::Selection named(const std::string& name) { return {"", -1, "name = '" + name + "'"}; }
 
+// A GeoPackage at `file` with one layer "shapes" holding a feature per WKT geometry.
+void writeShapes(const std::string& file, const std::vector<std::string>& wkts) {
+    GDALAllRegister();
+    GDALDriver* gpkg = GetGDALDriverManager()->GetDriverByName("GPKG");
+    GDALDataset* ds = gpkg->Create(file.c_str(), 0, 0, 0, GDT_Unknown, nullptr);
+    ASSERT_NE(ds, nullptr);
+    OGRLayer* layer = ds->CreateLayer("shapes", nullptr, wkbUnknown, nullptr);
+    for (const std::string& wkt : wkts) {
+        OGRGeometry* g = nullptr;
+        ASSERT_EQ(OGRGeometryFactory::createFromWkt(wkt.c_str(), nullptr, &g), OGRERR_NONE) << wkt;
+        OGRFeature* f = OGRFeature::CreateFeature(layer->GetLayerDefn());
+        f->SetGeometryDirectly(g);
+        ASSERT_EQ(layer->CreateFeature(f), OGRERR_NONE);
+        OGRFeature::DestroyFeature(f);
+    }
+    GDALClose(ds);
+}
+
 TEST_F(Gdal, EveryFormatGivesTheTrianglesOfTheGeoJsonSource) {
     for (const auto& [driver, file] : formats()) {
         for (const std::string& name : kValid) {
@@ -174,22 +192,8 @@ TEST_F(Gdal, CheckReportsVerdictsWithFidsAndNames) {
 
 // A curve is linearised by OGR; a point feature is skipped with a warning, as GeoJSON's are.
 TEST_F(Gdal, CurvesAreLinearisedAndOtherGeometriesSkipped) {
-    GDALAllRegister();
     const std::string file = path("curves.gpkg");
-    GDALDriver* driver = GetGDALDriverManager()->GetDriverByName("GPKG");
-    GDALDataset* ds = driver->Create(file.c_str(), 0, 0, 0, GDT_Unknown, nullptr);
-    ASSERT_NE(ds, nullptr);
-    OGRLayer* layer = ds->CreateLayer("shapes", nullptr, wkbUnknown, nullptr);
-    for (const char* wkt :
-         {"CURVEPOLYGON(CIRCULARSTRING(0 0,10 10,20 0,10 -10,0 0))", "POINT(1 2)"}) {
-        OGRGeometry* g = nullptr;
-        ASSERT_EQ(OGRGeometryFactory::createFromWkt(wkt, nullptr, &g), OGRERR_NONE);
-        OGRFeature* f = OGRFeature::CreateFeature(layer->GetLayerDefn());
-        f->SetGeometryDirectly(g);
-        ASSERT_EQ(layer->CreateFeature(f), OGRERR_NONE);
-        OGRFeature::DestroyFeature(f);
-    }
-    GDALClose(ds);
+    writeShapes(file, {"CURVEPOLYGON(CIRCULARSTRING(0 0,10 10,20 0,10 -10,0 0))", "POINT(1 2)"});
     DatasetRead d = gdal::readFeatures(file, {});
     ASSERT_EQ(d.features.size(), 1u);
     ASSERT_TRUE(d.features[0].read.diagnostic.ok()) << d.features[0].read.diagnostic.message;
@@ -534,9 +538,6 @@ TEST_F(Gdal, MessagesSayWhatIsWrong) {
 
     // Empty polygons and collections holding other things: the feature and what it holds.
     const std::string file = path("empties.gpkg");
-    GDALDataset* ds = gpkg->Create(file.c_str(), 0, 0, 0, GDT_Unknown, nullptr);
-    ASSERT_NE(ds, nullptr);
-    OGRLayer* layer = ds->CreateLayer("shapes", nullptr, wkbUnknown, nullptr);
     const std::vector<std::pair<std::string, std::string>> cases = {
         {"POLYGON EMPTY", "feature 1: POLYGON EMPTY has no rings"},
         {"MULTIPOLYGON EMPTY", "feature 2: MULTIPOLYGON EMPTY has no rings"},
@@ -547,15 +548,9 @@ TEST_F(Gdal, MessagesSayWhatIsWrong) {
          "feature 5: a TIN is not read: only POLYGON, MULTIPOLYGON and collections of them are "
          "triangulated"},
     };
-    for (const auto& [wkt, _] : cases) {
-        OGRGeometry* g = nullptr;
-        ASSERT_EQ(OGRGeometryFactory::createFromWkt(wkt.c_str(), nullptr, &g), OGRERR_NONE) << wkt;
-        OGRFeature* f = OGRFeature::CreateFeature(layer->GetLayerDefn());
-        f->SetGeometryDirectly(g);
-        ASSERT_EQ(layer->CreateFeature(f), OGRERR_NONE);
-        OGRFeature::DestroyFeature(f);
-    }
-    GDALClose(ds);
+    std::vector<std::string> wkts;
+    for (const auto& c : cases) wkts.push_back(c.first);
+    writeShapes(file, wkts);
     DatasetRead d = gdal::readFeatures(file, {});
     ASSERT_EQ(d.features.size(), cases.size());
     for (size_t k = 0; k < cases.size(); ++k) {

@@ -15,6 +15,11 @@ out="$build/small-bench"
 for tool in node npm valgrind; do
   command -v $tool >/dev/null || { echo "small-bench: $tool not found (see the comment above)" >&2; exit 1; }
 done
+# Native earcut.hpp, the peer a C++ program would pick: Debian's source package of
+# python3-mapbox-earcut vendors it (no binary package ships the header).
+"$root/scripts/deb-source.sh" "$build/deps/src" python-mapbox-earcut
+earcut_hpp=$(ls -d "$build"/deps/src/python-mapbox-earcut-*/include | head -1)
+cmake -S "$root" -B "$build" -DFLOOD_EARCUT_HPP="$earcut_hpp" >/dev/null
 cmake --build "$build" -j2 --target flood-small-bench
 mkdir -p "$out" "$build/earcut-node"
 cp "$root/bench/node/package.json" "$root/bench/node/package-lock.json" "$build/earcut-node/"
@@ -32,14 +37,14 @@ for round in $(seq $rounds); do
 done
 echo "== callgrind"
 : > "$out/callgrind.txt"
-for mode in triangulate validate_triangulate; do
-  flag=""; [ $mode = validate_triangulate ] && flag=--validate
+for mode in triangulate validate_triangulate earcut_hpp; do
+  flag=""; [ $mode = validate_triangulate ] && flag=--validate; [ $mode = earcut_hpp ] && flag=--earcut
   count() {
     valgrind --tool=callgrind --callgrind-out-file=/dev/null "$build/flood-small-bench" calls \
       "$fixtures/fixtures/building.json" "$1" $flag 2>&1 | sed -n 's/.*refs: *//p' | tr -d ,
   }
   a=$(count 100); b=$(count 1100)
-  echo "flood_$mode $(( (b - a) / 1000 ))" >> "$out/callgrind.txt"
+  echo "$([ $mode = earcut_hpp ] || echo flood_)$mode $(( (b - a) / 1000 ))" >> "$out/callgrind.txt"
 done
 { echo "cpu $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')";
   echo "node $(node --version)";

@@ -202,6 +202,13 @@ Row measure(const std::string& who, const Polygon& p, const CoordIndex& index) {
         Timing t = timeRuns([&] { out = runCgal(p, index); });
         row.ns = t.medianNs, row.runs = t.runs, row.triangles = out.triangles.size();
         v = judge(p, out.triangles, out.added, out.error);
+#ifdef FLOOD_EARCUT_HPP
+    } else if (who == "earcut-hpp") {
+        PeerOutput out;
+        Timing t = timeRuns([&] { out = runEarcut(p); });
+        row.ns = t.medianNs, row.runs = t.runs, row.triangles = out.triangles.size();
+        v = judge(p, out.triangles, out.added, out.error);
+#endif
     } else if (who == "geos") {
         PeerOutput out;
         Timing t = timeRuns([&] { out = runGeos(p, nullptr); });
@@ -403,7 +410,11 @@ int cmdRun(const std::string& dir, double timeoutS, const std::string& outPath) 
     std::ofstream out(outPath);
     out << "name\tfamily\tsize\tvertices\tholes\tinput_"
            "valid\texpected\ttriangulator\tstatus\tns\truns\ttriangles\tdetail\textra\n";
-    const std::vector<std::string> who{"flood", "floor", "flood-rec", "glu", "cgal", "geos"};
+    const std::vector<std::string> who{"flood",     "floor", "flood-rec", "glu", "cgal", "geos",
+#ifdef FLOOD_EARCUT_HPP
+                                       "earcut-hpp"
+#endif
+    };
     std::map<std::string, std::vector<double>> history;  // triangulator|family -> single-run ns
     std::map<std::string, bool> givenUp;
     for (const auto& info : inputs) {

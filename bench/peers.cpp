@@ -12,6 +12,10 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <GL/glu.h>
 #include <geos_c.h>
+#ifdef FLOOD_EARCUT_HPP
+#include <array>
+#include <mapbox/earcut.hpp>
+#endif
 
 #include "flood/geometry/predicates.h"
 
@@ -245,6 +249,29 @@ struct GeosContext {
 };
 
 }  // namespace
+
+#ifdef FLOOD_EARCUT_HPP
+PeerOutput runEarcut(const Polygon& p) {
+    PeerOutput out;
+    for (const flood::Part& part : p.parts) {
+        // A part's rings are numbered consecutively, so earcut's indices (into the part's
+        // rings laid end to end) are the input's less the part's first vertex.
+        std::vector<std::vector<std::array<double, 2>>> rings;
+        for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) {
+            rings.emplace_back();
+            for (Index v = p.rings[r].first; v < p.rings[r].first + p.rings[r].count; ++v)
+                rings.back().push_back({p.vertices[v].x, p.vertices[v].y});
+        }
+        const Index first = p.rings[part.firstRing].first;
+        const std::vector<uint32_t> indices = mapbox::earcut<uint32_t>(rings);
+        for (size_t k = 0; k + 2 < indices.size(); k += 3)
+            out.triangles.push_back({Index(first + indices[k]), Index(first + indices[k + 1]),
+                                     Index(first + indices[k + 2])});
+    }
+    orientCounterClockwise(p, out.triangles);
+    return out;
+}
+#endif
 
 PeerOutput runGeos(const Polygon& p, const CoordIndex* index) {
     static GeosContext g;  // one per process, like a GEOS user's

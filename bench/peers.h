@@ -37,6 +37,12 @@ PeerOutput runCgal(const flood::Polygon& p, const CoordIndex& index);
 // output is only counted, not mapped back (the timed runs).
 PeerOutput runGeos(const flood::Polygon& p, const CoordIndex* index);
 
+#ifdef FLOOD_EARCUT_HPP
+// Native earcut.hpp (mapbox::earcut, a fresh call per part), compiled into this driver at the
+// same optimisation as Flood: the peer a C++ program would pick. Triangles as input indices.
+PeerOutput runEarcut(const flood::Polygon& p);
+#endif
+
 // Orients every triangle counter-clockwise (peers differ in convention); degenerate ones stay.
 void orientCounterClockwise(const flood::Polygon& p, std::vector<flood::Triangle>& t);
 

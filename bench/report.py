@@ -15,12 +15,12 @@ import os
 import sys
 from collections import defaultdict
 
-TRIANGULATORS = ["flood", "flood-rec", "earcut-js", "earcut", "libtess", "poly2tri", "glu", "cgal", "geos"]
-PEERS = ["earcut-js", "earcut", "libtess", "poly2tri", "glu", "cgal", "geos"]
-LABEL = {"flood": "Flood", "flood-rec": "Flood + trace", "earcut-js": "earcut (Node)",
+TRIANGULATORS = ["flood", "flood-rec", "earcut-hpp", "earcut-js", "earcut", "libtess", "poly2tri", "glu", "cgal", "geos"]
+PEERS = ["earcut-hpp", "earcut-js", "earcut", "libtess", "poly2tri", "glu", "cgal", "geos"]
+LABEL = {"flood": "Flood", "flood-rec": "Flood + trace", "earcut-hpp": "earcut.hpp (C++)", "earcut-js": "earcut (Node)",
          "earcut": "earcut (Python)", "libtess": "libtess (Node)", "poly2tri": "poly2tri (Node)",
          "glu": "GLU", "cgal": "CGAL CDT", "geos": "GEOS CDT", "floor": "floor"}
-COLOR = {"flood": "#d62728", "flood-rec": "#ff9896", "earcut-js": "#1f77b4", "earcut": "#aec7e8",
+COLOR = {"flood": "#d62728", "flood-rec": "#ff9896", "earcut-hpp": "#17becf", "earcut-js": "#1f77b4", "earcut": "#aec7e8",
          "libtess": "#98df8a", "poly2tri": "#e377c2", "glu": "#2ca02c", "cgal": "#9467bd",
          "geos": "#8c564b", "floor": "#000000"}
 PLOTTED = TRIANGULATORS + ["floor"]
@@ -444,6 +444,9 @@ def markdown(D, svg_name):
         "once (odd winding, like GLU); poly2tri gets fresh point objects each run (it keeps its sweep "
         "state on them). earcut (Node) is earcut itself without any binding's call overhead: the "
         "anchor.\n"
+        "- **earcut.hpp (C++)**: native earcut.hpp from Debian's source package python-mapbox-earcut, "
+        "compiled into the C++ driver at the same optimisation as Flood, `mapbox::earcut()` called "
+        "afresh per part, its triangles judged like every peer's.\n"
         "- **earcut (Python)**: earcut.hpp as compiled in Debian's `python3-mapbox-earcut`, called through "
         "its numpy API `triangulate_float64(vertices, ring_end_indices)` from `bench/earcut_bench.py` "
         "on the same vertex files. The measured Python call overhead (a 3-vertex triangle) is "

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Runs the peer benchmarks (issues 4, 13) and writes docs/BENCHMARKS.md, docs/bench.svg and the
 # README's bench block: every family of the generator at 10^3..10^6 (10^7 for BENCH_LARGE), the
-# floor, and the peers side by side in one run (CGAL, GLU, GEOS in the C++ driver; earcut through
+# floor, and the peers side by side in one run (CGAL, GLU, GEOS, native earcut.hpp in the C++ driver; earcut through
 # its Python binding; earcut, libtess and poly2tri under Node.js); then `flood triangulate` end to
 # end at 10^6 and 10^7 (bench/end_to_end.sh).
 #   scripts/bench.sh                  everything: deps, build, inputs, earcut, peers, memory, report
@@ -26,8 +26,11 @@ py=/usr/bin/python3   # Debian's python: python3-numpy and python3-mapbox-earcut
 if [ "${1:-}" != "--report-only" ]; then
   "$root/scripts/install-deps.sh"
   "$root/scripts/install-bench-deps.sh"
+  # Native earcut.hpp from Debian's source package (no binary package ships the header).
+  "$root/scripts/deb-source.sh" "$build/deps/src" python-mapbox-earcut
+  earcut_hpp=$(ls -d "$build"/deps/src/python-mapbox-earcut-*/include | head -1)
   cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DFLOOD_BENCH=ON \
-        -DFLOOD_VIEWER=OFF -DFLOOD_TESTS=OFF >/dev/null
+        -DFLOOD_VIEWER=OFF -DFLOOD_TESTS=OFF -DFLOOD_EARCUT_HPP="$earcut_hpp" >/dev/null
   cmake --build "$build" -j2 --target flood-bench flood
   rm -rf "$data" && mkdir -p "$data" "$build/node"
   cp "$root/bench/node/package.json" "$root/bench/node/package-lock.json" "$build/node/"

@@ -630,10 +630,8 @@ void drawCanvas(Ui& ui) {
     // What floats over the canvas, as last drawn: the labels keep out from under it. (An
     // export paints the canvas alone: nothing floats over it then.)
     ui.inset = ui.presenter ? Rect{} : insetRect(ui);
-    ui.canvas.obstacles.clear();
-    if (!ui.presenter)
-        for (const Rect& r : {ui.findBox, ui.editBox, ui.shrinkBox, ui.inset})
-            if (r.w > 0 && r.h > 0) ui.canvas.obstacles.push_back(r);
+    ui.canvas.obstacles = canvasOverlays(ui);  // the boxes, the dial, the State table, the arrow
+    if (!ui.presenter && ui.inset.w > 0) ui.canvas.obstacles.push_back(ui.inset);
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     paintCanvas(ui, dl);
     ui.canvas.obstacles.clear();

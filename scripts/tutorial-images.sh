@@ -14,6 +14,10 @@ VIEWER=$BUILD/flood-viewer
   echo "build first: cmake -S . -B $BUILD && cmake --build $BUILD (flood and flood-viewer)" >&2
   exit 2
 }
+# The pictures do not follow this machine's saved viewer theme (--screenshot reads it).
+XDG_CONFIG_HOME=$(mktemp -d)
+export XDG_CONFIG_HOME
+trap 'rm -rf "$XDG_CONFIG_HOME"' EXIT
 RUN=()
 if [ -z "${DISPLAY:-}" ]; then RUN=(xvfb-run -a -s "-screen 0 1280x800x24"); fi
 mkdir -p docs/img

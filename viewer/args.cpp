@@ -25,6 +25,7 @@ bool pressNamed(const std::string& name, Args::Press& p) {
     if (name == "ctrl+plus") return p = {platform::kKeyPlus[0], true}, true;
     if (name == "ctrl+minus") return p = {platform::kKeyMinus[0], true}, true;
     if (name == "ctrl+0") return p = {platform::kKeyZero[0], true}, true;
+    if (name == "p") return p = {'P', false}, true;  // Save PNG
     return false;
 }
 
@@ -56,9 +57,11 @@ const char* const kUsage =
     "  --print-layout    with --screenshot: print where the caption, the toolbar's last\n"
     "                    button, the canvas, the findings and their rows, the boxes over the\n"
     "                    canvas, the error view's labels and the step's labels\n"
-    "                    (named-vertex-35, ...) were drawn (x y w h, logical px)\n"
+    "                    (named-vertex-35, ...) were drawn (x y w h, logical px), and the\n"
+    "                    camera (centre x y, pixels per unit)\n"
     "  --press KEY       with --screenshot: press tab, f11, ctrl+plus, ctrl+minus, ctrl+0,\n"
-    "                    f8 or shift+f8 first (repeat it for more, one frame apart)\n"
+    "                    f8, shift+f8 or p (Save PNG) first (repeat it for more, one frame\n"
+    "                    apart)\n"
     "  --canvas-only     --screenshot renders the canvas alone (no panels), offscreen at --size;\n"
     "                    OUT ending in .svg is always the canvas alone, as SVG\n"
     "  --export-gif OUT  the flood (or --steps) as an animated GIF of the canvas, then exit\n"

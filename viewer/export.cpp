@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
 
 #include "flood/teach/narrate.h"
 #include "presenter.h"
@@ -26,6 +27,67 @@ bool parseStep(const std::string& s, uint32_t& out) {
 }
 
 }  // namespace
+
+namespace {
+
+bool isDirectory(const std::string& dir) {
+    struct stat st;
+    return !dir.empty() && ::stat(dir.c_str(), &st) == 0 && S_ISDIR(st.st_mode);
+}
+
+std::string env(const char* name) {
+    const char* v = std::getenv(name);
+    return v ? v : "";
+}
+
+// XDG_PICTURES_DIR="$HOME/Pictures" in user-dirs.dirs (the format xdg-user-dirs-update
+// writes: one variable a line, quoted, $HOME the only expansion); "" when not there.
+std::string userDirsPictures(const std::string& home) {
+    std::string config = env("XDG_CONFIG_HOME");
+    if (config.empty() && !home.empty()) config = home + "/.config";
+    if (config.empty()) return "";
+    std::ifstream in(config + "/user-dirs.dirs");
+    const std::string key = "XDG_PICTURES_DIR=";
+    for (std::string line; std::getline(in, line);) {
+        if (line.compare(0, key.size(), key) != 0) continue;
+        std::string v = line.substr(key.size());
+        if (v.size() >= 2 && v.front() == '"' && v.back() == '"') v = v.substr(1, v.size() - 2);
+        if (v.compare(0, 5, "$HOME") == 0) v = home + v.substr(5);
+        return v;
+    }
+    return "";
+}
+
+}  // namespace
+
+std::string exportBaseName(const Model& m) {
+    std::string base = m.path().empty() ? "flood" : m.path();
+    const size_t slash = base.find_last_of('/');
+    if (slash != std::string::npos) base = base.substr(slash + 1);
+    const size_t dot = base.find_last_of('.');
+    if (dot != std::string::npos && dot > 0) base.resize(dot);
+    return base.empty() ? "flood" : base;
+}
+
+std::string stepPngName(const Model& m) {
+    return exportBaseName(m) + "-step" + std::to_string(m.step()) + ".png";
+}
+
+std::string pictureFolder(const std::string& lastExportDir) {
+    if (isDirectory(lastExportDir)) return lastExportDir;
+    const std::string home = env("HOME");
+    for (const std::string& dir :
+         {env("XDG_PICTURES_DIR"), userDirsPictures(home), home.empty() ? "" : home + "/Pictures"})
+        // xdg-user-dir answers $HOME for a Pictures folder set to it: that is the fallback too.
+        if (isDirectory(dir)) return dir;
+    return isDirectory(home) ? home : ".";
+}
+
+std::string folderOf(const std::string& file) {
+    const size_t slash = file.find_last_of('/');
+    if (slash == std::string::npos) return ".";
+    return slash == 0 ? "/" : file.substr(0, slash);
+}
 
 bool parseStepArg(const std::string& text, uint32_t& step) {
     if (text.empty() || text.find_first_not_of("0123456789") != std::string::npos) return false;

@@ -54,6 +54,22 @@ CaptionLine captionOf(const Model& model, uint32_t step);
 // The files of a PNG sequence: DIR/frame-0000.png, ... wide enough for `count` frames.
 std::string sequenceFile(const std::string& dir, size_t frame, size_t count);
 
+// What an export of the open polygon is called: its file name without folder or extension
+// ("polygons/paper-figure-7.json" -> "paper-figure-7"), "flood" with none open.
+std::string exportBaseName(const Model& model);
+
+// Save PNG's file: "<exportBaseName>-step<N>.png" at the current step.
+std::string stepPngName(const Model& model);
+
+// Where Save PNG writes: `lastExportDir` (the folder of the last export written) when it is a
+// directory; else the user's Pictures folder ($XDG_PICTURES_DIR, else XDG_PICTURES_DIR in
+// $XDG_CONFIG_HOME/user-dirs.dirs, ~/.config/user-dirs.dirs, as `xdg-user-dir PICTURES` reads
+// it, else ~/Pictures), when it is a directory; else $HOME; else the working directory (".").
+std::string pictureFolder(const std::string& lastExportDir);
+
+// The folder a written file is in ("." for a bare name), for lastExportDir.
+std::string folderOf(const std::string& file);
+
 // Creates `dir` (one level) unless it is a directory already; false with the system's reason.
 bool makeDirectory(const std::string& dir, std::string* error);
 

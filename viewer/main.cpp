@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -21,6 +22,7 @@
 #include "panels.h"
 #include "platform_glfw.h"
 #include "renderer.h"
+#include "view_fit.h"
 
 using namespace flood;
 using namespace flood::view;
@@ -254,9 +256,6 @@ DrawnFrame drawFrame(Ui& ui, const Args& args, int frame, const FrameInput& inpu
     ui.layout = ui.presenter ? presenterLayout(size.x, size.y, ui.captionHeight)
                              : computeLayout(size.x, size.y, ui.scale, ui.bottomWanted,
                                              findingsHeight(model, ui.scale));
-    // While the first frames settle the layout (the timeline's and the caption's heights are
-    // measured) the camera is fitted to the canvas it ends up with; the error view keeps its
-    // own zoom.
     // The quiz in presenter view takes a column at the canvas's right (panel_quiz.cpp).
     ui.quizColumn = {};
     if (ui.presenter && model.quizOn()) {
@@ -265,14 +264,15 @@ DrawnFrame drawFrame(Ui& ui, const Args& args, int frame, const FrameInput& inpu
         canvas.w -= w;
         ui.quizColumn = {canvas.x + canvas.w, canvas.y, w, canvas.h};
     }
+    // Every layout change (the first frames settling, presenter view on or off, F11, a resize,
+    // a window over the canvas shown, moved or closed) refits a view that is still the last
+    // fit's, into the canvas's free part; a view the user zoomed or panned stays.
     const Rect& c = ui.layout.canvas;
-    bool moved =
-        c.x != canvasWas.x || c.y != canvasWas.y || c.w != canvasWas.w || c.h != canvasWas.h;
-    // The quiz's column coming or going refits too.
-    const bool quizColumn = ui.quizColumn.w > 0;
-    if (((frame > 0 && frame < 3) || quizColumn != ui.quizColumnWas) && moved && !model.errorView())
-        model.requestFit();
-    ui.quizColumnWas = quizColumn;
+    const std::vector<Rect> overlays = canvasOverlays(ui);
+    const bool moved = c.x != canvasWas.x || c.y != canvasWas.y || c.w != canvasWas.w ||
+                       c.h != canvasWas.h || !sameRects(overlays, ui.fitOverlays);
+    ui.fitOverlays = overlays;
+    if (moved && model.viewIsFit()) model.requestFit();
     if (frame == 0 && args.showError) {
         model.setViewport(ui.layout.canvas);
         model.showError();
@@ -327,6 +327,25 @@ bool writeFrame(Ui& ui, const DrawnFrame& f, const std::string& png) {
     return ok;
 }
 
+// Save PNG (ui.pngRequest): the canvas alone, offscreen at the canvas's size, as it shows it
+// (no panel or box over it), written atomically through the export's path; the toast over the
+// canvas gives the full path, or why not. True when written.
+bool saveCanvasPng(Ui& ui) {
+    ExportSettings s;
+    s.png = ui.pngRequest;
+    ui.pngRequest.clear();
+    s.width = std::max(1, int(std::lround(ui.layout.canvas.w)));
+    s.height = std::max(1, int(std::lround(ui.layout.canvas.h)));
+    ExportJob job(ui, s);
+    while (job.advance(0)) {
+    }
+    const bool ok = job.status() == Status::Ok;
+    if (ok) ui.lastExportDir = folderOf(s.png);
+    showToast(ui, job.message(), !ok);
+    ui.message = job.message();
+    return ok;
+}
+
 // The interactive run: until the window closes, idle unless something plays or moves.
 void runInteractive(Ui& ui, const Args& args, Styled& styled) {
     Model& model = ui.model;
@@ -348,15 +367,13 @@ void runInteractive(Ui& ui, const Args& args, Styled& styled) {
             platform::setTitle(windowTitle(model));
         }
         restyle(ui, styled, args.scale <= 0);
-        DrawnFrame f = drawFrame(ui, args, frame, input);
-        if (!ui.pngRequest.empty()) {
-            writeFrame(ui, f, ui.pngRequest);
-            ui.pngRequest.clear();
-        }
+        drawFrame(ui, args, frame, input);
+        if (!ui.pngRequest.empty()) saveCanvasPng(ui);
         // The Export panel's export: a slice of it each frame, so the window stays live.
         if (ui.exportJob && !ui.exportJob->advance(1.0 / 30)) {
             ui.exportNote = ui.exportJob->message();
             ui.exportFailed = ui.exportJob->status() != Status::Ok;
+            if (!ui.exportFailed) ui.lastExportDir = folderOf(ui.exportPath);
             ui.message = ui.exportNote;
             ui.exportJob.reset();
         }
@@ -410,6 +427,11 @@ int runScreenshot(Ui& ui, const Args& args, Styled& styled) {
         platform::pollEvents();
         restyle(ui, styled, false);
         DrawnFrame f = drawFrame(ui, args, frame, scriptedInput(ui, args, frame, mouse));
+        if (!ui.pngRequest.empty()) {  // --press p: Save PNG, as the toolbar's button
+            const bool ok = saveCanvasPng(ui);
+            std::fprintf(ok ? stdout : stderr, "flood-viewer: %s\n", ui.message.c_str());
+            if (!ok) exitCode = int(Status::WriteFailed);
+        }
         if (frame == shotFrame && args.exporting()) {
             // The canvas alone, offscreen: run the whole export now.
             ExportJob job(ui, args.exports);
@@ -423,11 +445,18 @@ int runScreenshot(Ui& ui, const Args& args, Styled& styled) {
             bool ok = writeFrame(ui, f, args.screenshot);
             std::fprintf(ok ? stdout : stderr, "flood-viewer: %s\n", ui.message.c_str());
             std::vector<std::pair<std::string, Rect>> printed = {
-                {"caption", ui.captionRect},  {"toolbar-end", ui.toolbarEnd},
-                {"canvas", ui.layout.canvas}, {"findings", ui.layout.findings},
-                {"find-box", ui.findBox},     {"edit-box", ui.editBox},
-                {"shrink-box", ui.shrinkBox}, {"inset", ui.inset},
-                {"quiz-box", ui.quizBox}};
+                {"caption", ui.captionRect},
+                {"toolbar-end", ui.toolbarEnd},
+                {"canvas", ui.layout.canvas},
+                {"findings", ui.layout.findings},
+                {"find-box", ui.findBox},
+                {"edit-box", ui.editBox},
+                {"shrink-box", ui.shrinkBox},
+                {"inset", ui.inset},
+                {"quiz-box", ui.quizBox},
+                {"direction-box", ui.directionBox},
+                {"state-table-box", ui.stateTableBox},
+                {"up-arrow", upArrowRect(ui)}};
             for (size_t i = 0; i < ui.findingRows.size(); ++i)
                 printed.push_back({"finding-" + std::to_string(i), ui.findingRows[i]});
             for (size_t i = 0; i < ui.labels.size(); ++i)
@@ -437,8 +466,15 @@ int runScreenshot(Ui& ui, const Args& args, Styled& styled) {
                 if (args.printLayout && r.w > 0)
                     std::printf("flood-viewer: layout %s %.0f %.0f %.0f %.0f\n", name.c_str(), r.x,
                                 r.y, r.w, r.h);
+            // The camera: a vertex's place is x + w/2 + (px - cx) * scale, y + h/2 - (py - cy)
+            // * scale in the canvas above.
+            const Camera& cam = model.camera();
+            if (args.printLayout)
+                std::printf("flood-viewer: camera %.17g %.17g %.17g\n", cam.center().x,
+                            cam.center().y, cam.scale());
             // The picture is written; the exit code still says what the input was.
-            exitCode = !ok ? int(Status::WriteFailed) : model.exitCode();
+            exitCode = !ok || exitCode == int(Status::WriteFailed) ? int(Status::WriteFailed)
+                                                                   : model.exitCode();
             platform::requestClose();
         }
         platform::swapBuffers();
@@ -488,12 +524,14 @@ int main(int argc, char** argv) {
     const bool shot = !args.screenshot.empty() || args.bench || args.exporting();
 
     Model model;
-    // Screenshots stay reproducible: they neither read nor write the recent list or settings.
-    const ConfigFiles config = args.screenshot.empty() ? configFiles() : ConfigFiles{};
+    // Screenshots neither read nor write the recent list, nor write the settings; they read the
+    // saved theme (a picture looks as the viewer does), not the zoom (scale 1 or --scale).
+    const ConfigFiles saved = configFiles();
+    const ConfigFiles config = args.screenshot.empty() ? saved : ConfigFiles{};
     ViewerSettings settings;
     if (!config.recent.empty()) model.loadRecent(config.recent);
     model.recentPath = config.recent;  // saved on every open
-    if (!config.settings.empty()) settings = loadSettings(config.settings);
+    if (!saved.settings.empty()) settings = loadSettings(saved.settings);
     if (args.themeGiven) settings.theme = args.theme;
     palette::setTheme(settings.theme);
     double openStart = now();

@@ -21,6 +21,7 @@
 #include "flood/geometry/predicates.h"
 #include "flood/io/io.h"
 #include "flood/log/trace_io.h"
+#include "view_fit.h"
 #ifdef FLOOD_GDAL
 #include "flood/io/gdal/gdal_io.h"
 #endif
@@ -1111,10 +1112,20 @@ void Model::countTransitions() {
         ++transitions_[size_t(ev[i - 1].action)][size_t(ev[i].action)];
 }
 
-void Model::fitCamera(const Rect& viewport) {
-    camera_.fit(trace_->polygon, viewport);
+void Model::fitCamera(const Rect& viewport, const std::vector<Rect>& overlays) {
+    WorldBox box;
+    for (Point p : trace_->polygon.vertices) box.add(p);
+    camera_ = view::fitCamera(box, viewport, overlays);
+    fitted_ = camera_;
     needsFit_ = false;
     errorView_ = false;
+}
+
+bool Model::viewIsFit() const {
+    if (needsFit_) return true;
+    const Camera& c = camera_;
+    return !errorView_ && c.scale() == fitted_.scale() && c.center().x == fitted_.center().x &&
+           c.center().y == fitted_.center().y;
 }
 
 void Model::loadRecent(const std::string& file) {

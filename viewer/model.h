@@ -485,7 +485,12 @@ public:
     const Camera& camera() const { return camera_; }
     bool fitPending() const { return needsFit_; }
     void requestFit() { needsFit_ = true; }
-    void fitCamera(const Rect& viewport);   // the whole polygon; ends the error view
+    // The whole polygon in the part of `viewport` no overlay covers (view_fit.h); ends the
+    // error view.
+    void fitCamera(const Rect& viewport, const std::vector<Rect>& overlays = {});
+    // The view is the last fit's: no pan, zoom or framing since. A layout change refits it
+    // then (main.cpp), and keeps a view the user chose.
+    bool viewIsFit() const;
     void keepView() { needsFit_ = false; }  // the view chosen stays: no pending fit
     void setViewport(const Rect& viewport) { camera_.setViewport(viewport); }
     void pan(double dx, double dy) { camera_.pan(dx, dy); }  // screen pixels
@@ -552,6 +557,7 @@ public:
 private:
     Camera camera_;
     bool needsFit_ = true;
+    Camera fitted_;  // what the last fitCamera chose (viewIsFit)
     bool errorView_ = false;
     Breakpoints breakpoints_;
     std::vector<uint32_t> breakpointSteps_;

@@ -533,22 +533,105 @@ void canvasBar(Ui& ui) {
     ImGui::End();
 }
 
+// The up arrow's words, in the large font in presenter view (read from the back of a room).
+std::string upArrowText(Up up) {
+    char text[48];
+    std::snprintf(text, sizeof text, "water rises %.0f°", upDegrees(up));
+    return text;
+}
+ImFont* upArrowFont(const Ui& ui) { return ui.presenter ? largeFont(ui) : ImGui::GetFont(); }
+
+// The turned flood direction on the canvas: a round plate in upArrowRect with an arrow the way
+// the water rises and its angle, so the picture says why the gorges lie as they do.
+void drawUpArrow(Ui& ui, ImDrawList* dl) {
+    const Rect box = upArrowRect(ui);
+    if (box.w <= 0) return;
+    const float s = ui.scale;
+    const Up up = ui.model.up();
+    const double len = std::hypot(up.x, up.y);
+    const float ux = float(up.x / len), uy = float(-up.y / len);  // screen y grows down
+    const float r = 30 * s;
+    const ImVec2 c(float(box.x + box.w / 2), float(box.y + r + 4 * s));
+    Rgba plate = palette::kBackground;
+    plate.a = 215;
+    dl->AddCircleFilled(c, r, toImU32(plate), 48);
+    dl->AddCircle(c, r, toImU32(palette::kBoundary), 48, 1.5f * s);
+    const ImU32 ink = toImU32(palette::kWaterLevel);
+    const ImVec2 tail(c.x - ux * r * 0.7f, c.y - uy * r * 0.7f),
+        tip(c.x + ux * r * 0.45f, c.y + uy * r * 0.45f);
+    const float head = 12 * s;
+    dl->AddLine(tail, tip, ink, 3.5f * s);
+    dl->AddTriangleFilled(ImVec2(tip.x + ux * head, tip.y + uy * head),
+                          ImVec2(tip.x - uy * head * 0.6f, tip.y + ux * head * 0.6f),
+                          ImVec2(tip.x + uy * head * 0.6f, tip.y - ux * head * 0.6f), ink);
+    const std::string text = upArrowText(up);
+    ImFont* f = upArrowFont(ui);
+    const ImVec2 t = f->CalcTextSizeA(f->FontSize, FLT_MAX, 0, text.c_str());
+    const ImVec2 at(float(box.x + (box.w - t.x) / 2), float(box.y + box.h - t.y - 2 * s));
+    dl->AddRectFilled(ImVec2(at.x - 2 * s, at.y - 1 * s), ImVec2(at.x + t.x + 2 * s, at.y + t.y),
+                      toImU32(plate), 3 * s);
+    dl->AddText(f, f->FontSize, at, ink, text.c_str());
+}
+
+// Save PNG's confirmation: the full path wrapped over the canvas's bottom, on a plate, for a
+// few seconds (a status line would clip it).
+void drawToast(Ui& ui, ImDrawList* dl) {
+    if (ui.toast.empty() || platform::time() > ui.toastUntil) return;
+    const Rect& area = ui.layout.canvas;
+    const float s = ui.scale, pad = 8 * s;
+    const float wrap = float(std::max(60.0, area.w - 4 * pad));
+    const ImVec2 t = ImGui::CalcTextSize(ui.toast.c_str(), nullptr, false, wrap);
+    const ImVec2 p0(float(area.x + (area.w - t.x) / 2 - pad),
+                    float(area.y + area.h - t.y - 3 * pad));
+    Rgba plate = palette::kBackground;
+    plate.a = 235;
+    const Rgba ink = ui.toastFailed ? palette::kCulprit : palette::kOk;
+    dl->AddRectFilled(p0, ImVec2(p0.x + t.x + 2 * pad, p0.y + t.y + 2 * pad), toImU32(plate),
+                      4 * s);
+    dl->AddRect(p0, ImVec2(p0.x + t.x + 2 * pad, p0.y + t.y + 2 * pad), toImU32(ink), 4 * s, 0,
+                1.5f * s);
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + pad, p0.y + pad),
+                toImU32(ink), ui.toast.c_str(), nullptr, wrap);
+}
+
 }  // namespace
+
+Rect upArrowRect(const Ui& ui) {
+    const Model& m = ui.model;
+    const Up up = m.up();
+    if (m.polygon().vertices.empty() || !up.valid() || std::fabs(upDegrees(up) - 90) < 1e-9)
+        return {};
+    const Rect& area = ui.layout.canvas;
+    const float s = ui.scale;
+    ImFont* f = upArrowFont(ui);
+    const ImVec2 t = f->CalcTextSizeA(f->FontSize, FLT_MAX, 0, upArrowText(up).c_str());
+    const double w = std::max(120.0 * s, t.x + 8.0 * s), h = 72 * s + t.y, pad = 8 * s;
+    if (area.w < 3 * w || area.h < 3 * h) return {};
+    return {area.x + pad, area.y + area.h - h - pad, w, h};
+}
+
+std::vector<Rect> canvasOverlays(const Ui& ui) {
+    std::vector<Rect> over;
+    if (!ui.presenter)
+        for (const Rect& r :
+             {ui.findBox, ui.editBox, ui.shrinkBox, ui.directionBox, ui.stateTableBox})
+            if (r.w > 0 && r.h > 0) over.push_back(r);
+    if (const Rect r = upArrowRect(ui); r.w > 0) over.push_back(r);
+    return over;
+}
 
 void drawCanvas(Ui& ui) {
     Model& m = ui.model;
     const Rect& area = ui.layout.canvas;
-    if (m.fitPending()) m.fitCamera(area);
+    if (m.fitPending()) m.fitCamera(area, ui.fitOverlays);
     m.setViewport(area);
     editFrame(ui);  // live editing: a finished flood adopted, a drag carried on
     canvasInput(ui);
     // What floats over the canvas, as last drawn: the labels keep out from under it. (An
     // export paints the canvas alone: nothing floats over it then.)
     ui.inset = ui.presenter ? Rect{} : insetRect(ui);
-    ui.canvas.obstacles.clear();
-    if (!ui.presenter)
-        for (const Rect& r : {ui.findBox, ui.editBox, ui.shrinkBox, ui.inset})
-            if (r.w > 0 && r.h > 0) ui.canvas.obstacles.push_back(r);
+    ui.canvas.obstacles = canvasOverlays(ui);  // the boxes, the dial, the State table, the arrow
+    if (!ui.presenter && ui.inset.w > 0) ui.canvas.obstacles.push_back(ui.inset);
     ImDrawList* dl = ImGui::GetBackgroundDrawList();
     paintCanvas(ui, dl);
     ui.canvas.obstacles.clear();
@@ -558,9 +641,12 @@ void drawCanvas(Ui& ui) {
         drawInset(ui, dl);
         dl->PopClipRect();
     }
+    drawToast(ui, dl);
     if (!ui.presenter) {  // presenter view: nothing over the canvas but the polygon
         canvasBar(ui);
         editBar(ui);
+    } else {
+        ui.findBox = ui.editBox = {};  // not drawn: nothing to keep out from under
     }
 }
 
@@ -641,6 +727,7 @@ void paintCanvas(Ui& ui, ImDrawList* dl) {
                     toImU32(palette::kCulprit), msg);
     }
     editOverlay(ui, dl);
+    if (!m.errorView()) drawUpArrow(ui, dl);
     dl->PopClipRect();
 }
 

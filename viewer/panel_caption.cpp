@@ -1,5 +1,6 @@
 // Presenter mode: Tab shows only the canvas and this caption (the step, the action's name in
-// its colour, the narration sentence, in a large font); F11 fullscreen; Ctrl +/-/0 scale.
+// its colour, the narration sentence, in a large font); F11 fullscreen; Ctrl +/-/0 scale;
+// P saves the canvas as a PNG.
 #include <imgui.h>
 
 #include "panels.h"
@@ -23,6 +24,8 @@ void handlePresenterKeys(Ui& ui) {
     // back the same view (F fits the polygon to the larger canvas).
     if (!io.WantTextInput && !io.KeyCtrl && ImGui::IsKeyPressed(platform::kKeyTab, false))
         ui.presenter = !ui.presenter;
+    // P: Save PNG, in either view (the canvas alone: what the class sees).
+    if (!io.WantTextInput && !io.KeyCtrl && ImGui::IsKeyPressed('P', false)) requestSavePng(ui);
 }
 
 void drawCaption(Ui& ui) {

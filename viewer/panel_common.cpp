@@ -5,6 +5,7 @@
 
 #include "flood/io/output.h"  // atomic files
 #include "panels.h"
+#include "platform_glfw.h"
 
 namespace flood::view {
 
@@ -109,17 +110,27 @@ ImVec4 toImVec4(Rgba c) { return ImVec4(c.r / 255.f, c.g / 255.f, c.b / 255.f, c
 unsigned toImU32(Rgba c) { return IM_COL32(c.r, c.g, c.b, c.a); }
 
 std::string exportSvg(Ui& ui) {
-    std::string base = ui.model.path().empty() ? "flood" : ui.model.path();
-    size_t dot = base.find_last_of('.'), slash = base.find_last_of('/');
-    if (dot != std::string::npos && (slash == std::string::npos || dot > slash)) base.resize(dot);
-    // Next to the input would write into the source tree; use the working directory.
-    if (slash != std::string::npos) base = base.substr(slash + 1);
-    std::string out = base + "-step" + std::to_string(ui.model.step()) + ".svg";
+    // Beside Save PNG's pictures (export.h: pictureFolder), never into the source tree.
+    const std::string out = pictureFolder(ui.lastExportDir) + "/" + exportBaseName(ui.model) +
+                            "-step" + std::to_string(ui.model.step()) + ".svg";
     Output f(out);  // atomic, as every export (export_job.h)
     writeSceneSvg(f.stream(), buildScene(ui.model, ui.sceneOptions), ui.model.polygon(), 1000);
     std::string error;
-    ui.message = f.commit(&error) == Status::Ok ? "wrote " + out : error;
+    const bool ok = f.commit(&error) == Status::Ok;
+    if (ok) ui.lastExportDir = folderOf(out);
+    showToast(ui, ok ? "wrote " + out : error, !ok);
+    ui.message = ok ? "wrote " + out : error;
     return out;
+}
+
+void requestSavePng(Ui& ui) {
+    ui.pngRequest = pictureFolder(ui.lastExportDir) + "/" + stepPngName(ui.model);
+}
+
+void showToast(Ui& ui, const std::string& text, bool failed) {
+    ui.toast = text;
+    ui.toastFailed = failed;
+    ui.toastUntil = platform::time() + 6;
 }
 
 }  // namespace flood::view

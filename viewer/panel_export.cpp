@@ -17,18 +17,8 @@ enum ExportFormat { CanvasPng, CanvasSvg, Gif, PngSequence, FormatCount };
 const char* const kFormatNames[FormatCount] = {"PNG (canvas)", "SVG (canvas)", "GIF (animated)",
                                                "PNG sequence"};
 
-// "polygons/a.json" -> "a": next to the input would write into the source tree.
-std::string baseName(const Model& m) {
-    std::string base = m.path().empty() ? "flood" : m.path();
-    size_t slash = base.find_last_of('/');
-    if (slash != std::string::npos) base = base.substr(slash + 1);
-    size_t dot = base.find_last_of('.');
-    if (dot != std::string::npos && dot > 0) base.resize(dot);
-    return base;
-}
-
 std::string suggestedPath(const Model& m, int format) {
-    std::string base = baseName(m);
+    std::string base = exportBaseName(m);
     switch (format) {
         case CanvasPng: return base + "-step" + std::to_string(m.step()) + ".png";
         case CanvasSvg: return base + "-step" + std::to_string(m.step()) + ".svg";

@@ -49,7 +49,12 @@ void drawHelp(Ui& ui) {
         {"Shift+Left / Right", "run back / forward to a breakpoint"},
         {"Home / End", "first / last step"},
         {"PageUp / PageDown", "previous / next event of the kind chosen in the timeline"},
-        {"F", "fit the polygon in the canvas"},
+        {"F",
+         "fit the polygon in the canvas, clear of the boxes over it (a layout change refits "
+         "until you zoom or pan)"},
+        {"P",
+         "Save PNG: the canvas alone, as <polygon>-step<N>.png in the last export's folder, "
+         "else Pictures, else home"},
         {"F1 or ?", "this window"},
         {"Ctrl+O", "open a polygon or a trace (*.jsonl), or drop a file on the window"},
         {"E", "error view: frame the current finding's culprits (again: back)"},

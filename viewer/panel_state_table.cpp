@@ -6,6 +6,7 @@
 // action's colour.
 #include <imgui.h>
 
+#include <algorithm>
 #include <string>
 
 #include "flood/teach/state_table.h"
@@ -81,9 +82,16 @@ void drawGrid(const StateTable& table, bool meet, const StateCell* cur) {
 }  // namespace
 
 void drawStateTable(Ui& ui) {
+    ui.stateTableBox = {};
     if (!ui.showStateTable) return;
     Model& m = ui.model;
-    if (!beginFloating(ui, "State table (Fig. 10)", &ui.showStateTable, 560, 420, 40, 40)) return;
+    // First shown in the canvas's bottom-right corner; over the canvas it counts as an overlay,
+    // so a fit keeps the polygon clear of it (canvasOverlays).
+    const float w = 560, h = 350, s = ui.scale;  // its two grids, no more
+    const float dx = std::max(0.f, float(ui.layout.canvas.w) / s - w - 8),
+                dy = std::max(0.f, float(ui.layout.canvas.h) / s - h - 8);
+    if (!beginFloating(ui, "State table (Fig. 10)", &ui.showStateTable, w, h, dx, dy)) return;
+    ui.stateTableBox = windowRect();
     const StateTable& table = m.stateTable();  // one scan of the log per opened trace
     const StateCell* cur =
         m.step() == 0 || m.step() > table.cellOf.size() ? nullptr : &table.cellOf[m.step() - 1];

@@ -210,10 +210,9 @@ void drawTimeline(Ui& ui) {
     sameLineOrWrap(buttonWidth("Fit"));
     if (ImGui::Button("Fit")) m.requestFit();
     sameLineOrWrap(buttonWidth("Save PNG"));
-    if (ImGui::Button("Save PNG")) {
-        std::string name = "flood-step" + std::to_string(m.step()) + ".png";
-        ui.pngRequest = name;
-    }
+    if (ImGui::Button("Save PNG")) requestSavePng(ui);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("the canvas alone, as the next frame shows it (P)");
     sameLineOrWrap(buttonWidth("SVG"));
     if (ImGui::Button("SVG")) exportSvg(ui);
     const char* themeButton = ui.theme == Theme::Light ? "Dark theme" : "Light theme";

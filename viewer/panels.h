@@ -165,15 +165,24 @@ struct Ui {
     // What floats over the canvas, as last drawn (labels keep out from under them): the find
     // box, the Edit box, the Shrink window and the locator inset; empty when not shown.
     Rect findBox, editBox, shrinkBox, inset;
-    std::vector<Rect> labels;  // the error view's vertex labels this frame
-    Rect stateDiagram;         // where the State machine panel drew its states this frame
+    // The direction dial's and the State table's windows as last drawn (empty: not shown):
+    // floating over the canvas, the fit keeps the polygon out from under them.
+    Rect directionBox, stateTableBox;
+    std::vector<Rect> fitOverlays;  // canvasOverlays() the canvas last fitted around (main.cpp)
+    // Save PNG's confirmation on the canvas: the full path (or why not), until `toastUntil`
+    // (platform::time()).
+    std::string toast;
+    bool toastFailed = false;
+    double toastUntil = 0;
+    std::string lastExportDir;  // the folder of the last export written: Save PNG writes there
+    std::vector<Rect> labels;   // the error view's vertex labels this frame
+    Rect stateDiagram;          // where the State machine panel drew its states this frame
     // The step's labels this frame (scene_labels.h), each named for what it labels:
     // "named-vertex-35", "finger-vertex-36", "ghost-vertex-14", "named-triangle-18", ...
     std::vector<std::pair<std::string, Rect>> stepLabels;
     QuizActions quizAsked = QuizActions::all();  // what Q starts the quiz with (panel_quiz.cpp)
     Rect quizBox;     // the quiz window this frame; empty when off (--print-layout)
     Rect quizColumn;  // presenter view: the quiz's column, carved from the canvas (main.cpp)
-    bool quizColumnWas = false;  // ... last frame: a change refits the canvas
     // The pending question's words, and the generation and step they were made for (a scan of
     // the events before the step: once per step, not per frame).
     std::pair<uint64_t, std::string> quizPrompt{~0ull, ""};
@@ -184,6 +193,13 @@ void drawCanvas(Ui& ui);  // panel_canvas.cpp: geometry to the renderer, labels,
 // Renderer::render draws it next), labels and overlays to `dl`, at ui.layout.canvas through
 // model.camera(). Exports call it with their own camera, rectangle and draw list.
 void paintCanvas(Ui& ui, ImDrawList* dl);
+// What floats over the canvas as last drawn, which a fit keeps the polygon out from under: the
+// find and Edit boxes, the Shrink window, the direction dial and the State table (not in
+// presenter view, which shows none of them), and the arrow of a turned flood direction.
+std::vector<Rect> canvasOverlays(const Ui& ui);
+// Where the canvas shows which way the water rises when the flood direction is not the
+// default (+y): its bottom-left corner; empty otherwise.
+Rect upArrowRect(const Ui& ui);
 void drawTimeline(Ui& ui);      // panel_timeline.cpp: strip, transport, go-to, play
 void drawStateMachine(Ui& ui);  // panel_state_machine.cpp: the six states of §4
 void drawDecision(Ui& ui);      // panel_decision.cpp: the Fig. 9 tree, the current path lit
@@ -253,7 +269,12 @@ void clickableVertex(Ui& ui, const char* label, Index v);
 const char* actionLetter(Action a);
 ImVec4 toImVec4(Rgba c);
 unsigned toImU32(Rgba c);
-// Writes the current step as "<name>-step<N>.svg" in the working directory.
+// Writes the current step as "<name>-step<N>.svg" where Save PNG writes (pictureFolder).
 std::string exportSvg(Ui& ui);
+// Save PNG (the toolbar, key P): asks main for the canvas alone as pictureFolder()/
+// "<name>-step<N>.png" after this frame (export.h).
+void requestSavePng(Ui& ui);
+// A confirmation over the canvas's bottom for a few seconds, red when `failed`.
+void showToast(Ui& ui, const std::string& text, bool failed);
 
 }  // namespace flood::view

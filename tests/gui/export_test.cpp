@@ -11,8 +11,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include <sys/stat.h>
 #include <sys/wait.h>
@@ -106,10 +108,27 @@ size_t panelPixels(const Image& img) {
     return n;
 }
 
-// The model as the exporting viewer sees it: the hidden 1280x800 window's canvas, fitted.
+// The model as the exporting viewer sees it: the hidden 1280x800 window's canvas, fitted clear
+// of the find and Edit boxes over it (view_fit.h), where that window prints them.
 Camera exportView(Model& m, const Rect& area) {
     Layout layout = computeLayout(1280, 800, 1);
-    m.fitCamera(layout.canvas);
+    const fs::path shot =
+        fs::path(FLOOD_WORK_DIR) / ("export-view-" + std::to_string(getpid()) + ".png");
+    ViewerRun r = viewer("'" + m.path() + "' --step " + std::to_string(m.step()) +
+                         " --print-layout --screenshot '" + shot.string() + "' --size 1280x800");
+    fs::remove(shot);
+    std::vector<Rect> boxes;
+    std::istringstream lines(r.out);
+    for (std::string line; std::getline(lines, line);) {
+        char name[64];
+        Rect b;
+        if (std::sscanf(line.c_str(), "flood-viewer: layout %63s %lf %lf %lf %lf", name, &b.x, &b.y,
+                        &b.w, &b.h) == 5 &&
+            (std::string(name) == "find-box" || std::string(name) == "edit-box"))
+            boxes.push_back(b);
+    }
+    EXPECT_EQ(boxes.size(), 2u) << r.out;
+    m.fitCamera(layout.canvas, boxes);
     return exportCamera(m.camera(), area);
 }
 

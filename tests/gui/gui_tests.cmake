@@ -7,6 +7,10 @@ find_package(GTest REQUIRED)
 # The top level enables testing after adding the viewer's directory; add_test needs it now.
 enable_testing()
 
+# The viewer's saved settings (its theme) would follow a screenshot: the tests see none of the
+# machine's, an empty config folder of their own.
+set(GUI_CONFIG ${CMAKE_CURRENT_BINARY_DIR}/gui-test-config)
+
 # A test that runs flood-viewer itself (a screenshot, read back pixel by pixel): Xvfb needed,
 # skipped (77) without a display. Mesa's unloaded driver looks like a leak to ASan; leak checks
 # stay on for the other tests.
@@ -18,7 +22,7 @@ function(flood_screenshot_test name)
   add_dependencies(${name} flood-viewer)
   add_test(NAME viewer/${name} COMMAND ${name})
   set_tests_properties(viewer/${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
-    ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+    ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;XDG_CONFIG_HOME=${GUI_CONFIG}")
 endfunction()
 
 # A test that drives panels through a window-free ImGui context (no display needed): its
@@ -45,7 +49,7 @@ add_dependencies(screenshot_test flood-viewer flood)
 add_test(NAME viewer/screenshot_test COMMAND screenshot_test)
 # Mesa's unloaded driver looks like a leak to ASan; keep leak checks for the other tests.
 set_tests_properties(viewer/screenshot_test PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
-  ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+  ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;XDG_CONFIG_HOME=${GUI_CONFIG}")
 
 # ---- --version: the version and exit 0, as `flood --version` (needs no display) ------------
 add_test(NAME viewer/version COMMAND sh -c
@@ -59,7 +63,7 @@ target_compile_definitions(export_test PRIVATE FLOOD_VIEWER="$<TARGET_FILE:flood
   FLOOD_WORK_DIR="${CMAKE_CURRENT_BINARY_DIR}")
 add_dependencies(export_test flood-viewer)
 add_test(NAME viewer/export_test COMMAND export_test)
-set_tests_properties(viewer/export_test PROPERTIES TIMEOUT 300 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0")
+set_tests_properties(viewer/export_test PROPERTIES TIMEOUT 300 ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;XDG_CONFIG_HOME=${GUI_CONFIG}")
 
 # ---- the Fig. 9 tree in the Decision panel, its path lit ---------------------------------
 flood_screenshot_test(tree_screenshot_test)
@@ -81,3 +85,9 @@ flood_screenshot_test(quiz_screenshot_test)
 
 # ---- the quiz's keys: Q, 1-5 and R B S J F (window-free ImGui, no display needed) -----------
 flood_windowless_test(quiz_keys_test panel_quiz.cpp panel_help.cpp panel_decision.cpp)
+
+# ---- views that hold: Fit into the canvas's free part, after presenter on and off ------------
+flood_screenshot_test(fit_test)
+
+# ---- Save PNG: the canvas alone, named and placed; --screenshot follows the saved theme ------
+flood_screenshot_test(save_png_screenshot_test)

@@ -150,6 +150,9 @@ int checkShot(const Model& model, const Layout& layout, const Image& img, bool b
 // 0.2-0.7 and 0.8-1 around the origin) must read as a shape at the fit: the disc inside radius
 // 0.2 is dry land, the plane beyond radius 1 background, and the spiked band mostly not
 // vertex-class dots (unthinned, they paved it). Samples on a pixel grid, classified by radius.
+bool shootPrinted(const std::string& input, const std::string& args, const std::string& out, int W,
+                  int H, Image& img, std::map<std::string, Rect>& layout, bool exact, int wantExit);
+
 int checkDenseFace(const std::string& dir, int W, int H, const Layout& layout) {
     std::string input = dir + "/screenshot-test-dense.json";
     std::string gen =
@@ -160,9 +163,13 @@ int checkDenseFace(const std::string& dir, int W, int H, const Layout& layout) {
     }
     Model model;
     model.open(input);
-    model.fitCamera(layout.canvas);
     Image img;
-    if (!shoot(input, "--step 0", dir + "/screenshot-test-dense.png", W, H, img)) return 1;
+    std::map<std::string, Rect> printed;
+    if (!shootPrinted(input, "--step 0", dir + "/screenshot-test-dense.png", W, H, img, printed,
+                      true, 0))
+        return 1;
+    // The viewer fits clear of the find and Edit boxes (view_fit.h): the same fit here.
+    model.fitCamera(layout.canvas, {printed["find-box"], printed["edit-box"]});
     const Rgba dots[] = {palette::kRegular, palette::kBottom, palette::kSag, palette::kTop,
                          palette::kCeiling};
     int inner = 0, innerLand = 0, band = 0, bandDots = 0, outer = 0, outerBackground = 0;
@@ -371,7 +378,7 @@ int checkLightTheme(const std::string& dir, const std::string& input, Model& mod
                       int(layout.bottom.y + layout.bottom.h), img, printed))
         return 1;
     model.seek(step);
-    model.fitCamera(layout.canvas);
+    model.fitCamera(layout.canvas, {printed["find-box"], printed["edit-box"]});
     failures += checkShot(model, layout, img, false);
     if (luminance(palette::kBackground) < 200)
         failures += failWith("the light background is not light");
@@ -909,7 +916,10 @@ int main() {
         std::string steps = (back ? "--step " + std::to_string(model.steps()) + " " : "") +
                             "--step " + std::to_string(step);
         Image img;
-        if (!shoot(input, steps, out, W, H, img)) return 1;
+        std::map<std::string, Rect> printed;
+        if (!shootPrinted(input, steps, out, W, H, img, printed)) return 1;
+        // The viewer fits clear of the find and Edit boxes (view_fit.h): the same fit here.
+        model.fitCamera(layout.canvas, {printed["find-box"], printed["edit-box"]});
         failures += checkShot(model, layout, img, back);
         stbi_image_free(img.px);
     }

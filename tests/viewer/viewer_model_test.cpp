@@ -32,7 +32,7 @@ using flood::testing::scratch;
 namespace {
 
 std::vector<std::string> polygonFiles() {
-    auto files = listPolygonFiles(std::string(FLOOD_SOURCE_DIR) + "/polygons");
+    auto files = flood::polygonFiles(std::string(FLOOD_SOURCE_DIR) + "/polygons");
     return files;
 }
 
@@ -384,7 +384,7 @@ namespace {
 std::string invalidPath(const std::string& f) {
     return std::string(FLOOD_SOURCE_DIR) + "/polygons/invalid/" + f;
 }
-size_t countKind(const Model& m, VerdictKind k) {
+size_t countKind(const Model& m, Verdict k) {
     size_t n = 0;
     for (const auto& l : m.verdictLines()) n += l.kind == k;
     return n;
@@ -398,7 +398,7 @@ TEST(ViewerVerdict, ValidSampleIsOkOnlyBecauseTheCheckerPassed) {
     Model m;
     m.open(std::string(FLOOD_SOURCE_DIR) + "/polygons/paper-figure-7.json");
     ASSERT_EQ(m.verdictLines().size(), 1u) << m.verdict();
-    EXPECT_EQ(m.verdictLines()[0].kind, VerdictKind::Ok);
+    EXPECT_EQ(m.verdictLines()[0].kind, Verdict::Ok);
     EXPECT_TRUE(m.check().ok);
     EXPECT_FALSE(m.failed());
     EXPECT_EQ(m.exitCode(), 0);
@@ -409,8 +409,8 @@ TEST(ViewerVerdict, ValidSampleIsOkOnlyBecauseTheCheckerPassed) {
 TEST(ViewerVerdict, InvalidInputNeverSaysOk) {
     Model m;
     m.open(invalidPath("self-intersection.json"));
-    EXPECT_EQ(countKind(m, VerdictKind::InvalidInput), 1u) << m.verdict();
-    EXPECT_EQ(countKind(m, VerdictKind::Ok), 0u) << m.verdict();
+    EXPECT_EQ(countKind(m, Verdict::Invalid), 1u) << m.verdict();
+    EXPECT_EQ(countKind(m, Verdict::Ok), 0u) << m.verdict();
     EXPECT_EQ(m.verdict().find("ok"), std::string::npos) << m.verdict();
     EXPECT_TRUE(m.failed());
     EXPECT_EQ(m.exitCode(), 4);
@@ -425,7 +425,7 @@ TEST(ViewerVerdict, ForbiddenRunWithoutValidationHasItsOwnLine) {
         ASSERT_TRUE(r.diagnostic.ok()) << r.diagnostic.message;
         Model m;
         m.openPolygon(r.polygon, f, Diagnostic{});
-        if (countKind(m, VerdictKind::Forbidden) == 0) continue;
+        if (countKind(m, Verdict::Forbidden) == 0) continue;
         seen = true;
         EXPECT_EQ(m.verdictLines().size(), 1u) << m.verdict();
         EXPECT_EQ(m.exitCode(), 5);
@@ -451,7 +451,7 @@ TEST(ViewerVerdict, CheckerRejectionIsShownAndBlamesTheTriangle) {
     Model m;
     m.openTrace(t, "tampered.jsonl");
     ASSERT_EQ(m.verdictLines().size(), 1u) << m.verdict();
-    EXPECT_EQ(m.verdictLines()[0].kind, VerdictKind::Rejected);
+    EXPECT_EQ(m.verdictLines()[0].kind, Verdict::Checker);
     EXPECT_NE(m.verdict().find("clockwise-triangle: triangle 3"), std::string::npos) << m.verdict();
     EXPECT_EQ(m.errorCulprits().triangles, std::vector<uint32_t>{3});
     EXPECT_EQ(m.firstErrorStep(), m.triangleStep(3));
@@ -459,7 +459,7 @@ TEST(ViewerVerdict, CheckerRejectionIsShownAndBlamesTheTriangle) {
 
     Model file;  // the committed one: a ring through one point twice
     file.open(invalidPath("checker-rejects.json"));
-    EXPECT_EQ(countKind(file, VerdictKind::Ok), 0u) << file.verdict();
+    EXPECT_EQ(countKind(file, Verdict::Ok), 0u) << file.verdict();
     EXPECT_TRUE(file.failed());
 
     // As `--no-validate`: only the checker's rejection (triangle-count), blaming the part's ring.
@@ -467,7 +467,7 @@ TEST(ViewerVerdict, CheckerRejectionIsShownAndBlamesTheTriangle) {
     Model unchecked;
     unchecked.openPolygon(r.polygon, "checker-rejects.json", Diagnostic{});
     ASSERT_EQ(unchecked.verdictLines().size(), 1u) << unchecked.verdict();
-    EXPECT_EQ(unchecked.verdictLines()[0].kind, VerdictKind::Rejected) << unchecked.verdict();
+    EXPECT_EQ(unchecked.verdictLines()[0].kind, Verdict::Checker) << unchecked.verdict();
     EXPECT_NE(unchecked.verdict().find("triangle-count"), std::string::npos) << unchecked.verdict();
     EXPECT_EQ(unchecked.errorCulprits().rings, std::vector<uint32_t>{0});
     EXPECT_EQ(unchecked.exitCode(), 6);
@@ -632,7 +632,7 @@ TEST(ViewerTraces, BinaryTraceOpensByItsMagic) {
     m.open(dir + "saved.trace");
     ASSERT_TRUE(m.openDiagnostic().ok()) << m.openDiagnostic().message;
     EXPECT_EQ(m.steps(), t.events.size());
-    EXPECT_EQ(m.verdictLines().at(0).kind, VerdictKind::Ok) << m.verdict();
+    EXPECT_EQ(m.verdictLines().at(0).kind, Verdict::Ok) << m.verdict();
     std::ofstream(dir + "cut.bin", std::ios::binary) << bin.substr(0, bin.size() - 3);
     m.open(dir + "cut.bin");
     EXPECT_EQ(m.exitCode(), 3);
@@ -654,7 +654,7 @@ TEST(ViewerTraces, OpenLikeAPolygonAndFailWithTheLine) {
     m.open(dir + "good.jsonl");
     EXPECT_TRUE(m.openDiagnostic().ok()) << m.openDiagnostic().message;
     EXPECT_EQ(m.steps(), t.events.size());
-    EXPECT_EQ(m.verdictLines().at(0).kind, VerdictKind::Ok) << m.verdict();
+    EXPECT_EQ(m.verdictLines().at(0).kind, Verdict::Ok) << m.verdict();
     EXPECT_EQ(m.recentFiles().front().front(), '/');
 
     Model byHeader;  // any name: the header line says it is a trace
@@ -684,7 +684,7 @@ TEST(ViewerTraces, OpenLikeAPolygonAndFailWithTheLine) {
     EXPECT_NE(fresh.openDiagnostic().message.find("bad-line.jsonl:3:"), std::string::npos)
         << fresh.openDiagnostic().message;
     EXPECT_TRUE(fresh.failed());
-    EXPECT_EQ(fresh.verdictLines().at(0).kind, VerdictKind::Unreadable);
+    EXPECT_EQ(fresh.verdictLines().at(0).kind, Verdict::Malformed);
 }
 
 TEST(ViewerRecent, AbsolutePathsSavedOnEveryOpen) {
@@ -812,7 +812,7 @@ TEST(ViewerModel, InspectorRecomputesTheRecordedTests) {
     for (const std::string& family : familyNames())
         for (size_t size : {30, 300}) traces.push_back(record(generate(family, 5, size)));
     // Invalid input too, up to and including the Forbidden step (the tests that led there).
-    for (const auto& f : listPolygonFiles(std::string(FLOOD_SOURCE_DIR) + "/polygons/invalid")) {
+    for (const auto& f : flood::polygonFiles(std::string(FLOOD_SOURCE_DIR) + "/polygons/invalid")) {
         Model m;
         m.open(f);
         traces.push_back(m.trace());
@@ -1005,17 +1005,12 @@ TEST(ViewerFeatures, ListShowsVerdictsFailingFirst) {
     scan.wait();
     ASSERT_TRUE(scan.done());
     EXPECT_TRUE(scan.diagnostic().ok()) << scan.diagnostic().message;
-    std::vector<std::pair<size_t, VerdictKind>> got;
+    std::vector<std::pair<size_t, Verdict>> got;
     for (const auto& f : scan.features()) got.push_back({f.index, f.kind});
-    const std::vector<std::pair<size_t, VerdictKind>> want = {{1, VerdictKind::InvalidInput},
-                                                              {3, VerdictKind::InvalidInput},
-                                                              {4, VerdictKind::InvalidInput},
-                                                              {5, VerdictKind::Unreadable},
-                                                              {9, VerdictKind::Unreadable},
-                                                              {0, VerdictKind::Ok},
-                                                              {2, VerdictKind::Ok},
-                                                              {7, VerdictKind::Ok},
-                                                              {8, VerdictKind::Ok}};
+    const std::vector<std::pair<size_t, Verdict>> want = {
+        {1, Verdict::Invalid},   {3, Verdict::Invalid},   {4, Verdict::Invalid},
+        {5, Verdict::Malformed}, {9, Verdict::Malformed}, {0, Verdict::Ok},
+        {2, Verdict::Ok},        {7, Verdict::Ok},        {8, Verdict::Ok}};
     EXPECT_EQ(got, want);
     EXPECT_EQ(scan.total(), want.size());
     EXPECT_EQ(scan.progress(), want.size());

@@ -35,13 +35,11 @@
 
 #include "flood/check/checker.h"
 #include "flood/check/diagnostic_where.h"
+#include "flood/check/verdict.h"
 #include "flood/io/io.h"
 #include "flood/io/output.h"
 #include "flood/machine/flood.h"
 #include "flood/tools/shrink.h"
-#ifdef FLOOD_GDAL
-#include "flood/io/gdal/gdal_io.h"
-#endif
 
 namespace flood::cli {
 namespace {
@@ -133,24 +131,18 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
     try {
         Polygon& p = f.read.polygon;
         row.vertices = p.vertices.size();
+        Judgement j = judge(f.read, name, {o.validate, true, {}});
+        row.verdict = j.verdict;
         if (!readable) {
-            row.verdict = f.read.diagnostic.status == Status::Internal ? Verdict::Internal
-                                                                       : Verdict::Malformed;
-            row.reason = reasonOf(f.read.diagnostic.message, name, {});  // the name has a column
-        } else if (Diagnostic d = o.validate ? validate(p, name) : Diagnostic{}; !d.ok()) {
-            row.verdict = Verdict::Invalid;
-            splitInvalid(row, name, p, std::move(d), o.maxFindings);
-        } else {
-            FloodResult r = triangulate(p);
-            if (!r.diagnostic.ok()) {
-                row.verdict = Verdict::Forbidden;
-                row.at = forbiddenAt(p, r.failure);
-                row.reason = r.diagnostic.message;
-                row.place = findingOf(r.diagnostic, name, p);
-            } else if (CheckResult c = checkTriangulation(p, r.triangles); !c.ok) {
-                row.verdict = Verdict::Checker;
-                row.reason = "the exact checker rejects the triangulation: " + c.reason;
-            }
+            row.reason = reasonOf(j.diagnostic.message, name, {});  // the name has a column
+        } else if (j.verdict == Verdict::Invalid) {
+            splitInvalid(row, name, p, std::move(j.diagnostic), o.maxFindings);
+        } else if (j.verdict == Verdict::Forbidden) {
+            row.at = forbiddenAt(p, j.failure);
+            row.reason = j.diagnostic.message;
+            row.place = findingOf(j.diagnostic, name, p);
+        } else if (j.verdict == Verdict::Checker) {
+            row.reason = "the exact checker rejects the triangulation: " + j.check.reason;
         }
         // A whole file is copied at extraction (cannot be re-read from stdin: written anew).
         if (row.verdict != Verdict::Ok && !o.extractDir.empty())
@@ -173,16 +165,6 @@ void checkFeature(FeatureRead& f, Row& row, const CheckOptions& o) {
     f = FeatureRead{};  // the polygon is done with: free it now
 }
 
-bool polygonFile(const fs::path& p) {
-    std::string ext = p.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
-#ifdef FLOOD_GDAL
-    if (gdal::gisFile(p.string())) return true;
-#endif
-    return ext == ".json" || ext == ".geojson" || ext == ".wkt";
-}
-
 }  // namespace
 
 std::string grouped(size_t n) {
@@ -191,13 +173,7 @@ std::string grouped(size_t n) {
     return s;
 }
 
-std::string folderFormats() {
-    std::string list = ".json, .geojson, .wkt";
-#ifdef FLOOD_GDAL
-    for (const std::string& ext : gdal::gisExtensions()) list += ", ." + ext;
-#endif
-    return list;
-}
+std::string folderFormats() { return gdal::listedFormats(); }
 
 namespace {
 
@@ -214,7 +190,7 @@ std::vector<File> expand(const std::vector<std::string>& inputs) {
         fs::recursive_directory_iterator it(in, ec), end;
         for (; !ec && it != end; it.increment(ec)) {
             std::error_code fe;
-            if (it->is_regular_file(fe) && polygonFile(it->path()))
+            if (it->is_regular_file(fe) && gdal::listedFile(it->path().string()))
                 found.push_back(it->path().string());
         }
         std::sort(found.begin(), found.end());
@@ -267,15 +243,9 @@ private:
 
     // GIS datasets through GDAL (core/io/gdal/), the rest by the core's readers.
     DatasetRead readDataset(const std::string& path, bool& gis) {
-#ifdef FLOOD_GDAL
-        const Selection& s = o_.selection;
-        gdal::Selection g{s.layer, s.feature, s.where};
-        g.allLayers = true;  // each layer's features, each row naming its layer
-        gis = gdal::handles(path, g);
-        if (gis) return gdal::readFeatures(path, g);
-#endif
-        gis = false;
-        return readFeaturesFile(path, o_.maxInputBytes, !o_.extractDir.empty());
+        Selection s = o_.selection;
+        s.allLayers = true;  // each layer's features, each row naming its layer
+        return gdal::readAnyFeatures(path, s, o_.maxInputBytes, !o_.extractDir.empty(), gis);
     }
 
     void read(size_t i, std::vector<Job>& more) {

@@ -5,15 +5,12 @@
 #include <string>
 #include <vector>
 
+#include "flood/io/gdal/read_any.h"  // Selection, the choice of reader
+
 namespace flood::cli {
 
 // --layer, --feature, --where: which features of a GIS dataset are read (through GDAL).
-struct Selection {
-    std::string layer;
-    int64_t feature = -1;  // an FID, or -1 for all
-    std::string where;
-    bool any() const { return !layer.empty() || feature >= 0 || !where.empty(); }
-};
+using Selection = gdal::Selection;
 
 struct CheckOptions {
     std::vector<std::string> inputs;  // files and folders ("-" is stdin)

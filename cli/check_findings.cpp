@@ -9,10 +9,8 @@
 #include <set>
 
 #include "check_rows.h"
-#include "triangulate_gis.h"
-#ifdef FLOOD_GDAL
 #include "flood/io/gdal/gdal_io.h"
-#endif
+#include "triangulate_gis.h"
 
 namespace flood::cli {
 

@@ -6,44 +6,11 @@
 #include <vector>
 
 #include "check.h"
+#include "flood/check/verdict.h"  // Verdict: the rows' verdicts
 #include "flood/geometry/polygon.h"
 #include "flood/geometry/status.h"
 
 namespace flood::cli {
-
-// In increasing severity: the exit code of a run is that of its worst row.
-#define FLOOD_VERDICTS(X)                \
-    X(Ok, "ok", Ok)                      \
-    X(Malformed, "malformed", Malformed) \
-    X(Invalid, "invalid", Invalid)       \
-    X(Forbidden, "forbidden", Forbidden) \
-    X(Checker, "checker", Internal)      \
-    X(Internal, "internal", Internal)
-
-enum class Verdict {
-#define FLOOD_X(name, word, status) name,
-    FLOOD_VERDICTS(FLOOD_X)
-#undef FLOOD_X
-        Count
-};
-
-inline const char* verdictName(Verdict v) {
-    static const char* const names[] = {
-#define FLOOD_X(name, word, status) word,
-        FLOOD_VERDICTS(FLOOD_X)
-#undef FLOOD_X
-    };
-    return names[int(v)];
-}
-
-inline Status verdictStatus(Verdict v) {
-    static const Status statuses[] = {
-#define FLOOD_X(name, word, status) Status::status,
-        FLOOD_VERDICTS(FLOOD_X)
-#undef FLOOD_X
-    };
-    return statuses[int(v)];
-}
 
 // A culprit edge of a finding: its ring, its first vertex within the ring, its two ends.
 struct FindingEdge {

@@ -31,6 +31,7 @@
 #include "flood/check/checker.h"
 #include "flood/check/touches.h"
 #include "flood/check/verify.h"
+#include "flood/io/gdal/read_any.h"
 #include "flood/io/io.h"
 #include "flood/io/output.h"
 #include "flood/log/replay.h"
@@ -45,9 +46,6 @@
 #include "pipeline.h"
 #include "run.h"
 #include "triangulate_gis.h"
-#ifdef FLOOD_GDAL
-#include "flood/io/gdal/gdal_io.h"
-#endif
 
 namespace {
 
@@ -694,13 +692,11 @@ int flood::cli::run(int argc, char** argv) {
         app.exit(e);
         return code(Status::Usage);
     }
-#ifndef FLOOD_GDAL
-    if (selection.any()) {
+    if (selection.any() && !gdal::built()) {
         std::cerr << "error: --layer, --feature and --where read GIS datasets through GDAL: this "
                      "flood was built without it (install libgdal-dev, reconfigure)\n";
         return code(Status::Usage);
     }
-#endif
     // -o naming the input (shrink IN -o IN) would replace the very file being read.
     if ((tri->parsed() || trace->parsed() || shr->parsed()) && out != "-" && sameFile(in, out)) {
         std::cerr << "error: -o " << out << " is the input file " << (in == "-" ? "<stdin>" : in)

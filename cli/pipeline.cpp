@@ -5,9 +5,7 @@
 
 #include "check.h"  // grouped()
 #include "flood/check/touches.h"
-#ifdef FLOOD_GDAL
-#include "flood/io/gdal/gdal_io.h"
-#endif
+#include "flood/io/gdal/read_any.h"
 
 namespace flood::cli {
 
@@ -15,11 +13,7 @@ uint64_t maxInputBytes = kDefaultMaxInputBytes;
 Selection selection;
 
 ReadResult readInput(const std::string& path) {
-#ifdef FLOOD_GDAL
-    gdal::Selection s{selection.layer, selection.feature, selection.where};
-    if (gdal::handles(path, s)) return gdal::readPolygon(path, s);
-#endif
-    return readPolygonFile(path, maxInputBytes);
+    return gdal::readAny(path, selection, maxInputBytes);
 }
 
 Status prepare(const std::string& path, Polygon& polygon, bool check, bool floodInvalid) {
@@ -49,23 +43,17 @@ Status prepare(const std::string& path, Polygon& polygon, bool check, bool flood
 
 Status judge(const Polygon& polygon, const std::vector<Triangle>& triangles, const Diagnostic& run,
              bool validated, bool exactCheck, const std::function<TriangleCheck()>& triangleCheck) {
-    if (!run.ok()) {
+    Judgement j = judgeRun(polygon, triangles, run, "", exactCheck, triangleCheck);
+    if (j.verdict == Verdict::Forbidden)
         std::cerr << "error: flooding stopped in a forbidden state: " << run.message << "\n";
-        return run.status;
-    }
-    if (!exactCheck) return Status::Ok;
-    CheckResult c = checkTriangulation(polygon, triangles, triangleCheck);
-    if (!c.ok) {
-        if (validated)
-            std::cerr << "internal error: the exact checker rejects our triangulation: " << c.reason
-                      << "\n";
-        else
-            std::cerr << "error: the exact checker rejects our triangulation: " << c.reason
-                      << " (validation was skipped; the check of the output caught it: the input "
-                         "is probably invalid, run without --no-validate to see why)\n";
-        return Status::Internal;
-    }
-    return Status::Ok;
+    else if (j.verdict == Verdict::Checker && validated)
+        std::cerr << "internal error: the exact checker rejects our triangulation: "
+                  << j.check.reason << "\n";
+    else if (j.verdict == Verdict::Checker)
+        std::cerr << "error: the exact checker rejects our triangulation: " << j.check.reason
+                  << " (validation was skipped; the check of the output caught it: the input "
+                     "is probably invalid, run without --no-validate to see why)\n";
+    return j.diagnostic.status;
 }
 
 Options makeOptions(const std::string& up) {

@@ -14,6 +14,7 @@
 
 #include "check.h"  // Selection
 #include "flood/check/checker.h"
+#include "flood/check/verdict.h"
 #include "flood/io/io.h"
 #include "flood/machine/flood.h"
 
@@ -26,8 +27,8 @@ extern uint64_t maxInputBytes;
 // --layer, --feature, --where of the subcommand that reads (GDAL datasets).
 extern Selection selection;
 
-// GIS datasets go to GDAL (core/io/gdal/), everything else to the core's own readers: the
-// dispatch is here and in cli/check.cpp, so the core library never depends on GDAL.
+// GIS datasets go to GDAL (core/io/gdal/), everything else to the core's own readers
+// (gdal::readAny, flood/io/gdal/read_any.h), so the core library never depends on GDAL.
 ReadResult readInput(const std::string& path);
 
 // Reads and validates; on failure prints the diagnostic and returns its status.
@@ -39,7 +40,8 @@ ReadResult readInput(const std::string& path);
 Status prepare(const std::string& path, Polygon& polygon, bool check = true,
                bool floodInvalid = false);
 
-// Checks a finished run. Forbidden -> 5 (its explanation), checker rejects -> 6. The exact
+// Checks a finished run (the core's judgeRun(), flood/check/verdict.h) and says why it failed.
+// Forbidden -> 5 (its explanation), checker rejects -> 6. The exact
 // check runs with --no-validate too (`validated` false): there it is what catches invalid
 // input the machine cannot see, such as overlapping parts (flooded apart). --no-exact-check
 // (`exactCheck` false) skips it: the output is then unproven.

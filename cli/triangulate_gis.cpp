@@ -10,10 +10,8 @@
 
 #include "flood/check/checker.h"
 #include "flood/check/touches.h"
-#include "flood/io/io.h"
-#ifdef FLOOD_GDAL
 #include "flood/io/gdal/gdal_io.h"
-#endif
+#include "flood/io/io.h"
 
 namespace flood::cli {
 namespace {
@@ -87,10 +85,10 @@ int gisFormat(const std::string& option, const std::string& out, std::string& fo
 int triangulateGis(const GisTriangulation& t) {
 #ifdef FLOOD_GDAL
     const std::string name = t.in == "-" ? "<stdin>" : t.in;
-    gdal::Selection s{t.selection.layer, t.selection.feature, t.selection.where};
-    DatasetRead d = t.in != "-" && gdal::handles(t.in, s)
-                        ? gdal::readFeatures(t.in, s)
-                        : readFeaturesFile(t.in, t.maxInputBytes, false);
+    // stdin is the core's to read, a selection or not.
+    bool gis = false;
+    DatasetRead d = gdal::readAnyFeatures(t.in, t.in == "-" ? Selection{} : t.selection,
+                                          t.maxInputBytes, false, gis);
     for (const std::string& w : d.skipped) std::cerr << "warning: " << w << "\n";
     if (d.features.size() == 1 && d.features[0].wholeFile && !d.features[0].read.diagnostic.ok()) {
         std::cerr << "error: " << d.features[0].read.diagnostic.message << "\n";
@@ -177,7 +175,7 @@ int triangulateGis(const GisTriangulation& t) {
     gdal::DatasetOutput o;
     o.driver = t.driver;
     o.format = t.format;
-    o.sources = {{t.in, s}};
+    o.sources = {{t.in, t.selection}};
     std::vector<std::string> warnings;
     Diagnostic w = gdal::writeLayers(t.out, o, {layer}, warnings);
     for (const std::string& m : warnings) std::cerr << "warning: " << m << "\n";

@@ -22,14 +22,10 @@ Polygon makePolygon(const std::vector<Rings>& parts) {
     return p;
 }
 
-Diagnostic checkPolygon(Polygon& polygon, const std::string& name) {
-    return validate(polygon, name);
-}
-
 Triangulation triangulateParts(const std::vector<Rings>& parts, const Options& options) {
     Triangulation t;
     t.polygon = makePolygon(parts);
-    t.diagnostic = checkPolygon(t.polygon);
+    t.diagnostic = validate(t.polygon, "polygon");
     if (!t.ok()) return t;
     FloodResult r = triangulate(t.polygon, nullptr, options);
     t.triangles = std::move(r.triangles);
@@ -39,7 +35,7 @@ Triangulation triangulateParts(const std::vector<Rings>& parts, const Options& o
 
 Trace traceParts(const std::vector<Rings>& parts, const Options& options) {
     Polygon polygon = makePolygon(parts);
-    Diagnostic d = checkPolygon(polygon);
+    Diagnostic d = validate(polygon, "polygon");
     if (d.ok()) return record(polygon, options);
     Trace t;
     t.polygon = std::move(polygon);

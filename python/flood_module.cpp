@@ -21,6 +21,7 @@
 #include "cli/run.h"  // the flood command, for python -m flood
 #include "flood/check/checker.h"
 #include "flood/check/diagnostic_where.h"
+#include "flood/check/verdict.h"
 #include "flood/io/io.h"
 #include "flood/io/output.h"
 #include "flood/log/replay.h"
@@ -147,22 +148,13 @@ struct Outcome {
     Where where;  // check() keeps where the diagnostic points, not the polygon
 };
 
-// Validation and, with `flooded`, flooding and the checker's verdict. No GIL needed.
+// The core's judge (flood/check/verdict.h): validation, flooding, the checker's verdict. No GIL
+// needed.
 void run(Outcome& o, bool validateFirst, const Options& options, const std::string& name) {
     if (!o.diagnostic.ok()) return;
-    if (validateFirst) {
-        o.diagnostic = validate(o.polygon, name);
-        if (!o.diagnostic.ok()) return;
-    }
-    FloodResult r = triangulate(o.polygon, nullptr, options);
-    o.diagnostic = r.diagnostic;
-    if (!o.diagnostic.ok()) return;
-    CheckResult c = checkTriangulation(o.polygon, r.triangles);
-    if (!c.ok)
-        o.diagnostic = {Status::Internal,
-                        name + ": the exact checker rejects the triangulation: " + c.reason,
-                        c.culprits};
-    else o.triangles = std::move(r.triangles);
+    Judgement j = judge(o.polygon, name, {validateFirst, true, options});
+    o.diagnostic = std::move(j.diagnostic);
+    if (j.ok()) o.triangles = std::move(j.triangles);
 }
 
 Outcome prepare(py::handle input, const std::string& name) {
@@ -278,6 +270,10 @@ PYBIND11_MODULE(_flood, m) {
         m.attr("STATUS_NAMES") = statuses;
     }
     m.attr("EVENT_DTYPE") = eventDtype();
+
+    // Which files of a folder are polygons (polygonFiles, flood/io/io.h): the tests' listing of
+    // polygons/ (python/tests/conftest.py), the one the C++ tests and the viewer use.
+    m.def("polygon_files", [](const std::string& dir) { return polygonFiles(dir); });
 
     m.def("validate", [](py::handle input, const std::string& name) {
         Outcome o = prepare(input, name);
@@ -481,33 +477,29 @@ PYBIND11_MODULE(_flood, m) {
 
     // Records a run: read, validate (unless told not to), flood with a recorder. A forbidden
     // run is recorded too (it is what one wants to look at); malformed or invalid input is not.
-    m.def(
-        "trace",
-        [](py::handle input, bool validateFirst, const std::string& up,
-           const std::string& name) -> py::object {
-            Options options;
-            options.up = upOf(up);
-            Outcome o = prepare(input, name);
-            auto t = std::make_shared<TraceHandle>();
-            t->warnings = o.warnings;
-            t->name = name;
-            {
-                py::gil_scoped_release unlocked;
-                if (o.diagnostic.ok() && validateFirst) o.diagnostic = validate(o.polygon, name);
-                if (o.diagnostic.ok()) {
-                    t->trace = record(o.polygon, options);
-                    if (t->trace.diagnostic.ok()) {
-                        CheckResult c = checkTriangulation(t->trace.polygon, t->trace.triangles);
-                        if (!c.ok)
-                            t->trace.diagnostic = {
-                                Status::Internal,
-                                name + ": the exact checker rejects the triangulation: " + c.reason,
-                                c.culprits};
-                    }
-                    t->replay = std::make_unique<Replay>(t->trace);
-                }
-            }
-            if (!o.diagnostic.ok()) return diagnosticTuple(o.diagnostic, o.polygon, name);
-            return py::cast(t);
-        });
+    m.def("trace",
+          [](py::handle input, bool validateFirst, const std::string& up,
+             const std::string& name) -> py::object {
+              Options options;
+              options.up = upOf(up);
+              Outcome o = prepare(input, name);
+              auto t = std::make_shared<TraceHandle>();
+              t->warnings = o.warnings;
+              t->name = name;
+              {
+                  py::gil_scoped_release unlocked;
+                  if (o.diagnostic.ok() && validateFirst) o.diagnostic = validate(o.polygon, name);
+                  if (o.diagnostic.ok()) {
+                      t->trace = record(o.polygon, options);
+                      // A forbidden run keeps the machine's diagnostic; a checked one the judge's.
+                      if (t->trace.diagnostic.ok())
+                          t->trace.diagnostic = judgeRun(t->trace.polygon, t->trace.triangles,
+                                                         t->trace.diagnostic, name)
+                                                    .diagnostic;
+                      t->replay = std::make_unique<Replay>(t->trace);
+                  }
+              }
+              if (!o.diagnostic.ok()) return diagnosticTuple(o.diagnostic, o.polygon, name);
+              return py::cast(t);
+          });
 }

@@ -12,10 +12,12 @@ from setuptools import Extension, setup
 
 here = os.path.dirname(os.path.abspath(__file__))
 core = os.path.relpath(os.path.join(here, "..", "core"), here)
-# Every layer's sources (core/LAYERS) but core/io/gdal's, the GDAL module CMake builds apart.
+# Every layer's sources (core/LAYERS) but core/io/gdal's, the GDAL module CMake builds apart:
+# built without GDAL, the choice of reader is read_any_none.cpp (core/CMakeLists.txt's seam).
 gdal = os.path.join(core, "io", "gdal") + os.sep
 core_sources = sorted(s for s in glob.glob(os.path.join(core, "**", "*.cpp"), root_dir=here,
                                            recursive=True) if not s.startswith(gdal))
+core_sources.append(os.path.join(gdal, "read_any_none.cpp"))
 cli = os.path.relpath(os.path.join(here, "..", "cli"), here)
 cli_sources = sorted(s for s in glob.glob(os.path.join(cli, "*.cpp"), root_dir=here)
                      if os.path.basename(s) != "flood.cpp")  # main() is the program's

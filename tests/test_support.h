@@ -44,15 +44,18 @@ inline std::string slurp(const std::filesystem::path& p) {
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+// The files of `dir` with extension `ext`, sorted: for a polygon's extension (.json, .wkt),
+// its polygons as the core lists them (polygonFiles(): gallery.json is no polygon).
 inline std::vector<std::string> filesIn(const std::string& dir, const std::string& ext) {
     std::vector<std::string> out;
+    if (polygonFileName("x" + ext)) {
+        for (std::string& f : polygonFiles(dir))
+            if (std::filesystem::path(f).extension() == ext) out.push_back(std::move(f));
+        return out;
+    }
     if (!std::filesystem::is_directory(dir)) return out;
     for (auto& e : std::filesystem::directory_iterator(dir))
-        // polygons/gallery.json is the gallery's index (tests/teach/gallery_test.cpp),
-        // not a polygon.
-        if (e.is_regular_file() && e.path().extension() == ext &&
-            e.path().filename() != "gallery.json")
-            out.push_back(e.path().string());
+        if (e.is_regular_file() && e.path().extension() == ext) out.push_back(e.path().string());
     std::sort(out.begin(), out.end());
     return out;
 }

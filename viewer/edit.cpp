@@ -32,9 +32,10 @@ Model::EditedRun Model::floodEdit(Polygon polygon, const std::string& name, Up u
         const bool forbidden =
             std::any_of(run.trace.events.begin(), run.trace.events.end(),
                         [](const Event& e) { return e.action == Action::Forbidden; });
-        if (!forbidden && run.trace.diagnostic.ok()) {
-            run.check = checkTriangulation(polygon, run.trace.triangles);
-            run.checked = true;
+        if (!forbidden) {
+            Judgement j = judgeRun(polygon, run.trace.triangles, run.trace.diagnostic, name);
+            run.checked = j.verdict != Verdict::Forbidden;  // not checked: the machine failed
+            run.check = std::move(j.check);
         }
     }
     run.trace.polygon = std::move(polygon);

@@ -19,12 +19,10 @@
 
 #include "flood/check/diagnostic_where.h"
 #include "flood/geometry/predicates.h"
+#include "flood/io/gdal/read_any.h"
 #include "flood/io/io.h"
 #include "flood/log/trace_io.h"
 #include "view_fit.h"
-#ifdef FLOOD_GDAL
-#include "flood/io/gdal/gdal_io.h"
-#endif
 
 #ifndef FLOOD_DATA_SUBDIR  // share/flood, relative to the install prefix
 #define FLOOD_DATA_SUBDIR "share/flood"
@@ -454,15 +452,6 @@ Model::~Model() { cancelInvariants(); }
 
 // A trace by its name (*.jsonl, what `flood trace` is given) or by its header line, so a
 // trace saved under any name opens as one.
-#ifndef FLOOD_GDAL
-static Diagnostic gisUnavailable(const std::string& path) {
-    return {Status::Usage,
-            path +
-                ": --layer and --where need GIS support: this viewer was built without "
-                "GDAL (install libgdal-dev and reconfigure)"};
-}
-#endif
-
 static bool isTracePath(const std::string& path) {
     if (path.size() > 6 && path.compare(path.size() - 6, 6, ".jsonl") == 0) return true;
     std::ifstream in(path, std::ios::binary);
@@ -491,15 +480,9 @@ void Model::open(const std::string& path) {
     const bool isTrace = isTracePath(path);
     try {
         if (isTrace) r.diagnostic = readTraceFile(path, t);
-#ifdef FLOOD_GDAL
         // GIS datasets (Shapefile, GeoPackage, ...) through GDAL: the selected layer's
         // polygonal features as one polygon, as `flood triangulate FILE` reads them.
-        else if (gdal::handles(path, {gisLayer, -1, gisWhere}))
-            r = gdal::readPolygon(path, {gisLayer, -1, gisWhere});
-#else
-        else if (!gisLayer.empty() || !gisWhere.empty()) r.diagnostic = gisUnavailable(path);
-#endif
-        else r = readPolygonFile(path);
+        else r = gdal::readAny(path, {gisLayer, -1, gisWhere});
     } catch (const std::exception& ex) {
         r.diagnostic = {Status::Malformed, path + ": " + ex.what()};
     }
@@ -670,17 +653,16 @@ void Model::computeVerdictLines() {
     error_ = {};
     firstErrorStep_ = kNone;
     const Polygon& P = trace_->polygon;
-    auto line = [&](VerdictKind k, std::string text) {
-        verdictLines_.push_back({k, std::move(text)});
+    auto line = [&](Verdict k, std::string text, bool note = false) {
+        verdictLines_.push_back({k, std::move(text), note});
     };
     if (!input_.ok() && P.vertices.empty()) {
-        line(input_.status == Status::Malformed ? VerdictKind::Unreadable
-                                                : VerdictKind::InvalidInput,
+        line(input_.status == Status::Malformed ? Verdict::Malformed : Verdict::Invalid,
              input_.message);
         return;
     }
     if (!input_.ok()) {
-        line(VerdictKind::InvalidInput, "invalid input: " + input_.message);
+        line(Verdict::Invalid, "invalid input: " + input_.message);
         error_ = input_.culprits;
     }
     const Event* forbidden = nullptr;
@@ -690,14 +672,14 @@ void Model::computeVerdictLines() {
             break;
         }
     if (forbidden) {
-        line(VerdictKind::Forbidden, "forbidden at step " + std::to_string(forbidden->step + 1) +
-                                         ": " + describeForbidden(P, *forbidden));
+        line(Verdict::Forbidden, "forbidden at step " + std::to_string(forbidden->step + 1) + ": " +
+                                     describeForbidden(P, *forbidden));
         if (error_.empty()) error_ = forbiddenCulprits(P, *forbidden);
         firstErrorStep_ = forbidden->step + 1;
         return;
     }
     if (!trace_->diagnostic.ok()) {
-        line(VerdictKind::Internal, trace_->diagnostic.message);
+        line(Verdict::Internal, trace_->diagnostic.message);
         if (error_.empty()) error_ = trace_->diagnostic.culprits;
         return;
     }
@@ -706,20 +688,20 @@ void Model::computeVerdictLines() {
     check_ = checked_ ? std::move(*checked_) : checkTriangulation(P, trace_->triangles);
     checked_.reset();
     if (!check_.ok) {
-        line(VerdictKind::Rejected,
-             "the exact checker rejects the triangulation: " + check_.reason);
+        line(Verdict::Checker, "the exact checker rejects the triangulation: " + check_.reason);
         if (error_.empty()) error_ = check_.culprits;
         for (uint32_t t : check_.culprits.triangles)
             if (t < triangleStep_.size() && triangleStep_[t] &&
                 (firstErrorStep_ == kNone || triangleStep_[t] < firstErrorStep_))
                 firstErrorStep_ = triangleStep_[t];
     } else if (input_.ok()) {
-        line(VerdictKind::Ok, "ok: " + std::to_string(trace_->triangles.size()) +
-                                  " triangles, exact checker passed");
+        line(Verdict::Ok, "ok: " + std::to_string(trace_->triangles.size()) +
+                              " triangles, exact checker passed");
     } else {
-        line(VerdictKind::Note, "the exact checker accepts the " +
-                                    std::to_string(trace_->triangles.size()) +
-                                    " triangles, but the input is invalid");
+        line(Verdict::Ok,
+             "the exact checker accepts the " + std::to_string(trace_->triangles.size()) +
+                 " triangles, but the input is invalid",
+             true);
     }
     if (firstErrorStep_ == kNone && !input_.ok()) {
         // Invalid input that floods through: the first step a culprit is a finger.
@@ -741,14 +723,7 @@ bool Model::failed() const {
 int Model::exitCode() const {
     if (!openDiag_.ok()) return int(openDiag_.status);
     for (const VerdictLine& l : verdictLines_)  // the first failure decides, as in the CLI
-        switch (l.kind) {
-            case VerdictKind::Unreadable: return int(Status::Malformed);
-            case VerdictKind::InvalidInput: return int(Status::Invalid);
-            case VerdictKind::Forbidden: return int(Status::Forbidden);
-            case VerdictKind::Rejected:
-            case VerdictKind::Internal: return int(Status::Internal);
-            default: break;
-        }
+        if (l.failure()) return int(verdictStatus(l.kind));
     return 0;
 }
 
@@ -760,7 +735,7 @@ void Model::computeFindings() {
     findingsComplete_ = true;
     currentFinding_ = 0;
     const Polygon& P = trace_->polygon;
-    auto add = [&](VerdictKind kind, const Diagnostic& d, const std::string& name) {
+    auto add = [&](Verdict kind, const Diagnostic& d, const std::string& name) {
         Finding f;
         f.kind = kind;
         f.message = d.message;
@@ -774,8 +749,8 @@ void Model::computeFindings() {
     // One line of the verdict, one finding; the input's line, every validation finding.
     for (const VerdictLine& line : verdictLines_) {
         switch (line.kind) {
-            case VerdictKind::Unreadable: add(line.kind, input_, path_); break;
-            case VerdictKind::InvalidInput: {
+            case Verdict::Malformed: add(line.kind, input_, path_); break;
+            case Verdict::Invalid: {
                 if (P.vertices.empty()) {
                     add(line.kind, input_, path_);
                     break;
@@ -789,7 +764,7 @@ void Model::computeFindings() {
                 findingsComplete_ = all.complete;
                 break;
             }
-            case VerdictKind::Forbidden:
+            case Verdict::Forbidden:
                 for (const Event& e : trace_->events)
                     if (e.action == Action::Forbidden) {
                         Finding f;
@@ -804,11 +779,11 @@ void Model::computeFindings() {
                         break;
                     }
                 break;
-            case VerdictKind::Internal:
+            case Verdict::Internal:
                 add(line.kind, trace_->diagnostic, path_);
                 findings_.back().message = line.text;
                 break;
-            case VerdictKind::Rejected: {
+            case Verdict::Checker: {
                 Finding f;
                 f.kind = line.kind;
                 f.reason = check_.reason;
@@ -834,7 +809,7 @@ void Model::computeFindings() {
 
 // A validation finding shows at the first step one of its vertices is a finger.
 uint32_t Model::findingStep(const Finding& f) const {
-    if (f.step != kNone || f.kind != VerdictKind::InvalidInput) return f.step;
+    if (f.step != kNone || f.kind != Verdict::Invalid) return f.step;
     const auto& blamed = f.culprits.vertices;
     if (blamed.empty()) return kNone;
     for (const Event& e : trace_->events)
@@ -848,8 +823,8 @@ bool Model::showFinding(size_t i) {
     if (i >= findings_.size()) return false;
     Finding& f = findings_[i];
     Camera framed = camera_;
-    if (!frameCulprits(trace_->polygon, trace_->triangles, f.culprits,
-                       f.kind == VerdictKind::InvalidInput, camera_.viewport(), framed))
+    if (!frameCulprits(trace_->polygon, trace_->triangles, f.culprits, f.kind == Verdict::Invalid,
+                       camera_.viewport(), framed))
         return false;
     camera_ = framed;
     currentFinding_ = i;
@@ -1194,20 +1169,6 @@ std::string polygonsDir() {
     return std::string(FLOOD_INSTALL_DATA_DIR) + "/polygons";
 }
 
-std::vector<std::string> listPolygonFiles(const std::string& dir) {
-    std::vector<std::string> out;
-    std::error_code ec;
-    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-        std::string ext = entry.path().extension().string();
-        // gallery.json is the index of the teaching gallery, not a polygon (see Gallery).
-        if (entry.is_regular_file(ec) && (ext == ".json" || ext == ".wkt") &&
-            entry.path().filename() != "gallery.json")
-            out.push_back(entry.path().string());
-    }
-    std::sort(out.begin(), out.end());
-    return out;
-}
-
 std::string Model::galleryDir() const { return galleryDir_.empty() ? polygonsDir() : galleryDir_; }
 
 std::vector<GalleryEntry> readGallery(const std::string& dir) {
@@ -1232,7 +1193,7 @@ std::string defaultPolygonPath() {
     std::string preferred = dir + "/" FLOOD_VIEWER_DEFAULT_POLYGON;
     std::error_code ec;
     if (std::filesystem::exists(preferred, ec)) return preferred;
-    auto files = listPolygonFiles(dir);
+    auto files = polygonFiles(dir);
     return files.empty() ? std::string() : files.front();
 }
 
@@ -1246,18 +1207,10 @@ namespace flood::view {
 bool Model::openFeature(const std::string& path, size_t index) {
     DatasetRead d;
     try {
-#ifdef FLOOD_GDAL
         // A GIS layer's features, by FID (--where keeps some of them: the others are not there).
-        if (gdal::handles(path, {gisLayer, -1, gisWhere}))
-            d = gdal::readFeatures(path, {gisLayer, -1, gisWhere});
-        else
-#else
-        if (!gisLayer.empty() || !gisWhere.empty()) {
-            openDiag_ = gisUnavailable(path);
-            return false;
-        }
-#endif
-            d = readFeaturesFile(path, kDefaultMaxInputBytes, false);
+        bool gis = false;
+        d = gdal::readAnyFeatures(path, {gisLayer, -1, gisWhere}, kDefaultMaxInputBytes, false,
+                                  gis);
     } catch (const std::exception& ex) {
         openDiag_ = {Status::Malformed, path + ": " + ex.what()};
         return false;
@@ -1397,25 +1350,15 @@ FeatureVerdict judgeFeature(const FeatureRead& f) {
     v.name = f.name;
     v.vertices = f.read.polygon.vertices.size();
     try {
-        if (!f.read.diagnostic.ok()) {
-            v.kind = f.read.diagnostic.status == Status::Internal ? VerdictKind::Internal
-                                                                  : VerdictKind::Unreadable;
-            v.reason = f.read.diagnostic.message;
-            return v;
-        }
-        Polygon p = f.read.polygon;
-        if (Diagnostic d = validate(p, "feature " + std::to_string(f.index)); !d.ok()) {
-            v.kind = VerdictKind::InvalidInput;
-            v.reason = d.message;
-        } else if (FloodResult r = triangulate(p); !r.diagnostic.ok()) {
-            v.kind = VerdictKind::Forbidden;
-            v.reason = r.diagnostic.message;
-        } else if (CheckResult c = checkTriangulation(p, r.triangles); !c.ok) {
-            v.kind = VerdictKind::Rejected;
-            v.reason = "the exact checker rejects the triangulation: " + c.reason;
-        }
+        ReadResult read = f.read;  // validation records T-junctions in the polygon
+        Judgement j = judge(read, "feature " + std::to_string(f.index));
+        v.kind = j.verdict;
+        // The checker's reason without the name the list shows already.
+        v.reason = j.verdict == Verdict::Checker
+                       ? "the exact checker rejects the triangulation: " + j.check.reason
+                       : j.diagnostic.message;
     } catch (const std::exception& ex) {
-        v.kind = VerdictKind::Internal;
+        v.kind = Verdict::Internal;
         v.reason = std::string("exception: ") + ex.what();
     }
     return v;

@@ -16,6 +16,7 @@
 
 #include "flood/check/checker.h"
 #include "flood/check/invariants.h"
+#include "flood/check/verdict.h"
 #include "flood/geometry/polygon.h"
 #include "flood/geometry/status.h"
 #include "flood/io/io.h"
@@ -95,29 +96,22 @@ bool hits(const Breakpoints& b, const Event& e);
 // (flood/teach/transcript.h).
 
 // ----------------------------------------------------------------------------------------
-// The verdict, one line per finding. Ok only when the exact checker passed on valid input;
-// every failure (unreadable, invalid input, forbidden state, checker rejection, internal)
-// has its own line, drawn red.
-enum class VerdictKind : uint8_t {
-    Ok,
-    Note,
-    Unreadable,
-    InvalidInput,
-    Forbidden,
-    Rejected,
-    Internal
-};
+// The verdict, one line per finding, of the core's kinds (flood/check/verdict.h). Ok only
+// when the exact checker passed on valid input; every failure (malformed, invalid input,
+// forbidden state, checker rejection, internal) has its own line, drawn red. A note (the
+// checker accepting the triangles of invalid input) is an Ok line drawn grey.
 struct VerdictLine {
-    VerdictKind kind = VerdictKind::Ok;
+    Verdict kind = Verdict::Ok;
     std::string text;
-    bool failure() const { return kind != VerdictKind::Ok && kind != VerdictKind::Note; }
+    bool note = false;
+    bool failure() const { return kind != Verdict::Ok; }
 };
 
 // One finding of the open face, as the findings panel lists it: a validation finding
 // (validateAll, the first being validate()'s verdict), the forbidden transition, the exact
 // checker's rejection, an internal failure or an unreadable file.
 struct Finding {
-    VerdictKind kind = VerdictKind::InvalidInput;
+    Verdict kind = Verdict::Invalid;
     std::string message;    // the diagnostic's whole line
     std::string where;      // "ring R vertex V (x, y)", "step N", "triangle T", or ""
     std::string reason;     // what is wrong, the location apart
@@ -264,10 +258,9 @@ struct FeatureVerdict {
     size_t index = 0;  // the feature's FID (FeatureRead::fid): what openFeature() takes
     std::string id, name;
     size_t vertices = 0;
-    VerdictKind kind =
-        VerdictKind::Ok;  // Ok, Unreadable, InvalidInput, Forbidden, Rejected, Internal
-    std::string reason;   // the diagnostic's message; "" when ok
-    bool failure() const { return kind != VerdictKind::Ok; }
+    Verdict kind = Verdict::Ok;
+    std::string reason;  // the diagnostic's message; "" when ok
+    bool failure() const { return kind != Verdict::Ok; }
 };
 FeatureVerdict judgeFeature(const FeatureRead& feature);
 // Failing features first, each group in collection order.
@@ -635,9 +628,6 @@ std::string polygonsDir();
 // polygons/FLOOD_VIEWER_DEFAULT_POLYGON (CMake cache, default paper-figure-7.json) if it
 // exists, else the first polygon file, else "". FLOOD_POLYGONS_DIR overrides the directory.
 std::string defaultPolygonPath();
-// *.json and *.wkt files of a directory, sorted by name (gallery.json is not a polygon).
-std::vector<std::string> listPolygonFiles(const std::string& dir);
-
 // The teaching gallery, dir/gallery.json: a list of {"file", "title", "description"} in
 // teaching order, files relative to dir. Missing or malformed: empty (the Open panel then
 // lists the files only).

@@ -338,7 +338,7 @@ void errorOverlay(Ui& ui, ImDrawList* dl) {
     // context; a machine's or checker's rings (the fingers' rings) are all context. Up to a
     // bound, so a huge ring stays a frame's work.
     const bool validation =
-        !m.findings().empty() && m.findings()[m.currentFinding()].kind == VerdictKind::InvalidInput;
+        !m.findings().empty() && m.findings()[m.currentFinding()].kind == Verdict::Invalid;
     if (c.edges.empty() && c.triangles.empty() && !c.hasPoint) {
         size_t budget = 50000;
         Rgba context = palette::kCulprit;

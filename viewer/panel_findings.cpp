@@ -14,13 +14,13 @@ namespace flood::view {
 
 namespace {
 
-const char* kindTag(VerdictKind k) {
+const char* kindTag(Verdict k) {
     switch (k) {
-        case VerdictKind::Unreadable: return "unreadable";
-        case VerdictKind::InvalidInput: return "invalid";
-        case VerdictKind::Forbidden: return "forbidden";
-        case VerdictKind::Rejected: return "checker";
-        case VerdictKind::Internal: return "internal";
+        case Verdict::Malformed: return "unreadable";
+        case Verdict::Invalid: return "invalid";
+        case Verdict::Forbidden: return "forbidden";
+        case Verdict::Checker: return "checker";
+        case Verdict::Internal: return "internal";
         default: return "";
     }
 }
@@ -31,11 +31,11 @@ std::string summary(const Model& m) {
     size_t invalid = 0;
     std::string rest;
     for (const Finding& x : f) {
-        if (x.kind == VerdictKind::InvalidInput) ++invalid;
-        else if (x.kind == VerdictKind::Forbidden) rest += ", forbidden at " + x.where;
-        else if (x.kind == VerdictKind::Rejected) rest += ", the exact checker rejects it";
-        else if (x.kind == VerdictKind::Internal) rest += ", an internal failure";
-        else if (x.kind == VerdictKind::Unreadable) rest += ", unreadable";
+        if (x.kind == Verdict::Invalid) ++invalid;
+        else if (x.kind == Verdict::Forbidden) rest += ", forbidden at " + x.where;
+        else if (x.kind == Verdict::Checker) rest += ", the exact checker rejects it";
+        else if (x.kind == Verdict::Internal) rest += ", an internal failure";
+        else if (x.kind == Verdict::Malformed) rest += ", unreadable";
     }
     std::string s = std::to_string(f.size() + m.findingsOmitted()) +
                     (f.size() + m.findingsOmitted() == 1 ? " finding" : " findings");
@@ -83,7 +83,7 @@ void drawFindings(Ui& ui) {
     }
     if (m.findingsOmitted()) {
         size_t listed = 0;
-        for (const Finding& f : m.findings()) listed += f.kind == VerdictKind::InvalidInput;
+        for (const Finding& f : m.findings()) listed += f.kind == Verdict::Invalid;
         ImGui::TextDisabled(
             "%zu more validation findings not listed (the first %zu are; `flood check "
             "--max-findings N` lists more)",

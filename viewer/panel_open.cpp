@@ -8,10 +8,8 @@
 #include <cstring>
 #include <filesystem>
 
+#include "flood/io/gdal/read_any.h"
 #include "panels.h"
-#ifdef FLOOD_GDAL
-#include "flood/io/gdal/gdal_io.h"
-#endif
 
 namespace flood::view {
 
@@ -52,14 +50,12 @@ void drawOpen(Ui& ui) {
                 float(double(scan.progress()) / double(std::max<size_t>(1, scan.total()))),
                 ImVec2(-1, 0), label.c_str());
         } else {
-            static const char* const kVerdict[] = {"ok",        "note",     "malformed", "invalid",
-                                                   "forbidden", "rejected", "internal"};
             const bool thisFile =
                 m.feature() != Model::kNoFeature && m.path().rfind(scan.path() + "#", 0) == 0;
             for (const FeatureVerdict& f : scan.features()) {
                 std::string label = "#" + std::to_string(f.index) + " " +
                                     (f.name.empty() ? f.id : f.name) + "  " +
-                                    std::to_string(f.vertices) + " v  " + kVerdict[size_t(f.kind)] +
+                                    std::to_string(f.vertices) + " v  " + verdictName(f.kind) +
                                     "##feature" + std::to_string(f.index);
                 if (f.failure()) ImGui::PushStyleColor(ImGuiCol_Text, toImVec4(palette::kCulprit));
                 if (ImGui::Selectable(label.c_str(), thisFile && m.feature() == f.index))
@@ -107,7 +103,7 @@ void drawOpen(Ui& ui) {
     if (ImGui::CollapsingHeader(("Polygons in " + dir).c_str(), ImGuiTreeNodeFlags_DefaultOpen)) {
         // Listing a directory every frame is cheap next to a frame, and stays current while the
         // polygons change on disk.
-        auto files = listPolygonFiles(dir);
+        auto files = polygonFiles(dir);
         if (files.empty()) ImGui::TextDisabled("no *.json or *.wkt files");
         for (const auto& f : files) {
             std::string name = f.substr(f.find_last_of('/') + 1);
@@ -125,11 +121,8 @@ void drawOpen(Ui& ui) {
             std::string name = e.path().filename().string();
             std::string ext = e.path().extension().string();
             if (e.is_directory(ec)) dirs.push_back(name);
-            else if (ext == ".json" || ext == ".wkt" || ext == ".jsonl" || ext == ".geojson")
-                files.push_back(name);
-#ifdef FLOOD_GDAL
-            else if (gdal::gisFile(name)) files.push_back(name);  // opened through GDAL
-#endif
+            // Polygons, traces, and GIS datasets (opened through GDAL).
+            else if (ext == ".jsonl" || gdal::listedFile(name)) files.push_back(name);
         }
         std::sort(dirs.begin(), dirs.end());
         std::sort(files.begin(), files.end());

@@ -249,7 +249,7 @@ void drawTimeline(Ui& ui) {
     for (const VerdictLine& line : m.verdictLines()) {
         if (line.failure()) continue;  // in the findings panel
         const ImVec4 grey = ImGui::GetStyle().Colors[ImGuiCol_TextDisabled];
-        textOneLine(line.text, width, line.kind == VerdictKind::Note ? &grey : &green);
+        textOneLine(line.text, width, line.note ? &grey : &green);
     }
     const Event* e = m.currentEvent();
     const float pathWidth = std::min(width * 0.4f, ImGui::CalcTextSize(m.path().c_str()).x);

@@ -5,13 +5,20 @@ import pathlib
 
 import pytest
 
+from flood import _flood
+
 SOURCE_DIR = pathlib.Path(os.environ.get("FLOOD_SOURCE_DIR", pathlib.Path(__file__).parents[2]))
 FLOOD_CLI = os.environ.get("FLOOD_CLI", str(SOURCE_DIR / "build" / "flood"))
 
-# The sample polygons: every input at the top of polygons/ (gallery.json is the teaching
-# gallery's index, not a polygon).
-SAMPLES = sorted(p for p in (SOURCE_DIR / "polygons").glob("*.json") if p.name != "gallery.json")
-INVALID = sorted((SOURCE_DIR / "polygons" / "invalid").iterdir())
+# The sample polygons: every GeoJSON input at the top of polygons/, and every file of
+# polygons/invalid/, as the core lists polygons (polygonFiles, flood/io/io.h: gallery.json is
+# the teaching gallery's index, not a polygon).
+SAMPLES = [
+    pathlib.Path(p)
+    for p in _flood.polygon_files(str(SOURCE_DIR / "polygons"))
+    if p.endswith(".json")
+]
+INVALID = [pathlib.Path(p) for p in _flood.polygon_files(str(SOURCE_DIR / "polygons" / "invalid"))]
 
 
 @pytest.fixture(scope="session")

@@ -1,7 +1,8 @@
 // `flood check` through the built binary: verdict counts and exit codes on a FeatureCollection
 // mixing valid and invalid features (polygons/datasets/mixed.geojson), the same output for
-// any -j, folders, --extract files that fail the same way, unreadable files among good ones,
-// and the sample folders checked against `flood triangulate` run on each file.
+// any -j, folders, unreadable files among good ones, the sample folders checked against
+// `flood triangulate` run on each file, the help, GeoJSON sequences on stdin. --extract:
+// check_extract_test.cpp; what a row says: check_rows_test.cpp.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
@@ -16,53 +17,12 @@
 #include <string>
 #include <vector>
 
+#include "check_run.h"
 #include "test_support.h"
 
 using namespace flood::testing;
 using nlohmann::json;
 namespace fs = std::filesystem;
-
-namespace {
-
-const std::string kMixed = sourcePath("polygons/datasets/mixed.geojson");
-
-struct CheckRun {
-    int code = -1;
-    std::string out, err;
-};
-
-// stdout and stderr apart: the table and the JSON are stdout only.
-CheckRun cli(const std::string& args) {
-    fs::path err = fs::temp_directory_path() / ("flood-check-stderr-" + std::to_string(getpid()));
-    std::string cmd = std::string(FLOOD_CLI) + " " + args + " 2>" + err.string();
-    RunResult run = runShell(cmd);
-    CheckRun r;
-    r.code = run.code;
-    r.out = std::move(run.out);
-    r.err = slurp(err);
-    fs::remove(err);
-    return r;
-}
-
-json checkJson(const std::string& args, int* code = nullptr) {
-    CheckRun r = cli("check --json " + args);
-    if (code) *code = r.code;
-    json doc = json::parse(r.out, nullptr, false);
-    EXPECT_FALSE(doc.is_discarded()) << r.out << r.err;
-    return doc;
-}
-
-bool has(const std::string& s, const std::string& part) {
-    return s.find(part) != std::string::npos;
-}
-
-// The only part of the output that depends on the run: the time.
-std::string timeless(std::string s) {
-    s = std::regex_replace(s, std::regex("; [0-9.]+ s\n"), "; T s\n");
-    return std::regex_replace(s, std::regex("\"seconds\": [0-9.e+-]+"), "\"seconds\": T");
-}
-
-}  // namespace
 
 TEST(Check, CountsPerVerdictInTheTableAndTheJson) {
     CheckRun t = cli("check " + kMixed);
@@ -222,61 +182,6 @@ TEST(Check, AnUnreadableFileIsARowAndTheOthersAreChecked) {
     fs::remove_all(d);
 }
 
-// Each extracted file, run through `flood triangulate` (with the same --no-validate), exits
-// with the row's code and the same message; invalid ones fail `flood verify` alike.
-TEST(Check, ExtractedFeaturesReproduceTheirFailure) {
-    for (std::string flags : {"", "--no-validate "}) {
-        fs::path d = scratch("extract");
-        fs::path out = d / "failing";
-        int code = -1;
-        json doc = checkJson(flags + "--extract " + out.string() + " " + kMixed + " " +
-                                 sourcePath("polygons/invalid/nan.wkt") + " " +
-                                 sourcePath("polygons/invalid/malformed-json.json") + " " +
-                                 sourcePath("polygons/hole.json") + " /nonexistent.json",
-                             &code);
-        // Unvalidated, the overlapping parts are a checker rejection (6), the worst class.
-        EXPECT_EQ(code, flags.empty() ? 4 : 6);
-        size_t extracted = 0, failing = 0;
-        for (const json& r : doc["features"]) {
-            if (r["code"] == 0) {
-                EXPECT_TRUE(r["extracted"].is_null()) << r;
-                continue;
-            }
-            ++failing;
-            if (r["file"] == "/nonexistent.json") {
-                EXPECT_TRUE(r["extracted"].is_null()) << "nothing to extract: " << r;
-                continue;
-            }
-            ASSERT_TRUE(r["extracted"].is_string()) << r;
-            ++extracted;
-            std::string path = r["extracted"];
-            std::string stem = fs::path(r["file"].get<std::string>()).stem().string();
-            int feature = r["feature"].is_null() ? 0 : r["feature"].get<int>();
-            EXPECT_EQ(fs::path(path).parent_path(), out);
-            EXPECT_EQ(fs::path(path).stem().string(), stem + "_feature" + std::to_string(feature));
-            CheckRun t = cli("triangulate " + flags + path);
-            EXPECT_EQ(t.code, r["code"]) << path << ": " << t.err;
-            std::string reason = r["reason"];
-            std::string at = r["at"].is_null() ? "" : r["at"].get<std::string>();
-            at = std::regex_replace(at, std::regex(" \\(part [0-9]+\\)$"), "");  // check's addition
-            if (r["verdict"] == "invalid") {
-                EXPECT_TRUE(has(t.err, path + ": " + at + ": " + reason)) << t.err << " vs " << r;
-                EXPECT_EQ(cli("verify " + path).code, 4);
-            } else if (r["verdict"] == "forbidden") {
-                EXPECT_TRUE(has(t.err, reason)) << t.err << " vs " << r;
-            } else if (r["verdict"] == "malformed" && has(reason, "coordinate")) {
-                // "feature 5 polygon 0 ..." in the collection is "polygon 0 ..." alone.
-                EXPECT_TRUE(has(t.err, reason.substr(reason.find("polygon 0")))) << t.err;
-            }
-        }
-        EXPECT_GE(failing, 6u) << flags;
-        EXPECT_EQ(extracted, failing - 1);  // all but the missing file
-        size_t files = std::distance(fs::directory_iterator(out), fs::directory_iterator());
-        EXPECT_EQ(files, extracted);
-        fs::remove_all(d);
-    }
-}
-
 // The sample folders: each file's row (or each feature's, for a FeatureCollection) has the
 // exit code `flood triangulate` gives that file alone.
 TEST(Check, SampleFoldersAgreeWithTriangulateFileByFile) {
@@ -364,18 +269,6 @@ TEST(Check, ParseFeaturesSplitsACollectionAndLeavesOtherFilesWhole) {
     }
 }
 
-TEST(Check, StdinAndAnExtractFolderThatCannotBeMade) {
-    CheckRun s = cli("check --json - < " + sourcePath("polygons/invalid/hole-outside.json"));
-    EXPECT_EQ(s.code, 4) << s.err;
-    EXPECT_TRUE(has(s.out, "\"file\": \"-\"")) << s.out;
-    fs::path d = scratch("badextract");
-    std::ofstream(d / "file") << "x";
-    CheckRun e = cli("check --extract " + (d / "file").string() + " " + kMixed);
-    EXPECT_EQ(e.code, 8) << e.err;
-    EXPECT_TRUE(has(e.err, "cannot create the --extract folder")) << e.err;
-    fs::remove_all(d);
-}
-
 // The progress line is for people: on a terminal (script(1) gives one), never in a pipe.
 TEST(Check, ProgressLineOnlyOnATerminal) {
     CheckRun piped = cli("check " + kMixed);
@@ -393,134 +286,6 @@ TEST(Check, ProgressLineOnlyOnATerminal) {
     EXPECT_TRUE(has(tty, "\r\033[K")) << "the line is erased at the end";
     EXPECT_EQ(timeless(slurp(out)), timeless(piped.out)) << "stdout is the same table either way";
     fs::remove(out);
-}
-
-// Two inputs with one stem (a.json in two folders) do not overwrite each other's repros.
-TEST(Check, ExtractedNamesNeverCollide) {
-    fs::path d = scratch("stems");
-    fs::create_directories(d / "copy");
-    fs::copy_file(kMixed, d / "copy" / "mixed.geojson");
-    json doc =
-        checkJson("--extract " + (d / "out").string() + " " + kMixed + " " + (d / "copy").string());
-    std::set<std::string> names;
-    for (const json& r : doc["features"])
-        if (r["extracted"].is_string())
-            names.insert(fs::path(r["extracted"].get<std::string>()).filename());
-    EXPECT_EQ(names.size(), 10u);
-    EXPECT_TRUE(names.count("mixed_feature1.json") && names.count("mixed-2_feature1.json")) << doc;
-    fs::remove_all(d);
-}
-
-// Every finding of a feature (issue 26 §2): a face with three separate crossings lists three,
-// in the table under its row and in the JSON with their locations as numbers.
-TEST(Check, EveryFindingOfAFeatureIsListedWithItsLocation) {
-    fs::path d = scratch("findings");
-    fs::path in = d / "three.geojson";
-    std::string rings = "[[0,0],[100,0],[100,100],[0,100],[0,0]]";
-    for (int i = 0; i < 3; ++i) {
-        std::string x = std::to_string(2 + 3 * i), x1 = std::to_string(3 + 3 * i);
-        rings += ",[[" + x + ",2],[" + x1 + ",3],[" + x1 + ",2],[" + x + ",3],[" + x + ",2]]";
-    }
-    std::ofstream(in) << "{\"type\":\"FeatureCollection\",\"features\":[{\"type\":\"Feature\","
-                         "\"properties\":{\"name\":\"three\"},\"geometry\":{\"type\":"
-                         "\"Polygon\",\"coordinates\":["
-                      << rings << "]}}]}";
-    CheckRun table = cli("check " + in.string());
-    EXPECT_EQ(table.code, 4);
-    for (const char* crossing :
-         {"(2, 2)-(3, 3) crosses", "(5, 2)-(6, 3) crosses", "(8, 2)-(9, 3) crosses"})
-        EXPECT_TRUE(has(table.out, crossing)) << crossing << "\n" << table.out;
-    EXPECT_TRUE(has(table.out, "check: 1 feature in 1 file")) << table.out;
-
-    json doc = checkJson(in.string());
-    const json& f = doc["features"][0];
-    ASSERT_EQ(f["findings"].size(), 3u) << f.dump(1);
-    for (int i = 0; i < 3; ++i) {
-        EXPECT_EQ(f["findings"][i]["x"], 2.5 + 3 * i);
-        EXPECT_EQ(f["findings"][i]["y"], 2.5);
-        EXPECT_EQ(f["findings"][i]["ring"], i + 1);
-    }
-    EXPECT_EQ(f["x"], 2.5);
-    EXPECT_EQ(f["findings_omitted"], 0);
-
-    json two = checkJson("--max-findings 2 " + in.string());
-    EXPECT_EQ(two["features"][0]["findings"].size(), 2u);
-    EXPECT_EQ(two["features"][0]["findings_omitted"], 1);
-    EXPECT_TRUE(has(cli("check --max-findings 2 " + in.string()).out,
-                    "and 1 more findings (--max-findings)"));
-    fs::remove_all(d);
-}
-
-// --extract used to replace whatever held an extracted name: an earlier run's repros, or an
-// input being checked. A taken name gets -2, -3, ... and "extracted" says which was written.
-TEST(Check, ExtractNeverOverwritesAFile) {
-    fs::path d = scratch("extract-no-overwrite");
-    const fs::path out = d / "out";
-    fs::create_directories(out);
-    // An input that is checked lives in the folder, under the name feature 1 would get.
-    const fs::path input = out / "mixed_feature1.json";
-    fs::copy_file(sourcePath("polygons/invalid/hole-outside.json"), input);
-    const std::string inputText = slurp(input);
-    json first = checkJson("--extract " + out.string() + " " + kMixed + " " + input.string());
-    EXPECT_EQ(slurp(input), inputText);
-    std::map<std::string, std::string> extracted;  // file#feature -> name
-    for (const json& r : first["features"])
-        if (r["extracted"].is_string())
-            extracted[r["file"].get<std::string>() + "#" + r["feature"].dump()] =
-                fs::path(r["extracted"].get<std::string>()).filename();
-    EXPECT_EQ(extracted[kMixed + "#1"], "mixed_feature1-2.json") << first;
-    EXPECT_EQ(extracted[input.string() + "#null"], "mixed_feature1_feature0.json") << first;
-    // Again: every name is taken now, none is replaced.
-    std::map<std::string, std::string> before;
-    for (auto& e : fs::directory_iterator(out)) before[e.path().filename()] = slurp(e.path());
-    for (auto& [name, text] : before) std::ofstream(out / name) << "precious " << name;
-    int code = -1;
-    json second =
-        checkJson("--extract " + out.string() + " " + kMixed + " " + input.string(), &code);
-    EXPECT_EQ(code, 4);
-    for (auto& [name, text] : before) EXPECT_EQ(slurp(out / name), "precious " + name) << name;
-    size_t fresh = 0;
-    for (const json& r : second["features"])
-        if (r["extracted"].is_string()) {
-            std::string name = fs::path(r["extracted"].get<std::string>()).filename();
-            EXPECT_EQ(before.count(name), 0u) << name;
-            EXPECT_TRUE(fs::exists(r["extracted"].get<std::string>()));
-            ++fresh;
-        }
-    EXPECT_EQ(fresh, extracted.size());
-    EXPECT_EQ(size_t(std::distance(fs::directory_iterator(out), fs::directory_iterator())),
-              before.size() + fresh);
-    fs::remove_all(d);
-}
-
-// A feature's name with an ESC reached the terminal raw, and a newline forged a table row:
-// control characters are shown escaped in the table and the warnings (the JSON escapes them).
-TEST(Check, ControlCharactersInNamesAreEscaped) {
-    fs::path d = scratch("control");
-    const std::string ring = "[[[0,0],[4,0],[4,4],[0,4],[0,0]]]";
-    std::ofstream(d / "ctl.json")
-        << R"({"type":"FeatureCollection","features":[)"
-        << R"({"type":"Feature","properties":{"name":"evil\u001b[31mred\nforged  row \u0085x\u007f"},)"
-        << R"("geometry":{"type":"Polygon","coordinates":)" << ring << "}},"
-        << R"({"type":"Feature","id":"a\rb\tc","properties":{},)"
-        << R"("geometry":{"type":"Polygon","coordinates":)" << ring << "}},"
-        << R"({"type":"Feature","properties":{},"geometry":{"type":"Point\u001b]0;x","coordinates":[0,0]}}]})";
-    CheckRun r = cli("check " + (d / "ctl.json").string());
-    EXPECT_EQ(r.code, 0) << r.out << r.err;
-    for (const std::string& s : {r.out, r.err}) {
-        EXPECT_EQ(s.find('\x1b'), std::string::npos) << s;
-        EXPECT_EQ(s.find('\r'), std::string::npos) << s;
-        EXPECT_EQ(s.find('\x7f'), std::string::npos) << s;
-        EXPECT_EQ(s.find("\xc2\x85"), std::string::npos) << s;
-    }
-    EXPECT_EQ(std::count(r.out.begin(), r.out.end(), '\n'), 4) << r.out;  // head, 2 rows, sum
-    EXPECT_TRUE(has(r.out, "evil\\e[31mred\\nforged  row \\u0085x\\x7f")) << r.out;
-    EXPECT_TRUE(has(r.out, "a\\rb\\tc")) << r.out;
-    EXPECT_TRUE(has(r.err, "not polygonal (Point\\e]0;x), skipped")) << r.err;
-    // The JSON keeps the text itself, escaped as JSON escapes it.
-    json doc = checkJson((d / "ctl.json").string());
-    EXPECT_EQ(doc["features"][0]["name"], "evil\x1b[31mred\nforged  row \xc2\x85x\x7f");
-    fs::remove_all(d);
 }
 
 // `check --help` said ".json, .geojson, .wkt found recursively" while a folder search found
@@ -557,43 +322,6 @@ TEST(Check, HelpListsEveryFormatAFolderSearchFinds) {
     fs::create_directories(d / "empty");
     doc = checkJson((d / "empty").string());
     EXPECT_EQ(doc["features"][0]["reason"], "folder holds no polygon file (" + list + ")");
-    fs::remove_all(d);
-}
-
-// 2,000 features with a repeated point printed 2,000 identical lines that named no feature
-// (issue 30 §4): each warning names its feature, and past the first few of a kind the rest of
-// that kind are one line with their count.
-TEST(Check, WarningsNameTheFeatureAndFoldRepeats) {
-    fs::path d = scratch("warnings");
-    json features = json::array();
-    for (int i = 0; i < 2000; ++i)
-        features.push_back({{"type", "Feature"},
-                            {"properties", json::object()},
-                            {"geometry",
-                             {{"type", "Polygon"},
-                              {"coordinates", {{{0, 0}, {10, 0}, {10, 0}, {10, 10}, {0, 0}}}}}}});
-    const std::string file = (d / "rep.geojson").string();
-    std::ofstream(file) << json{{"type", "FeatureCollection"}, {"features", features}}.dump();
-    CheckRun r = cli("check " + file);
-    EXPECT_EQ(r.code, 0) << r.err;
-    std::string want;
-    for (int i = 0; i < 3; ++i)
-        want += "warning: " + file + ": feature " + std::to_string(i) +
-                ": ring 0 vertex 2 (10, 0): repeated point dropped\n";
-    want += "warning: " + file + ": \u2026 and 1,997 more like it (repeated point dropped)\n";
-    EXPECT_EQ(r.err, want);
-#ifdef FLOOD_GDAL
-    // A GIS dataset's warnings name the feature by its FID.
-    const std::string gpkg = (d / "rep.gpkg").string();
-    RunResult g = runShell("ogr2ogr -f GPKG " + gpkg + " " + file + " -limit 2 2>&1");
-    ASSERT_EQ(g.code, 0) << g.out;
-    r = cli("check " + gpkg);
-    EXPECT_EQ(r.code, 0) << r.err;
-    EXPECT_TRUE(has(r.err, "warning: " + gpkg +
-                               ": feature 2: ring 0 vertex 2 (10, 0): repeated "
-                               "point dropped\n"))
-        << r.err;
-#endif
     fs::remove_all(d);
 }
 

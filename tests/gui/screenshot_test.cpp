@@ -667,7 +667,7 @@ int checkFindingsPanel(const std::string& dir) {
     Model model;
     model.open(input);
     size_t invalid = 0;
-    for (const Finding& f : model.findings()) invalid += f.kind == VerdictKind::InvalidInput;
+    for (const Finding& f : model.findings()) invalid += f.kind == Verdict::Invalid;
     if (invalid != 3)
         return failWith("three-bowties: want 3 validation findings, the model has " +
                         std::to_string(invalid));

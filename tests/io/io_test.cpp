@@ -1,5 +1,5 @@
-// File formats and validation: parsing (GeoJSON, ring arrays, WKT), error messages, writers,
-// trace round trips, and validate() against GEOS's verdicts on earcut's fixtures.
+// File formats: parsing (GeoJSON, ring arrays, WKT), error messages, the writers. Validation:
+// tests/check/validate_test.cpp; trace files: tests/log/trace_io_test.cpp.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -16,26 +16,11 @@
 #include "flood/io/io.h"
 #include "flood/log/replay.h"
 #include "flood/log/trace_io.h"
+#include "io_test_support.h"
 #include "test_support.h"
 
 using namespace flood;
 using flood::testing::writtenAndRead;
-
-namespace {
-
-std::string source(const std::string& rel) { return std::string(FLOOD_SOURCE_DIR) + "/" + rel; }
-
-bool contains(const std::string& s, const std::string& part) {
-    return s.find(part) != std::string::npos;
-}
-
-Polygon square(double s = 10) {
-    Polygon p;
-    p.addRing({{0, 0}, {s, 0}, {s, s}, {0, s}}, true);
-    return p;
-}
-
-}  // namespace
 
 // A Steiner point is written as a closed ring of one point, [p, p] (WKT (x y, x y)): read as a
 // one-vertex hole, without a warning about the closing point.
@@ -244,303 +229,6 @@ TEST(IoRead, MalformedMessages) {
     EXPECT_EQ(readPolygonFile("/nonexistent/x.json").diagnostic.status, Status::Malformed);
 }
 
-TEST(Validate, AcceptsSimpleAndTouching) {
-    Polygon sq = square();
-    EXPECT_TRUE(validate(sq, "sq").ok());
-    EXPECT_TRUE(sq.splits.empty());
-    Polygon p = square();
-    p.addRing({{0, 0}, {2, 3}, {3, 2}}, false);  // hole touching the outer ring at a corner
-    p.addRing({{5, 5}, {6, 5}, {6, 6}, {5, 6}}, false);
-    p.addRing({{6, 6}, {7, 6}, {7, 7}}, false);  // holes touching each other at a vertex
-    Diagnostic d = validate(p, "t");
-    EXPECT_TRUE(d.ok()) << d.message;
-    EXPECT_TRUE(p.splits.empty());
-}
-
-// A hole vertex inside an outer edge (a T-junction) touches like a shared vertex: accepted and
-// recorded as a split of that edge; so is a single-point hole (a Steiner point).
-TEST(Validate, AcceptsTJunctionsAndPointHoles) {
-    Polygon p;
-    p.addRing({{0, 0}, {10, 0}, {10, 10}, {0, 10}}, true);
-    p.addRing({{5, 0}, {6, 1}, {4, 1}}, false);  // vertex 4 on edge 0-1
-    p.addRing({{2, 5}, {3, 6}, {2, 7}, {1, 6}}, false);
-    p.addRing({{3, 6}, {10, 8}, {4, 5}},
-              false);            // touches ring 2 at (3, 6), ring 0 inside edge 1-2
-    p.addRing({{8, 2}}, false);  // a Steiner point
-    Diagnostic d = validate(p, "t");
-    ASSERT_TRUE(d.ok()) << d.message;
-    ASSERT_EQ(p.splits.size(), 2u);
-    EXPECT_EQ(p.splits[0].edge, 0u);
-    EXPECT_EQ(p.splits[0].vertex, 4u);
-    EXPECT_EQ(p.splits[1].edge, 1u);
-    EXPECT_EQ(p.splits[1].vertex, 12u);
-    // n + 2h - 2 = 15 + 8 - 2, minus 2 for the shared point, 1 per T-junction, 1 per point.
-    EXPECT_EQ(p.expectedTriangles(), 21u - 2 - 2 - 1);
-    // Several vertices on one edge are ordered along the edge's direction.
-    Polygon q;
-    q.addRing({{10, 0}, {10, 10}, {0, 10}, {0, 0}}, true);
-    q.addRing({{3, 10}, {4, 9}, {2, 9}}, false);
-    q.addRing({{7, 10}, {8, 9}, {6, 9}}, false);
-    ASSERT_TRUE(validate(q, "q").ok());
-    ASSERT_EQ(q.splits.size(), 2u);
-    EXPECT_EQ(q.splits[0].vertex, 7u);  // (7, 10) comes first walking from (10, 10) to (0, 10)
-    EXPECT_EQ(q.splits[1].vertex, 4u);
-}
-
-struct InvalidCase {
-    const char* what;
-    Polygon polygon;
-    const char* expect;
-};
-
-TEST(Validate, RejectsEachClassWithPosition) {
-    auto poly = [](std::vector<std::vector<Point>> rings) {
-        Polygon p;
-        for (size_t i = 0; i < rings.size(); ++i) p.addRing(rings[i], i == 0);
-        return p;
-    };
-    double nan = std::nan("");
-    std::vector<InvalidCase> cases = {
-        {"nan", poly({{{0, 0}, {1, 0}, {1, nan}}}),
-         "N: ring 0 vertex 2 (1, nan): coordinate is not a finite"},
-        {"few", poly({{{0, 0}, {1, 0}, {0, 0}, {1, 0}}}),
-         "N: ring 0 vertex 0 (0, 0): ring has 2 distinct points"},
-        {"zero", poly({{{0, 0}, {1, 1}, {2, 2}}}), "ring 0 vertex 0 (0, 0): ring has zero area"},
-        {"cross", poly({{{0, 0}, {10, 10}, {10, 0}, {0, 12}}}),
-         "ring 0 vertex 0 (0, 0): edge ring 0 edge 0-1"},
-        {"on own edge", poly({{{0, 0}, {10, 0}, {10, 10}, {6, 3}, {5, 0}, {4, 3}, {0, 10}}}),
-         "ring 0 vertex 4 (5, 0): the ring touches itself here: the vertex lies on its own edge "
-         "ring 0 edge 0-1"},
-        {"T-junction crossing",
-         poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{5, 0}, {6, 1}, {4, -2}}}), "cross"},
-        {"point on edge", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{5, 0}}}),
-         "ring 1 vertex 0 (5, 0): point hole lies on edge ring 0 edge 0-1"},
-        {"point on vertex", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{10, 10}}}),
-         "point hole coincides with ring 0 vertex 2"},
-        {"point outside", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{20, 5}}}),
-         "ring 1 vertex 0 (20, 5): hole (ring 1) lies outside its outer ring (ring 0)"},
-        {"point outer ring", poly({{{1, 1}}}), "ring has 1 distinct point, at least 3 are needed"},
-        {"two-point hole", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{2, 2}, {3, 3}}}),
-         "ring has 2 distinct points, at least 3 are needed (or exactly one, a point hole)"},
-        {"overlap", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{2, 0}, {4, 0}, {3, 1}}}),
-         "edge ring 0 edge 0-1 (0, 0)-(10, 0)"},
-        {"overlap at shared vertex",
-         poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{0, 0}, {0, 4}, {1, 1}}}),
-         "overlaps collinear edge"},
-        {"spike", poly({{{0, 0}, {10, 0}, {5, 0}, {5, 5}}}), "spike"},
-        {"outside", poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}}, {{20, 20}, {21, 20}, {21, 21}}}),
-         "ring 1 vertex 0 (20, 20): hole (ring 1) lies outside its outer ring (ring 0)"},
-        {"nested holes",
-         poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
-               {{1, 1}, {9, 1}, {9, 9}, {1, 9}},
-               {{2, 2}, {3, 2}, {3, 3}}}),
-         "ring 2 vertex 0 (2, 2): hole (ring 2) lies inside another hole (ring 1)"},
-        {"cross at shared vertex",
-         poly({{{0, 0}, {10, 0}, {10, 10}, {0, 10}},
-               {{5, 5}, {6, 4}, {6, 6}},
-               {{5, 5}, {4, 6}, {4, 4}},
-               {{5, 5}, {5.5, 7}, {4.5, 7}}}),
-         "ok"},  // placeholder replaced below
-        {"figure eight crossing", poly({{{0, 0}, {2, 2}, {4, 4}, {0, 5}, {2, 2}, {4, 0}}}),
-         "crosses itself at this shared vertex"},
-        {"same-orientation loop inside",
-         poly({{{0, 0}, {10, 0}, {10, 10}, {5, 10}, {4, 8}, {6, 8}, {5, 10}, {0, 10}}}),
-         "crosses itself at this shared vertex"},
-    };
-    // Three holes fanning around one shared point without crossing: valid.
-    auto fanCase = std::find_if(cases.begin(), cases.end(), [](const InvalidCase& c) {
-        return std::string(c.what) == "cross at shared vertex";
-    });
-    Diagnostic fan = validate(fanCase->polygon, "N");
-    EXPECT_TRUE(fan.ok()) << fan.message;
-    cases.erase(fanCase);
-    // A ring touching itself at a vertex (an hourglass of two lobes) is not simple: GEOS
-    // calls it a ring self-intersection, and so do we.
-    Polygon bowTie = poly({{{0, 0}, {2, 2}, {0, 4}, {4, 4}, {2, 2}, {4, 0}}});
-    Diagnostic bow = validate(bowTie, "N");
-    EXPECT_EQ(bow.status, Status::Invalid);
-    EXPECT_TRUE(contains(bow.message, "touches itself")) << bow.message;
-    for (InvalidCase& c : cases) {
-        Diagnostic d = validate(c.polygon, "N");
-        EXPECT_EQ(d.status, Status::Invalid) << c.what;
-        EXPECT_TRUE(contains(d.message, c.expect)) << c.what << ": " << d.message;
-        EXPECT_TRUE(contains(d.message, "global vertex")) << c.what << ": " << d.message;
-    }
-}
-
-TEST(Validate, EarcutFixturesMatchGeos) {
-    std::string dir = std::string(FLOOD_SHARED_DIR) + "/peers/earcut/fixtures";
-    if (!std::filesystem::is_directory(dir)) GTEST_SKIP() << "no earcut fixtures at " << dir;
-    // GEOS verdicts from the README table: fixture -> "Valid Geometry" or the reason.
-    std::ifstream readme(std::string(FLOOD_SHARED_DIR) + "/peers/earcut/README.md");
-    std::map<std::string, bool> geosValid;
-    std::regex row(R"(^\| ([a-z0-9-]+) \|.*\| ([^|]+) \|\s*$)");
-    for (std::string line; std::getline(readme, line);) {
-        std::smatch m;
-        if (std::regex_match(line, m, row) && m[1] != "fixture")
-            geosValid[m[1]] = m[2].str().rfind("Valid Geometry", 0) == 0;
-    }
-    ASSERT_EQ(geosValid.size(), 59u);
-    size_t files = 0;
-    std::vector<std::string> disagreements;
-    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
-        if (entry.path().extension() != ".json") continue;
-        ++files;
-        std::string stem = entry.path().stem().string();
-        ReadResult r = readPolygonFile(entry.path().string());
-        ASSERT_TRUE(r.diagnostic.ok() || r.diagnostic.status == Status::Malformed) << stem;
-        bool ok = r.diagnostic.ok() && validate(r.polygon, stem).ok();
-        ASSERT_TRUE(geosValid.count(stem)) << stem;
-        if (ok != geosValid[stem]) disagreements.push_back(stem);
-    }
-    EXPECT_EQ(files, 59u);
-    // validate() accepts exactly GEOS's valid fixtures (touching2's T-junction and steiner's
-    // single-point holes included).
-    std::sort(disagreements.begin(), disagreements.end());
-    std::string list;
-    for (auto& s : disagreements) list += s + " ";
-    EXPECT_EQ(list, "") << "validate() disagrees with GEOS on: " << list;
-}
-
-TEST(IoWrite, JsonRoundTripsExactly) {
-    Polygon p;
-    p.addRing({{0.1, 1e-300}, {1.0 / 3, 2}, {123456789.123456789, -0.5}}, true);
-    std::vector<Triangle> t = {{0, 1, 2}};
-    std::ostringstream out;
-    writeJson(out, p, t);
-    ReadResult back = parsePolygon(out.str(), "x");  // {"vertices":..} is not a polygon file
-    EXPECT_EQ(back.diagnostic.status, Status::Malformed);
-    auto j = nlohmann::json::parse(out.str());
-    ASSERT_EQ(j["vertices"].size(), 3u);
-    for (size_t i = 0; i < 3; ++i) {
-        EXPECT_EQ(j["vertices"][i][0].get<double>(), p.vertices[i].x);
-        EXPECT_EQ(j["vertices"][i][1].get<double>(), p.vertices[i].y);
-    }
-    EXPECT_EQ(j["triangles"][0][2].get<int>(), 2);
-}
-
-TEST(IoWrite, ObjAndSvg) {
-    Polygon p = square();
-    std::vector<Triangle> t = {{0, 1, 2}, {0, 2, 3}};
-    std::ostringstream obj, svg;
-    writeObj(obj, p, t);
-    EXPECT_TRUE(contains(obj.str(), "v 10 10 0\n"));
-    EXPECT_TRUE(contains(obj.str(), "f 1 3 4\n"));
-    writeSvg(svg, p, t);
-    EXPECT_TRUE(contains(svg.str(), "<svg"));
-    EXPECT_TRUE(contains(svg.str(), "L10 -10 "));  // y flipped
-    EXPECT_TRUE(contains(svg.str(), "M0 0 "));
-    EXPECT_TRUE(contains(svg.str(), "</svg>"));
-}
-
-TEST(IoWrite, WktAndRingArrayAgree) {
-    ReadResult a = parsePolygon("[[[0,0],[10,0],[10,10],[0,10]],[[2,2],[2,4],[4,4]]]", "a");
-    ReadResult b = parsePolygon("POLYGON((0 0,10 0,10 10,0 10,0 0),(2 2,2 4,4 4,2 2))", "b");
-    ASSERT_EQ(a.polygon.vertices.size(), b.polygon.vertices.size());
-    for (size_t i = 0; i < a.polygon.vertices.size(); ++i)
-        EXPECT_EQ(a.polygon.vertices[i], b.polygon.vertices[i]);
-}
-
-TEST(TraceIo, RoundTripAndErrors) {
-    ReadResult r = readPolygonFile(source("polygons/hole.json"));
-    ASSERT_TRUE(r.diagnostic.ok()) << r.diagnostic.message;
-    Trace t = record(r.polygon);
-    Trace back = writtenAndRead(t);
-    ASSERT_EQ(back.events.size(), t.events.size());
-    for (size_t i = 0; i < t.events.size(); ++i)  // every field (FLOOD_EVENT_FIELDS)
-        EXPECT_TRUE(back.events[i] == t.events[i]) << "event " << i << " changed on the way";
-    EXPECT_EQ(back.triangles, t.triangles);
-    EXPECT_EQ(back.polygon.vertices.size(), t.polygon.vertices.size());
-    // T-junctions travel with the polygon.
-    ReadResult tjRead = readPolygonFile(source("polygons/t-junction.json"));
-    Polygon& tj = tjRead.polygon;
-    ASSERT_TRUE(validate(tj, "tj").ok());
-    ASSERT_FALSE(tj.splits.empty());
-    Trace withSplits = record(tj);
-    Trace tjBack = writtenAndRead(withSplits);
-    ASSERT_EQ(tjBack.polygon.splits.size(), tj.splits.size());
-    for (size_t i = 0; i < tj.splits.size(); ++i) {
-        EXPECT_EQ(tjBack.polygon.splits[i].edge, tj.splits[i].edge);
-        EXPECT_EQ(tjBack.polygon.splits[i].vertex, tj.splits[i].vertex);
-    }
-    EXPECT_TRUE(checkTriangulation(tjBack.polygon, tjBack.triangles).ok);
-    // Damage: wrong version, bad line, truncated, index out of range.
-    std::ostringstream out;
-    writeTrace(out, t);
-    std::string text = out.str();
-    std::string v2 = text;
-    const std::string version = "\"version\":" + std::to_string(kTraceFormatVersion);
-    v2.replace(v2.find(version), version.size(), "\"version\":99");
-    EXPECT_TRUE(contains(parseTrace(v2, "t", back).message, "t:1: trace format version 99"));
-    std::string bad = text;
-    size_t line2 = bad.find('\n') + 1;
-    bad.insert(line2, "{not json\n");
-    Diagnostic db = parseTrace(bad, "t", back);
-    EXPECT_EQ(db.status, Status::Malformed);
-    EXPECT_TRUE(contains(db.message, "t:2:")) << db.message;
-    EXPECT_TRUE(back.events.empty());
-    std::string trunc = text.substr(0, text.rfind('\n', text.size() - 2) + 1);
-    EXPECT_TRUE(contains(parseTrace(trunc, "t", back).message, "truncated"));
-    std::string idx = text;
-    size_t w = idx.find("\"water\":", line2);
-    idx.replace(w, 9, "\"water\":999999,\"x\":");
-    Diagnostic di = parseTrace(idx, "t", back);
-    EXPECT_EQ(di.status, Status::Malformed) << di.message;
-    // Every prefix of a trace is rejected or accepted without crashing.
-    for (size_t cut = 0; cut < text.size(); cut += 7) parseTrace(text.substr(0, cut), "t", back);
-}
-
-// Correct at scale (validation's speed is measured in bench/, not here).
-// Non-finite coordinates (only an unvalidated run holds them) are written as "NaN",
-// "Infinity", "-Infinity" and read back as the same values (nlohmann wrote null, unreadable).
-TEST(TraceIo, NonFiniteCoordinatesRoundTrip) {
-    Trace t;
-    double inf = std::numeric_limits<double>::infinity();
-    t.polygon.addRing({{0, 0}, {inf, 0}, {1, std::nan("")}, {-inf, 1}}, true);
-    t.diagnostic = {Status::Forbidden, "forbidden transition NotFinite"};
-    std::ostringstream out;
-    writeTrace(out, t);
-    EXPECT_TRUE(
-        contains(out.str(), R"([[0.0,0.0],["Infinity",0.0],[1.0,"NaN"],["-Infinity",1.0]])"))
-        << out.str();
-    Trace back;
-    Diagnostic d = parseTrace(out.str(), "t.jsonl", back);
-    ASSERT_TRUE(d.ok()) << d.message;
-    ASSERT_EQ(back.polygon.vertices.size(), 4u);
-    EXPECT_EQ(back.polygon.vertices[1].x, inf);
-    EXPECT_TRUE(std::isnan(back.polygon.vertices[2].y));
-    EXPECT_EQ(back.polygon.vertices[3].x, -inf);
-    std::string text = out.str();
-    text.replace(text.find("\"NaN\""), 5, "\"nan\"");
-    EXPECT_TRUE(
-        contains(parseTrace(text, "t", back).message, "t:1: vertex 2 is not a pair of numbers"));
-}
-
-// A long literal in a trace is cut in the message too.
-TEST(TraceIo, LongLiteralsCut) {
-    Trace back;
-    std::string junk(1000000, 'q');
-    for (const std::string& text :
-         {"{\"format\":\"" + junk, "{\"format\":" + junk + "}", "[\"" + junk + "\"]"}) {
-        Diagnostic d = parseTrace(text, "t", back);
-        EXPECT_EQ(d.status, Status::Malformed);
-        EXPECT_LT(d.message.size(), 400u) << d.message.substr(0, 400);
-    }
-}
-
-TEST(Validate, OneMillionVerticesAtScale) {
-    Polygon p;
-    std::vector<Point> ring;
-    const int n = 1000000;
-    for (int i = 0; i < n / 2; ++i) ring.push_back({double(i), double(i % 2)});  // zigzag
-    for (int i = n / 2 - 1; i >= 0; --i) ring.push_back({double(i), 10.0 + (i % 3)});
-    p.addRing(ring, true);
-    Diagnostic d = validate(p, "big");
-    EXPECT_TRUE(d.ok()) << d.message;
-    p.vertices[n / 2 + 7].y = -1;  // a spike down through the zigzag: edges now cross
-    EXPECT_EQ(validate(p, "big").status, Status::Invalid);
-}
-
 // 1e-400 was read as 0 while 1e400 was refused: a nonzero literal below the doubles is refused
 // by every reader, with its place; a subnormal (1e-310, 5e-324) is a double and read exactly.
 TEST(IoRead, UnderflowingLiteralsAreRefusedLikeOverflowingOnes) {
@@ -594,4 +282,43 @@ TEST(IoRead, UnderflowingLiteralsAreRefusedLikeOverflowingOnes) {
         R"({"flood_trace":1,"vertices":[[0,0],[1e-400,0],[0,1]],"rings":[[0,3]]})", "t.jsonl", t);
     EXPECT_FALSE(td.ok());
     EXPECT_NE(td.message.find("underflows to 0"), std::string::npos) << td.message;
+}
+
+TEST(IoWrite, JsonRoundTripsExactly) {
+    Polygon p;
+    p.addRing({{0.1, 1e-300}, {1.0 / 3, 2}, {123456789.123456789, -0.5}}, true);
+    std::vector<Triangle> t = {{0, 1, 2}};
+    std::ostringstream out;
+    writeJson(out, p, t);
+    ReadResult back = parsePolygon(out.str(), "x");  // {"vertices":..} is not a polygon file
+    EXPECT_EQ(back.diagnostic.status, Status::Malformed);
+    auto j = nlohmann::json::parse(out.str());
+    ASSERT_EQ(j["vertices"].size(), 3u);
+    for (size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(j["vertices"][i][0].get<double>(), p.vertices[i].x);
+        EXPECT_EQ(j["vertices"][i][1].get<double>(), p.vertices[i].y);
+    }
+    EXPECT_EQ(j["triangles"][0][2].get<int>(), 2);
+}
+
+TEST(IoWrite, ObjAndSvg) {
+    Polygon p = square();
+    std::vector<Triangle> t = {{0, 1, 2}, {0, 2, 3}};
+    std::ostringstream obj, svg;
+    writeObj(obj, p, t);
+    EXPECT_TRUE(contains(obj.str(), "v 10 10 0\n"));
+    EXPECT_TRUE(contains(obj.str(), "f 1 3 4\n"));
+    writeSvg(svg, p, t);
+    EXPECT_TRUE(contains(svg.str(), "<svg"));
+    EXPECT_TRUE(contains(svg.str(), "L10 -10 "));  // y flipped
+    EXPECT_TRUE(contains(svg.str(), "M0 0 "));
+    EXPECT_TRUE(contains(svg.str(), "</svg>"));
+}
+
+TEST(IoWrite, WktAndRingArrayAgree) {
+    ReadResult a = parsePolygon("[[[0,0],[10,0],[10,10],[0,10]],[[2,2],[2,4],[4,4]]]", "a");
+    ReadResult b = parsePolygon("POLYGON((0 0,10 0,10 10,0 10,0 0),(2 2,2 4,4 4,2 2))", "b");
+    ASSERT_EQ(a.polygon.vertices.size(), b.polygon.vertices.size());
+    for (size_t i = 0; i < a.polygon.vertices.size(); ++i)
+        EXPECT_EQ(a.polygon.vertices[i], b.polygon.vertices[i]);
 }

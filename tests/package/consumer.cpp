@@ -30,7 +30,7 @@ int main() {
 
     const Rings bowtieRings = {{{0, 0}, {4, 2}, {4, 0}, {0, 3}}};  // edges 0-1 and 2-3 cross
     flood::Polygon bowtie = flood::makePolygon({bowtieRings});
-    flood::Diagnostic d = flood::checkPolygon(bowtie, "bowtie");
+    flood::Diagnostic d = flood::validate(bowtie, "bowtie");
     expect(d.status == flood::Status::Invalid, "a bow-tie is invalid");
     expect(d.message.rfind("bowtie: ring 0", 0) == 0, "the diagnostic names the ring");
     flood::Triangulation refused = flood::triangulateParts({bowtieRings});

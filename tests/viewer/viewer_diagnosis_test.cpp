@@ -56,13 +56,13 @@ TEST(ViewerFindings, EveryFindingOfAFaceInTheVerdictsOrder) {
     m.open(write("three-bowties", kThreeBowTies));
     const auto& f = m.findings();
     size_t invalid = 0;
-    for (const Finding& x : f) invalid += x.kind == VerdictKind::InvalidInput;
+    for (const Finding& x : f) invalid += x.kind == Verdict::Invalid;
     ASSERT_EQ(invalid, 3u) << m.verdict();
     // The first is validate()'s verdict, the others follow; the flood's failures come last.
     EXPECT_EQ(f[0].message, m.inputDiagnostic().message);
     for (size_t i = 0; i < 3; ++i) {
         SCOPED_TRACE(i);
-        EXPECT_EQ(f[i].kind, VerdictKind::InvalidInput);
+        EXPECT_EQ(f[i].kind, Verdict::Invalid);
         EXPECT_EQ(f[i].where, "ring " + std::to_string(i + 1) + " vertex 0 (" +
                                   std::to_string(2 + 10 * i) + ", 2)");
         EXPECT_NE(f[i].reason.find("crosses"), std::string::npos) << f[i].reason;
@@ -75,7 +75,7 @@ TEST(ViewerFindings, EveryFindingOfAFaceInTheVerdictsOrder) {
         EXPECT_NEAR(f[i].point.x, 4 + 10.0 * i, 1e-9);
         EXPECT_NEAR(f[i].point.y, 4, 1e-9);
     }
-    for (size_t i = 3; i < f.size(); ++i) EXPECT_NE(f[i].kind, VerdictKind::InvalidInput);
+    for (size_t i = 3; i < f.size(); ++i) EXPECT_NE(f[i].kind, Verdict::Invalid);
     EXPECT_EQ(m.findingsOmitted(), 0u);
     EXPECT_TRUE(m.findingsComplete());
     EXPECT_EQ(m.errorCulprits().edges, f[0].culprits.edges);
@@ -147,7 +147,7 @@ TEST(ViewerFraming, AHoleBlamedWholeIsFramedNotTheOuterRing) {
     m.setViewport(kCanvas);
     ASSERT_FALSE(m.findings().empty());
     const Finding& f = m.findings()[0];
-    ASSERT_EQ(f.kind, VerdictKind::InvalidInput);
+    ASSERT_EQ(f.kind, Verdict::Invalid);
     ASSERT_EQ(f.culprits.rings.size(), 2u) << f.message;
     EXPECT_EQ(f.culprits.rings[0], 1u);
     ASSERT_TRUE(m.showFinding(0));
@@ -261,7 +261,7 @@ TEST(ViewerFindings, AnInvalidEditBringsItsFindingsFromItsFlood) {
     ASSERT_EQ(run.findings.list.size(), 3u);
     m.adoptEdit(std::move(run));
     size_t invalid = 0;
-    for (const Finding& x : m.findings()) invalid += x.kind == VerdictKind::InvalidInput;
+    for (const Finding& x : m.findings()) invalid += x.kind == Verdict::Invalid;
     EXPECT_EQ(invalid, 3u);
 }
 

@@ -262,7 +262,7 @@ TEST(ViewerEdit, ABowTieIsKeptWithTheValidatorsDiagnosticAndUndoRestoresValidity
     EXPECT_TRUE(m.failed());
     EXPECT_EQ(m.exitCode(), int(Status::Invalid));
     ASSERT_FALSE(m.verdictLines().empty());
-    EXPECT_EQ(m.verdictLines()[0].kind, VerdictKind::InvalidInput);
+    EXPECT_EQ(m.verdictLines()[0].kind, Verdict::Invalid);
     EXPECT_TRUE(m.polygon().vertices[2] == (Point{-5, 10}));
 
     ASSERT_TRUE(e.undo());

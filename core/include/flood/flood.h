@@ -7,6 +7,7 @@
 #include "flood/check/diagnostic_where.h"  // where a diagnostic points: ring, vertex, x, y
 #include "flood/check/invariants.h"        // the machine's invariants on a replayed step
 #include "flood/check/touches.h"           // T-junctions without validating (--no-validate)
+#include "flood/check/verdict.h"           // the verdict on a polygon, and the one judge
 #include "flood/check/verify.h"            // the paper's verification by the complement
 #include "flood/flood_api.h"               // rings in, triangles out, validated
 #include "flood/geometry/polygon.h"        // Point, Polygon

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "flood/io/io.h"       // validate(): the validity rules alone
 #include "flood/log/replay.h"  // Trace, Replay: seek to any step of a recorded flood
 #include "flood/machine/flood.h"  // Options, Triangle, Diagnostic, Status, triangulate() without validation
 
@@ -19,10 +20,6 @@ using Rings = std::vector<std::vector<Point>>;
 // A MultiPolygon of `parts` as a Polygon. Vertices are numbered through all rings in order,
 // from 0: the numbers the triangles below use. Parts without rings are skipped.
 Polygon makePolygon(const std::vector<Rings>& parts);
-
-// Validity rules of docs/ERRORS.md; Ok, or Invalid with "NAME: ring R vertex V (x, y): reason"
-// for the first problem. Records the polygon's T-junctions in it, which the flood needs.
-Diagnostic checkPolygon(Polygon& polygon, const std::string& name = "polygon");
 
 struct Triangulation {
     Polygon polygon;                  // the input, vertices numbered as in makePolygon

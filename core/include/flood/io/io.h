@@ -70,6 +70,16 @@ struct DatasetRead {
     std::vector<std::string> skipped;  // warnings for non-polygonal features
 };
 
+// A file Flood's own readers take by its name: .json, .geojson or .wkt, in any case.
+bool polygonFileName(const std::string& path);
+// Those extensions, for messages: ".json, .geojson, .wkt".
+std::string polygonFormats();
+// Which files of a folder are polygons: its own regular files (not its subfolders') that
+// polygonFileName() takes, but for gallery.json, the teaching gallery's index; sorted. The
+// one listing of polygons/ the viewer's gallery, the tests and pytest
+// (flood._flood.polygon_files) use. Empty when the folder cannot be listed.
+std::vector<std::string> polygonFiles(const std::string& dir);
+
 // Splits a FeatureCollection into its features, each read on its own so one broken feature
 // does not hide the others (a MultiPolygon feature stays one polygon: its parts may
 // interact). Any other document, or one that cannot be parsed, is one whole-file entry read

@@ -10,6 +10,7 @@
 
 #include "check_rows.h"
 #include "triangulate_gis.h"
+#include "verbosity.h"
 #ifdef FLOOD_GDAL
 #include "flood/io/gdal/gdal_io.h"
 #endif
@@ -81,7 +82,7 @@ int writeFindings(const std::vector<Row*>& rows, const std::string& out) {
                                    }),
                     items.end());
         if (items.size() < all)
-            std::cerr << "warning: " << out << ": " << all - items.size()
+            warning() << out << ": " << all - items.size()
                       << " findings without a location (a file or feature that cannot be read, "
                          "a rejected triangulation) are left out: FlatGeobuf holds no feature "
                          "without a geometry (the table lists them)\n";
@@ -151,7 +152,7 @@ int writeFindings(const std::vector<Row*>& rows, const std::string& out) {
                           edgesOut + w.substr(std::min(w.size(), out.size()))) == warnings.end())
                 warnings.push_back(w);
     }
-    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    for (const std::string& w : warnings) warning() << w << "\n";
     if (!d.ok()) {
         std::cerr << "error: " << d.message << "\n";
         return int(d.status);
@@ -199,7 +200,7 @@ bool extractGis(Row& row, const std::string& dir, const std::string& stem) {
     o.noReplace = true;
     std::vector<std::string> warnings;
     Diagnostic d = gdal::writeLayers(path, o, {layer}, warnings);
-    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    for (const std::string& w : warnings) warning() << w << "\n";
     if (!d.ok()) {
         std::cerr << "error: " << d.message << "\n";
         return false;

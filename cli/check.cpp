@@ -10,7 +10,9 @@
 // input order and printed at the end: the output is the same for any -j.
 #include "check.h"
 
+#include "check_progress.h"
 #include "check_rows.h"
+#include "verbosity.h"
 
 #include <unistd.h>
 
@@ -234,6 +236,7 @@ public:
     }
 
     std::atomic<size_t> filesRead{0}, featuresKnown{0}, featuresDone{0};
+    ReadProgress* progress = nullptr;  // for the progress line, when there is one
 
 private:
     static constexpr size_t kRead = SIZE_MAX;
@@ -245,7 +248,8 @@ private:
     DatasetRead readDataset(const std::string& path, bool& gis) {
         Selection s = o_.selection;
         s.allLayers = true;  // each layer's features, each row naming its layer
-        return gdal::readAnyFeatures(path, s, o_.maxInputBytes, !o_.extractDir.empty(), gis);
+        return gdal::readAnyFeatures(path, s, o_.maxInputBytes, !o_.extractDir.empty(), gis,
+                                     progress);
     }
 
     void read(size_t i, std::vector<Job>& more) {
@@ -481,18 +485,32 @@ int runCheck(const CheckOptions& o) {
         for (std::thread& t : workers) t.join();
         seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     };
-    if (isatty(STDERR_FILENO)) {
-        // A progress line, redrawn at most 10 times a second, erased at the end.
-        std::mutex m;
+    ReadProgress reading;
+    std::mutex m;  // one writer of the line at a time
+    auto draw = [&] {
+        std::fprintf(stderr, "\r\033[K%s",
+                     progressLine(reading, scheduler.featuresDone, scheduler.featuresKnown,
+                                  scheduler.filesRead, files.size())
+                         .c_str());
+        std::fflush(stderr);
+    };
+    if (verbosity != Verbosity::Quiet && isatty(STDERR_FILENO)) {
+        // A progress line, redrawn at most 10 times a second and at each step of the reading
+        // (readingStep), erased at the end.
+        std::atomic<uint64_t> shown{~uint64_t(0)};
+        reading.changed = [&] {
+            if (uint64_t step = readingStep(reading); shown.exchange(step) != step) {
+                std::lock_guard<std::mutex> lock(m);
+                draw();
+            }
+        };
+        scheduler.progress = &reading;
         std::condition_variable cv;
         bool finished = false;
         std::thread progress([&] {
             std::unique_lock<std::mutex> lock(m);
             do {
-                std::fprintf(stderr, "\r\033[Kcheck: %zu/%zu features checked, %zu/%zu files read",
-                             scheduler.featuresDone.load(), scheduler.featuresKnown.load(),
-                             scheduler.filesRead.load(), files.size());
-                std::fflush(stderr);
+                draw();
             } while (!cv.wait_for(lock, std::chrono::milliseconds(100), [&] { return finished; }));
             std::fprintf(stderr, "\r\033[K");
             std::fflush(stderr);
@@ -511,8 +529,13 @@ int runCheck(const CheckOptions& o) {
     std::vector<Row*> rows;
     for (File& f : files) {
         for (const std::string& w : folded(f.warnings, displayName(f.path)))
-            std::cerr << "warning: " << printable(w) << "\n";
-        for (Row& r : f.rows) rows.push_back(&r);
+            warning() << printable(w) << "\n";
+        for (Row& r : f.rows) {
+            rows.push_back(&r);
+            detail() << "check: " << printable(displayName(r.file))
+                     << (r.wholeFile ? "" : ": feature " + std::to_string(r.feature)) << ": "
+                     << verdictName(r.verdict) << ", " << r.vertices << " vertices\n";
+        }
     }
     int code = 0;
     std::array<size_t, size_t(Verdict::Count)> count{};

@@ -11,6 +11,7 @@
 #include "check_rows.h"
 #include "flood/io/gdal/gdal_io.h"
 #include "triangulate_gis.h"
+#include "verbosity.h"
 
 namespace flood::cli {
 
@@ -79,7 +80,7 @@ int writeFindings(const std::vector<Row*>& rows, const std::string& out) {
                                    }),
                     items.end());
         if (items.size() < all)
-            std::cerr << "warning: " << out << ": " << all - items.size()
+            warning() << out << ": " << all - items.size()
                       << " findings without a location (a file or feature that cannot be read, "
                          "a rejected triangulation) are left out: FlatGeobuf holds no feature "
                          "without a geometry (the table lists them)\n";
@@ -149,7 +150,7 @@ int writeFindings(const std::vector<Row*>& rows, const std::string& out) {
                           edgesOut + w.substr(std::min(w.size(), out.size()))) == warnings.end())
                 warnings.push_back(w);
     }
-    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    for (const std::string& w : warnings) warning() << w << "\n";
     if (!d.ok()) {
         std::cerr << "error: " << d.message << "\n";
         return int(d.status);
@@ -197,7 +198,7 @@ bool extractGis(Row& row, const std::string& dir, const std::string& stem) {
     o.noReplace = true;
     std::vector<std::string> warnings;
     Diagnostic d = gdal::writeLayers(path, o, {layer}, warnings);
-    for (const std::string& w : warnings) std::cerr << "warning: " << w << "\n";
+    for (const std::string& w : warnings) warning() << w << "\n";
     if (!d.ok()) {
         std::cerr << "error: " << d.message << "\n";
         return false;

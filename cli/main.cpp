@@ -46,6 +46,7 @@
 #include "pipeline.h"
 #include "run.h"
 #include "triangulate_gis.h"
+#include "verbosity.h"
 
 namespace {
 
@@ -76,7 +77,13 @@ int cmdTriangulate(const std::string& in, const std::string& out, std::string fo
     Polygon polygon;
     Status s = prepare(in, polygon, check);
     if (s != Status::Ok) return code(s);
+    Stopwatch watch;
     FloodResult r = triangulate(polygon, nullptr, makeOptions(up));
+    detail() << "flood: " << r.triangles.size() << " triangles, " << timeText(watch.lap()) << "\n";
+    struct Timed {  // -v: the time of the rest, whichever way it ends
+        Stopwatch& watch;
+        ~Timed() { detail() << "check and write: " << timeText(watch.lap()) << "\n"; }
+    } timed{watch};
     auto write = [&](Output& o) {
         if (format == "svg") writeSvg(o.stream(), polygon, r.triangles);
         else if (format == "obj") writeObj(o.stream(), polygon, r.triangles);
@@ -113,7 +120,10 @@ int cmdTrace(const std::string& in, const std::string& out, const std::string& u
     const Status verdict = s;
     if (s != Status::Ok && s != Status::Invalid) return code(s);
     const bool validated = check && verdict == Status::Ok;
+    Stopwatch watch;
     Trace t = record(polygon, makeOptions(up));
+    detail() << "flood: " << t.events.size() << " events recorded, " << timeText(watch.lap())
+             << "\n";
     s = judge(polygon, t.triangles, t.diagnostic, validated, exactCheck);
     if (verdict != Status::Ok) s = verdict;
     // A trace of a forbidden run is exactly what one wants to look at: write it anyway,
@@ -179,7 +189,9 @@ int cmdVerify(const std::string& in, const std::string& up, bool check) {
     if (s != Status::Ok) return code(s);
     // The paper's verification (§6): flood the polygon and its complement in a box, and check
     // both exactly. Unvalidated, it is the paper's open conjecture at work: say what caught it.
+    Stopwatch watch;
     Verification v = verify(polygon, makeOptions(up));
+    detail() << "verify: " << timeText(watch.lap()) << "\n";
     std::cout << v.summary() << "\n";
     if (!v.ok()) {
         std::cout << "verify: FAILED (caught by: " << caughtName(v.caught()) << ")\n";
@@ -487,6 +499,10 @@ int flood::cli::run(int argc, char** argv) {
     CLI::App app{"flood: triangulate polygons with holes by flooding (Ronfard & Rossignac 1994)"};
     app.set_version_flag("--version", std::string("flood ") + FLOOD_VERSION);
     app.require_subcommand(1);
+    app.footer(
+        "Every command takes -q (--quiet: errors only on stderr, no progress line, warnings or "
+        "notes) and -v (--verbose: also the time of each stage; check: a line per feature). "
+        "Output is plain text, never coloured (docs/CLI.md, \"Quiet, verbose, no colour\").\n");
     std::string in, out = "-", format, up = "+y";
     bool noValidate = false, slipping = false, noExactCheck = false;
     std::string family;
@@ -592,8 +608,6 @@ int flood::cli::run(int argc, char** argv) {
                     "Output file for the minimal polygon (- for stdout, the default)");
     shr->add_option("--timeout", timeout, "Seconds before a run counts as a hang (default 10)")
         ->check(CLI::Range(1u, 3600u));
-    bool quiet = false;
-    shr->add_flag("-q,--quiet", quiet, "No progress line and no summary on stderr (errors only)");
     shr->add_flag("--slipping", slipping,
                   "Shrink an invalid polygon that the unvalidated verification (verify "
                   "--no-validate) passes, keeping it so (docs/ALGORITHM.md §7)");
@@ -663,6 +677,18 @@ int flood::cli::run(int argc, char** argv) {
             ->type_name("FILTER");
     }
 
+    // -q and -v on every command (verbosity.h); shrink's -q was first, so it keeps its words.
+    bool quiet = false, verbose = false;
+    for (CLI::App* cmd : {tri, trace, tr, ver, bench, gen, shr, chk}) {
+        auto* q = cmd->add_flag(
+            "-q,--quiet", quiet,
+            "Errors only on stderr: no progress line, warnings, notes or summary there");
+        cmd->add_flag("-v,--verbose", verbose,
+                      "More on stderr: the time of each stage (read, validate, flood, check and "
+                      "write); check: a line per feature")
+            ->excludes(q);
+    }
+
     // CLI11 would say "A subcommand is required" for a misspelt one: name it and the choices.
     if (argc > 1 && argv[1][0] != '-') {
         auto cmds = app.get_subcommands([](CLI::App*) { return true; });
@@ -692,6 +718,7 @@ int flood::cli::run(int argc, char** argv) {
         app.exit(e);
         return code(Status::Usage);
     }
+    verbosity = quiet ? Verbosity::Quiet : verbose ? Verbosity::Verbose : Verbosity::Normal;
     if (selection.any() && !gdal::built()) {
         std::cerr << "error: --layer, --feature and --where read GIS datasets through GDAL: this "
                      "flood was built without it (install libgdal-dev, reconfigure)\n";

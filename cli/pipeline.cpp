@@ -6,6 +6,7 @@
 #include "check.h"  // grouped()
 #include "flood/check/touches.h"
 #include "flood/io/gdal/read_any.h"
+#include "verbosity.h"
 
 namespace flood::cli {
 
@@ -17,25 +18,31 @@ ReadResult readInput(const std::string& path) {
 }
 
 Status prepare(const std::string& path, Polygon& polygon, bool check, bool floodInvalid) {
+    Stopwatch watch;
     ReadResult rr = readInput(path);
-    for (const std::string& w : rr.warnings) std::cerr << "warning: " << w << "\n";
+    const std::string name = path == "-" ? "<stdin>" : path;
+    detail() << "read: " << name << ": " << rr.polygon.vertices.size() << " vertices, "
+             << rr.polygon.rings.size() << (rr.polygon.rings.size() == 1 ? " ring, " : " rings, ")
+             << timeText(watch.lap()) << "\n";
+    for (const std::string& w : rr.warnings) warning() << w << "\n";
     if (rr.warningsOmitted)
-        std::cerr << "warning: " << (path == "-" ? "<stdin>" : path) << ": \u2026 and "
-                  << grouped(rr.warningsOmitted) << " more warnings like these\n";
+        warning() << name << ": \u2026 and " << grouped(rr.warningsOmitted)
+                  << " more warnings like these\n";
     if (!rr.diagnostic.ok()) {
         std::cerr << "error: " << rr.diagnostic.message << "\n";
         return rr.diagnostic.status;
     }
-    Diagnostic d = check ? validate(rr.polygon, path == "-" ? "<stdin>" : path) : Diagnostic{};
+    Diagnostic d = check ? validate(rr.polygon, name) : Diagnostic{};
+    if (check) detail() << "validate: " << timeText(watch.lap()) << "\n";
     if (!d.ok()) {
         std::cerr << "error: invalid polygon: " << d.message << "\n";
         if (!floodInvalid) return d.status;
-        std::cerr << "note: flooding it anyway (as --no-validate), up to where the machine "
-                     "stops\n";
+        note() << "note: flooding it anyway (as --no-validate), up to where the machine "
+                  "stops\n";
         check = false;
     }
     if (!check && !findTouches(rr.polygon).complete)
-        std::cerr << "warning: " << path << ": the search for T-junctions gave up (work cap): "
+        warning() << path << ": the search for T-junctions gave up (work cap): "
                   << "the polygon is flooded without them\n";
     polygon = std::move(rr.polygon);
     return d.status;

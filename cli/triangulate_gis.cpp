@@ -12,6 +12,7 @@
 #include "flood/check/touches.h"
 #include "flood/io/gdal/gdal_io.h"
 #include "flood/io/io.h"
+#include "verbosity.h"
 
 namespace flood::cli {
 namespace {
@@ -89,7 +90,7 @@ int triangulateGis(const GisTriangulation& t) {
     bool gis = false;
     DatasetRead d = gdal::readAnyFeatures(t.in, t.in == "-" ? Selection{} : t.selection,
                                           t.maxInputBytes, false, gis);
-    for (const std::string& w : d.skipped) std::cerr << "warning: " << w << "\n";
+    for (const std::string& w : d.skipped) warning() << w << "\n";
     if (d.features.size() == 1 && d.features[0].wholeFile && !d.features[0].read.diagnostic.ok()) {
         std::cerr << "error: " << d.features[0].read.diagnostic.message << "\n";
         return int(d.features[0].read.diagnostic.status);
@@ -108,9 +109,9 @@ int triangulateGis(const GisTriangulation& t) {
     };
     std::vector<Done> done;
     for (FeatureRead& f : d.features) {
-        for (const std::string& w : f.read.warnings) std::cerr << "warning: " << w << "\n";
+        for (const std::string& w : f.read.warnings) warning() << w << "\n";
         if (f.read.warningsOmitted)
-            std::cerr << "warning: " << name << ": \u2026 and " << f.read.warningsOmitted
+            warning() << name << ": \u2026 and " << f.read.warningsOmitted
                       << " more warnings like these\n";
         if (!f.read.diagnostic.ok()) {
             fail("", f.read.diagnostic);
@@ -123,7 +124,7 @@ int triangulateGis(const GisTriangulation& t) {
             continue;
         }
         if (!t.validate && !findTouches(p).complete)
-            std::cerr << "warning: " << where << ": the search for T-junctions gave up (work "
+            warning() << where << ": the search for T-junctions gave up (work "
                       << "cap): the polygon is flooded without them\n";
         FloodResult r = triangulate(p, nullptr, t.options);
         if (!r.diagnostic.ok()) {
@@ -138,6 +139,7 @@ int triangulateGis(const GisTriangulation& t) {
                       where + ": the exact checker rejects the triangulation: " + c.reason});
                 continue;
             }
+        detail() << "triangulate: " << where << ": " << r.triangles.size() << " triangles\n";
         done.push_back({f.fid, &p, std::move(r.triangles)});
     }
     if (done.empty()) return int(worst);
@@ -178,15 +180,15 @@ int triangulateGis(const GisTriangulation& t) {
     o.sources = {{t.in, t.selection}};
     std::vector<std::string> warnings;
     Diagnostic w = gdal::writeLayers(t.out, o, {layer}, warnings);
-    for (const std::string& m : warnings) std::cerr << "warning: " << m << "\n";
+    for (const std::string& m : warnings) warning() << m << "\n";
     if (!w.ok()) {
         std::cerr << "error: " << w.message << "\n";
         return int(w.status);
     }
     if (failed)
-        std::cerr << "note: " << t.out << ": " << done.size() << " of " << done.size() + failed
-                  << " features written; the " << failed
-                  << (failed == 1 ? " above was" : " above were") << " left out\n";
+        note() << "note: " << t.out << ": " << done.size() << " of " << done.size() + failed
+               << " features written; the " << failed
+               << (failed == 1 ? " above was" : " above were") << " left out\n";
     return int(worst);
 #else
     (void)t;

@@ -20,6 +20,7 @@ packages=(
   pybind11-dev python3-dev python3-numpy              # Python module (python/)
   python3-shapely python3-pytest                      #   its inputs and tests
   python3-dask python3-distributed python3-pandas     #   flood.dask (bags, dataframes)
+  python3-geopandas                                   #   flood.triangulate_frame (its test skips without it)
   python3-pip python3-venv python3-setuptools         #   `pip install ./python` (ctest python.pip-install)
 )
 label=install-deps

@@ -49,6 +49,15 @@ for static in "" --static; do
   "$tmp/consumer-pc"
 done
 
+# docs/LIBRARY.md's example of the caller's own points (its second C++ block), as written.
+echo "package-test: docs/LIBRARY.md's point view example"
+awk '/^```cpp/ { n++; if (n == 2) { on = 1; next } } /^```$/ { on = 0 } on' \
+    "$src/docs/LIBRARY.md" >"$tmp/view_example.cpp"
+${CXX:-c++} -std=c++17 -O1 "$tmp/view_example.cpp" \
+    $(PKG_CONFIG_PATH="$pcdir" pkg-config --cflags --libs flood) -o "$tmp/view_example"
+[ "$("$tmp/view_example")" = "2 and 2 triangles" ] ||
+    { echo "package-test: the point view example does not print '2 and 2 triangles'" >&2; exit 1; }
+
 "$prefix/bin/flood" generate star 50 -o "$tmp/star.json" && "$prefix/bin/flood" verify "$tmp/star.json" >/dev/null
 # The conventions of a command-line tool: its bash completion, and its man page where the
 # build could make it (help2man).

@@ -292,7 +292,7 @@ static bool binaryMagicAt(const std::string& text, const char* buf, size_t k, co
 }
 
 Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t maxBytes,
-                         const char* expected, const char* binaryMagic) {
+                         const char* expected, const char* binaryMagic, ReadProgress* progress) {
     text.clear();
     const std::string name = path == "-" ? "<stdin>" : path;
     const int fd = path == "-" ? STDIN_FILENO : ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
@@ -313,6 +313,10 @@ Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t ma
     try {
         // The padding lets the fast JSON reader read ahead without a copy of the text.
         if (S_ISREG(st.st_mode)) text.reserve(size_t(st.st_size) + io_detail::kReadAhead);
+        if (progress && S_ISREG(st.st_mode)) {
+            progress->bytesTotal += uint64_t(st.st_size);
+            progress->tell();
+        }
         char buf[1 << 16];
         for (;;) {
             ssize_t k = ::read(fd, buf, sizeof buf);
@@ -334,6 +338,10 @@ Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t ma
                                                std::to_string(maxBytes) +
                                                " bytes (--max-input-bytes); stopped reading"};
             text.append(buf, size_t(k));
+            if (progress) {
+                progress->bytesRead += uint64_t(k);
+                progress->tell();
+            }
         }
     } catch (const std::bad_alloc&) {
         size_t got = text.size();
@@ -462,7 +470,8 @@ json featureSequence(std::string_view text) {
     return items;
 }
 
-DatasetRead parseFeatures(std::string_view text, const std::string& name, bool keepSource) {
+DatasetRead parseFeatures(std::string_view text, const std::string& name, bool keepSource,
+                          ReadProgress* progress) {
     DatasetRead out;
     auto whole = [&] {
         FeatureRead f;
@@ -479,7 +488,18 @@ DatasetRead parseFeatures(std::string_view text, const std::string& name, bool k
         if (text.find("\"FeatureCollection\"") == std::string_view::npos ||
             tooDeep(text) != std::string_view::npos)
             return whole();
-        json doc = json::parse(text.begin(), text.end(), nullptr, false);
+        // With a progress record, each Feature object closing in the "features" array (depth
+        // 2) is counted as the parser meets it: the parse is most of a large file's read.
+        json::parser_callback_t count = nullptr;
+        if (progress)
+            count = [progress](int depth, json::parse_event_t event, json&) {
+                if (depth == 2 && event == json::parse_event_t::object_end) {
+                    ++progress->featuresParsed;
+                    progress->tell();
+                }
+                return true;
+            };
+        json doc = json::parse(text.begin(), text.end(), count, false);
         if (doc.is_discarded()) return whole();  // parsePolygon says where and why
         if (!doc.is_object() || !doc.contains("type") || doc["type"] != "FeatureCollection" ||
             !doc.contains("features") || !doc["features"].is_array() || doc["features"].empty())
@@ -498,21 +518,26 @@ DatasetRead parseFeatures(std::string_view text, const std::string& name, bool k
             continue;
         }
         out.features.push_back(readFeature(name, items[i], i, fid[i], keepSource));
+        if (progress) {
+            ++progress->featuresRead;
+            progress->tell();
+        }
     }
     if (out.features.empty()) return whole();  // "no polygon found"
     return out;
 }
 
-DatasetRead readFeaturesFile(const std::string& path, uint64_t maxBytes, bool keepSource) {
+DatasetRead readFeaturesFile(const std::string& path, uint64_t maxBytes, bool keepSource,
+                             ReadProgress* progress) {
     std::string text;
-    Diagnostic d = readInputFile(path, text, maxBytes, "GeoJSON or WKT");
+    Diagnostic d = readInputFile(path, text, maxBytes, "GeoJSON or WKT", nullptr, progress);
     if (!d.ok()) {
         DatasetRead out;
         out.features.emplace_back();
         out.features.back().read.diagnostic = d;
         return out;
     }
-    return parseFeatures(text, path == "-" ? "<stdin>" : path, keepSource);
+    return parseFeatures(text, path == "-" ? "<stdin>" : path, keepSource, progress);
 }
 
 }  // namespace flood

@@ -27,6 +27,9 @@ classes (docs/ERRORS.md).
   named as flood/machine/events.h names them), and ``.replay``, whose ``seek(step)`` gives the state
   after ``step`` events (fingers Left/Right/NextLeft/NextRight, the active chain, ...).
 - ``check(features)`` triangulates many polygons on C++ threads and returns one Verdict each.
+- ``triangulate_frame(gdf)`` returns a geopandas GeoDataFrame of every row's triangles, with
+  the row's index (``source``) and the CRS kept; a failing row is warned about and skipped
+  (``errors="raise"`` or ``"ignore"``, as in pandas): see flood.frame.
 - ``generate(family, size, seed)`` returns a generated valid polygon as a list of parts.
 
 The GIL is released while the core runs, so Python threads triangulate in parallel too.
@@ -49,7 +52,8 @@ __all__ = [
     "ACTIONS", "EVENT_DTYPE", "FORBIDDEN", "NONE", "TESTS", "__version__",
     "Diagnostic", "FloodWarning", "InternalError", "InvalidPolygon", "Replay", "Trace",
     "Triangulation",
-    "Verdict", "check", "families", "generate", "trace", "triangulate", "validate",
+    "Verdict", "check", "families", "generate", "trace", "triangulate", "triangulate_frame",
+    "validate",
 ]
 
 NONE = _flood.NONE                # "no vertex" in events and replay states (0xffffffff)
@@ -308,3 +312,6 @@ def generate(family: str, size: int, seed: int = 1) -> List[List[np.ndarray]]:
 
 def families() -> List[str]:
     return list(_flood.families())
+
+
+from .frame import triangulate_frame  # noqa: E402 (it uses what is defined above)

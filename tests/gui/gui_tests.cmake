@@ -56,6 +56,11 @@ add_test(NAME viewer/version COMMAND sh -c
   "out=$(\"$0\" --version) && echo \"$out\" | grep -Eqx 'flood-viewer [0-9]+[.][0-9]+([.][0-9]+)?'"
   $<TARGET_FILE:flood-viewer>)
 
+# ---- the command line (viewer/args.cpp, CLI11): parsed in-process, no window -------------------
+flood_windowless_test(args_test args.cpp)
+target_link_libraries(args_test PRIVATE CLI11::CLI11)
+target_compile_definitions(args_test PRIVATE FLOOD_VERSION="${PROJECT_VERSION}")
+
 # ---- the exports: runs flood-viewer headless, reads what it wrote ------------------------
 add_executable(export_test ${GUI_TESTS}/export_test.cpp)
 target_link_libraries(export_test PRIVATE floodviewmodel PkgConfig::IMGUI GTest::gtest_main)

@@ -6,8 +6,9 @@
 #include <string>
 #include <vector>
 
-#include "flood/io/io.h"       // validate(): the validity rules alone
-#include "flood/log/replay.h"  // Trace, Replay: seek to any step of a recorded flood
+#include "flood/geometry/point_view.h"  // the caller's own points: makePolygonOf, PointAccess, Span
+#include "flood/io/io.h"                // validate(): the validity rules alone
+#include "flood/log/replay.h"           // Trace, Replay: seek to any step of a recorded flood
 #include "flood/machine/flood.h"  // Options, Triangle, Diagnostic, Status, triangulate() without validation
 
 namespace flood {
@@ -30,6 +31,28 @@ struct Triangulation {
 
 // Validates the parts, then floods them.
 Triangulation triangulateParts(const std::vector<Rings>& parts, const Options& options = {});
+
+// Validates a polygon made by makePolygon or makePolygonOf, then floods it.
+Triangulation triangulatePolygon(Polygon polygon, const Options& options = {});
+
+// triangulateParts over the caller's own points, read once into the polygon
+// (geometry/point_view.h): `rings` is a range of rings (outer, then holes), each a range of
+// points of any type with x/y or [0]/[1] members (or a PointAccess); `parts` a range of those.
+// The same triangles as triangulateParts given the same coordinates.
+template <typename RingsRange>
+Triangulation triangulateView(const RingsRange& rings, const Options& options = {}) {
+    Polygon polygon;
+    bool outer = true;
+    for (const auto& ring : rings) {
+        addRingOf(polygon, ring, outer);
+        outer = false;
+    }
+    return triangulatePolygon(std::move(polygon), options);
+}
+template <typename PartsRange>
+Triangulation triangulatePartsView(const PartsRange& parts, const Options& options = {}) {
+    return triangulatePolygon(makePolygonOf(parts), options);
+}
 
 // Validates the parts, then floods them recording every event; on invalid input the trace
 // has no events and its diagnostic says why. Replay it with flood::Replay.

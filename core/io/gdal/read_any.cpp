@@ -11,10 +11,10 @@ ReadResult readAny(const std::string& path, const Selection& s, uint64_t maxByte
 }
 
 DatasetRead readAnyFeatures(const std::string& path, const Selection& s, uint64_t maxBytes,
-                            bool keepSource, bool& gis) {
+                            bool keepSource, bool& gis, ReadProgress* progress) {
     gis = handles(path, s);
     if (gis) return readFeatures(path, s);
-    return readFeaturesFile(path, maxBytes, keepSource);
+    return readFeaturesFile(path, maxBytes, keepSource, progress);
 }
 
 bool listedFile(const std::string& path) { return polygonFileName(path) || gisFile(path); }

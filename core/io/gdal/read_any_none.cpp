@@ -23,9 +23,9 @@ ReadResult readAny(const std::string& path, const Selection& s, uint64_t maxByte
 }
 
 DatasetRead readAnyFeatures(const std::string& path, const Selection& s, uint64_t maxBytes,
-                            bool keepSource, bool& gis) {
+                            bool keepSource, bool& gis, ReadProgress* progress) {
     gis = false;
-    if (!s.any()) return readFeaturesFile(path, maxBytes, keepSource);
+    if (!s.any()) return readFeaturesFile(path, maxBytes, keepSource, progress);
     DatasetRead d;
     d.features.emplace_back();
     d.features[0].read.diagnostic = refused(path);

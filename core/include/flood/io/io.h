@@ -1,6 +1,8 @@
 // Reading polygons: GeoJSON, bare ring arrays (earcut fixtures) and WKT; writing results.
 #pragma once
+#include <atomic>
 #include <cstdint>
+#include <functional>
 #include <iosfwd>
 #include <string>
 #include <string_view>
@@ -84,15 +86,33 @@ std::vector<std::string> polygonFiles(const std::string& dir);
 // does not hide the others (a MultiPolygon feature stays one polygon: its parts may
 // interact). Any other document, or one that cannot be parsed, is one whole-file entry read
 // by parsePolygon, with its diagnostic unchanged.
-DatasetRead parseFeatures(std::string_view text, const std::string& name, bool keepSource);
-DatasetRead readFeaturesFile(const std::string& path, uint64_t maxBytes, bool keepSource);
+//
+// `progress`, when given, is told how far the read has come (for a progress line: a 65 MB
+// file takes seconds to read and parse before its first feature can be checked).
+struct ReadProgress {
+    // Summed over every read given this record (flood check reads files on several threads).
+    std::atomic<uint64_t> bytesTotal{0};  // the sizes of the regular files opened so far
+    std::atomic<uint64_t> bytesRead{0};
+    std::atomic<size_t> featuresParsed{0};  // Features met while parsing the JSON
+    std::atomic<size_t> featuresRead{0};    // features made polygons so far
+    // Called on the reading thread after each change (each 64 KiB block, each feature).
+    std::function<void()> changed;
+    void tell() {
+        if (changed) changed();
+    }
+};
+DatasetRead parseFeatures(std::string_view text, const std::string& name, bool keepSource,
+                          ReadProgress* progress = nullptr);
+DatasetRead readFeaturesFile(const std::string& path, uint64_t maxBytes, bool keepSource,
+                             ReadProgress* progress = nullptr);
 
 // Reads all of `path` ("-" is stdin) into `text`. Malformed, naming the file, when it cannot
 // be opened or read, is a directory, holds a NUL byte (binary data, not `expected`: reading
 // stops there, so /dev/zero ends at once; unless the input starts with `binaryMagic`, a
 // binary format's first bytes) or grows beyond `maxBytes`.
 Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t maxBytes,
-                         const char* expected, const char* binaryMagic = nullptr);
+                         const char* expected, const char* binaryMagic = nullptr,
+                         ReadProgress* progress = nullptr);
 
 // Validity rules checked before flooding (docs/ERRORS.md): finite coordinates, rings with at
 // least 3 distinct points (holes may be single Steiner points), non-zero area, no

@@ -142,8 +142,8 @@ TEST(ViewerArgs, ABadValueIsNamedWithItsOptionAndExits2) {
         {{"--scale", "9"}, "--scale: wants a number in 0.5..4, got '9'"},
         {{"--theme", "blue"}, "--theme: wants light or dark, got 'blue'"},
         {{"--press", "f3"},
-         "--press: wants tab, f11, ctrl+plus, ctrl+minus, ctrl+0, f8 or "
-         "shift+f8, got 'f3'"},
+         "--press: wants tab, f11, ctrl+plus, ctrl+minus, ctrl+0, f8, "
+         "shift+f8 or p, got 'f3'"},
         {{"--mouse", "1"}, "--mouse: wants X,Y, got '1'"},
         {{"--every", "0"}, "--every: wants a number of steps >= 1, got '0'"},
         {{"--fps", "60"}, "--fps: wants frames per second from 0.1 to 50, got '60'"},

@@ -19,16 +19,13 @@
 #include "gui_test_display.h"
 #include "model.h"
 #include "view_fit.h"
+#include "viewer_run.h"
 
 using namespace flood;
 using namespace flood::view;
+using namespace flood::view::testing;
 
 namespace {
-
-int failWith(const std::string& what) {
-    std::fprintf(stderr, "FAIL: %s\n", what.c_str());
-    return 1;
-}
 
 struct Shot {
     std::map<std::string, Rect> layout;
@@ -45,30 +42,16 @@ Shot shoot(const std::string& name, int W, int H, const std::string& args) {
     const std::string cmd = std::string("'") + FLOOD_VIEWER + "' '" + input +
                             "' --step 23 --theme dark " + args + " --print-layout --screenshot '" +
                             png + "' --size " + std::to_string(W) + "x" + std::to_string(H);
-    std::printf("%s\n", cmd.c_str());
-    std::fflush(stdout);
     Shot shot;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return shot;
-    double cx = 0, cy = 0, scale = 0;
-    char line[512];
-    while (std::fgets(line, sizeof line, pipe)) {
-        std::fputs(line, stdout);
-        char key[64];
-        Rect r;
-        if (std::sscanf(line, "flood-viewer: layout %63s %lf %lf %lf %lf", key, &r.x, &r.y, &r.w,
-                        &r.h) == 5)
-            shot.layout[key] = r;
-        std::sscanf(line, "flood-viewer: camera %lf %lf %lf", &cx, &cy, &scale);
-    }
-    const int rc = pclose(pipe);
+    const ViewerRun run = runViewer(cmd);
+    shot.layout = run.layout;
     int w = 0, h = 0, channels = 0;
     unsigned char* px = stbi_load(png.c_str(), &w, &h, &channels, 4);
-    shot.ok = rc != -1 && WIFEXITED(rc) && WEXITSTATUS(rc) == 0 && px && w == W && h == H &&
-              scale > 0 && shot.layout.count("canvas");
+    shot.ok = run.exitCode == 0 && px && w == W && h == H && run.cameraScale > 0 &&
+              shot.layout.count("canvas");
     stbi_image_free(px);
     shot.camera.setViewport(shot.layout["canvas"]);
-    shot.camera.centerOn({cx, cy}, scale);
+    shot.camera.centerOn({run.cameraX, run.cameraY}, run.cameraScale);
     return shot;
 }
 

@@ -20,25 +20,13 @@
 #include "gui_test_display.h"
 #include "model.h"
 #include "palette.h"
+#include "viewer_run.h"
 
 using namespace flood;
 using namespace flood::view;
+using namespace flood::view::testing;
 
 namespace {
-
-int failWith(const std::string& what) {
-    std::fprintf(stderr, "FAIL: %s\n", what.c_str());
-    return 1;
-}
-
-bool within(const Rect& in, const Rect& out) {
-    return in.x >= out.x && in.y >= out.y && in.x + in.w <= out.x + out.w &&
-           in.y + in.h <= out.y + out.h;
-}
-
-bool overlaps(const Rect& a, const Rect& b) {
-    return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
-}
 
 // One shot at W x H after `keys` (--press ...): the step labels' rectangles from
 // --print-layout, the picture loaded. `font`: the large font's pixels at the shot's scale.
@@ -51,23 +39,9 @@ int shootStep23(int W, int H, const std::string& keys = "", double font = 20) {
                             "' --step 23 --presenter --theme dark " + keys +
                             " --print-layout --screenshot '" + png + "' --size " +
                             std::to_string(W) + "x" + std::to_string(H);
-    std::printf("%s\n", cmd.c_str());
-    std::fflush(stdout);
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return failWith("cannot run flood-viewer");
-    std::map<std::string, Rect> layout;
-    char line[512];
-    while (std::fgets(line, sizeof line, pipe)) {
-        std::fputs(line, stdout);
-        char name[64];
-        Rect r;
-        if (std::sscanf(line, "flood-viewer: layout %63s %lf %lf %lf %lf", name, &r.x, &r.y, &r.w,
-                        &r.h) == 5)
-            layout[name] = r;
-    }
-    const int rc = pclose(pipe);
-    if (rc == -1 || !WIFEXITED(rc) || WEXITSTATUS(rc) != 0)
-        return failWith("flood-viewer did not exit 0");
+    const ViewerRun run = runViewer(cmd);
+    if (run.exitCode != 0) return failWith("flood-viewer did not exit 0");
+    std::map<std::string, Rect> layout = run.layout;
     int w = 0, h = 0, channels = 0;
     unsigned char* px = stbi_load(png.c_str(), &w, &h, &channels, 4);
     if (!px || w != W || h != H) return failWith(png + " is missing or not the size asked");

@@ -16,48 +16,22 @@
 
 #include "gui_test_display.h"
 #include "model.h"
+#include "viewer_run.h"
 
 using namespace flood::view;
+using namespace flood::view::testing;
 namespace fs = std::filesystem;
 
 namespace {
 
-int failWith(const std::string& what) {
-    std::fprintf(stderr, "FAIL: %s\n", what.c_str());
-    return 1;
-}
-
-struct Run {
-    std::map<std::string, Rect> layout;
-    std::string out;
-    int rc = -1;
-};
-
 // flood-viewer on Fig. 7 at step 23 with HOME=`home`, no XDG_PICTURES_DIR, XDG_CONFIG_HOME=
 // `config`; the layout it prints and its whole output.
-Run viewer(const fs::path& home, const fs::path& config, const std::string& args) {
+ViewerRun viewer(const fs::path& home, const fs::path& config, const std::string& args) {
     const std::string input = std::string(FLOOD_SOURCE_DIR) + "/polygons/paper-figure-7.json";
     const std::string cmd = "env -u XDG_PICTURES_DIR HOME='" + home.string() +
                             "' XDG_CONFIG_HOME='" + config.string() + "' '" + FLOOD_VIEWER + "' '" +
                             input + "' --step 23 --print-layout " + args + " 2>&1";
-    std::printf("%s\n", cmd.c_str());
-    std::fflush(stdout);
-    Run run;
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return run;
-    char line[1024];
-    while (std::fgets(line, sizeof line, pipe)) {
-        std::fputs(line, stdout);
-        run.out += line;
-        char key[64];
-        Rect r;
-        if (std::sscanf(line, "flood-viewer: layout %63s %lf %lf %lf %lf", key, &r.x, &r.y, &r.w,
-                        &r.h) == 5)
-            run.layout[key] = r;
-    }
-    const int rc = pclose(pipe);
-    run.rc = rc != -1 && WIFEXITED(rc) ? WEXITSTATUS(rc) : -1;
-    return run;
+    return runViewer(cmd);
 }
 
 // The PNG's size; false when it cannot be read.
@@ -85,11 +59,11 @@ int savePng(const fs::path& root, int W, int H) {
     const std::string shot = " --screenshot '" + (root / "window.png").string() + "'" + size;
     fs::remove("flood-step23.png"), fs::remove("paper-figure-7-step23.png");
     // No Pictures folder: home.
-    Run a = viewer(home, config, "--press p" + shot);
+    ViewerRun a = viewer(home, config, "--press p" + shot);
     const fs::path inHome = home / "paper-figure-7-step23.png";
-    if (a.rc != 0) failures += failWith("flood-viewer --press p did not exit 0");
+    if (a.exitCode != 0) failures += failWith("flood-viewer --press p did not exit 0");
     if (!fs::exists(inHome)) return failures + failWith(inHome.string() + " not written");
-    if (a.out.find("wrote " + inHome.string()) == std::string::npos)
+    if (a.output.find("wrote " + inHome.string()) == std::string::npos)
         failures += failWith("the run does not say where the PNG went");
     const Rect canvas = a.layout["canvas"];
     int w = 0, h = 0;
@@ -105,8 +79,8 @@ int savePng(const fs::path& root, int W, int H) {
         failures += failWith("a PNG in the working directory");
     // ~/Pictures once there is one.
     fs::create_directories(home / "Pictures");
-    Run b = viewer(home, config, "--press p" + shot);
-    if (b.rc != 0 || !fs::exists(home / "Pictures" / "paper-figure-7-step23.png"))
+    ViewerRun b = viewer(home, config, "--press p" + shot);
+    if (b.exitCode != 0 || !fs::exists(home / "Pictures" / "paper-figure-7-step23.png"))
         failures += failWith("Save PNG did not write into ~/Pictures");
     return failures;
 }
@@ -119,15 +93,16 @@ int theme(const fs::path& root) {
     const fs::path png = root / "theme.png";
     const std::string shot = " --screenshot '" + png.string() + "' --size 1280x800";
     // A corner of the canvas, clear of the polygon and the boxes over it.
-    Run light = viewer(home, config, shot);
+    ViewerRun light = viewer(home, config, shot);
     const Rect c = light.layout["canvas"];
     const int x = int(c.x + c.w - 4), y = int(c.y + c.h - 4);
     const double saved = luminanceAt(png, x, y);
-    Run dark = viewer(home, config, "--theme dark" + shot);
+    ViewerRun dark = viewer(home, config, "--theme dark" + shot);
     const double given = luminanceAt(png, x, y);
     std::printf("canvas corner: %.0f with the saved light theme, %.0f with --theme dark\n", saved,
                 given);
-    if (light.rc != 0 || dark.rc != 0) failures += failWith("flood-viewer did not exit 0");
+    if (light.exitCode != 0 || dark.exitCode != 0)
+        failures += failWith("flood-viewer did not exit 0");
     if (saved < 180) failures += failWith("--screenshot does not follow the saved light theme");
     if (given < 0 || given > 80) failures += failWith("--theme dark does not win over it");
     // The screenshot leaves the settings as they were.

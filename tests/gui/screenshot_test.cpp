@@ -23,9 +23,14 @@
 #include "model.h"
 #include "palette.h"
 #include "presenter.h"
+#include "viewer_run.h"
 
 using namespace flood;
 using namespace flood::view;
+using flood::view::testing::failWith;
+using flood::view::testing::overlaps;
+using flood::view::testing::runViewer;
+using flood::view::testing::ViewerRun;
 
 namespace {
 
@@ -218,21 +223,9 @@ bool shootPrinted(const std::string& input, const std::string& args, const std::
     std::string cmd = std::string("'") + FLOOD_VIEWER + "' '" + input + "' " + args +
                       " --print-layout --screenshot '" + out + "' --size " + std::to_string(W) +
                       "x" + std::to_string(H);
-    std::printf("%s\n", cmd.c_str());
-    std::fflush(stdout);
-    FILE* pipe = popen(cmd.c_str(), "r");
-    if (!pipe) return false;
-    char line[512];
-    while (std::fgets(line, sizeof line, pipe)) {
-        std::fputs(line, stdout);
-        char name[64];
-        Rect r;
-        if (std::sscanf(line, "flood-viewer: layout %63s %lf %lf %lf %lf", name, &r.x, &r.y, &r.w,
-                        &r.h) == 5)
-            layout[name] = r;
-    }
-    int rc = pclose(pipe);
-    if (rc == -1 || !WIFEXITED(rc) || WEXITSTATUS(rc) != wantExit) {
+    const ViewerRun run = runViewer(cmd);
+    for (const auto& [name, r] : run.layout) layout[name] = r;
+    if (run.exitCode != wantExit) {
         std::fprintf(stderr, "FAIL: flood-viewer %s did not exit %d\n", args.c_str(), wantExit);
         return false;
     }
@@ -260,11 +253,6 @@ int count(const Image& img, const Rect& r, F is) {
 }
 
 double luminance(Rgba c) { return 0.2126 * c.r + 0.7152 * c.g + 0.0722 * c.b; }
-
-int failWith(const std::string& what) {
-    std::fprintf(stderr, "FAIL: %s\n", what.c_str());
-    return 1;
-}
 
 // Tab at 2x on 1024x768 (the presenter view): no toolbar, the caption whole inside the frame with its
 // last line above its bottom padding, the action's name in its colour, and the canvas fitted
@@ -650,10 +638,6 @@ std::string writeFace(const std::string& dir, const std::string& name, const cha
 bool within(const Rect& r, const Rect& outer) {
     return r.x >= outer.x - 0.5 && r.y >= outer.y - 0.5 && r.x + r.w <= outer.x + outer.w + 0.5 &&
            r.y + r.h <= outer.y + outer.h + 0.5;
-}
-
-bool overlaps(const Rect& a, const Rect& b) {
-    return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
 }
 
 // A square with three separate bow-tie holes: the findings panel under the canvas shows every

@@ -3,31 +3,7 @@
 #if __has_include("model.h")
 #include <gtest/gtest.h>
 
-#include <cmath>
-#include <filesystem>
-#include <fstream>
-#include <set>
-#include <sstream>
-
-#include "canvas_geometry.h"
-#include "edit.h"
-#include "flood/geometry/work.h"
-#include "flood/io/io.h"
-#include "flood/log/trace_io.h"
-#include "flood/teach/transcript.h"
-#include "flood/tools/generate.h"
-#include "gorge_focus.h"
-#include "key_queue.h"
-#include "model.h"
-#include "scene.h"
-#include "test_support.h"
-#include "viewer_model_support.h"
-
-using namespace flood;
-using namespace flood::view;
-using flood::testing::RunResult;
-using flood::testing::runShell;
-using flood::testing::scratch;
+#include "viewer_model_support.h"  // the model, the tests' helpers
 
 // The flood direction dial (issue 12): turning it floods again along the new direction, at
 // the same step, and the summary says what changed against the run before.

@@ -1,11 +1,29 @@
-// Helpers the view model's tests share (tests/viewer/viewer_*_test.cpp).
+// What the view model's tests share (tests/viewer/viewer_*_test.cpp, one file per concern):
+// the viewer's and core's headers they use, and their helpers. Included only where the viewer
+// is in the tree (each test file is guarded by __has_include("model.h")).
 #pragma once
 #include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
+#include "canvas_geometry.h"
+#include "edit.h"
 #include "flood/geometry/polygon.h"
+#include "flood/geometry/work.h"
 #include "flood/io/io.h"
+#include "flood/log/trace_io.h"
+#include "flood/teach/transcript.h"
+#include "flood/tools/generate.h"
+#include "gorge_focus.h"
+#include "key_queue.h"
+#include "model.h"
+#include "scene.h"
+#include "test_support.h"
 
 namespace flood::testing {
 
@@ -34,4 +52,9 @@ inline bool contains(const std::vector<uint32_t>& v, uint32_t x) {
 
 using flood::testing::contains;
 using flood::testing::polygonFiles;
+using flood::testing::RunResult;
+using flood::testing::runShell;
+using flood::testing::scratch;
 using flood::testing::squareWithHole;
+using namespace flood;
+using namespace flood::view;

@@ -1,9 +1,9 @@
 #include "renderer.h"
 
 #include <backends/imgui_impl_opengl3.h>
-#include "gl.h"
 #include <imgui.h>
 #include <stb_image_write.h>  // implementation lives in Debian's libstb, not here
+#include "gl.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,32 +5,23 @@
 
 namespace flood {
 
-const char* verdictName(Verdict v) {
-    static const char* const names[] = {
-#define FLOOD_X(name, word, status, meaning) word,
-        FLOOD_VERDICTS(FLOOD_X)
+namespace {
+struct VerdictRow {
+    const char* word;
+    Status status;
+    const char* meaning;
+};
+// The FLOOD_VERDICTS table, one row per Verdict.
+const VerdictRow kVerdicts[] = {
+#define FLOOD_X(name, word, status, meaning) {word, Status::status, meaning},
+    FLOOD_VERDICTS(FLOOD_X)
 #undef FLOOD_X
-    };
-    return names[int(v)];
-}
+};
+}  // namespace
 
-Status verdictStatus(Verdict v) {
-    static const Status statuses[] = {
-#define FLOOD_X(name, word, status, meaning) Status::status,
-        FLOOD_VERDICTS(FLOOD_X)
-#undef FLOOD_X
-    };
-    return statuses[int(v)];
-}
-
-const char* verdictMeaning(Verdict v) {
-    static const char* const meanings[] = {
-#define FLOOD_X(name, word, status, meaning) meaning,
-        FLOOD_VERDICTS(FLOOD_X)
-#undef FLOOD_X
-    };
-    return meanings[int(v)];
-}
+const char* verdictName(Verdict v) { return kVerdicts[int(v)].word; }
+Status verdictStatus(Verdict v) { return kVerdicts[int(v)].status; }
+const char* verdictMeaning(Verdict v) { return kVerdicts[int(v)].meaning; }
 
 Verdict verdictOfRead(const Diagnostic& read) {
     if (read.ok()) return Verdict::Ok;

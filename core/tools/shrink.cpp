@@ -378,7 +378,8 @@ void writeNumber(std::ostream& out, double x) {
         return;
     }
     char buf[kDoubleChars];
-    out.write(buf, writeDouble(buf, x) - buf);
+    const char* end = writeDouble(buf, x);
+    out.write(buf, end - buf);
 }
 
 void writeRings(std::ostream& out, const Polygon& p, const Part& part) {

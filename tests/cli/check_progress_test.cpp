@@ -96,7 +96,8 @@ TEST(CheckProgress, TheLineMovesWhileALargeFileIsRead) {
     EXPECT_GE(distinct.size(), 40u) << readingLines << " reading lines";
     EXPECT_GE(parsedLines, 20u);
     EXPECT_GE(readLines, 19u);
-    EXPECT_TRUE(checking) << "then the check's own line";
+    // The check's own line is redrawn on a clock (10 a second), so a quick check may finish
+    // before it shows: only its order after the reading is asserted (above).
 
     // -q: no progress line at all.
     const std::string quiet = onATerminal("check -q -j 1 " + file.string());

@@ -1,6 +1,6 @@
 #include "offscreen.h"
 
-#include "gl.h"
+#include "gl_api.h"
 
 #include "renderer.h"  // readFramebuffer
 

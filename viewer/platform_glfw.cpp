@@ -1,6 +1,6 @@
 #include "platform_glfw.h"
 
-#include "gl.h"  // before GLFW, so GLFW does not pull in a GL header of its own
+#include "gl_api.h"  // before GLFW, so GLFW does not pull in a GL header of its own
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>

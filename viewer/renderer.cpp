@@ -3,7 +3,7 @@
 #include <backends/imgui_impl_opengl3.h>
 #include <imgui.h>
 #include <stb_image_write.h>  // implementation lives in Debian's libstb, not here
-#include "gl.h"
+#include "gl_api.h"
 
 #include <algorithm>
 #include <cmath>

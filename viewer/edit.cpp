@@ -28,15 +28,9 @@ Model::EditedRun Model::floodEdit(Polygon polygon, const std::string& name, Up u
         } catch (const std::exception& ex) {
             run.trace.diagnostic = {Status::Internal, name + ": " + ex.what()};
         }
-        // The checker is the costly half of adopting a run: done here, off the UI thread.
-        const bool forbidden =
-            std::any_of(run.trace.events.begin(), run.trace.events.end(),
-                        [](const Event& e) { return e.action == Action::Forbidden; });
-        if (!forbidden) {
-            Judgement j = judgeRun(polygon, run.trace.triangles, run.trace.diagnostic, name);
-            run.checked = j.verdict != Verdict::Forbidden;  // not checked: the machine failed
-            run.check = std::move(j.check);
-        }
+        // The exact checker is the costly half of adopting a run: judged here, off the UI
+        // thread.
+        run.judged = judgeRun(polygon, run.trace.triangles, run.trace.diagnostic, name);
     }
     run.trace.polygon = std::move(polygon);
     run.trace.up = up;  // an empty canvas too: the dial's direction is kept
@@ -60,11 +54,11 @@ void Model::adoptEdit(EditedRun run, bool deferScan) {
     openDiag_ = {};
     input_ = std::move(run.input);
     warnings_.clear();
-    if (run.checked) checked_ = std::move(run.check);
+    judged_ = std::move(run.judged);
     if (!input_.ok() && !run.findings.list.empty()) validated_ = std::move(run.findings);
     deferScan_ = deferScan;
     adopt(std::make_unique<Trace>(std::move(run.trace)));
-    checked_.reset();  // used by adopt's verdict, or not needed there: never by a later open
+    judged_.reset();  // used by adopt's verdict, or not needed there: never by a later open
     validated_.reset();
     // What adopt() resets for an open stays as the user left it.
     feature_ = feature;
@@ -174,15 +168,13 @@ bool finite(Point q) { return std::isfinite(q.x) && std::isfinite(q.y); }
 
 // ========================================================================================
 // [SECTION] Editor
-Editor::~Editor() {
-    if (job_.joinable()) job_.join();
-}
+Editor::~Editor() { job_.wait(); }
 
 void Editor::sync() {
     if (generation_ == model_.generation()) return;
     // Something else was opened (or nothing edited yet): edit what is loaded now.
-    if (job_.joinable()) job_.join();
-    jobDone_ = false;
+    job_.reset();  // a flood of the polygon before: not adopted
+    jobResult_ = {};
     dirty_ = false;
     polygon_ = model_.polygon();
     name_ = model_.path();
@@ -435,33 +427,33 @@ void Editor::reflood() {
     // One flood at a time; what comes in meanwhile waits (dirty_) for the next frame's poll(),
     // which adopts the finished flood and starts one of the latest polygon and direction.
     dirty_ = true;
-    if (!job_.joinable()) startJob();
+    if (!job_.started()) startJob();
 }
 
 void Editor::startJob() {
     ++floods_;
-    jobDone_ = false;
     dirty_ = false;
-    job_ = std::thread([this, polygon = polygon_, name = name_, up = up_]() mutable {
-        jobResult_ = Model::floodEdit(std::move(polygon), name, up);
-        jobDone_.store(true, std::memory_order_release);
-        if (onReady) onReady();
-    });
+    job_.start([this, polygon = polygon_, name = name_, up = up_](
+                   Job&) mutable { jobResult_ = Model::floodEdit(std::move(polygon), name, up); },
+               [this] {
+                   if (onReady) onReady();
+               });
 }
 
 void Editor::finishJob() {
-    job_.join();
+    job_.wait();
     // Adopted only if the model still shows what this editor edits.
     if (generation_ == model_.generation()) {
         model_.adoptEdit(std::move(jobResult_), gesture_ || dirty_);
         generation_ = model_.generation();
     }
     jobResult_ = {};
+    job_.reset();  // none pending
 }
 
 void Editor::poll() {
-    if (job_.joinable()) {
-        if (!jobDone_.load(std::memory_order_acquire)) return;
+    if (job_.started()) {
+        if (!job_.done()) return;
         finishJob();
     }
     if (dirty_ && generation_ == model_.generation()) startJob();
@@ -471,7 +463,7 @@ void Editor::poll() {
 
 void Editor::wait() {
     while (pending()) {
-        if (job_.joinable()) finishJob();
+        if (job_.started()) finishJob();
         poll();
     }
 }

@@ -10,10 +10,8 @@
 // the old trace stays on screen until the new one is ready (poll() adopts it). The direction
 // dial floods through here too (setUp), so turning it never floods on the UI thread either.
 #pragma once
-#include <atomic>
 #include <functional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "model.h"
@@ -109,7 +107,7 @@ public:
     // The Model shows the latest edit: adopts a finished background flood, starts the next
     // one if edits came in meanwhile. Every frame; a no-op when nothing is pending.
     void poll();
-    bool pending() const { return job_.joinable() || dirty_; }
+    bool pending() const { return job_.started() || dirty_; }
     void wait();  // until the Model shows the latest edit (tests)
 
     // Where Ctrl+S saves by default: beside the input, "<stem>-edited.json", with -2, -3, ...
@@ -143,9 +141,8 @@ private:
     std::string message_;
 
     // Background flood: one at a time; edits made meanwhile wait (dirty_) for the next.
-    std::thread job_;
-    std::atomic<bool> jobDone_{false};
     Model::EditedRun jobResult_;
+    Job job_;  // after what it writes: destroyed (joined) first
     bool dirty_ = false;
     uint64_t floods_ = 0;
 };

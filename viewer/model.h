@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "camera.h"
+#include "find.h"
 #include "flood/check/checker.h"
 #include "flood/check/invariants.h"
 #include "flood/check/verdict.h"
@@ -25,13 +27,17 @@
 #include "flood/machine/flood.h"
 #include "flood/machine/vertex_class.h"
 #include "flood/teach/describe.h"
+#include "flood/teach/inspect.h"
 #include "flood/teach/quiz.h"
 #include "flood/teach/state_table.h"
 #include "flood/teach/transcript.h"
 #include "flood/tools/shrink.h"
+#include "gallery.h"
 #include "geometry.h"  // Vec2, Rect
-
-#include <thread>
+#include "job.h"
+#include "jobs.h"
+#include "summary.h"
+#include "timeline.h"
 
 namespace flood::view {
 
@@ -39,57 +45,6 @@ namespace flood::view {
 using flood::classifyVertices;
 using flood::VertexClass;
 using flood::vertexClassName;
-
-// ----------------------------------------------------------------------------------------
-// The tiled window layout: panels on the left and right, timeline at the bottom, canvas in
-// the middle, and under the canvas the findings of a failing face. Shared with the
-// screenshot test so it can find a vertex on the PNG.
-struct Layout {
-    Rect canvas, left, right, bottom;
-    Rect findings;  // between the canvas and the timeline; empty (h 0) when nothing failed
-};
-// `bottomWanted`: what the timeline needed last frame (its toolbar wraps at a large scale or
-// on a narrow window); it gets that much, up to half the window, when its share is smaller.
-// `findingsWanted`: what the findings panel needs (0: none), taken from the canvas's column,
-// at most a third of it.
-Layout computeLayout(double width, double height, double uiScale, double bottomWanted = 0,
-                     double findingsWanted = 0);
-
-// World (polygon coordinates, y up) to screen (y down): screen = origin + (p - center) * scale.
-class Camera {
-public:
-    void fit(const Polygon& polygon, const Rect& viewport);  // whole polygon, 6% margin
-    // The box [x0, x1] x [y0, y1] (world), 6% margin; a box of no size (one point) is
-    // shown at the scale of a box `minSide` wide.
-    void fitBox(double x0, double y0, double x1, double y1, const Rect& viewport,
-                double minSide = 1e-300);
-    void centerOn(Point p) { cx_ = p.x, cy_ = p.y; }
-    // Centres on `p` at `scale` pixels per world unit (clamped as zoomAt clamps).
-    void centerOn(Point p, double scale);
-    void setViewport(const Rect& viewport) { viewport_ = viewport; }
-    Vec2 toScreen(Point p) const;
-    Point toWorld(Vec2 s) const;
-    void pan(double dx, double dy);              // by screen pixels
-    void zoomAt(Vec2 screen, double factor);     // keeps the world point under `screen`
-    double scale() const { return scale_; }      // pixels per world unit
-    Point center() const { return {cx_, cy_}; }  // world point at the viewport centre
-    const Rect& viewport() const { return viewport_; }
-
-private:
-    Rect viewport_;
-    double cx_ = 0, cy_ = 0, scale_ = 1;
-};
-
-// ----------------------------------------------------------------------------------------
-// Breakpoints: stop when an event matches any enabled condition.
-struct Breakpoints {
-    std::array<bool, size_t(Action::Count)> actions{};  // on these action kinds
-    bool forbidden = false;                             // on a Forbidden event
-    Index vertex = kNone;   // when this vertex becomes Left, Right, NextLeft or NextRight
-    int64_t triangle = -1;  // when this triangle number is cut
-    bool any() const;
-};
-bool hits(const Breakpoints& b, const Event& e);
 
 // ----------------------------------------------------------------------------------------
 // Text views of the log: an event in one line (flood/teach/describe.h), the transcript's items
@@ -120,196 +75,6 @@ struct Finding {
     Point point;
     uint32_t step = kNone;  // the step it shows at; kNone: none (or not known yet)
 };
-
-// ----------------------------------------------------------------------------------------
-// Framing: what E, a click in the findings panel, Find and the invariant lane's Go show.
-// A world box, x0 > x1 when empty.
-struct WorldBox {
-    double x0 = 1e300, y0 = 1e300, x1 = -1e300, y1 = -1e300;
-    void add(Point p);  // non-finite points are left out
-    bool empty() const { return !(x0 <= x1 && y0 <= y1); }
-    double w() const { return x1 - x0; }
-    double h() const { return y1 - y0; }
-    Point centre() const { return {(x0 + x1) / 2, (y0 + y1) / 2}; }
-    bool contains(Point p) const { return p.x >= x0 && p.x <= x1 && p.y >= y0 && p.y <= y1; }
-};
-// The camera showing the neighbourhood of `target` (world) in `viewport`: the target with a
-// quarter of its size as margin on each side, never narrower than `minSide` across (a point,
-// a short edge: a side the caller chooses so the nearest neighbours show).
-Camera frameNeighbourhood(const WorldBox& target, double minSide, const Rect& viewport);
-// The box the error view frames for `culprits`: the culprit edges, vertices, triangles and
-// point. `ringsAtFault` (a validation finding): when it blames whole rings only (a hole
-// outside its outer ring), its first ring (the one at fault) and the nearest vertex of each
-// other ring it names, so the hole shows beside what it is judged against but the whole
-// outer ring is not framed; the first ring too when nothing else is blamed. Each culprit
-// vertex brings its nearer ring neighbour, so its edges show against the rest. `minSide`:
-// what frameNeighbourhood is to keep across (a fiftieth of the face for a lone point, else
-// 0). False when nothing finite is blamed.
-bool culpritBox(const Polygon& polygon, const std::vector<Triangle>& triangles,
-                const Culprits& culprits, bool ringsAtFault, WorldBox& box, double& minSide);
-// The camera showing `culprits` in `viewport` (culpritBox, frameNeighbourhood). False when
-// nothing finite is blamed: `camera` is left as it was.
-bool frameCulprits(const Polygon& polygon, const std::vector<Triangle>& triangles,
-                   const Culprits& culprits, bool ringsAtFault, const Rect& viewport,
-                   Camera& camera);
-// The world box a camera shows.
-WorldBox visibleBox(const Camera& camera);
-
-// Find: "v2999" (vertex), "t77022" (triangle), "s12051" (step), "r3" (ring), parsed and
-// looked up against a trace. A bad query says why in `message`.
-struct FindTarget {
-    bool ok = false;
-    std::string message;
-    char kind = 0;  // 'v', 't', 's' or 'r'
-    uint64_t index = 0;
-    bool hasCenter = false;
-    Point center;                           // where to centre the view
-    double x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // what to show (a ring's box; a point otherwise)
-    uint32_t seekTo = kNone;                // step to seek to, kNone: stay
-    std::vector<Index> vertices;            // what to frame: a vertex, a step's fingers
-};
-FindTarget findTarget(const Trace& trace, const std::string& query);
-// Predicate inspector: the tests of one event's decision path (Fig. 9), recomputed from the
-// replay state before the event, each with its predicate, arguments, floating-point value,
-// exact result and the stage of the exact predicate that decided it.
-struct PredicateRow {
-    Test test = Test::Count;  // Test::Count: one of the sag search's inside() tests
-    std::string predicate;    // "below(NextLeft, NextRight)", "orient(prev C, C, next C) <= 0", ...
-    std::vector<Index> args;  // vertex ids, in the predicate's order
-    bool result = false;      // recomputed
-    bool recorded = false;    // what the event says (decision tests only)
-    bool hasRecorded = false;
-    bool hasValue = false;  // orient-based: `value` and `stage` mean something
-    double value = 0;       // the filter's determinant
-    int sign = 0;           // exact sign (orient) or the comparison's outcome
-    std::string stage;      // "filter" / "expansion" / "rationals" / "comparison" / "identity"
-};
-// The sag search's inside() tests are listed for the sags it could test: unbridged sags
-// strictly between the water and Next (at most `maxSags` of them; the machine's sag index
-// tests fewer, Event::sagTests of them).
-std::vector<PredicateRow> inspectDecision(const Trace& trace, const ReplayState& before,
-                                          const Event& e, const std::vector<VertexClass>& classes,
-                                          size_t maxSags = 64);
-
-// ----------------------------------------------------------------------------------------
-// The timeline strip: which events a strip `width` pixels wide shows, zoomed and panned.
-// Event i is the mark [x(i), x(i + 1)); hovering it names step i + 1 (the state after it),
-// and a click there lands on that same step.
-struct TimelineView {
-    double first = 0;  // event index (fractional) at the strip's left edge
-    double span = 0;   // events across the strip; 0: the whole log
-    double visible(uint32_t events) const { return span > 0 ? span : double(events); }
-    double perEvent(double width, uint32_t events) const {
-        return width / std::max(1.0, visible(events));
-    }
-    double xOfStep(uint32_t step, double width, uint32_t events) const {
-        return (step - first) * perEvent(width, events);
-    }
-    // The event whose mark is under x (clamped to the log), and the step a click there means.
-    uint32_t eventAt(double x, double width, uint32_t events) const;
-    uint32_t stepAt(double x, double width, uint32_t events) const {
-        return events == 0 ? 0 : eventAt(x, width, events) + 1;
-    }
-    // Wheel: zoom by `factor` (> 1 magnifies) keeping the event under x in place; drag: pan.
-    void zoomAt(double x, double width, double factor, uint32_t events);
-    void pan(double dx, double width, uint32_t events);
-
-private:
-    void clamp(uint32_t events);
-};
-
-// ----------------------------------------------------------------------------------------
-// Shrink from the viewer: flood/tools/shrink.h run in a background thread, with the tries made as
-// progress and a Cancel that stops it before its next classification. An `onTry` in the
-// options is still called (before the cancel is looked at).
-class ShrinkJob {
-public:
-    ShrinkJob() = default;
-    ShrinkJob(const ShrinkJob&) = delete;
-    ShrinkJob& operator=(const ShrinkJob&) = delete;
-    ~ShrinkJob() { cancel(); }
-    void start(const Polygon& polygon, ShrinkOptions options);  // cancels a running one first
-    bool started() const { return thread_.joinable() || done(); }
-    bool done() const { return done_.load(std::memory_order_acquire); }
-    size_t tries() const { return tries_.load(std::memory_order_relaxed); }
-    size_t maxTries() const { return maxTries_; }
-    void cancel();  // asks the thread to stop and joins it; the result so far stays readable
-    void requestCancel() { cancel_.store(true, std::memory_order_relaxed); }  // without joining
-    void wait();                                                              // joins (tests)
-    const ShrinkResult& result() const { return result_; }                    // once done()
-    void reset();  // cancels and forgets the result
-
-private:
-    std::thread thread_;
-    std::atomic<bool> cancel_{false}, done_{false};
-    std::atomic<size_t> tries_{0};
-    size_t maxTries_ = 0;
-    ShrinkResult result_;  // written by the thread before `done_`
-};
-
-// Writes `polygon` as a GeoJSON Polygon or MultiPolygon to `path` atomically: a temporary
-// file beside it, renamed over it once complete. WriteFailed (nothing left behind) if not.
-Diagnostic saveGeoJson(const Polygon& polygon, const std::string& path);
-
-// ----------------------------------------------------------------------------------------
-// The features of a FeatureCollection with their verdicts (read, validate, flood, exact
-// check: the first failure), as `flood check` judges them.
-struct FeatureVerdict {
-    size_t index = 0;  // the feature's FID (FeatureRead::fid): what openFeature() takes
-    std::string id, name;
-    size_t vertices = 0;
-    Verdict kind = Verdict::Ok;
-    std::string reason;  // the diagnostic's message; "" when ok
-    bool failure() const { return kind != Verdict::Ok; }
-};
-FeatureVerdict judgeFeature(const FeatureRead& feature);
-// Failing features first, each group in collection order.
-void orderFailingFirst(std::vector<FeatureVerdict>& list);
-
-// Judges a collection's features in a background thread (a dataset may hold thousands).
-class FeatureScan {
-public:
-    FeatureScan() = default;
-    FeatureScan(const FeatureScan&) = delete;
-    FeatureScan& operator=(const FeatureScan&) = delete;
-    ~FeatureScan() { cancel(); }
-    void start(const std::string& path);  // cancels a running scan first
-    const std::string& path() const { return path_; }
-    bool done() const { return done_.load(std::memory_order_acquire); }
-    size_t progress() const { return progress_.load(std::memory_order_relaxed); }  // judged so far
-    size_t total() const { return total_.load(std::memory_order_relaxed); }  // known once read
-    void cancel();
-    void wait();
-    // Once done: the verdicts, failing first; empty when the file is not a FeatureCollection.
-    const std::vector<FeatureVerdict>& features() const { return features_; }
-    const Diagnostic& diagnostic() const { return diag_; }  // the file could not be read
-
-private:
-    std::thread thread_;
-    std::string path_;
-    std::atomic<bool> cancel_{false}, done_{false};
-    std::atomic<size_t> progress_{0}, total_{0};
-    std::vector<FeatureVerdict> features_;  // written by the thread before `done_`
-    Diagnostic diag_;
-};
-// ----------------------------------------------------------------------------------------
-// How a run decomposed the polygon along its direction: the vertex classes that direction
-// gives (§3), the gorges flooded from a bottom, and the count of each action. The paper's
-// remark that the decomposition into gorges is not unique, as numbers (the direction dial).
-struct FloodSummary {
-    std::array<uint32_t, size_t(VertexClass::Count)> classes{};  // bottoms, sags, tops, ceilings
-    uint32_t gorges = 0;  // gorges started at a bottom (Start, and each later bottom reached)
-    std::array<uint32_t, size_t(Action::Count)> actions{};
-    uint32_t triangles = 0;
-};
-FloodSummary summarizeFlood(const Trace& trace, const std::vector<VertexClass>& classes);
-// One line per quantity, in a fixed order: its name, before and after ("gorges", 3, 5).
-struct SummaryChange {
-    std::string what;
-    int64_t before = 0, after = 0;
-    bool changed() const { return before != after; }
-};
-std::vector<SummaryChange> compareSummaries(const FloodSummary& before, const FloodSummary& after);
 
 // ----------------------------------------------------------------------------------------
 class Model {
@@ -509,24 +274,23 @@ public:
 
     // Invariant lane: flood/check/invariants.h run over the trace in a background thread, started
     // by every open. Results are readable once done; progress counts the steps checked.
-    bool invariantsDone() const { return scan_.done.load(std::memory_order_acquire); }
-    uint32_t invariantProgress() const { return scan_.progress.load(std::memory_order_relaxed); }
+    bool invariantsDone() const;
+    uint32_t invariantProgress() const { return scan_.progress(); }
     const std::vector<Violation>& violations() const;  // empty until done
     uint32_t firstViolationStep() const;               // 0 until done or when none
-    void cancelInvariants();                           // stops and joins the scan
+    void cancelInvariants() { scan_.cancel(); }        // stops and joins the scan
     // Once the scan is done: moves to the first violation if the user has not moved since
     // the open landed (on the forbidden step, or step 0). True when it moved. Every frame.
     bool landOnFirstViolation();
-    void waitForInvariants();  // joins it (tests)
+    void waitForInvariants() { scan_.wait(); }  // joins it (tests)
 
     // Live editing (viewer/edit.h). An edited polygon validated and flooded: touches no
     // Model state, so it may run in a background thread.
     struct EditedRun {
-        Trace trace;        // trace.polygon: the edited polygon, its T-junctions recorded
-        Diagnostic input;   // the validator's verdict on it
-        CheckResult check;  // the exact checker on a completed run (checked: it ran)
-        bool checked = false;
-        Findings findings;  // validateAll's, when `input` is invalid
+        Trace trace;       // trace.polygon: the edited polygon, its T-junctions recorded
+        Diagnostic input;  // the validator's verdict on it
+        std::optional<Judgement> judged;  // judgeRun on the run, unless nothing was flooded
+        Findings findings;                // validateAll's, when `input` is invalid
     };
     static EditedRun floodEdit(Polygon polygon, const std::string& name, Up up = Up::PlusY);
     // Makes `run` the loaded run under the same name. Unlike an open, the step (clamped to
@@ -562,14 +326,9 @@ private:
     Up up_ = Up::PlusY;  // the direction opens flood along
     FloodSummary previousSummary_;
     bool hasPrevious_ = false;
-    struct InvariantScan {
-        std::thread thread;
-        std::atomic<bool> cancel{false}, done{false};
-        std::atomic<uint32_t> progress{0};
-        std::vector<Violation> found;  // written by the thread before `done`
-    };
     void startInvariants();
-    InvariantScan scan_;
+    std::vector<Violation> found_;  // the invariant scan's, written by it
+    Job scan_;                      // after found_: destroyed (joined) before it
     uint32_t forbiddenStep_ = 0;
     uint32_t landedStep_ = 0;      // where open() put the step
     bool landingPending_ = false;  // the scan's result has not been looked at yet
@@ -589,7 +348,7 @@ private:
     std::string origin_, originName_;  // the shrunk polygon's source file, and its display name
     size_t originFeature_ = kNoFeature;
     CheckResult check_;
-    std::optional<CheckResult> checked_;  // adoptEdit: the checker already ran with the flood
+    std::optional<Judgement> judged_;  // adoptEdit: the judge already ran with the flood
     bool deferScan_ = false, scanWaiting_ = false;  // adoptEdit's deferred invariant scan
     std::vector<VerdictLine> verdictLines_;
     std::vector<Finding> findings_;
@@ -620,20 +379,5 @@ private:
     mutable StateTable stateTable_;           // cache of stateTable()
     mutable uint64_t stateTableFor_ = ~0ull;  // the generation it was built for
 };
-
-// Where to look for polygons: $FLOOD_POLYGONS_DIR; else the installed share/flood/polygons
-// beside the executable; else the source tree's polygons/ (a build); else the configured
-// install prefix's.
-std::string polygonsDir();
-// polygons/FLOOD_VIEWER_DEFAULT_POLYGON (CMake cache, default paper-figure-7.json) if it
-// exists, else the first polygon file, else "". FLOOD_POLYGONS_DIR overrides the directory.
-std::string defaultPolygonPath();
-// The teaching gallery, dir/gallery.json: a list of {"file", "title", "description"} in
-// teaching order, files relative to dir. Missing or malformed: empty (the Open panel then
-// lists the files only).
-struct GalleryEntry {
-    std::string file, title, description;  // file: full path
-};
-std::vector<GalleryEntry> readGallery(const std::string& dir);
 
 }  // namespace flood::view

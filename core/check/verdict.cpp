@@ -32,8 +32,8 @@ Judgement judgeRun(const Polygon& polygon, const std::vector<Triangle>& triangle
                    const Diagnostic& run, const std::string& name, bool exactCheck,
                    const std::function<TriangleCheck()>& triangleCheck) {
     Judgement j;
-    if (!run.ok()) {
-        j.verdict = Verdict::Forbidden;
+    if (!run.ok()) {  // the machine stopped, or failed itself (an exception while flooding)
+        j.verdict = run.status == Status::Forbidden ? Verdict::Forbidden : Verdict::Internal;
         j.diagnostic = run;
         return j;
     }

@@ -18,7 +18,6 @@
 #include "flood/check/touches.h"
 #include "flood/check/verify.h"
 #include "flood/io/io.h"
-#include "geometry/number_text.h"
 
 namespace flood {
 
@@ -120,8 +119,6 @@ Failure classifyInChild(const Polygon& polygon, const ShrinkOptions& o) {
     return f;
 }
 
-void writeRings(std::ostream& out, const Polygon& p, const Part& part);
-
 // [SECTION] the polygon as editable rings -------------------------------------------------
 
 // A vertex and its index in the input, so the repro can say which input vertices remain.
@@ -173,19 +170,6 @@ double roundBits(double x, int bits) {
 }
 
 // [SECTION] the repro as the user reads it back --------------------------------------------
-
-// The GeoJSON geometry of `p`: a Polygon for one part, a MultiPolygon for several.
-std::string geometryJson(const Polygon& p) {
-    std::ostringstream out;
-    out << (p.parts.size() == 1 ? "{\"type\":\"Polygon\",\"coordinates\":"
-                                : "{\"type\":\"MultiPolygon\",\"coordinates\":[");
-    for (size_t i = 0; i < p.parts.size(); ++i) {
-        if (i) out << ",\n";
-        writeRings(out, p, p.parts[i]);
-    }
-    out << (p.parts.size() == 1 ? "}" : "]}");
-    return out.str();
-}
 
 bool sameGeometry(const Polygon& a, const Polygon& b) {
     if (a.vertices != b.vertices || a.rings.size() != b.rings.size() ||
@@ -242,7 +226,7 @@ public:
         // The final word: the repro's own bytes, read back, fail the same way. accept() has
         // seen that of every candidate it kept; only the input itself is left to read back.
         result_.reproduces =
-            keptCandidate_ || classifyText(geometryJson(result_.polygon), o_, result_.inputValid)
+            keptCandidate_ || classifyText(geoJsonGeometry(result_.polygon), o_, result_.inputValid)
                                   .sameClass(result_.failure);
         return result_;
     }
@@ -270,7 +254,7 @@ private:
         }
         Polygon p = toPolygon(candidate);
         if (p.rings.empty()) return false;
-        ReadResult back = parsePolygon(geometryJson(p), "candidate");
+        ReadResult back = parsePolygon(geoJsonGeometry(p), "candidate");
         if (!back.diagnostic.ok() || !sameGeometry(back.polygon, p)) return false;
         std::string why;
         if (!prepareAsRead(back.polygon, o_, result_.inputValid, why)) return false;
@@ -372,34 +356,6 @@ private:
     bool keptCandidate_ = false;  // best_ is a candidate accept() read back and kept
 };
 
-void writeNumber(std::ostream& out, double x) {
-    if (!std::isfinite(x)) {  // JSON has no NaN/inf; WKT would, but keep one output format
-        out << (std::isnan(x) ? "null" : x > 0 ? "1e999" : "-1e999");
-        return;
-    }
-    char buf[kDoubleChars];
-    const char* end = writeDouble(buf, x);
-    out.write(buf, end - buf);
-}
-
-void writeRings(std::ostream& out, const Polygon& p, const Part& part) {
-    out << '[';
-    for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) {
-        const Ring& ring = p.rings[r];
-        out << (r == part.firstRing ? "" : ",\n ") << '[';
-        for (Index i = 0; ring.count > 0 && i <= ring.count; ++i) {  // closed: the first again
-            const Point& q = p.vertices[ring.first + (i == ring.count ? 0 : i)];
-            out << (i ? "," : "") << '[';
-            writeNumber(out, q.x);
-            out << ',';
-            writeNumber(out, q.y);
-            out << ']';
-        }
-        out << ']';
-    }
-    out << ']';
-}
-
 }  // namespace
 
 Failure classify(const Polygon& polygon, const ShrinkOptions& options) {
@@ -463,22 +419,8 @@ std::string reproJson(const Polygon& input, const ShrinkResult& result, const Re
     if (box[0] <= box[2]) props["source_bbox"] = {box[0], box[1], box[2], box[3]};
     std::string text = "{\"type\":\"Feature\",\"properties\":";
     text += props.dump(-1, ' ', false, json::error_handler_t::replace);
-    text += ",\n\"geometry\":" + geometryJson(p) + "}\n";
+    text += ",\n\"geometry\":" + geoJsonGeometry(p) + "}\n";
     return text;
-}
-
-void writePolygonJson(std::ostream& out, const Polygon& polygon) {
-    if (polygon.parts.size() == 1) {
-        writeRings(out, polygon, polygon.parts[0]);
-    } else {
-        out << "{\"type\":\"MultiPolygon\",\"coordinates\":[";
-        for (size_t i = 0; i < polygon.parts.size(); ++i) {
-            if (i) out << ",\n";
-            writeRings(out, polygon, polygon.parts[i]);
-        }
-        out << "]}";
-    }
-    out << '\n';
 }
 
 }  // namespace flood

@@ -61,7 +61,7 @@ struct Judgement {
 };
 
 // A finished flood of `polygon` (its triangles and the machine's diagnostic `run`): Forbidden
-// when the machine failed, else the exact check's verdict (skipped without `exactCheck`).
+// when the machine stopped in a forbidden state, Internal when it failed otherwise, else the exact check's verdict (skipped without `exactCheck`).
 // `triangleCheck`, when given, waits for checkTriangles() run on another thread.
 Judgement judgeRun(const Polygon& polygon, const std::vector<Triangle>& triangles,
                    const Diagnostic& run, const std::string& name, bool exactCheck = true,

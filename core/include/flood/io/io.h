@@ -139,6 +139,15 @@ Findings validateAll(const Polygon& polygon, const std::string& name, size_t max
 Findings validateAll(const Polygon& polygon, const std::string& name, Diagnostic verdict,
                      size_t maxFindings);
 
+// Writes a polygon as a bare ring array [[[x,y],...],...] (one part) or a GeoJSON
+// MultiPolygon (several parts), coordinates in shortest round-trip form, rings closed.
+void writePolygonJson(std::ostream& out, const Polygon& polygon);
+// The polygon as a GeoJSON geometry: a Polygon for one part, a MultiPolygon for several.
+std::string geoJsonGeometry(const Polygon& polygon);
+// Saves the polygon as a GeoJSON geometry to `path`, atomically (flood/io/output.h): the old
+// file stays whole on failure, which is WriteFailed naming the path and the system's reason.
+Diagnostic saveGeoJson(const Polygon& polygon, const std::string& path);
+
 void writeJson(std::ostream& out, const Polygon& p, const std::vector<Triangle>& t);
 void writeSvg(std::ostream& out, const Polygon& p, const std::vector<Triangle>& t);
 void writeObj(std::ostream& out, const Polygon& p, const std::vector<Triangle>& t);

@@ -105,8 +105,4 @@ std::string reproduceCommand(const ShrinkResult& result, const ReproSource& sour
 // fails and the command that shows it. `input` is the polygon that was shrunk.
 std::string reproJson(const Polygon& input, const ShrinkResult& result, const ReproSource& source);
 
-// Writes a polygon as a bare ring array [[[x,y],...],...] (one part) or a GeoJSON
-// MultiPolygon (several parts), coordinates in shortest round-trip form, rings closed.
-void writePolygonJson(std::ostream& out, const Polygon& polygon);
-
 }  // namespace flood

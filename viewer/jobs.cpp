@@ -1,0 +1,91 @@
+#include "jobs.h"
+
+#include <algorithm>
+#include <exception>
+
+#include "flood/io/gdal/read_any.h"
+
+namespace flood::view {
+
+void ShrinkJob::start(const Polygon& polygon, ShrinkOptions options) {
+    reset();
+    maxTries_ = options.maxTries;
+    options.onTry = [this, user = std::move(options.onTry)](size_t tries, size_t vertices) {
+        job_.setProgress(tries);
+        if (user && !user(tries, vertices)) return false;
+        return !job_.cancelRequested();
+    };
+    job_.start([this, polygon, options](Job&) {
+        try {
+            result_ = shrink(polygon, options);
+        } catch (const std::exception& ex) {
+            result_ = {};
+            result_.polygon = polygon;
+            result_.failure.kind = Failure::Kind::Crash;
+            result_.failure.message = std::string("the shrinker failed: ") + ex.what();
+        }
+    });
+}
+
+void ShrinkJob::reset() {
+    job_.reset();
+    result_ = {};
+}
+
+FeatureVerdict judgeFeature(const FeatureRead& f) {
+    FeatureVerdict v;
+    v.index = size_t(f.fid);
+    v.id = f.id;
+    v.name = f.name;
+    v.vertices = f.read.polygon.vertices.size();
+    try {
+        ReadResult read = f.read;  // validation records T-junctions in the polygon
+        Judgement j = judge(read, "feature " + std::to_string(f.index));
+        v.kind = j.verdict;
+        // The checker's reason without the name the list shows already.
+        v.reason = j.verdict == Verdict::Checker
+                       ? "the exact checker rejects the triangulation: " + j.check.reason
+                       : j.diagnostic.message;
+    } catch (const std::exception& ex) {
+        v.kind = Verdict::Internal;
+        v.reason = std::string("exception: ") + ex.what();
+    }
+    return v;
+}
+
+void orderFailingFirst(std::vector<FeatureVerdict>& list) {
+    std::stable_sort(list.begin(), list.end(),
+                     [](const FeatureVerdict& a, const FeatureVerdict& b) {
+                         return a.failure() != b.failure() ? a.failure() : a.index < b.index;
+                     });
+}
+
+void FeatureScan::start(const std::string& path) {
+    job_.cancel();
+    path_ = path;
+    features_.clear();
+    diag_ = {};
+    job_.start([this, path](Job& job) {
+        DatasetRead d;
+        try {
+            d = readFeaturesFile(path, kDefaultMaxInputBytes, false);
+        } catch (const std::exception& ex) {
+            diag_ = {Status::Malformed, path + ": " + ex.what()};
+        }
+        if (d.features.size() == 1 && d.features[0].wholeFile) {
+            diag_ = d.features[0].read.diagnostic;  // not a collection: nothing to list
+            d.features.clear();
+        }
+        job.setTotal(d.features.size());
+        std::vector<FeatureVerdict> list;
+        for (const FeatureRead& f : d.features) {
+            if (job.cancelRequested()) break;
+            list.push_back(judgeFeature(f));
+            job.setProgress(list.size());
+        }
+        orderFailingFirst(list);
+        features_ = std::move(list);
+    });
+}
+
+}  // namespace flood::view

@@ -119,3 +119,16 @@ TEST(Verdict, FloodCheckSaysWhatTheJudgeSays) {
         }
     EXPECT_GE(compared, 60u);
 }
+
+TEST(Verdict, AMachineThatFailedOtherwiseThanForbiddenIsInternal) {
+    // judgeRun is handed the machine's diagnostic: a forbidden state is the paper's verdict,
+    // anything else (an exception while flooding) is Flood failing itself.
+    ReadResult square = parsed("[[[0,0],[2,0],[2,2],[0,2]]]");
+    Judgement forbidden = judgeRun(square.polygon, {}, {Status::Forbidden, "stopped"}, "square");
+    EXPECT_EQ(forbidden.verdict, Verdict::Forbidden);
+    Judgement internal =
+        judgeRun(square.polygon, {}, {Status::Internal, "square: bad_alloc"}, "square");
+    EXPECT_EQ(internal.verdict, Verdict::Internal);
+    EXPECT_EQ(internal.diagnostic.message, "square: bad_alloc");
+    EXPECT_EQ(int(verdictStatus(internal.verdict)), 6);
+}

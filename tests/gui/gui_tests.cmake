@@ -18,8 +18,9 @@ function(flood_screenshot_test name)
   add_executable(${name} ${GUI_TESTS}/${name}.cpp)
   target_link_libraries(${name} PRIVATE floodviewmodel PkgConfig::IMGUI)
   target_compile_definitions(${name} PRIVATE FLOOD_VIEWER="$<TARGET_FILE:flood-viewer>"
-    FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}" FLOOD_WORK_DIR="${CMAKE_CURRENT_BINARY_DIR}")
-  add_dependencies(${name} flood-viewer)
+    FLOOD_CLI="$<TARGET_FILE:flood>" FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}"
+    FLOOD_WORK_DIR="${CMAKE_CURRENT_BINARY_DIR}")
+  add_dependencies(${name} flood-viewer flood)
   add_test(NAME viewer/${name} COMMAND ${name})
   set_tests_properties(viewer/${name} PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
     ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;XDG_CONFIG_HOME=${GUI_CONFIG}")
@@ -37,19 +38,11 @@ function(flood_windowless_test name)
   add_test(NAME viewer/${name} COMMAND ${name})
 endfunction()
 
-# ---- a real screenshot, checked pixel by pixel --------------------------------------------
-add_executable(screenshot_test ${GUI_TESTS}/screenshot_test.cpp)
-target_link_libraries(screenshot_test PRIVATE floodviewmodel PkgConfig::IMGUI)
-target_compile_definitions(screenshot_test PRIVATE
-  FLOOD_VIEWER="$<TARGET_FILE:flood-viewer>"
-  FLOOD_CLI="$<TARGET_FILE:flood>"
-  FLOOD_WORK_DIR="${CMAKE_CURRENT_BINARY_DIR}"
-  FLOOD_SOURCE_DIR="${CMAKE_SOURCE_DIR}")
-add_dependencies(screenshot_test flood-viewer flood)
-add_test(NAME viewer/screenshot_test COMMAND screenshot_test)
-# Mesa's unloaded driver looks like a leak to ASan; keep leak checks for the other tests.
-set_tests_properties(viewer/screenshot_test PROPERTIES SKIP_RETURN_CODE 77 TIMEOUT 120
-  ENVIRONMENT "ASAN_OPTIONS=detect_leaks=0;XDG_CONFIG_HOME=${GUI_CONFIG}")
+# ---- real screenshots, checked pixel by pixel (screenshot_support.h) -------------------------
+flood_screenshot_test(screenshot_test)             # the canvas, the error view, a 10^5 face
+flood_screenshot_test(presenter_screenshot_test)   # presenter view, scale, keys, light theme
+flood_screenshot_test(inspector_screenshot_test)   # inspector, invariant lane, Decision panel
+flood_screenshot_test(findings_screenshot_test)    # findings panel, tiny hole, labels, --layer
 
 # ---- --version: the version and exit 0, as `flood --version` (needs no display) ------------
 add_test(NAME viewer/version COMMAND sh -c

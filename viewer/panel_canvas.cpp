@@ -495,15 +495,8 @@ void drawInset(Ui& ui, ImDrawList* dl) {
 // The find box and the "Show error" button, floating at the canvas's top-left corner.
 void canvasBar(Ui& ui) {
     Model& m = ui.model;
-    const Rect& area = ui.layout.canvas;
     const float s = ui.scale;
-    ImGui::SetNextWindowPos(ImVec2(float(area.x + 8 * s), float(area.y + 8 * s)), ImGuiCond_Always);
-    ImGui::SetNextWindowBgAlpha(0.75f);
-    ImGui::Begin("##canvasbar", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoFocusOnAppearing);
-    ui.findBox = windowRect();
+    ui.findBox = beginCanvasBar(ui, "##canvasbar", false);
     ImGuiIO& io = ImGui::GetIO();
     bool keys = !io.WantTextInput;
     if (ui.focusFind || (io.KeyCtrl && ImGui::IsKeyPressed(platform::kKeyF, false))) {

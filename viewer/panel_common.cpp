@@ -133,4 +133,18 @@ void showToast(Ui& ui, const std::string& text, bool failed) {
     ui.toastUntil = platform::time() + 6;
 }
 
+Rect beginCanvasBar(Ui& ui, const char* id, bool right) {
+    const Rect& area = ui.layout.canvas;
+    const float s = ui.scale;
+    ImGui::SetNextWindowPos(
+        ImVec2(float(right ? area.x + area.w - 8 * s : area.x + 8 * s), float(area.y + 8 * s)),
+        ImGuiCond_Always, ImVec2(right ? 1.f : 0.f, 0.f));
+    ImGui::SetNextWindowBgAlpha(0.75f);
+    ImGui::Begin(id, nullptr,
+                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
+                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
+                     ImGuiWindowFlags_NoFocusOnAppearing);
+    return windowRect();
+}
+
 }  // namespace flood::view

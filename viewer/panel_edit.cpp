@@ -213,16 +213,8 @@ void editOverlay(Ui& ui, ImDrawList* dl) {
 void editBar(Ui& ui) {
     EditUi& e = ui.edit;
     Editor& ed = e.editor;
-    const Rect& area = ui.layout.canvas;
     const float s = ui.scale;
-    ImGui::SetNextWindowPos(ImVec2(float(area.x + area.w - 8 * s), float(area.y + 8 * s)),
-                            ImGuiCond_Always, ImVec2(1, 0));
-    ImGui::SetNextWindowBgAlpha(0.75f);
-    ImGui::Begin("##editbar", nullptr,
-                 ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize |
-                     ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoSavedSettings |
-                     ImGuiWindowFlags_NoFocusOnAppearing);
-    ui.editBox = windowRect();
+    ui.editBox = beginCanvasBar(ui, "##editbar", true);
     if (ImGui::Checkbox("Edit (M)", &e.on) && !e.on) e.ringTool = false;
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("drag a vertex, double-click an edge, Delete, Shift+drag a ring");

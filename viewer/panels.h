@@ -249,6 +249,10 @@ void beginTiled(const char* title, const Rect& r, int flags = 0);
 // Begins a floating window of `w` x `h` (scaled) placed at (dx, dy) from the canvas corner
 // the first time it is shown. False when it is collapsed: the window is already ended then.
 bool beginFloating(Ui& ui, const char* title, bool* open, float w, float h, float dx, float dy);
+// Begins a bar floating over the canvas 8 px in from its top corner (`right`: the top-right
+// one), sized to its contents, translucent, never moved or focused; returns its rectangle
+// (what the fit keeps clear). End it with ImGui::End().
+Rect beginCanvasBar(Ui& ui, const char* id, bool right);
 // A vertex ('v'), triangle ('t') or step ('s') number that finds its target when clicked
 // (Model::find); "-" is drawn plain.
 void clickable(Ui& ui, const char* text, char kind);

@@ -25,7 +25,6 @@ EM_JS(void, flood_web_download, (const char* name, const char* bytes, size_t siz
     a.click();
     a.remove();
     setTimeout(() => URL.revokeObjectURL(url), 60000);
-    (Module["floodDownloads"] = Module["floodDownloads"] || []).push(file);
 });
 // clang-format on
 #endif

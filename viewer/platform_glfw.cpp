@@ -43,6 +43,8 @@ EM_JS(void, flood_web_copy, (const char* text), {
     if (navigator.clipboard && navigator.clipboard.writeText)
         navigator.clipboard.writeText(s).catch(
             e => console.warn("flood-viewer: the browser refused the copy: " + e));
+    else  // browsers give the clipboard only to https:// pages and http://localhost
+        console.warn("flood-viewer: no clipboard for this page (served over plain http?)");
 });
 // clang-format on
 #endif

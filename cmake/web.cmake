@@ -98,9 +98,10 @@ function(flood_web_page target)
   set_target_properties(${target} PROPERTIES OUTPUT_NAME index SUFFIX .html
                         RUNTIME_OUTPUT_DIRECTORY ${site})
   target_link_options(${target} PRIVATE -sASYNCIFY -sASYNCIFY_STACK_SIZE=65536
-    -sMINIFY_HTML=0 -sEXPORTED_RUNTIME_METHODS=ccall,FS -sINITIAL_MEMORY=67108864
+    -sMINIFY_HTML=0 -sEXPORTED_RUNTIME_METHODS=ccall,FS,UTF8ToString -sINITIAL_MEMORY=67108864
     "SHELL:--shell-file ${CMAKE_SOURCE_DIR}/web/shell.html"
     "SHELL:--pre-js ${CMAKE_SOURCE_DIR}/web/pre.js"
+    -lidbfs.js  # settings and recent files in IndexedDB (web/pre.js)
     "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/polygons@/polygons")
   file(GLOB polygons CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/polygons/*)
   set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${CMAKE_SOURCE_DIR}/web/shell.html

@@ -7,11 +7,14 @@
 #                             (PORT: $FLOOD_WEB_PORT, default 8029)
 #   scripts/web.sh --test     ... then tests/web/run.sh: the page in headless Chromium, and
 #                             the CLI under Node against the native build/flood
+#   scripts/web.sh --bench    ... then `flood bench` of a 10^5-vertex polygon (generated:
+#                             circle-smooth, seed 1) by the wasm CLI under Node (the page's
+#                             engine, V8) against the native build/flood: ns/vertex and ratio
 set -euo pipefail
 cd "$(dirname "$0")/.."
 mode=${1:-build}
-case "$mode" in build | --serve | --test) ;; *)
-  echo "usage: scripts/web.sh [--serve | --test]" >&2
+case "$mode" in build | --serve | --test | --bench) ;; *)
+  echo "usage: scripts/web.sh [--serve | --test | --bench]" >&2
   exit 2
   ;;
 esac
@@ -41,4 +44,22 @@ case "$mode" in
   exec python3 -m http.server --bind 127.0.0.1 --directory "$out/site" "$port"
   ;;
 --test) exec tests/web/run.sh "$out" ;;
+--bench)
+  [ -x build/flood ] || { cmake -S . -B build -DCMAKE_BUILD_TYPE=Release >/dev/null &&
+    cmake --build build -j2 --target flood; }
+  tmp=$(mktemp -d)
+  trap 'rm -rf "$tmp"' EXIT
+  size=${FLOOD_WEB_BENCH_SIZE:-100000}
+  build/flood generate circle-smooth "$size" --seed 1 -o "$tmp/in.json"
+  echo "web bench: load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+  build/flood bench "$tmp/in.json" --repeat 5 >"$tmp/native.txt"
+  # Node 20 cannot run Emscripten 3.1.6's output with its experimental fetch on.
+  node --no-experimental-fetch "$out/flood.js" bench "$tmp/in.json" --repeat 5 >"$tmp/web.txt"
+  echo "web bench: load after: $(cut -d' ' -f1-3 /proc/loadavg)"
+  head -1 "$tmp/native.txt"
+  # The in-process lines (LABEL: T ns  T/N ns/vertex) side by side, and wasm / native.
+  perVertex() { sed -nE 's/^([^:]+): +[0-9]+ ns +([0-9.]+) ns\/vertex.*/\1|\2/p' "$1"; }
+  paste -d'|' <(perVertex "$tmp/native.txt") <(perVertex "$tmp/web.txt") |
+    awk -F'|' '{ printf "%-36s native %9.1f  wasm %9.1f ns/vertex  x%.2f\n", $1 ":", $2, $4, $4 / $2 }'
+  ;;
 esac

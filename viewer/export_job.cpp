@@ -9,6 +9,7 @@
 #include <cmath>
 #include <optional>
 
+#include "download.h"
 #include "flood/io/output.h"  // atomic files
 #include "offscreen.h"
 #include "quantize.h"
@@ -57,7 +58,8 @@ struct ExportJob::Impl {
     PaletteBuilder colours;
     Status status = Status::Ok;
     std::string message;
-    std::vector<std::string> written;
+    std::vector<std::string> written;  // what the message lists
+    std::vector<std::string> files;    // every file complete, each offered in the page
     bool cancelled = false;
     // The caption band: the font scaled by a whole factor (the default font is a bitmap),
     // the head column as wide as the widest head, the band as tall as the tallest narration.
@@ -149,6 +151,7 @@ struct ExportJob::Impl {
             fail(Status::WriteFailed, error);
             return false;
         }
+        files.push_back(path);
         return true;
     }
 
@@ -162,7 +165,7 @@ struct ExportJob::Impl {
                           s.height, c ? &*c : nullptr);
             std::string error;
             if (out.commit(&error) != Status::Ok) fail(Status::WriteFailed, error);
-            else written.push_back(s.svg);
+            else written.push_back(s.svg), files.push_back(s.svg);
         }
         if (status != Status::Ok) return;
         phase = steps.empty() ? Phase::Done : Phase::Frames;
@@ -205,6 +208,7 @@ struct ExportJob::Impl {
                  st != Status::Ok ? error : "error: " + s.gif + ": cannot write: " + gif->error());
             return;
         }
+        files.push_back(s.gif);
         written.push_back(s.gif + " (" + std::to_string(steps.size()) + " frames, " +
                           std::to_string(map->palette().size()) + " colours)");
         phase = Phase::Done;
@@ -216,6 +220,12 @@ struct ExportJob::Impl {
 
     void finish() {
         if (ui.model.step() != startStep) ui.model.seek(startStep);
+        // In the page each file reaches the user as a download, a sequence's frames one by one
+        // (download.h); a cancelled export's complete files too, as they are kept.
+        for (const std::string& f : files) {
+            std::string error;
+            if (status == Status::Ok && !offerDownload(f, &error)) fail(Status::WriteFailed, error);
+        }
         if (status == Status::Ok) {
             message = cancelled ? "export cancelled; wrote" : "wrote";
             for (size_t i = 0; i < written.size(); ++i) message += (i ? ", " : " ") + written[i];

@@ -32,6 +32,7 @@ using namespace flood::view;
 // What the page shows, for its tests (tests/web/page_test.mjs): Module._flood_web_step() ...
 namespace {
 const Model* g_shown = nullptr;
+const Ui* g_ui = nullptr;
 int g_frames = 0;
 }  // namespace
 extern "C" {
@@ -40,6 +41,26 @@ EMSCRIPTEN_KEEPALIVE int flood_web_step() { return g_shown ? int(g_shown->step()
 EMSCRIPTEN_KEEPALIVE int flood_web_steps() { return g_shown ? int(g_shown->steps()) : -1; }
 EMSCRIPTEN_KEEPALIVE int flood_web_vertices() {
     return g_shown ? int(g_shown->polygon().vertices.size()) : -1;
+}
+EMSCRIPTEN_KEEPALIVE int flood_web_presenter() { return g_ui ? int(g_ui->presenter) : -1; }
+EMSCRIPTEN_KEEPALIVE const char* flood_web_recent(int i) {  // the Open panel's Recent list
+    if (!g_shown || i < 0 || size_t(i) >= g_shown->recentFiles().size()) return "";
+    return g_shown->recentFiles()[size_t(i)].c_str();
+}
+// ... and where things were drawn in the last frame, as --print-layout prints them: component
+// k (x, y, w, h) of the canvas (what = 0), the caption (1), the Transcript's Copy button (2)
+// or the Open panel's gallery row i (3 + i); -1 when it is not shown. (Numbers, not names: Module.ccall answers a Promise under
+// ASYNCIFY, a direct call does not.)
+EMSCRIPTEN_KEEPALIVE double flood_web_rect(int what, int k) {
+    if (!g_ui || what < 0 || k < 0 || k > 3) return -1;
+    const std::vector<Rect>& rows = g_ui->openPanel.galleryRows;
+    const Rect* r = what == 0                        ? &g_ui->layout.canvas
+                    : what == 1                      ? &g_ui->captionRect
+                    : what == 2                      ? &g_ui->transcriptCopy
+                    : size_t(what - 3) < rows.size() ? &rows[size_t(what - 3)]
+                                                     : nullptr;
+    if (!r || r->w <= 0) return -1;
+    return k == 0 ? r->x : k == 1 ? r->y : k == 2 ? r->w : r->h;
 }
 }
 #endif
@@ -224,8 +245,9 @@ void restyle(Ui& ui, Styled& styled, bool followMonitor) {
         applyStyle(ui);
         ui.canvas.thinKey = {};  // marker thinning cells follow the scale
         styled.scale = ui.uiScale.generation(), styled.theme = ui.theme;
-        if (!styled.settingsFile.empty())
-            saveSettings(styled.settingsFile, {ui.theme, ui.uiScale.zoomStep()});
+        if (!styled.settingsFile.empty() &&
+            saveSettings(styled.settingsFile, {ui.theme, ui.uiScale.zoomStep()}))
+            platform::persistConfig();
     }
     ui.scale = ui.uiScale.value();
 }
@@ -353,6 +375,7 @@ void runInteractive(Ui& ui, const Args& args, Styled& styled) {
     double lastTime = platform::time();
     FrameInput input;
     input.keyboard = input.presenterKeys = true;
+    std::vector<std::string> recentPersisted;  // the model saves the list on every open
     for (int frame = 0; !platform::shouldClose(); ++frame) {
         if (model.playing()) platform::pollEvents();
         else platform::waitEvents(0.25);  // idle: wake on input, or 4 times a second
@@ -360,6 +383,10 @@ void runInteractive(Ui& ui, const Args& args, Styled& styled) {
             model.open(path);
             ui.message =
                 model.openDiagnostic().ok() ? "opened " + path : model.openDiagnostic().message;
+        }
+        if (model.recentFiles() != recentPersisted && !model.recentPath.empty()) {
+            recentPersisted = model.recentFiles();
+            platform::persistConfig();
         }
         // The title names the file loaded (a failed open keeps the previous one).
         if (model.generation() != titled) {
@@ -379,7 +406,7 @@ void runInteractive(Ui& ui, const Args& args, Styled& styled) {
         }
         platform::swapBuffers();
 #ifdef __EMSCRIPTEN__
-        g_shown = &model, ++g_frames;
+        g_shown = &model, g_ui = &ui, ++g_frames;
 #endif
 
         double now = platform::time();
@@ -453,6 +480,7 @@ int runScreenshot(Ui& ui, const Args& args, Styled& styled) {
                 {"edit-box", ui.editBox},
                 {"shrink-box", ui.shrinkBox},
                 {"inset", ui.inset},
+                {"transcript-copy", ui.transcriptCopy},
                 {"quiz-box", ui.quizBox},
                 {"direction-box", ui.directionBox},
                 {"state-table-box", ui.stateTableBox},

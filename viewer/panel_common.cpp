@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "download.h"
 #include "flood/io/output.h"  // atomic files
 #include "panels.h"
 #include "platform_glfw.h"
@@ -116,7 +117,7 @@ std::string exportSvg(Ui& ui) {
     Output f(out);  // atomic, as every export (export_job.h)
     writeSceneSvg(f.stream(), buildScene(ui.model, ui.sceneOptions), ui.model.polygon(), 1000);
     std::string error;
-    const bool ok = f.commit(&error) == Status::Ok;
+    const bool ok = f.commit(&error) == Status::Ok && offerDownload(out, &error);
     if (ok) ui.lastExportDir = folderOf(out);
     showToast(ui, ok ? "wrote " + out : error, !ok);
     ui.message = ok ? "wrote " + out : error;

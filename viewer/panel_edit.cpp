@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "download.h"
 #include "panels.h"
 #include "platform_glfw.h"
 
@@ -263,6 +264,8 @@ void editBar(Ui& ui) {
             e.saveNote = std::string(e.savePath) + " exists: tick \"overwrite it\" to replace it";
         } else {
             Diagnostic d = ed.save(e.savePath, e.overwrite);
+            std::string error;  // in the page, the file reaches the user as a download
+            if (d.ok() && !offerDownload(e.savePath, &error)) d = {Status::WriteFailed, error};
             e.saveNote = d.ok() ? "saved " + std::string(e.savePath) : d.message;
             if (d.ok()) ui.message = e.saveNote;
         }

@@ -85,6 +85,7 @@ void drawOpen(Ui& ui) {
         ui.openPanel.galleryDir = dir;
     }
     const std::vector<GalleryEntry>& gallery = ui.openPanel.gallery;
+    ui.openPanel.galleryRows.clear();
     if (!gallery.empty() && ImGui::CollapsingHeader("Gallery", ImGuiTreeNodeFlags_DefaultOpen)) {
         ImGui::PushTextWrapPos(0);
         for (size_t i = 0; i < gallery.size(); ++i) {
@@ -92,6 +93,8 @@ void drawOpen(Ui& ui) {
             std::string label =
                 std::to_string(i + 1) + ". " + g.title + "##gallery" + std::to_string(i);
             if (ImGui::Selectable(label.c_str(), g.file == m.path())) chosen = g.file;
+            const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+            ui.openPanel.galleryRows.push_back({a.x, a.y, b.x - a.x, b.y - a.y});
             if (!g.description.empty()) {
                 ImGui::Indent();
                 ImGui::TextDisabled("%s", g.description.c_str());

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <string>
 
+#include "download.h"
 #include "panels.h"
 
 namespace flood::view {
@@ -89,6 +90,8 @@ void drawShrink(Ui& ui) {
         ImGui::SameLine();
         if (ImGui::Button("Save")) {
             Diagnostic d = saveGeoJson(m.polygon(), ui.savePath);
+            std::string error;  // in the page, the file reaches the user as a download
+            if (d.ok() && !offerDownload(ui.savePath, &error)) d = {Status::WriteFailed, error};
             ui.shrinkNote = d.ok() ? std::string("wrote ") + ui.savePath : d.message;
             ui.message = ui.shrinkNote;
         }

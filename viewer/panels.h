@@ -100,6 +100,7 @@ struct OpenUi {
     std::vector<GalleryEntry> gallery;
     std::string galleryDir;         // the folder `gallery` was read from
     uint32_t galleryOpensSeen = 0;  // Model::galleryOpens() when the panel last looked
+    std::vector<Rect> galleryRows;  // each gallery entry's row as last drawn (the page's tests)
 };
 
 struct Ui {
@@ -139,6 +140,7 @@ struct Ui {
     double captionHeight = 0;       // height the caption needed last frame
     ImFont* captionFont = nullptr;  // the caption's larger font, rebuilt with the scale
     Rect toolbarEnd, captionRect;   // where the last toolbar button and the caption were
+    Rect transcriptCopy;            // the Transcript panel's Copy button as last drawn
     bool showExport = false;        // the Export panel (panel_export.cpp)
     ExportSettings exportSettings;  // what it exports; its format and path below
     int exportFormat = 0;           // ExportFormat

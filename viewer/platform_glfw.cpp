@@ -34,10 +34,32 @@ EM_ASYNC_JS(void, flood_web_next_frame, (int idle, double timeout), {
     }
     await new Promise(resolve => requestAnimationFrame(resolve));
 });
+
+// Copy: Emscripten's glfwSetClipboardString is a stub; the text goes to the browser's
+// clipboard (asynchronous; a refusal, e.g. a page without focus, is said on the console).
+EM_JS(void, flood_web_copy, (const char* text), {
+    const s = UTF8ToString(text);
+    Module["floodCopied"] = s;
+    if (navigator.clipboard && navigator.clipboard.writeText)
+        navigator.clipboard.writeText(s).catch(
+            e => console.warn("flood-viewer: the browser refused the copy: " + e));
+    else  // browsers give the clipboard only to https:// pages and http://localhost
+        console.warn("flood-viewer: no clipboard for this page (served over plain http?)");
+});
 // clang-format on
 #endif
 
 namespace flood::view::platform {
+#ifdef __EMSCRIPTEN__
+namespace {
+std::string g_clipboard;  // ImGui's paste inside the page reads the last copy back
+void setClipboard(void*, const char* text) {
+    g_clipboard = text ? text : "";
+    flood_web_copy(g_clipboard.c_str());
+}
+const char* getClipboard(void*) { return g_clipboard.c_str(); }
+}  // namespace
+#endif
 
 const int kKeyF = GLFW_KEY_F;
 const int kKeyF1 = GLFW_KEY_F1;
@@ -151,6 +173,10 @@ bool createWindow(const WindowOptions& o, std::string* error) {
     glfwSetWindowTitle(g_window, o.title.c_str());  // Emscripten's window leaves it unset
 #endif
     ImGui_ImplGlfw_InitForOpenGL(g_window, true);
+#ifdef __EMSCRIPTEN__
+    ImGui::GetIO().SetClipboardTextFn = setClipboard;
+    ImGui::GetIO().GetClipboardTextFn = getClipboard;
+#endif
     g_imguiKey = glfwSetKeyCallback(g_window, onKey);
     return true;
 }
@@ -199,6 +225,13 @@ void pollEvents() { glfwPollEvents(); }
 void waitEvents(double timeout) { glfwWaitEventsTimeout(timeout); }
 #endif
 void wake() { glfwPostEmptyEvent(); }
+void persistConfig() {
+#ifdef __EMSCRIPTEN__
+    EM_ASM({
+        if (Module["floodPersistConfig"]) Module["floodPersistConfig"]();
+    });
+#endif
+}
 void newFrame() { ImGui_ImplGlfw_NewFrame(); }
 void swapBuffers() { glfwSwapBuffers(g_window); }
 double time() { return glfwGetTime(); }

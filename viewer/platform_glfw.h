@@ -45,6 +45,10 @@ std::vector<KeyPress> takeKeyPresses();
 // Wakes waitEvents() from any thread (a background flood is ready: viewer/edit.h).
 void wake();
 
+// The settings and recent files were written: in the page, their folder is copied to the
+// browser's storage (IndexedDB, web/pre.js) so that a reload finds them. A no-op elsewhere.
+void persistConfig();
+
 // ImGui 1.86 has no ImGuiKey for letters or function keys; its GLFW backend fills
 // io.KeysDown by GLFW key code, so these index io.KeysDown directly.
 extern const int kKeyF;

@@ -16,7 +16,39 @@ Module["arguments"] = Module["arguments"] || (function () {
   if (on(q.get("predicates"))) args.push("--predicates");
   return args;
 })();
+// Settings and recent files ($HOME/.config/flood-viewer, viewer/main.cpp) persist across
+// reloads in the browser's IndexedDB: the folder is read from there before main starts, and
+// written back each time the viewer has written it (platform::persistConfig calls
+// Module.floodPersistConfig). Without IndexedDB (a private window may refuse it) they last
+// until the page is reloaded, as before.
+const floodConfig = "/home/web_user/.config/flood-viewer";
 Module["preRun"] = (Module["preRun"] || []).concat(function () {
   ENV.FLOOD_POLYGONS_DIR = "/polygons";  // the gallery and samples (viewer/model.cpp)
-  ENV.HOME = "/home/web_user";           // recent files and settings (in memory for now)
+  ENV.HOME = "/home/web_user";
+  FS.mkdirTree(floodConfig);
+  try {
+    FS.mount(IDBFS, {}, floodConfig);
+  } catch (e) {
+    console.warn("flood-viewer: settings will not persist: " + e);
+    return;
+  }
+  addRunDependency("flood-config");
+  FS.syncfs(true, (err) => {
+    if (err) console.warn("flood-viewer: saved settings not read: " + err);
+    removeRunDependency("flood-config");
+  });
 });
+// One write-back at a time; a write during one asks for another after it. `saved` counts
+// the write-backs finished (the page test waits for it before reloading).
+Module["floodPersistConfig"] = function () {
+  const p = Module["floodPersisted"] = Module["floodPersisted"] || { running: false, again: false, saved: 0 };
+  if (p.running) { p.again = true; return; }
+  p.running = true;
+  const sync = () => FS.syncfs(false, (err) => {
+    if (err) console.warn("flood-viewer: settings not saved in the browser: " + err);
+    if (p.again) { p.again = false; sync(); return; }
+    p.running = false;
+    p.saved++;
+  });
+  sync();
+};

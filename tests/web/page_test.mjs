@@ -4,10 +4,13 @@
 //   node --experimental-websocket page_test.mjs URL NATIVE.png CANVAS_X,Y,W,H DROP_FILE PICK_FILE OUT_DIR
 // Checks: the page loads with no console error; the URL's polygon and step are shown; the
 // canvas matches the native viewer's at that step; the arrow keys step (counter and picture);
-// a file dropped on the canvas opens; Ctrl+O opens the browser's file picker and a file chosen
-// there opens. DROP_FILE must have 5 vertices, PICK_FILE 3. Prints the time to the first frame.
-import { spawn } from "node:child_process";
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
+// P (Save PNG) downloads a PNG of the canvas; a file dropped on the canvas opens; Ctrl+O opens
+// the browser's file picker and a file chosen there opens; the recent files are still listed
+// after a reload; presenter=1 gives the presenter layout, theme=light a light canvas; a
+// second polygon chosen in the Open panel's gallery opens. DROP_FILE must have 5 vertices,
+// PICK_FILE 3. Prints the time to the first frame.
+import { execFileSync, spawn } from "node:child_process";
+import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { inflateSync } from "node:zlib";
@@ -81,7 +84,11 @@ const chromium = spawn(process.env.CHROMIUM || "chromium", [
   "--remote-debugging-port=0", `--user-data-dir=${profile}`, `--window-size=${W},${H}`,
   "--force-device-scale-factor=1", "--no-first-run", "--disable-gpu-sandbox", "about:blank",
 ], { stdio: ["ignore", "ignore", "pipe"] });
-const cleanup = () => { chromium.kill(); try { rmSync(profile, { recursive: true, force: true }); } catch {} };
+const downloads = mkdtempSync(join(tmpdir(), "flood-web-downloads-"));
+const cleanup = () => {
+  chromium.kill();
+  for (const d of [profile, downloads]) try { rmSync(d, { recursive: true, force: true }); } catch {}
+};
 process.on("exit", cleanup);
 setTimeout(() => { console.log("FAIL the page test took over 240 s"); process.exit(1); }, 240000).unref();
 
@@ -134,6 +141,27 @@ async function until(what, expr, test, ms = 90000) {
     await sleep(100);
   }
 }
+// A new document (after a navigation) whose viewer has drawn its first frame.
+async function navigate(query) {
+  await evaluate("window.floodOldPage = true");
+  await send("Page.navigate", { url: url + query });
+  await until(`${query} draws its first frame`, "!window.floodOldPage && typeof Module === 'object' && Module._flood_web_frames ? Module._flood_web_frames() : 0", (v) => v >= 1);
+  await settle(6);
+}
+// Where the viewer drew the canvas (0), the caption (1), the Transcript's Copy button (2), the
+// gallery's row i (3 + i).
+const rect = (what) => evaluate(`[0, 1, 2, 3].map((k) => Module._flood_web_rect(${what}, k))`);
+function commonest(img, [cx, cy, cw, ch]) {  // the canvas's most frequent colour: its background
+  const count = new Map();
+  for (let y = cy; y < cy + ch; y += 2)
+    for (let x = cx; x < cx + cw; x += 2) {
+      const v = img.rgba.readUInt32BE((y * img.width + x) * 4);
+      count.set(v, (count.get(v) ?? 0) + 1);
+    }
+  const v = [...count].sort((a, b) => b[1] - a[1])[0][0];
+  return [v >>> 24, (v >>> 16) & 255, (v >>> 8) & 255];
+}
+const luma = ([r, g, b]) => 0.299 * r + 0.587 * g + 0.114 * b;
 const frames = () => until("a frame drawn", "typeof Module === 'object' && Module._flood_web_frames ? Module._flood_web_frames() : -1", (v) => v >= 0);
 async function settle(n = 4) {  // n more frames drawn
   const f = await frames();
@@ -145,11 +173,25 @@ async function screenshot(name) {
   writeFileSync(join(outDir, name), buf);
   return decodePng(buf);
 }
+// Held for two frames: ImGui 1.86 sees a key only while it is down at a frame (the arrows go
+// through the viewer's own key queue, which keeps every press).
+async function click([x, y, w, h]) {  // the middle of a rectangle the viewer drew
+  // A frame between the events: ImGui sees the pointer over the item, then the press, then
+  // the release (a button or a Selectable acts on release).
+  const [cx, cy] = [x + w / 2, y + h / 2];
+  await send("Input.dispatchMouseEvent", { type: "mouseMoved", x: cx, y: cy });
+  await settle(2);
+  for (const type of ["mousePressed", "mouseReleased"]) {
+    await send("Input.dispatchMouseEvent", { type, x: cx, y: cy, button: "left", clickCount: 1 });
+    await settle(2);
+  }
+}
 async function key(name, code, modifiers = 0) {
-  for (const type of ["keyDown", "keyUp"])
+  for (const type of ["keyDown", "keyUp"]) {
     await send("Input.dispatchKeyEvent", { type, modifiers, key: name, code: name.length === 1 ? "Key" + name.toUpperCase() : name,
                                           windowsVirtualKeyCode: code, nativeVirtualKeyCode: code });
-  await settle();
+    await settle(type === "keyDown" ? 2 : 4);
+  }
 }
 const step = () => evaluate("Module._flood_web_step()");
 
@@ -184,6 +226,43 @@ await key("ArrowLeft", 37);
 await key("ArrowLeft", 37);
 check(await step() === 22, `ArrowLeft twice: step 22 (step ${await step()})`);
 
+// ---- Save PNG reaches the user as a download -------------------------------------------------
+try {
+  await send("Browser.setDownloadBehavior", { behavior: "allow", downloadPath: downloads });
+} catch {
+  await send("Page.setDownloadBehavior", { behavior: "allow", downloadPath: downloads });
+}
+const normalCanvas = await rect(0);
+await key("p", 80);
+const pngName = "paper-figure-7-step22.png";
+await until(`P downloads ${pngName}`, "0", () => existsSync(join(downloads, pngName)), 30000);
+if (existsSync(join(downloads, pngName))) {
+  const bytes = readFileSync(join(downloads, pngName));
+  check(bytes.subarray(0, 8).equals(Buffer.from([137, 80, 78, 71, 13, 10, 26, 10])), "the download is a PNG");
+  const png = decodePng(bytes);
+  const [w, h] = [Math.round(normalCanvas[2]), Math.round(normalCanvas[3])];
+  check(png.width === w && png.height === h, `the PNG is the canvas's size, ${w}x${h} (${png.width}x${png.height})`);
+  const seen = new Set();
+  for (let i = 0; i < png.rgba.length; i += 4) seen.add(png.rgba.readUInt32BE(i));
+  check(seen.size > 3, `the PNG is a picture (${seen.size} colours)`);
+}
+check(readdirSync(downloads).length === 1, `one file downloaded (${readdirSync(downloads).join(", ")})`);
+
+// ---- Copy reaches the browser's clipboard ----------------------------------------------------
+const origin = new URL(url).origin;
+await send("Browser.grantPermissions", { origin, permissions: ["clipboardReadWrite", "clipboardSanitizedWrite"] });
+await send("Emulation.setFocusEmulationEnabled", { enabled: true });
+const expected = execFileSync(process.env.NATIVE_FLOOD || "build/flood", ["transcript", "polygons/paper-figure-7.json"], { encoding: "utf8" }).trim();
+const copyButton = await rect(2);
+check(copyButton[2] > 0, `the Transcript panel's Copy button is shown (${copyButton.join(",")})`);
+if (copyButton[2] > 0) {
+  await click(copyButton);
+  const copied = await until("Copy hands the transcript to the browser", "Module.floodCopied", (v) => typeof v === "string", 10000);
+  const board = (await send("Runtime.evaluate", { expression: "navigator.clipboard.readText()", awaitPromise: true, returnByValue: true })).result.value;
+  check(copied === expected && board === expected,
+        `the clipboard holds the native flood transcript (${JSON.stringify(board?.slice(0, 40))}...)`);
+}
+
 // ---- a dropped file --------------------------------------------------------------------------
 const name = dropFile.split("/").pop();
 const [x, y] = [canvas[0] + canvas[2] / 2, canvas[1] + canvas[3] / 2];
@@ -207,6 +286,52 @@ await until(`the picked ${picked} opens`, "document.title", (t) => typeof t === 
 await settle();
 check(await evaluate("Module._flood_web_vertices()") === 3, `the picked polygon has its 3 vertices (${await evaluate("Module._flood_web_vertices()")})`);
 await screenshot("page-picked.png");
+
+// ---- settings and recent files persist across a reload (IndexedDB) ----------------------------
+// The open's write-back started in the frames the pick's settle() waited for: once none is
+// running, the list is in IndexedDB.
+await until("the recent files written back to the browser's storage",
+            "Module.floodPersisted && !Module.floodPersisted.running ? Module.floodPersisted.saved : 0", (v) => v >= 1, 10000);
+const recent = async () => (await evaluate(`Array.from({ length: 10 }, (_, i) => Module.UTF8ToString(Module._flood_web_recent(i)))`) ?? []).filter((f) => f);
+const before = await recent();
+check(before.some((f) => f.endsWith(picked)), `the picked file is a recent file (${before.join(", ")})`);
+
+// ---- presenter mode from the URL (the reload) -----------------------------------------------
+await navigate("?polygon=paper-figure-7.json&presenter=1");
+const after = await recent();
+check(after.some((f) => f.endsWith(picked)) && after.some((f) => f.endsWith(name)),
+      `after a reload the recent files still list ${picked} and ${name} (${after.join(", ")})`);
+check(await evaluate("Module._flood_web_presenter()") === 1, "presenter=1: presenter mode");
+const pc = await rect(0), cap = await rect(1);
+check(normalCanvas[2] < W && pc[0] === 0 && pc[2] === W,
+      `presenter=1: the canvas spans the window's width, ${W} (${pc[2]}; ${normalCanvas[2]} with the panels)`);
+check(cap[2] > 0 && Math.abs(cap[1] + cap[3] - H) <= 1 && Math.abs(pc[1] + pc[3] - cap[1]) <= 1,
+      `presenter=1: the caption is the band under the canvas (caption ${cap.join(",")})`);
+await screenshot("page-presenter.png");
+
+// ---- light theme from the URL --------------------------------------------------------------
+const dark = luma(commonest(at23, canvas));
+await navigate("?polygon=paper-figure-7.json&theme=light");
+const light = luma(commonest(await screenshot("page-light.png"), await rect(0)));
+check(dark < 80 && light > 200, `theme=light: the canvas's background is light (luma ${light.toFixed(0)}; dark ${dark.toFixed(0)})`);
+
+// ---- the gallery: a second polygon chosen in the Open panel --------------------------------
+const gallery = JSON.parse(readFileSync("polygons/gallery.json", "utf8"));
+await navigate("?polygon=gallery.json");
+check((await evaluate("document.title")).includes(gallery[0].file), `gallery.json opens ${gallery[0].file}`);
+const first = [await evaluate("Module._flood_web_vertices()"), await evaluate("Module._flood_web_steps()")];
+const row = await rect(4);
+check(row[2] > 0, `the Open panel shows the gallery's second row (${row.join(",")})`);
+if (row[2] > 0) {
+  await click(row);
+  await until(`clicking the second row opens ${gallery[1].file}`, "document.title",
+              (t) => typeof t === "string" && t.includes(gallery[1].file), 30000);
+  await settle();
+  const second = [await evaluate("Module._flood_web_vertices()"), await evaluate("Module._flood_web_steps()")];
+  check(second[0] !== first[0] || second[1] !== first[1],
+        `the second gallery polygon is another flood (vertices, steps: ${first} then ${second})`);
+  await screenshot("page-gallery.png");
+}
 
 check(errors.length === 0, "no console error" + (errors.length ? ":\n  " + errors.join("\n  ") : ""));
 ws.close();

@@ -4,8 +4,10 @@
 #     polygons/**/*.json: triangulate (triangles, messages, exit code) and transcript
 #     --narrate give the same bytes; its output files are readable (mode 644, not 000);
 #  2. the page in headless Chromium (page_test.mjs): no console error, the URL's polygon and
-#     step, the canvas against the native viewer's screenshot, arrow keys, a dropped file,
-#     the file picker.
+#     step, the canvas against the native viewer's screenshot, arrow keys, Save PNG as a
+#     download, Copy into the browser's clipboard (against the native flood transcript), a
+#     dropped file, the file picker, recent files kept over a reload, presenter=1,
+#     theme=light, a second gallery polygon clicked in the Open panel.
 # The native build/flood and build/flood-viewer are built if missing (CI's test phase made them).
 set -euo pipefail
 cd "$(dirname "$0")/../.."

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <exception>
+#include <memory>
 
 #include "flood/io/gdal/read_any.h"
 
@@ -65,26 +66,31 @@ void FeatureScan::start(const std::string& path) {
     path_ = path;
     features_.clear();
     diag_ = {};
-    job_.start([this, path](Job& job) {
-        DatasetRead d;
-        try {
-            d = readFeaturesFile(path, kDefaultMaxInputBytes, false);
-        } catch (const std::exception& ex) {
-            diag_ = {Status::Malformed, path + ": " + ex.what()};
+    // Steps: the read, then one feature each (a thread runs them one after another, the web
+    // page a slice between frames); the list is ordered once every feature is judged.
+    auto d = std::make_shared<DatasetRead>();
+    auto list = std::make_shared<std::vector<FeatureVerdict>>();
+    job_.startSteps([this, path, d, list, read = false](Job& job) mutable {
+        if (!read) {
+            read = true;
+            try {
+                *d = readFeaturesFile(path, kDefaultMaxInputBytes, false);
+            } catch (const std::exception& ex) {
+                diag_ = {Status::Malformed, path + ": " + ex.what()};
+            }
+            if (d->features.size() == 1 && d->features[0].wholeFile) {
+                diag_ = d->features[0].read.diagnostic;  // not a collection: nothing to list
+                d->features.clear();
+            }
+            job.setTotal(d->features.size());
+        } else if (list->size() < d->features.size()) {
+            list->push_back(judgeFeature(d->features[list->size()]));
+            job.setProgress(list->size());
         }
-        if (d.features.size() == 1 && d.features[0].wholeFile) {
-            diag_ = d.features[0].read.diagnostic;  // not a collection: nothing to list
-            d.features.clear();
-        }
-        job.setTotal(d.features.size());
-        std::vector<FeatureVerdict> list;
-        for (const FeatureRead& f : d.features) {
-            if (job.cancelRequested()) break;
-            list.push_back(judgeFeature(f));
-            job.setProgress(list.size());
-        }
-        orderFailingFirst(list);
-        features_ = std::move(list);
+        if (list->size() < d->features.size() && !job.cancelRequested()) return true;
+        orderFailingFirst(*list);
+        features_ = std::move(*list);
+        return false;
     });
 }
 

@@ -43,6 +43,10 @@ EMSCRIPTEN_KEEPALIVE int flood_web_vertices() {
     return g_shown ? int(g_shown->polygon().vertices.size()) : -1;
 }
 EMSCRIPTEN_KEEPALIVE int flood_web_presenter() { return g_ui ? int(g_ui->presenter) : -1; }
+// The invariant scan still running (1), in slices between frames (viewer/job.h).
+EMSCRIPTEN_KEEPALIVE int flood_web_scanning() {
+    return g_shown ? int(!g_shown->invariantsDone()) : -1;
+}
 EMSCRIPTEN_KEEPALIVE const char* flood_web_recent(int i) {  // the Open panel's Recent list
     if (!g_shown || i < 0 || size_t(i) >= g_shown->recentFiles().size()) return "";
     return g_shown->recentFiles()[size_t(i)].c_str();
@@ -377,8 +381,10 @@ void runInteractive(Ui& ui, const Args& args, Styled& styled) {
     input.keyboard = input.presenterKeys = true;
     std::vector<std::string> recentPersisted;  // the model saves the list on every open
     for (int frame = 0; !platform::shouldClose(); ++frame) {
-        if (model.playing()) platform::pollEvents();
-        else platform::waitEvents(0.25);  // idle: wake on input, or 4 times a second
+        // Idle (wake on input, or 4 times a second) unless the flood plays or, in the web page,
+        // background work runs in slices between frames (viewer/job.h).
+        if (model.playing() || Job::slicesPending()) platform::pollEvents();
+        else platform::waitEvents(0.25);
         for (const auto& path : platform::takeDroppedPaths()) {
             model.open(path);
             ui.message =
@@ -404,6 +410,7 @@ void runInteractive(Ui& ui, const Args& args, Styled& styled) {
             ui.message = ui.exportNote;
             ui.exportJob.reset();
         }
+        Job::runSlices(1.0 / 60);  // the web page's background work; nothing on the desktop
         platform::swapBuffers();
 #ifdef __EMSCRIPTEN__
         g_shown = &model, g_ui = &ui, ++g_frames;

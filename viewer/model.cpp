@@ -6,6 +6,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <utility>
 
 #include "flood/check/diagnostic_where.h"
@@ -74,8 +75,21 @@ bool Model::landOnFirstViolation() {
 void Model::startInvariants() {
     scan_.reset();  // joins the scan before, which writes found_
     found_.clear();
-    scan_.start([this, trace = trace_.get()](Job& job) {
-        found_ = checkInvariants(*trace, &job.progressCounter(), &job.cancelFlag());
+    // In steps of 512 events (checkInvariants' loop, cut): a thread runs them one after
+    // another; the web page, a slice of them between frames.
+    auto replay = std::make_shared<Replay>(*trace_);
+    auto checker = std::make_shared<InvariantChecker>(*trace_);
+    scan_.startSteps([this, replay, checker, s = uint32_t(0)](Job& job) mutable {
+        const uint32_t end = std::min<uint32_t>(s + 512, uint32_t(replay->size()));
+        while (s < end) {
+            Violation v = checker->check(replay->seek(++s));
+            if (!v.ok()) {
+                v.step = s;
+                found_.push_back(std::move(v));
+            }
+        }
+        job.setProgress(s);
+        return s < replay->size();
     });
 }
 

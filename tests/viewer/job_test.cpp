@@ -9,6 +9,7 @@
 #include <condition_variable>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 using flood::view::Job;
 
@@ -128,4 +129,35 @@ TEST(Job, DestroyingARunningJobStopsAndJoinsIt) {
         });
     }
     EXPECT_TRUE(stopped.load());
+}
+
+TEST(Job, StepsRunInOrderUntilTheLastSaysNoMore) {
+    Job job;
+    std::vector<int> seen;  // written by the steps, read once done
+    job.startSteps([&, n = 0](Job& j) mutable {
+        seen.push_back(n++);
+        j.setProgress(uint64_t(n));
+        return n < 5;
+    });
+    job.wait();
+    ASSERT_TRUE(job.done());
+    EXPECT_EQ(seen, (std::vector<int>{0, 1, 2, 3, 4}));
+    EXPECT_EQ(job.progress(), 5u);
+    EXPECT_FALSE(Job::slicesPending()) << "a desktop job left steps for the page's frame loop";
+}
+
+TEST(Job, ACancelStopsSteppedWorkBetweenSteps) {
+    Job job;
+    std::atomic<int> steps{0};
+    job.startSteps([&](Job&) {
+        ++steps;
+        std::this_thread::sleep_for(std::chrono::microseconds(50));
+        return true;  // never ends by itself
+    });
+    while (steps.load() < 3) std::this_thread::yield();
+    job.cancel();
+    EXPECT_TRUE(job.done());
+    const int at = steps.load();
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    EXPECT_EQ(steps.load(), at);
 }

@@ -15,7 +15,7 @@ import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { inflateSync } from "node:zlib";
 
-const [url, nativePng, canvasArg, dropFile, pickFile, outDir] = process.argv.slice(2);
+const [url, nativePng, canvasArg, dropFile, pickFile, outDir, bigFile] = process.argv.slice(2);
 const canvas = canvasArg.split(",").map(Number);  // x, y, w, h in pixels (scale 1)
 const W = 1280, H = 800;
 let failures = 0;
@@ -286,6 +286,27 @@ await until(`the picked ${picked} opens`, "document.title", (t) => typeof t === 
 await settle();
 check(await evaluate("Module._flood_web_vertices()") === 3, `the picked polygon has its 3 vertices (${await evaluate("Module._flood_web_vertices()")})`);
 await screenshot("page-picked.png");
+
+// ---- background work in slices: a large face's invariant scan never holds the page still ------
+if (bigFile) {
+  const big = bigFile.split("/").pop();
+  for (const type of ["dragEnter", "dragOver", "drop"])
+    await send("Input.dispatchDragEvent", { type, x, y, data: { items: [], files: [bigFile], dragOperationsMask: 1 } });
+  await until(`the dropped ${big} opens`, "document.title", (t) => typeof t === "string" && t.includes(big), 60000);
+  // Sample the frame counter while the scan runs: frames go on between its slices.
+  let pendingFrames = null, first = null, last = null;
+  for (const start = Date.now(); Date.now() - start < 60000;) {
+    const [scanning, frames] = await evaluate("[Module._flood_web_scanning(), Module._flood_web_frames()]");
+    if (scanning !== 1) break;
+    if (first === null) first = frames;
+    last = frames;
+    await new Promise((r) => setTimeout(r, 20));
+  }
+  if (first !== null) pendingFrames = last - first;
+  check(await evaluate("Module._flood_web_scanning()") === 0, `the invariant scan of ${big} ends`);
+  check(pendingFrames !== null && pendingFrames >= 3,
+        `frames are drawn while the invariant scan runs (${pendingFrames} frames during it)`);
+}
 
 // ---- settings and recent files persist across a reload (IndexedDB) ----------------------------
 // The open's write-back started in the frames the pick's settle() waited for: once none is

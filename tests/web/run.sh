@@ -66,6 +66,8 @@ canvas=$(echo "$layout" | awk '$2 == "layout" && $3 == "canvas" {print $4 "," $5
 [ -n "$canvas" ] || { echo "web: no canvas in the native viewer's layout:"; echo "$layout"; exit 1; }
 printf '[[[0,0],[4,0],[4,3],[2,5],[0,3]]]\n' >"$tmp/dropped-house.json"
 printf 'POLYGON ((0 0, 6 0, 3 4, 0 0))\n' >"$tmp/picked-triangle.wkt"
+# A face whose invariant scan takes many frames' slices in the page.
+"$native/flood" generate spiral 30000 -o "$tmp/big-spiral.json"
 port=${FLOOD_WEB_PORT:-8029}
 python3 -m http.server --bind 127.0.0.1 --directory "$web/site" "$port" >"$tmp/server.log" 2>&1 &
 server=$!
@@ -77,6 +79,7 @@ shots=${FLOOD_WEB_SHOTS:-$web/test-shots}
 mkdir -p "$shots"
 cp "$shot" "$shots/"
 node --experimental-websocket tests/web/page_test.mjs "http://127.0.0.1:$port/index.html" \
-  "$shot" "$canvas" "$tmp/dropped-house.json" "$tmp/picked-triangle.wkt" "$shots" || failed=1
+  "$shot" "$canvas" "$tmp/dropped-house.json" "$tmp/picked-triangle.wkt" "$shots" \
+  "$tmp/big-spiral.json" || failed=1
 echo "web: screenshots in $shots"
 exit $failed

@@ -7,6 +7,7 @@
 //                                                 (--earcut: native earcut.hpp's, fresh)
 //   flood-small-bench validate FILE N             N calls of validate() alone, for callgrind
 //                                                 (the same difference, per call)
+//   flood-small-bench vertices FILE               the vertex count the calls see
 //   flood-small-bench time FILE...                per file: ns per triangulate() call, and per
 //                                                 validate() + triangulate(), warm and fresh,
 //                                                 and native earcut.hpp's, fresh and warm, as TSV
@@ -165,6 +166,12 @@ int main(int argc, char** argv) {
         std::printf("%zu valid in %ld calls\n", sink, n);
         return 0;
     }
+    if (argc == 3 && std::strcmp(argv[1], "vertices") == 0) {
+        Polygon p;
+        if (!load(argv[2], p)) return 3;
+        std::printf("%zu\n", p.vertices.size());
+        return 0;
+    }
     if (argc >= 3 && std::strcmp(argv[1], "time") == 0) {
         std::printf(
             "file\tvertices\ttriangulate_ns\tvalidate_triangulate_ns\tfresh_triangulate_ns"
@@ -191,7 +198,7 @@ int main(int argc, char** argv) {
     }
     std::fprintf(
         stderr,
-        "usage: flood-small-bench calls FILE N [--validate|--earcut] | validate FILE N | time "
-        "FILE...\n");
+        "usage: flood-small-bench calls FILE N [--validate|--earcut] | validate FILE N | vertices "
+        "FILE | time FILE...\n");
     return 2;
 }

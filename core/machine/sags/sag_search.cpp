@@ -66,6 +66,25 @@ uint32_t SagSearch::initialNext(uint32_t t) const {
         ->second;
 }
 
+// The ranks the sought sag lies strictly between: `lo`, the last sag not above the water (the
+// water itself when it is a sag), and `hi`, the first sag not below Next.
+inline void SagSearch::bracket(NodeId water, NodeId nx, int64_t& lo, int64_t& hi) {
+    uint32_t a, b;                       // the sags below the water and below Next
+    if (sags_.size() <= kCountedSags) {  // a few keys, counted in one pass
+        const std::vector<HeightKey>& keys = heightsOf_.keys();
+        const HeightKey kw = heights_->key(water), kn = heights_->key(nx);
+        const uint32_t count = uint32_t(keys.size());
+        a = 0;
+        while (a < count && keys[a] < kw) ++a;
+        b = a;  // Next is above the water (were it not, both ends give an empty bracket)
+        while (b < count && keys[b] < kn) ++b;
+    } else {
+        a = sagsBelow(water), b = sagsBelow(nx);
+    }
+    lo = a < sags_.size() && sags_[a] == water ? int64_t(a) : int64_t(a) - 1;  // water a sag?
+    hi = b;
+}
+
 // The search, its work counted as the sag search's. An empty bracket (most steps once the
 // sags are below the water) counts nothing, so it is ruled out before the counters are read.
 NodeId SagSearch::counted(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
@@ -88,25 +107,6 @@ uint32_t SagSearch::sagsBelow(NodeId n) {
     Recent& r = recent_[slot];
     if (r.node != n) r = {n, heightsOf_.below(heights_->key(n))}, recentSet_ |= uint64_t(1) << slot;
     return r.below;
-}
-
-// The ranks the sought sag lies strictly between: `lo`, the last sag not above the water (the
-// water itself when it is a sag), and `hi`, the first sag not below Next.
-void SagSearch::bracket(NodeId water, NodeId nx, int64_t& lo, int64_t& hi) {
-    uint32_t a, b;                       // the sags below the water and below Next
-    if (sags_.size() <= kCountedSags) {  // a few keys, counted in one pass
-        const std::vector<HeightKey>& keys = heightsOf_.keys();
-        const HeightKey kw = heights_->key(water), kn = heights_->key(nx);
-        const uint32_t count = uint32_t(keys.size());
-        a = 0;
-        while (a < count && keys[a] < kw) ++a;
-        b = a;  // Next is above the water (were it not, both ends give an empty bracket)
-        while (b < count && keys[b] < kn) ++b;
-    } else {
-        a = sagsBelow(water), b = sagsBelow(nx);
-    }
-    lo = a < sags_.size() && sags_[a] == water ? int64_t(a) : int64_t(a) - 1;  // water a sag?
-    hi = b;
 }
 
 // Sags are sorted, so the search starts at the water level and stops at Next: ranks lo < k < hi

@@ -1,10 +1,11 @@
 // flood-small-bench: what one call costs on a small polygon, without any call overhead.
 //
-//   flood-small-bench calls FILE N [--validate|--earcut]
+//   flood-small-bench calls FILE N [--validate|--fresh|--earcut]
 //                                                 N calls in a loop, for callgrind: the
 //                                                 difference of two runs over the difference of
 //                                                 their N is the instructions per call
-//                                                 (--earcut: native earcut.hpp's, fresh)
+//                                                 (--fresh: flood::triangulate() instead of a kept
+//                                                 Triangulator; --earcut: native earcut.hpp's, fresh)
 //   flood-small-bench validate FILE N             N calls of validate() alone, for callgrind
 //                                                 (the same difference, per call)
 //   flood-small-bench vertices FILE               the vertex count the calls see
@@ -151,7 +152,8 @@ int main(int argc, char** argv) {
             return 2;
 #endif
         } else {
-            Call call{p, std::strcmp(flag, "--validate") == 0, p, {}};
+            Call call{
+                p, std::strcmp(flag, "--validate") == 0, p, {}, std::strcmp(flag, "--fresh") == 0};
             for (long i = 0; i < n; ++i) sink += call();
         }
         std::printf("%zu triangles in %ld calls\n", sink, n);
@@ -198,7 +200,8 @@ int main(int argc, char** argv) {
     }
     std::fprintf(
         stderr,
-        "usage: flood-small-bench calls FILE N [--validate|--earcut] | validate FILE N | vertices "
+        "usage: flood-small-bench calls FILE N [--validate|--fresh|--earcut] | validate FILE N | "
+        "vertices "
         "FILE | time FILE...\n");
     return 2;
 }

@@ -1,12 +1,14 @@
 // flood-small-bench: what one call costs on a small polygon, without any call overhead.
 //
-//   flood-small-bench calls FILE N [--validate|--earcut]
+//   flood-small-bench calls FILE N [--validate|--fresh|--earcut]
 //                                                 N calls in a loop, for callgrind: the
 //                                                 difference of two runs over the difference of
 //                                                 their N is the instructions per call
-//                                                 (--earcut: native earcut.hpp's, fresh)
+//                                                 (--fresh: flood::triangulate() instead of a kept
+//                                                 Triangulator; --earcut: native earcut.hpp's, fresh)
 //   flood-small-bench validate FILE N             N calls of validate() alone, for callgrind
 //                                                 (the same difference, per call)
+//   flood-small-bench vertices FILE               the vertex count the calls see
 //   flood-small-bench time FILE...                per file: ns per triangulate() call, and per
 //                                                 validate() + triangulate(), warm and fresh,
 //                                                 and native earcut.hpp's, fresh and warm, as TSV
@@ -150,7 +152,8 @@ int main(int argc, char** argv) {
             return 2;
 #endif
         } else {
-            Call call{p, std::strcmp(flag, "--validate") == 0, p, {}};
+            Call call{
+                p, std::strcmp(flag, "--validate") == 0, p, {}, std::strcmp(flag, "--fresh") == 0};
             for (long i = 0; i < n; ++i) sink += call();
         }
         std::printf("%zu triangles in %ld calls\n", sink, n);
@@ -163,6 +166,12 @@ int main(int argc, char** argv) {
         size_t sink = 0;
         for (long i = 0; i < n; ++i) sink += validate(p, "bench").ok();
         std::printf("%zu valid in %ld calls\n", sink, n);
+        return 0;
+    }
+    if (argc == 3 && std::strcmp(argv[1], "vertices") == 0) {
+        Polygon p;
+        if (!load(argv[2], p)) return 3;
+        std::printf("%zu\n", p.vertices.size());
         return 0;
     }
     if (argc >= 3 && std::strcmp(argv[1], "time") == 0) {
@@ -191,7 +200,8 @@ int main(int argc, char** argv) {
     }
     std::fprintf(
         stderr,
-        "usage: flood-small-bench calls FILE N [--validate|--earcut] | validate FILE N | time "
-        "FILE...\n");
+        "usage: flood-small-bench calls FILE N [--validate|--fresh|--earcut] | validate FILE N | "
+        "vertices "
+        "FILE | time FILE...\n");
     return 2;
 }

@@ -38,8 +38,10 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
     // points are shared (touching rings, T-junctions) the plane index alone is used. The
     // initial links are kept for the sweep, which may run after edits. Off the axes the
     // sweep runs along the direction itself (its rays are the lines across it).
-    banks_.clear();
-    banksTried_ = touching || sags_.empty();
+    // With at most kProbes sags every bracket is probed whole before the plane index is asked
+    // (search()), so the index never works and the lists are never built: no initial links.
+    if (banks_.built()) banks_.clear();  // a failed build clears itself (buildBanks())
+    banksTried_ = touching || count <= size_t(kProbes);
     treeWork_ = 0;
     partFirstVertex_ = partFirstVertex;
     initialNodes_ = nodes.end() - partFirstNode_;
@@ -64,12 +66,35 @@ uint32_t SagSearch::initialNext(uint32_t t) const {
         ->second;
 }
 
-// The search, its work counted as the sag search's.
+// The ranks the sought sag lies strictly between: `lo`, the last sag not above the water (the
+// water itself when it is a sag), and `hi`, the first sag not below Next.
+inline void SagSearch::bracket(NodeId water, NodeId nx, int64_t& lo, int64_t& hi) {
+    uint32_t a, b;                       // the sags below the water and below Next
+    if (sags_.size() <= kCountedSags) {  // a few keys, counted in one pass
+        const std::vector<HeightKey>& keys = heightsOf_.keys();
+        const HeightKey kw = heights_->key(water), kn = heights_->key(nx);
+        const uint32_t count = uint32_t(keys.size());
+        a = 0;
+        while (a < count && keys[a] < kw) ++a;
+        b = a;  // Next is above the water (were it not, both ends give an empty bracket)
+        while (b < count && keys[b] < kn) ++b;
+    } else {
+        a = sagsBelow(water), b = sagsBelow(nx);
+    }
+    lo = a < sags_.size() && sags_[a] == water ? int64_t(a) : int64_t(a) - 1;  // water a sag?
+    hi = b;
+}
+
+// The search, its work counted as the sag search's. An empty bracket (most steps once the
+// sags are below the water) counts nothing, so it is ruled out before the counters are read.
 NodeId SagSearch::counted(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
                           Event& e) {
+    int64_t lo, hi;
+    bracket(water, next, lo, hi);
+    if (hi <= lo + 1) return kNil;
     WorkCounters& w = work();
     const uint64_t before = w.nodeVisits + w.sagTests + w.orientCalls;  // not all ten counters
-    NodeId s = search(left, right, water, next, partNodes, e);
+    NodeId s = search(left, right, water, next, partNodes, lo, hi, e);
     w.sagSearch += w.nodeVisits + w.sagTests + w.orientCalls - before;
     return s;
 }
@@ -84,33 +109,12 @@ uint32_t SagSearch::sagsBelow(NodeId n) {
     return r.below;
 }
 
-// The ranks the sought sag lies strictly between: `lo`, the last sag not above the water (the
-// water itself when it is a sag), and `hi`, the first sag not below Next.
-void SagSearch::bracket(NodeId water, NodeId nx, int64_t& lo, int64_t& hi) {
-    uint32_t a, b;                       // the sags below the water and below Next
-    if (sags_.size() <= kCountedSags) {  // a few keys, counted in one pass each
-        const std::vector<HeightKey>& keys = heightsOf_.keys();
-        const HeightKey kw = heights_->key(water), kn = heights_->key(nx);
-        const uint32_t count = uint32_t(keys.size());
-        a = b = 0;
-        while (a < count && keys[a] < kw) ++a;
-        while (b < count && keys[b] < kn) ++b;
-    } else {
-        a = sagsBelow(water), b = sagsBelow(nx);
-    }
-    lo = a < sags_.size() && sags_[a] == water ? int64_t(a) : int64_t(a) - 1;  // water a sag?
-    hi = b;
-}
-
-// Sags are sorted, so the search starts at the water level and stops at Next.
+// Sags are sorted, so the search starts at the water level and stops at Next: ranks lo < k < hi
+// (bracket()).
 NodeId SagSearch::search(NodeId left, NodeId right, NodeId water, NodeId nx, uint32_t partNodes,
-                         Event& e) {
-    if (unused_ == 0) return kNil;  // every sag bridged already (or none): no bracket to search
+                         int64_t lo, int64_t hi, Event& e) {
     const Heights& h = *heights_;
     const Nodes& nodes = h.nodes();
-    int64_t lo, hi;
-    bracket(water, nx, lo, hi);
-    if (hi <= lo + 1) return kNil;
     Point l = h.at(left), r = h.at(right), nl = h.at(nodes[left].prev),
           nr = h.at(nodes[right].next);
     // Where such a sag can be: the quadrangle's box, the water's height band, and the

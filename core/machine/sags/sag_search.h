@@ -37,7 +37,7 @@ private:
     NodeId counted(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
                    Event& e);
     NodeId search(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
-                  Event& e);
+                  int64_t lo, int64_t hi, Event& e);
     uint32_t sagsBelow(NodeId n);
     void bracket(NodeId water, NodeId next, int64_t& lo, int64_t& hi);
     NodeId use(int64_t rank);

@@ -114,6 +114,8 @@ public:
     // an open at a phase with it.
     std::function<void(const std::string& path, OpenPhase)> openHook;
     void setOpenDirection(Up up) { up_ = up; }  // opens from now on flood along `up`
+    // What is loaded is an open's outline (flooding, or cancelled): the polygon, no run.
+    bool outlineOnly() const { return !note_.empty(); }
     // A recorded run as it is (the polygon is validated again only to report the input).
     void openTrace(Trace trace, const std::string& name);
     const Diagnostic& openDiagnostic() const { return openDiag_; }  // the last open's read

@@ -50,6 +50,7 @@ namespace {
 
 // No display: say so, then print what can be known without one.
 int printSummary(const std::string& why, Model& model, const Args& args) {
+    model.waitOpen();  // the window's open, begun in the background: its run is summarised
     std::printf("flood-viewer: %s.\n", why.c_str());
     if (!args.screenshot.empty() || args.exports.animated()) {
         std::string out = !args.screenshot.empty()    ? args.screenshot

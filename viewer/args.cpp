@@ -244,6 +244,9 @@ int parseArgs(int argc, char** argv, Args& a) {
     app.add_flag("--state-table", a.stateTable, "Open the State table (Fig. 10)");
     app.add_flag("--bench", a.bench,
                  "Time opening, seeking and drawing (hidden window), print, exit");
+    app.add_flag("--time-open", a.timeOpen,
+                 "Time the window's open of FILE (hidden window): to the outline's first frame "
+                 "and to the first flooded frame, then the same file opened whole; print, exit");
     app.add_option("--up", a.up,
                    "Flood along +y, -y, +x, -x, an angle in degrees (90 is +y) or X,Y, with the "
                    "direction dial open (it compares with the +y run); --up=-y for a value "
@@ -301,6 +304,8 @@ int parseArgs(int argc, char** argv, Args& a) {
     else if (a.exports.caption && !a.exporting())
         needs = "--caption needs --canvas-only, an SVG or an export";
     else if (a.exporting() && a.bench) needs = "--bench cannot be combined with exports";
+    else if (a.timeOpen && (a.bench || a.exporting() || !shot.empty()))
+        needs = "--time-open cannot be combined with --bench, --screenshot or exports";
     else if (a.answer != Action::Count && !a.quiz) needs = "--answer needs --quiz";
 #ifndef FLOOD_GIF
     if (!a.exports.gif.empty())

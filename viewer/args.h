@@ -17,6 +17,7 @@ struct Args {
     std::string screenshot;
     int width = 1280, height = 800;
     bool bench = false;      // measure open, seek and frame times, print them, exit
+    bool timeOpen = false;   // time the window's open of FILE (outline, flooded frame), exit
     bool showError = false;  // open in the error view (as the E key does)
     long feature = -1;       // --feature N: that feature of a FeatureCollection
     float scale = 0;         // --scale S: the content scale, instead of the monitor's

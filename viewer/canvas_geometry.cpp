@@ -47,9 +47,12 @@ CanvasGeometry buildCanvasGeometry(const Model& model) {
             g.edges.push_back(ok ? t[k] : 0), g.edges.push_back(ok ? t[(k + 1) % 3] : 0);
     }
 
+    // An outline (its open still flooding) is drawn unfilled: the fans' even-odd fill costs a
+    // software rasteriser seconds a frame at 10⁵ vertices (each fan triangle spans the face).
+    const bool fill = !model.outlineOnly();
     for (const Ring& r : poly.rings) {
         if (r.first + r.count > n || r.count < 3) continue;
-        for (Index i = 1; i + 1 < r.count; ++i)
+        for (Index i = 1; fill && i + 1 < r.count; ++i)
             g.fans.insert(g.fans.end(), {r.first, r.first + i, r.first + i + 1});
         for (Index i = 0; i < r.count; ++i)
             g.boundaryEdges.insert(g.boundaryEdges.end(),

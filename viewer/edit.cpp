@@ -15,25 +15,7 @@ namespace flood::view {
 // [SECTION] Model's side of an edit
 Model::EditedRun Model::floodEdit(Polygon polygon, const std::string& name, Up up) {
     EditedRun run;
-    polygon.splits.clear();  // validate() finds the edited polygon's own T-junctions
-    // An empty canvas is a start, not an invalid polygon.
-    if (!polygon.vertices.empty()) {
-        run.input = validate(polygon, name);
-        // Every finding of an invalid edit, off the UI thread as the flood is.
-        if (!run.input.ok()) run.findings = validateAll(polygon, name);
-        // Invalid polygons are flooded too, as an open does: the student sees where the
-        // machine stops.
-        try {
-            run.trace = record(polygon, Options{up});
-        } catch (const std::exception& ex) {
-            run.trace.diagnostic = {Status::Internal, name + ": " + ex.what()};
-        }
-        // The exact checker is the costly half of adopting a run: judged here, off the UI
-        // thread.
-        run.judged = judgeRun(polygon, run.trace.triangles, run.trace.diagnostic, name);
-    }
-    run.trace.polygon = std::move(polygon);
-    run.trace.up = up;  // an empty canvas too: the dial's direction is kept
+    floodRun(std::move(polygon), name, up, run);  // as an open floods, off the UI thread
     return run;
 }
 
@@ -52,14 +34,9 @@ void Model::adoptEdit(EditedRun run, bool deferScan) {
     }
     ++generation_;
     openDiag_ = {};
-    input_ = std::move(run.input);
     warnings_.clear();
-    judged_ = std::move(run.judged);
-    if (!input_.ok() && !run.findings.list.empty()) validated_ = std::move(run.findings);
     deferScan_ = deferScan;
-    adopt(std::make_unique<Trace>(std::move(run.trace)));
-    judged_.reset();  // used by adopt's verdict, or not needed there: never by a later open
-    validated_.reset();
+    adoptRun(std::move(run));
     // What adopt() resets for an open stays as the user left it.
     feature_ = feature;
     origin_ = origin, originName_ = originName, originFeature_ = originFeature;

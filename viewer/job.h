@@ -1,6 +1,7 @@
 // One background job: a function run in a thread, with the three things the UI thread polls
 // each frame — progress, a cancel request, done. The invariant scan, the shrinker, a dataset's
-// feature list and the flood of an edit are each one Job and the result they write.
+// feature list, the flood of an edit and an open in the window (open_job.h) are each one Job
+// and the result they write.
 //
 // The work writes its result before it returns; done() (acquire) makes that write visible,
 // so the result is read only once done() is true. In the web page there are no threads

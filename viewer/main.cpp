@@ -6,6 +6,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <functional>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "args.h"
@@ -73,6 +75,7 @@ namespace {
 
 // No display: say so, then print what can be known without one.
 int printSummary(const std::string& why, Model& model, const Args& args) {
+    model.waitOpen();  // the window's open, begun in the background: its run is summarised
     std::printf("flood-viewer: %s.\n", why.c_str());
     if (!args.screenshot.empty() || args.exports.animated()) {
         std::string out = !args.screenshot.empty()    ? args.screenshot
@@ -188,10 +191,21 @@ ConfigFiles configFiles() {
     return {dir + "recent.txt", dir + "settings.txt"};
 }
 
-// Opens what the arguments name, flooded along --up. Returns 0, or the exit code when a
-// feature cannot be opened.
-int openArgs(Model& model, const Args& args) {
+// Opens what the arguments name, flooded along --up: a FILE in the `background` (the window's
+// open: followOpen finishes it), else at once. Returns 0, or the exit code when a feature
+// cannot be opened.
+int openArgs(Model& model, const Args& args, bool background) {
     model.gisLayer = args.layer, model.gisWhere = args.where;
+    if (background && args.feature < 0 && !args.file.empty()) {
+        if (!args.up.empty()) {
+            Up d;
+            std::string why;
+            parseUp(args.up, d, why);  // parseArgs has accepted it
+            model.setOpenDirection(d);
+        }
+        model.openInBackground(args.file);
+        return 0;
+    }
     if (args.feature >= 0) {
         // A feature that cannot be opened is the answer: say so before any window.
         if (!model.openFeature(args.file, size_t(args.feature))) {
@@ -212,6 +226,43 @@ int openArgs(Model& model, const Args& args) {
         model.setUp(d);
     }
     return 0;
+}
+
+// Each frame: what the window's open has ready adopted (model.pollOpen), and once it is done,
+// what it says.
+void followOpen(Ui& ui) {
+    const std::string path = ui.model.openingPath();
+    if (ui.model.pollOpen()) noteOpened(ui, path);
+}
+
+// FLOOD_VIEWER_HOLD_OPEN=PHASE (tests/gui/open_progress_test.cpp): the command line's FILE
+// opens in the background even for --screenshot, held as PHASE ("reading", "validating",
+// "flooding", "checking") begins, so the picture shows the open under way. Released (and
+// the open cancelled) before the viewer exits.
+struct OpenHold {
+    std::atomic<bool> reached{false}, released{false};
+    std::string phase;
+};
+
+bool holdOpen(Model& model, OpenHold& hold) {
+    const char* phase = std::getenv("FLOOD_VIEWER_HOLD_OPEN");
+    if (!phase || !*phase) return false;
+    hold.phase = phase;
+    model.openHook = [&hold](const std::string&, OpenPhase p) {
+        if (hold.phase != openPhaseName(p)) return;
+        hold.reached = true;
+        while (!hold.released) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+    };
+    return true;
+}
+
+// Until the held open is at its phase, its outline adopted once read.
+void waitForHold(Model& model, const OpenHold& hold) {
+    while (!hold.reached && model.opening()) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(2));
+        model.pollOpen();
+    }
+    model.pollOpen();
 }
 
 // An export's --steps range past the flood's end is a mistake to say, not to clamp silently.
@@ -311,7 +362,8 @@ DrawnFrame drawFrame(Ui& ui, const Args& args, int frame, const FrameInput& inpu
     if (input.keyboard) handleShortcuts(ui);
     if (input.presenterKeys) handlePresenterKeys(ui);
     drawCanvas(ui);
-    drawQuiz(ui);  // in either view
+    drawOpening(ui);  // an open under way, in either view
+    drawQuiz(ui);     // in either view
     if (ui.presenter) {
         drawCaption(ui);
     } else {
@@ -382,18 +434,19 @@ void runInteractive(Ui& ui, const Args& args, Styled& styled) {
     std::vector<std::string> recentPersisted;  // the model saves the list on every open
     for (int frame = 0; !platform::shouldClose(); ++frame) {
         // Idle (wake on input, or 4 times a second) unless the flood plays or, in the web page,
-        // background work runs in slices between frames (viewer/job.h).
+        // background work runs in slices between frames (viewer/job.h); 30 times a second while
+        // an open runs, so its progress moves.
         if (model.playing() || Job::slicesPending()) platform::pollEvents();
-        else platform::waitEvents(0.25);
+        else platform::waitEvents(model.opening() ? 1.0 / 30 : 0.25);
         for (const auto& path : platform::takeDroppedPaths()) {
-            model.open(path);
-            ui.message =
-                model.openDiagnostic().ok() ? "opened " + path : model.openDiagnostic().message;
+            model.openInBackground(path);
+            ui.message = "opening " + path;
         }
         if (model.recentFiles() != recentPersisted && !model.recentPath.empty()) {
             recentPersisted = model.recentFiles();
             platform::persistConfig();
         }
+        followOpen(ui);
         // The title names the file loaded (a failed open keeps the previous one).
         if (model.generation() != titled) {
             titled = model.generation();
@@ -460,6 +513,7 @@ int runScreenshot(Ui& ui, const Args& args, Styled& styled) {
     for (int frame = 0; !platform::shouldClose(); ++frame) {
         platform::pollEvents();
         restyle(ui, styled, false);
+        followOpen(ui);  // a held open (FLOOD_VIEWER_HOLD_OPEN) stays where it is held
         DrawnFrame f = drawFrame(ui, args, frame, scriptedInput(ui, args, frame, mouse));
         if (!ui.pngRequest.empty()) {  // --press p: Save PNG, as the toolbar's button
             const bool ok = saveCanvasPng(ui);
@@ -486,6 +540,7 @@ int runScreenshot(Ui& ui, const Args& args, Styled& styled) {
                 {"find-box", ui.findBox},
                 {"edit-box", ui.editBox},
                 {"shrink-box", ui.shrinkBox},
+                {"opening-box", ui.openingBox},
                 {"inset", ui.inset},
                 {"transcript-copy", ui.transcriptCopy},
                 {"quiz-box", ui.quizBox},
@@ -550,15 +605,69 @@ void runBench(Ui& ui, const Args& args, Styled& styled, BenchStats& bench) {
     }
 }
 
+// --time-open: the window's open of FILE timed as a user waits for it, CPU side (each frame
+// after glFinish; under Xvfb the GL is Mesa's software one): from the request to the first
+// frame showing the outline and to the first showing the flooded run, and the longest frame
+// meanwhile (the window's stall). Then the same file opened whole before a frame, as the
+// window did before the background open (Model::open, still the scripts' path).
+void runTimeOpen(Ui& ui, const Args& args, Styled& styled) {
+    Model& model = ui.model;
+    auto frameDrawn = [&](int frame) {
+        restyle(ui, styled, false);
+        drawFrame(ui, args, frame, {});
+        ui.renderer.finish();
+        platform::swapBuffers();
+    };
+    const double start = now();
+    model.openInBackground(args.file);
+    double read = 0, outline = 0, flooded = 0, longest = 0;
+    int frame = 0;
+    for (; !platform::shouldClose(); ++frame) {
+        const double f0 = now();
+        platform::waitEvents(1.0 / 30);  // as the window idles while an open runs
+        followOpen(ui);
+        const bool shown = !model.polygon().vertices.empty(), done = !model.opening();
+        if (shown && read == 0) read = now() - start;  // adopted: its frame still to draw
+        frameDrawn(frame);
+        const double t = now();
+        longest = std::max(longest, t - f0);
+        if (shown && outline == 0) outline = t - start;
+        if (done) {
+            flooded = t - start;
+            break;
+        }
+    }
+    std::printf(
+        "time-open: %s: %zu vertices, %u events%s\n", args.file.c_str(),
+        model.polygon().vertices.size(), model.steps(),
+        model.openDiagnostic().ok() ? "" : (" (" + model.openDiagnostic().message + ")").c_str());
+    std::printf(
+        "time-open: in the background: outline adopted %.0f ms, its first frame %.0f ms, first "
+        "flooded frame %.0f ms, longest frame meanwhile %.0f ms (%d frames)\n",
+        read * 1e3, outline * 1e3, flooded * 1e3, longest * 1e3, frame + 1);
+    const double whole = now();
+    model.open(args.file);
+    frameDrawn(frame + 1);
+    std::printf(
+        "time-open: opened whole (Model::open, as before): first frame %.0f ms, the "
+        "window still throughout\n",
+        (now() - whole) * 1e3);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
     Args args;
     if (int rc = parseArgs(argc, argv, args)) return rc - 1;
     if (args.file.empty()) args.file = defaultPolygonPath();
-    const bool shot = !args.screenshot.empty() || args.bench || args.exporting();
+    const bool shot = !args.screenshot.empty() || args.bench || args.exporting() || args.timeOpen;
 
+    OpenHold hold;  // before the model: its open's hook may wait on it until the model joins it
     Model model;
+    struct Release {  // on every way out, before ~Model joins the held open
+        OpenHold& hold;
+        ~Release() { hold.released = true; }
+    } release{hold};
     // Screenshots neither read nor write the recent list, nor write the settings; they read the
     // saved theme (a picture looks as the viewer does), not the zoom (scale 1 or --scale).
     const ConfigFiles saved = configFiles();
@@ -569,8 +678,15 @@ int main(int argc, char** argv) {
     if (!saved.settings.empty()) settings = loadSettings(saved.settings);
     if (args.themeGiven) settings.theme = args.theme;
     palette::setTheme(settings.theme);
+    const bool held = holdOpen(model, hold);
     double openStart = now();
-    if (int rc = openArgs(model, args)) return rc;
+    // The window opens its FILE in the background; a picture, a --step or a benchmark wait
+    // for the whole open, as before.
+    if (args.timeOpen) {  // opened by runTimeOpen, once the window is up
+    } else if (int rc = openArgs(model, args, (!shot && args.steps.empty()) || held)) {
+        return rc;
+    }
+    if (held) waitForHold(model, hold);
     double openSeconds = now() - openStart;
     if (args.quiz) model.startQuiz(args.quizAsked);
     if (!args.steps.empty()) model.seek(args.steps.front());
@@ -616,10 +732,13 @@ int main(int argc, char** argv) {
     ui.showDirection = !args.up.empty();
 
     int exitCode = 0;
-    if (args.bench) runBench(ui, args, styled, bench);
+    if (args.timeOpen) runTimeOpen(ui, args, styled);
+    else if (args.bench) runBench(ui, args, styled, bench);
     else if (shot) exitCode = runScreenshot(ui, args, styled);
     else runInteractive(ui, args, styled);
 
+    hold.released = true;
+    model.cancelOpen();  // an open still under way ends its phase; ~Model joins it
     if (!config.recent.empty()) model.saveRecent(config.recent);
     ui.exportJob.reset();  // its framebuffer goes while the GL context exists
     rendererOwner.reset();

@@ -24,7 +24,8 @@ Model::Model() : trace_(std::make_unique<Trace>()), replay_(std::make_unique<Rep
 
 Model::~Model() { cancelInvariants(); }
 
-void Model::adopt(std::unique_ptr<Trace> trace) {
+void Model::adopt(std::unique_ptr<Trace> trace, std::string note) {
+    note_ = std::move(note);
     errorView_ = false;
     feature_ = kNoFeature;  // openFeature / openShrunk set these again after adopting
     origin_.clear();
@@ -62,6 +63,15 @@ void Model::adopt(std::unique_ptr<Trace> trace) {
     scanWaiting_ = std::exchange(deferScan_, false);  // live editing: started once the drag ends
     if (scanWaiting_) scan_.reset();                  // no scan yet: nothing done
     else startInvariants();
+}
+
+void Model::adoptRun(EditedRun run) {
+    input_ = std::move(run.input);
+    judged_ = std::move(run.judged);
+    if (!input_.ok() && !run.findings.list.empty()) validated_ = std::move(run.findings);
+    adopt(std::make_unique<Trace>(std::move(run.trace)));
+    judged_.reset();  // used by adopt's verdict, or not needed there: never by a later open
+    validated_.reset();
 }
 
 bool Model::landOnFirstViolation() {
@@ -138,6 +148,10 @@ void Model::computeVerdictLines() {
     auto line = [&](Verdict k, std::string text, bool note = false) {
         verdictLines_.push_back({k, std::move(text), note});
     };
+    if (!note_.empty()) {  // an outline, its open under way or cancelled: nothing to judge yet
+        line(Verdict::Ok, note_, true);
+        return;
+    }
     if (!input_.ok() && P.vertices.empty()) {
         line(input_.status == Status::Malformed ? Verdict::Malformed : Verdict::Invalid,
              input_.message);

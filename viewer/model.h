@@ -9,6 +9,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -36,6 +37,7 @@
 #include "geometry.h"  // Vec2, Rect
 #include "job.h"
 #include "jobs.h"
+#include "open_job.h"
 #include "summary.h"
 #include "timeline.h"
 
@@ -90,6 +92,30 @@ public:
     // and the verdict; invalid polygons are flooded anyway so the viewer can show where the
     // machine stops. Recent files get the absolute path, saved to `recentPath` if set.
     void open(const std::string& path);
+    // The window's open (open_job.h): what open() does, with the read, validation, flood and
+    // check in a background Job. pollOpen(), each frame, adopts the polygon as soon as it is
+    // read, as an outline with no events (its verdict a note: "flooding... N vertices"), and
+    // then the judged run in its place, as adoptEdit does; a failed read keeps what was
+    // loaded, as open() does. A second open, open() or openFeature() cancels it first.
+    void openInBackground(const std::string& path);
+    bool opening() const { return opening_ != nullptr; }
+    const std::string& openingPath() const;  // "" when none
+    OpenPhase openPhase() const;             // of the open under way
+    uint32_t openProgress() const;           // of openTotal(); monotone, the total once done
+    uint32_t openTotal() const;
+    // Adopts what the open has ready. True once, in the call that finished it (the run
+    // adopted, or the read failed: openDiagnostic() says why).
+    bool pollOpen();
+    // Stops the open without waiting for it: while it reads, what was loaded stays; once it
+    // has read, the outline stays with a verdict saying it was not flooded.
+    void cancelOpen();
+    void waitOpen();  // polls until the open is done (tests, screenshots)
+    // Given to each open started after it is set (OpenJob::Request::onPhase): a test holds
+    // an open at a phase with it.
+    std::function<void(const std::string& path, OpenPhase)> openHook;
+    void setOpenDirection(Up up) { up_ = up; }  // opens from now on flood along `up`
+    // What is loaded is an open's outline (flooding, or cancelled): the polygon, no run.
+    bool outlineOnly() const { return !note_.empty(); }
     // A recorded run as it is (the polygon is validated again only to report the input).
     void openTrace(Trace trace, const std::string& name);
     const Diagnostic& openDiagnostic() const { return openDiag_; }  // the last open's read
@@ -286,12 +312,7 @@ public:
 
     // Live editing (viewer/edit.h). An edited polygon validated and flooded: touches no
     // Model state, so it may run in a background thread.
-    struct EditedRun {
-        Trace trace;       // trace.polygon: the edited polygon, its T-junctions recorded
-        Diagnostic input;  // the validator's verdict on it
-        std::optional<Judgement> judged;  // judgeRun on the run, unless nothing was flooded
-        Findings findings;                // validateAll's, when `input` is invalid
-    };
+    using EditedRun = FloodedRun;  // open_job.h: what floodRun computes
     static EditedRun floodEdit(Polygon polygon, const std::string& name, Up up = Up::PlusY);
     // Makes `run` the loaded run under the same name. Unlike an open, the step (clamped to
     // the new trace), the camera and the timeline stay, and no landing moves the step.
@@ -338,7 +359,16 @@ private:
     uint64_t inspectedFor_ = ~0ull;            // generation and step of inspection_
     void computeOffenders();
     std::string computeVerdict() const;
-    void adopt(std::unique_ptr<Trace> trace);  // makes `trace` the loaded run
+    // Makes `trace` the loaded run; a `note` (an open under way) is its verdict instead.
+    void adopt(std::unique_ptr<Trace> trace, std::string note = {});
+    void adoptRun(EditedRun run);       // what an open or edit computed off the UI thread
+    std::string note_;                  // the verdict of an outline: its open's phase, or cancelled
+    std::unique_ptr<OpenJob> opening_;  // the open under way
+    std::vector<std::unique_ptr<OpenJob>> retired_;  // cancelled opens ending their phase
+    bool outlineShown_ = false;                      // opening_'s outline is adopted
+    void adoptOutline();
+    void adoptOpened();
+    void setNote(std::string note);
     void computeVerdictLines();
     void remember(const std::string& path);
     Diagnostic openDiag_;

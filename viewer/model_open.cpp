@@ -31,17 +31,23 @@ static bool isTracePath(const std::string& path) {
     return h.rfind("{\"format\":\"flood-trace\"", 0) == 0 || isBinaryTrace(h);
 }
 
-void Model::open(const std::string& path) {
-    // A gallery file opens the gallery: its first polygon, and its list in the Open panel.
-    if (std::filesystem::path(path).filename() == "gallery.json") {
-        std::string dir = std::filesystem::path(path).parent_path().string();
-        if (dir.empty()) dir = ".";
-        if (std::vector<GalleryEntry> entries = readGallery(dir); !entries.empty()) {
-            galleryDir_ = dir;
-            ++galleryOpens_;
-            return open(entries.front().file);
-        }
-    }
+// A gallery file opens the gallery: its first polygon (returned), and its list in the Open
+// panel. Any other file is itself.
+static std::string galleryFirst(const std::string& path, std::string& galleryDir,
+                                uint32_t& galleryOpens) {
+    if (std::filesystem::path(path).filename() != "gallery.json") return path;
+    std::string dir = std::filesystem::path(path).parent_path().string();
+    if (dir.empty()) dir = ".";
+    std::vector<GalleryEntry> entries = readGallery(dir);
+    if (entries.empty()) return path;
+    galleryDir = dir;
+    ++galleryOpens;
+    return galleryFirst(entries.front().file, galleryDir, galleryOpens);
+}
+
+void Model::open(const std::string& file) {
+    cancelOpen();  // this open is the one the user asked for last
+    const std::string path = galleryFirst(file, galleryDir_, galleryOpens_);
     ReadResult r;
     Trace t;
     const bool isTrace = isTracePath(path);
@@ -115,7 +121,129 @@ void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic inp
     adopt(std::move(trace));
 }
 
+// ---- the window's open, in the background (open_job.h) ----------------------------------
+void Model::openInBackground(const std::string& file) {
+    cancelOpen();
+    const std::string path = galleryFirst(file, galleryDir_, galleryOpens_);
+    OpenJob::Request request;
+    request.path = path;
+    request.gisLayer = gisLayer, request.gisWhere = gisWhere;
+    request.up = up_;
+    request.trace = isTracePath(path);
+    request.onPhase = openHook;
+    opening_ = std::make_unique<OpenJob>();
+    outlineShown_ = false;
+    opening_->start(std::move(request));
+}
+
+const std::string& Model::openingPath() const {
+    static const std::string none;
+    return opening_ ? opening_->request().path : none;
+}
+OpenPhase Model::openPhase() const { return opening_ ? opening_->phase() : OpenPhase::Done; }
+uint32_t Model::openProgress() const { return opening_ ? opening_->progress() : 0; }
+uint32_t Model::openTotal() const { return opening_ ? opening_->total() : 0; }
+
+// The outline's verdict while its open goes on: the phase, and how big the polygon is.
+static std::string phaseNote(OpenPhase p, size_t vertices) {
+    return std::string(openPhaseName(p)) + "... " + std::to_string(vertices) + " vertices";
+}
+
+void Model::setNote(std::string note) {
+    note_ = std::move(note);
+    computeVerdictLines();
+    computeFindings();
+    verdict_ = computeVerdict();
+}
+
+void Model::adoptOutline() {
+    OpenJob& j = *opening_;
+    playing_ = false;
+    ++generation_;
+    path_ = j.request().path;
+    openDiag_ = {};
+    input_ = {};
+    warnings_ = j.warnings();
+    cancelInvariants();  // the scan reads the trace about to be replaced
+    auto trace = std::make_unique<Trace>();
+    trace->polygon = j.takeOutline();
+    trace->up = up_;
+    const size_t n = trace->polygon.vertices.size();
+    adopt(std::move(trace), phaseNote(std::max(j.phase(), OpenPhase::Validate), n));
+    outlineShown_ = true;
+}
+
+void Model::adoptOpened() {
+    OpenJob& j = *opening_;
+    // The outline was fitted already: a view the user moved meanwhile stays.
+    const bool fit = !outlineShown_ || needsFit_;
+    playing_ = false;
+    ++generation_;
+    path_ = j.request().path;
+    warnings_ = j.warnings();
+    cancelInvariants();
+    FloodedRun& run = j.run();
+    openDiag_ = run.input.status == Status::Malformed ? run.input : Diagnostic{};
+    if (j.request().trace) up_ = run.trace.up;
+    adoptRun(std::move(run));
+    needsFit_ = fit;
+    remember(j.request().path);
+}
+
+bool Model::pollOpen() {
+    retired_.erase(std::remove_if(retired_.begin(), retired_.end(),
+                                  [](const std::unique_ptr<OpenJob>& j) { return j->done(); }),
+                   retired_.end());
+    if (!opening_) return false;
+    OpenJob& j = *opening_;
+    const bool done = j.done();
+    const OpenPhase phase = j.phase();
+    if (!done) {
+        if (phase == OpenPhase::Read) return false;
+        if (!outlineShown_) adoptOutline();
+        else if (const std::string note = phaseNote(phase, trace_->polygon.vertices.size());
+                 note != note_)
+            setNote(note);
+        return false;
+    }
+    const Diagnostic& read = j.readDiagnostic();
+    if (!read.ok()) {
+        // As open(): what was loaded stays; with nothing loaded, the failure is the verdict.
+        openDiag_ = read;
+        if (trace_->polygon.vertices.empty()) {
+            openPolygon({}, j.request().path, read);
+            openDiag_ = read;
+        }
+    } else {
+        adoptOpened();
+    }
+    opening_.reset();
+    outlineShown_ = false;
+    return true;
+}
+
+void Model::cancelOpen() {
+    if (!opening_) return;
+    opening_->requestCancel();
+    // Read and shown: the outline stays, saying it was not flooded.
+    if (outlineShown_)
+        setNote("not flooded: the open was cancelled while " +
+                std::string(openPhaseName(opening_->phase())) + " (" +
+                std::to_string(trace_->polygon.vertices.size()) + " vertices read)");
+    // It ends its phase in the background; pollOpen forgets it then, ~Model joins it.
+    retired_.push_back(std::move(opening_));
+    outlineShown_ = false;
+}
+
+void Model::waitOpen() {
+    while (opening_) {
+        opening_->wait();
+        pollOpen();
+    }
+}
+
 bool Model::openFeature(const std::string& path, size_t index) {
+    cancelOpen();
     DatasetRead d;
     try {
         // A GIS layer's features, by FID (--where keeps some of them: the others are not there).

@@ -610,6 +610,7 @@ std::vector<Rect> canvasOverlays(const Ui& ui) {
              {ui.findBox, ui.editBox, ui.shrinkBox, ui.directionBox, ui.stateTableBox})
             if (r.w > 0 && r.h > 0) over.push_back(r);
     if (const Rect r = upArrowRect(ui); r.w > 0) over.push_back(r);
+    if (ui.openingBox.w > 0) over.push_back(ui.openingBox);  // in either view
     return over;
 }
 

@@ -13,6 +13,12 @@
 
 namespace flood::view {
 
+// A file whose features the Open panel lists: a polygon document, not a trace or a shrink.
+static bool polygonDocument(const std::string& f) {
+    return !f.empty() && f.find("(shrunk)") == std::string::npos &&
+           (f.size() < 6 || f.compare(f.size() - 6, 6, ".jsonl") != 0);
+}
+
 void drawOpen(Ui& ui) {
     Model& m = ui.model;
     if (m.galleryOpens() != ui.openPanel.galleryOpensSeen)  // a gallery file was opened
@@ -28,10 +34,6 @@ void drawOpen(Ui& ui) {
 
     // The features of the loaded file (or of a collection that failed to open whole: its
     // features are separate polygons), judged in the background: a dataset may hold thousands.
-    auto polygonDocument = [](const std::string& f) {
-        return !f.empty() && f.find("(shrunk)") == std::string::npos &&
-               (f.size() < 6 || f.compare(f.size() - 6, 6, ".jsonl") != 0);
-    };
     if (m.generation() != ui.featuresGeneration) {
         ui.featuresGeneration = m.generation();
         std::string file =
@@ -140,12 +142,11 @@ void drawOpen(Ui& ui) {
         if (!into.empty()) ui.browseDir = fs::path(into).lexically_normal().string();
     }
     if (!chosen.empty()) {
-        m.open(chosen);
+        // In the background: noteOpened says how it went once it is done.
+        m.openInBackground(chosen);
         std::strncpy(path, chosen.c_str(), sizeof path - 1);
-        // A failed open keeps what was loaded; say why in red.
-        ui.openFailed = !m.openDiagnostic().ok();
-        ui.message = ui.openFailed ? m.openDiagnostic().message : "opened " + chosen;
-        if (ui.openFailed && polygonDocument(chosen)) ui.features.start(chosen);  // a collection?
+        ui.openFailed = false;
+        ui.message = "opening " + chosen;
     }
     if (ui.openFailed) {
         ImGui::PushTextWrapPos(0);
@@ -153,6 +154,14 @@ void drawOpen(Ui& ui) {
         ImGui::PopTextWrapPos();
     }
     ImGui::End();
+}
+
+void noteOpened(Ui& ui, const std::string& path) {
+    const Model& m = ui.model;
+    // A failed open keeps what was loaded; say why in red.
+    ui.openFailed = !m.openDiagnostic().ok();
+    ui.message = ui.openFailed ? m.openDiagnostic().message : "opened " + path;
+    if (ui.openFailed && polygonDocument(path)) ui.features.start(path);  // a collection?
 }
 
 }  // namespace flood::view

@@ -167,6 +167,7 @@ struct Ui {
     // What floats over the canvas, as last drawn (labels keep out from under them): the find
     // box, the Edit box, the Shrink window and the locator inset; empty when not shown.
     Rect findBox, editBox, shrinkBox, inset;
+    Rect openingBox;  // an open's progress and Cancel (panel_opening.cpp); empty when none
     // The direction dial's and the State table's windows as last drawn (empty: not shown):
     // floating over the canvas, the fit keeps the polygon out from under them.
     Rect directionBox, stateTableBox;
@@ -211,8 +212,13 @@ void drawBreakpoints(Ui& ui);   // panel_breakpoints.cpp: breakpoints, legend, d
 void drawEvents(Ui& ui);        // panel_events.cpp: every event, clipped
 void drawTranscript(Ui& ui);    // panel_transcript.cpp: the paper-style transcript
 void drawOpen(Ui& ui);          // panel_open.cpp: polygons/ and recent files
-void drawShrink(Ui& ui);        // panel_shrink.cpp: shrink a failure, open and save the repro
-void drawFindings(Ui& ui);      // panel_findings.cpp: every finding, click to frame, F8 / Shift+F8
+// panel_open.cpp: what a finished open in the window says (ui.message, the Open panel's red
+// line, a collection's features listed); `path` is what was opened.
+void noteOpened(Ui& ui, const std::string& path);
+// panel_opening.cpp: an open under way, its progress and Cancel over the canvas.
+void drawOpening(Ui& ui);
+void drawShrink(Ui& ui);    // panel_shrink.cpp: shrink a failure, open and save the repro
+void drawFindings(Ui& ui);  // panel_findings.cpp: every finding, click to frame, F8 / Shift+F8
 // The height the findings panel wants (0: none): its header and up to four findings.
 double findingsHeight(const Model& m, float scale);
 void drawHelp(Ui& ui);             // panel_help.cpp: keys and glossary

@@ -352,9 +352,9 @@ Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t ma
     return {};
 }
 
-ReadResult readPolygonFile(const std::string& path, uint64_t maxBytes) {
+ReadResult readPolygonFile(const std::string& path, uint64_t maxBytes, ReadProgress* progress) {
     std::string text;
-    Diagnostic d = readInputFile(path, text, maxBytes, "GeoJSON or WKT");
+    Diagnostic d = readInputFile(path, text, maxBytes, "GeoJSON or WKT", nullptr, progress);
     if (!d.ok()) {
         ReadResult rr;
         rr.diagnostic = d;

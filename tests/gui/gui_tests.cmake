@@ -89,3 +89,6 @@ flood_screenshot_test(fit_test)
 
 # ---- Save PNG: the canvas alone, named and placed; --screenshot follows the saved theme ------
 flood_screenshot_test(save_png_screenshot_test)
+
+# ---- a big open: the outline and the progress box with Cancel while it floods ---------------
+flood_screenshot_test(open_progress_test)

@@ -5,9 +5,10 @@ namespace flood::gdal {
 
 bool built() { return true; }
 
-ReadResult readAny(const std::string& path, const Selection& s, uint64_t maxBytes) {
+ReadResult readAny(const std::string& path, const Selection& s, uint64_t maxBytes,
+                   ReadProgress* progress) {
     if (handles(path, s)) return readPolygon(path, s);
-    return readPolygonFile(path, maxBytes);
+    return readPolygonFile(path, maxBytes, progress);
 }
 
 DatasetRead readAnyFeatures(const std::string& path, const Selection& s, uint64_t maxBytes,

@@ -15,8 +15,9 @@ Diagnostic refused(const std::string& path) {
 }
 }  // namespace
 
-ReadResult readAny(const std::string& path, const Selection& s, uint64_t maxBytes) {
-    if (!s.any()) return readPolygonFile(path, maxBytes);
+ReadResult readAny(const std::string& path, const Selection& s, uint64_t maxBytes,
+                   ReadProgress* progress) {
+    if (!s.any()) return readPolygonFile(path, maxBytes, progress);
     ReadResult r;
     r.diagnostic = refused(path);
     return r;

@@ -38,8 +38,11 @@ struct ReadResult {
 
 // Detects the format from the content. `name` is used in messages ("-" means stdin).
 ReadResult parsePolygon(std::string_view text, const std::string& name);
+// `progress`, when given, follows the bytes read (ReadProgress, below).
+struct ReadProgress;
 ReadResult readPolygonFile(const std::string& path,  // "-" reads stdin
-                           uint64_t maxBytes = kDefaultMaxInputBytes);
+                           uint64_t maxBytes = kDefaultMaxInputBytes,
+                           ReadProgress* progress = nullptr);
 
 // Well-known binary, as GEOS, shapely, PostGIS and OGR hand it out (the Python module reads
 // it): ISO WKB and PostGIS EWKB, either byte order, a Polygon or a MultiPolygon, z and m

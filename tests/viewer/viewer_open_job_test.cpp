@@ -1,0 +1,252 @@
+// The window's open in the background (viewer/open_job.h, Model::openInBackground): the
+// outline adopted before the flood, progress monotone to its total, Cancel at each phase,
+// a second open cancelling the first, a failing read's diagnostic, and the run adopted equal
+// to the synchronous open's. A Gate held by the open's hook stops it at a phase.
+#if __has_include("model.h")
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <condition_variable>
+#include <mutex>
+#include <thread>
+
+#include "model.h"
+#include "test_support.h"
+
+using namespace flood;
+using namespace flood::view;
+using namespace flood::testing;
+
+namespace {
+
+// Holds the open of `path` as `phase` begins, until released.
+struct Gate {
+    std::mutex mu;
+    std::condition_variable cv;
+    std::string path;
+    OpenPhase phase = OpenPhase::Done;
+    bool reached = false, released = false;
+    std::vector<std::pair<std::string, OpenPhase>> entered;  // every phase each open began
+
+    std::function<void(const std::string&, OpenPhase)> hook() {
+        return [this](const std::string& p, OpenPhase at) {
+            std::unique_lock<std::mutex> lock(mu);
+            entered.push_back({p, at});
+            if (p != path || at != phase) return;
+            reached = true;
+            cv.notify_all();
+            cv.wait(lock, [&] { return released; });
+        };
+    }
+    void waitReached() {
+        std::unique_lock<std::mutex> lock(mu);
+        ASSERT_TRUE(cv.wait_for(lock, std::chrono::seconds(60), [&] { return reached; }));
+    }
+    void release() {
+        std::lock_guard<std::mutex> lock(mu);
+        released = true;
+        cv.notify_all();
+    }
+    ~Gate() { release(); }  // never leave an open waiting
+};
+
+const std::string kComb = sourcePath("polygons/comb.json");
+
+size_t verticesIn(const std::string& path) { return readPolygonFile(path).polygon.vertices.size(); }
+
+}  // namespace
+
+TEST(OpenJob, OutlineIsAdoptedBeforeTheFlood) {
+    Gate gate;
+    gate.path = kComb, gate.phase = OpenPhase::Flood;
+    Model m;
+    m.openHook = gate.hook();
+    const uint64_t before = m.generation();
+    m.openInBackground(kComb);
+    gate.waitReached();
+    EXPECT_FALSE(m.pollOpen());  // not done: the outline only
+    ASSERT_TRUE(m.opening());
+    EXPECT_EQ(m.openPhase(), OpenPhase::Flood);
+    EXPECT_EQ(m.polygon().vertices.size(), verticesIn(kComb));
+    EXPECT_EQ(m.steps(), 0u);
+    EXPECT_EQ(m.path(), kComb);
+    EXPECT_GT(m.generation(), before);
+    const std::string n = std::to_string(verticesIn(kComb));
+    EXPECT_EQ(m.verdict(), "flooding... " + n + " vertices");
+    EXPECT_FALSE(m.failed());
+    gate.release();
+    m.waitOpen();
+    EXPECT_FALSE(m.opening());
+    Model sync;
+    sync.open(kComb);
+    EXPECT_GT(m.steps(), 0u);
+    EXPECT_EQ(m.steps(), sync.steps());
+    EXPECT_EQ(m.verdict(), sync.verdict());
+    EXPECT_EQ(m.trace().triangles.size(), sync.trace().triangles.size());
+    ASSERT_FALSE(m.recentFiles().empty());  // remembered, as open() does
+}
+
+TEST(OpenJob, InvalidAndTraceOpensEqualTheSynchronousOnes) {
+    const std::string trace = (scratch("open-job-trace") / "comb.jsonl").string();
+    {
+        Trace t = record(readPolygonFile(kComb).polygon);
+        std::ofstream out(trace);
+        writeTrace(out, t);
+    }
+    for (const std::string& file : {sourcePath("polygons/invalid/self-intersection.json"), trace,
+                                    sourcePath("polygons/invalid/checker-rejects.json"),
+                                    sourcePath("polygons/invalid/forbidden-left-behind.json")}) {
+        SCOPED_TRACE(file);
+        Model bg, sync;
+        bg.openInBackground(file);
+        bg.waitOpen();
+        sync.open(file);
+        EXPECT_EQ(bg.verdict(), sync.verdict());
+        EXPECT_EQ(bg.steps(), sync.steps());
+        EXPECT_EQ(bg.exitCode(), sync.exitCode());
+        EXPECT_EQ(bg.findings().size(), sync.findings().size());
+        EXPECT_EQ(bg.step(), sync.step());  // the landing on the forbidden step
+    }
+}
+
+TEST(OpenJob, ProgressIsMonotoneAndReachesTheTotal) {
+    Model m;
+    Gate gates[4];
+    // One gate per phase, each released in turn: the progress at each is where it stands.
+    std::function<void(const std::string&, OpenPhase)> hooks[4];
+    for (int k = 0; k < 4; ++k) {
+        gates[k].path = kComb, gates[k].phase = OpenPhase(k);
+        hooks[k] = gates[k].hook();
+    }
+    m.openHook = [&](const std::string& p, OpenPhase at) { hooks[int(at)](p, at); };
+    m.openInBackground(kComb);
+    uint32_t last = 0;
+    for (int k = 0; k < 4; ++k) {
+        gates[k].waitReached();
+        m.pollOpen();
+        EXPECT_EQ(m.openTotal(), 4 * OpenJob::kPerPhase);
+        EXPECT_GE(m.openProgress(), last);
+        EXPECT_EQ(m.openProgress(), uint32_t(k) * OpenJob::kPerPhase);
+        last = m.openProgress();
+        gates[k].release();
+    }
+    // To the end, polled as the window does: never back, the total at the last.
+    while (m.opening()) {
+        const uint32_t p = m.openProgress();
+        EXPECT_GE(p, last);
+        last = p;
+        if (m.pollOpen()) break;
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    EXPECT_GT(m.steps(), 0u);
+}
+
+TEST(OpenJob, ProgressReachesTheTotalWhenDone) {
+    Model m;
+    m.openInBackground(kComb);
+    // Done but not yet polled: the bar is full.
+    while (m.openProgress() < m.openTotal() || m.openTotal() == 0)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    EXPECT_EQ(m.openProgress(), 4 * OpenJob::kPerPhase);
+    m.waitOpen();
+    EXPECT_GT(m.steps(), 0u);
+}
+
+TEST(OpenJob, CancelWhileReadingKeepsWhatWasLoaded) {
+    Model m;
+    m.open(sourcePath("polygons/hole.json"));
+    const uint32_t steps = m.steps();
+    const std::string verdict = m.verdict();
+    const uint64_t generation = m.generation();
+    Gate gate;
+    gate.path = kComb, gate.phase = OpenPhase::Read;
+    m.openHook = gate.hook();
+    m.openInBackground(kComb);
+    gate.waitReached();
+    m.cancelOpen();
+    EXPECT_FALSE(m.opening());
+    gate.release();
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    EXPECT_FALSE(m.pollOpen());
+    EXPECT_EQ(m.path(), sourcePath("polygons/hole.json"));
+    EXPECT_EQ(m.steps(), steps);
+    EXPECT_EQ(m.verdict(), verdict);
+    EXPECT_EQ(m.generation(), generation);
+}
+
+TEST(OpenJob, CancelAfterTheReadKeepsTheOutlineNotFlooded) {
+    for (OpenPhase at : {OpenPhase::Validate, OpenPhase::Flood, OpenPhase::Check}) {
+        SCOPED_TRACE(openPhaseName(at));
+        Model m;
+        m.open(sourcePath("polygons/hole.json"));
+        Gate gate;
+        gate.path = kComb, gate.phase = at;
+        m.openHook = gate.hook();
+        m.openInBackground(kComb);
+        gate.waitReached();
+        m.pollOpen();  // the outline
+        m.cancelOpen();
+        gate.release();
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        m.pollOpen();
+        EXPECT_FALSE(m.opening());
+        EXPECT_EQ(m.path(), kComb);
+        EXPECT_EQ(m.polygon().vertices.size(), verticesIn(kComb));
+        EXPECT_EQ(m.steps(), 0u);
+        EXPECT_EQ(m.verdict(), "not flooded: the open was cancelled while " +
+                                   std::string(openPhaseName(at)) + " (" +
+                                   std::to_string(verticesIn(kComb)) + " vertices read)");
+        EXPECT_FALSE(m.failed());
+        // The job ended its phase in the background: nothing of it is adopted later.
+        m.waitOpen();
+        EXPECT_EQ(m.steps(), 0u);
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        std::lock_guard<std::mutex> lock(gate.mu);
+        for (const auto& [path, phase] : gate.entered) EXPECT_LE(int(phase), int(at));
+    }
+}
+
+TEST(OpenJob, ASecondOpenCancelsTheFirst) {
+    const std::string hole = sourcePath("polygons/hole.json");
+    Gate gate;
+    gate.path = kComb, gate.phase = OpenPhase::Flood;
+    {
+        Model m;
+        m.openHook = gate.hook();
+        m.openInBackground(kComb);
+        gate.waitReached();
+        m.openInBackground(hole);
+        m.waitOpen();  // the second, while the first is held
+        EXPECT_EQ(m.path(), hole);
+        EXPECT_GT(m.steps(), 0u);
+        gate.release();
+    }  // ~Model joins the first
+    for (const auto& [path, phase] : gate.entered)
+        if (path == kComb) {
+            EXPECT_LE(int(phase), int(OpenPhase::Flood));
+        }
+}
+
+TEST(OpenJob, AFailingReadReportsItsDiagnostic) {
+    const std::string missing = (scratch("open-job-missing") / "no-such.json").string();
+    Model empty;
+    empty.openInBackground(missing);
+    bool finished = false;
+    while (empty.opening()) finished |= empty.pollOpen();
+    EXPECT_TRUE(finished);
+    EXPECT_EQ(empty.openDiagnostic().status, Status::Malformed);
+    EXPECT_NE(empty.openDiagnostic().message.find(missing), std::string::npos);
+    EXPECT_EQ(empty.exitCode(), 3);
+    EXPECT_NE(empty.verdict().find("cannot open"), std::string::npos) << empty.verdict();
+
+    Model loaded;  // what was loaded stays
+    loaded.open(kComb);
+    const uint32_t steps = loaded.steps();
+    loaded.openInBackground(missing);
+    loaded.waitOpen();
+    EXPECT_EQ(loaded.path(), kComb);
+    EXPECT_EQ(loaded.steps(), steps);
+    EXPECT_NE(loaded.openDiagnostic().message.find(missing), std::string::npos);
+}
+
+#endif

@@ -304,7 +304,7 @@ if (bigFile) {
   }
   if (first !== null) pendingFrames = last - first;
   check(await evaluate("Module._flood_web_scanning()") === 0, `the invariant scan of ${big} ends`);
-  check(pendingFrames !== null && pendingFrames >= 3,
+  check(pendingFrames !== null && pendingFrames >= 2,
         `frames are drawn while the invariant scan runs (${pendingFrames} frames during it)`);
 }
 

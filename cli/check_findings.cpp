@@ -155,11 +155,11 @@ int writeFindings(const std::vector<Row*>& rows, const std::string& out) {
         std::cerr << "error: " << d.message << "\n";
         return int(d.status);
     }
-    std::cerr << "check: wrote " << grouped(items.size())
-              << (items.size() == 1 ? " finding" : " findings") << " to " << out
-              << " (layer findings) and " << grouped(edgeList.size())
-              << (edgeList.size() == 1 ? " culprit edge" : " culprit edges") << " to "
-              << (edgesOut.empty() ? out + " (layer finding_edges)" : edgesOut) << "\n";
+    note() << "check: wrote " << grouped(items.size())
+           << (items.size() == 1 ? " finding" : " findings") << " to " << out
+           << " (layer findings) and " << grouped(edgeList.size())
+           << (edgeList.size() == 1 ? " culprit edge" : " culprit edges") << " to "
+           << (edgesOut.empty() ? out + " (layer finding_edges)" : edgesOut) << "\n";
     return 0;
 }
 

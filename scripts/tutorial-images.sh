@@ -68,6 +68,17 @@ shot fig11-b                  invalid/fig11-b-ceiling.json   Forbidden 1
 # "Why does my face fail?": the face as it opens, then its error view (the E key).
 viewer polygons/tutorial/crossing-face.json --screenshot docs/img/why-fails-open.png --size 900x600
 viewer polygons/tutorial/crossing-face.json --show-error --screenshot docs/img/why-fails-error.png --size 900x600
+# The same question on a dataset, as QGIS shows it: `flood check --findings` over the data,
+# rendered by QGIS itself (Debian's python3-qgis; skipped without it).
+if /usr/bin/python3 -c 'import qgis.core' 2>/dev/null; then
+  findings=$(mktemp -d)
+  "$FLOOD" check polygons/datasets/mixed.geojson --findings "$findings/problems.gpkg" -q >/dev/null || true
+  /usr/bin/python3 scripts/qgis-picture.py polygons/datasets/mixed.geojson "$findings/problems.gpkg" \
+    docs/img/why-fails-qgis.png 900x600 2>/dev/null
+  rm -rf "$findings"
+else
+  echo "docs/img/why-fails-qgis.png kept: no python3-qgis (apt-get install python3-qgis qgis-providers)" >&2
+fi
 # Presenter mode (Tab) in the light theme, as a slide would show it.
 viewer polygons/paper-figure-7.json --presenter --theme light --step "$(step_after paper-figure-7.json Bridge 2)" \
   --screenshot docs/img/presenter-light.png --size 900x600

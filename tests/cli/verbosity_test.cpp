@@ -94,6 +94,15 @@ TEST(Verbosity, CheckQuietAndAFeatureALineWithV) {
     Outcome quiet = runFlood("check -q " + in.dataset);
     EXPECT_EQ(quiet.code, 4);
     EXPECT_EQ(quiet.err, "");
+    // Its outputs' summaries are notes too: said without -q, silent under it.
+    const std::string layer = (in.dir / "findings.geojson").string();
+    Outcome written = runFlood("check " + in.dataset + " --findings " + layer);
+    EXPECT_EQ(written.code, 4);
+    EXPECT_TRUE(has(written.err, "check: wrote 1 finding to " + layer)) << written.err;
+    Outcome writtenQuietly = runFlood("check -q " + in.dataset + " --findings " + layer);
+    EXPECT_EQ(writtenQuietly.code, 4);
+    EXPECT_EQ(writtenQuietly.err, "");
+    EXPECT_TRUE(fs::exists(layer));
     Outcome verbose = runFlood("check -v " + in.dataset);
     EXPECT_EQ(verbose.code, 4);
     EXPECT_TRUE(has(verbose.err, "check: " + in.dataset + ": feature 0: ok, 4 vertices\n"))

@@ -170,10 +170,13 @@ void readGeometry(ReadResult& rr, const std::string& name, const json& g, const 
                 });
                 continue;
             }
+            // Its polygons numbered within it, as `flood check` reads each feature alone: the
+            // place named is one the user finds in that feature.
+            int itemPolygons = 0;
             readGeometry(rr, name, *geom,
                          ctx + (type == "FeatureCollection" ? "feature " : "geometry ") +
                              std::to_string(i) + " ",
-                         polygonCount);
+                         itemPolygons);
         }
     } else {
         throw BadStructure{ctx + "unsupported GeoJSON type \"" + echo(type) +

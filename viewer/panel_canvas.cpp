@@ -715,10 +715,19 @@ void paintCanvas(Ui& ui, ImDrawList* dl) {
                     std::to_string(i + 1).c_str());
     }
     if (m.polygon().vertices.empty() && !ui.edit.on) {
-        const char* msg = m.inputDiagnostic().ok() ? "no polygon: open one (Ctrl+O or Open...)"
-                                                   : m.inputDiagnostic().message.c_str();
-        dl->AddText(ImVec2(float(area.x + 20 * s), float(area.y + 20 * s)),
-                    toImU32(palette::kCulprit), msg);
+        std::string msg = m.inputDiagnostic().ok() ? "no polygon: open one (Ctrl+O or Open...)"
+                                                   : m.inputDiagnostic().message;
+        const FeatureScan& scan = ui.features;
+        if (!m.inputDiagnostic().ok() && scan.path() == m.path() && scan.done() &&
+            scan.features().size() > 1)
+            msg += "\n\nIts " + std::to_string(scan.features().size()) +
+                   " features open one at a time: the Open panel lists them with their verdicts.";
+        // Wrapped to the canvas, a third of the way down: clear of the find and Edit bars.
+        const float margin = float(20 * s);
+        dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(),
+                    ImVec2(float(area.x) + margin, float(area.y + area.h / 3)),
+                    toImU32(palette::kCulprit), msg.c_str(), nullptr,
+                    std::max(1.f, float(area.w) - 2 * margin));
     }
     editOverlay(ui, dl);
     if (!m.errorView()) drawUpArrow(ui, dl);

@@ -19,10 +19,34 @@ static bool polygonDocument(const std::string& f) {
            (f.size() < 6 || f.compare(f.size() - 6, 6, ".jsonl") != 0);
 }
 
+// The features of the loaded file (or of a collection that failed to open whole: its
+// features are separate polygons), judged in the background: a dataset may hold thousands.
+// Listed when the panel is open; and a collection that cannot be read whole (one feature
+// broken) gets its list shown at once, as a GIS lists a layer's features, rather than an
+// empty canvas.
+static void scanFeatures(Ui& ui) {
+    Model& m = ui.model;
+    if (m.generation() != ui.featuresGeneration) {
+        const bool unreadable =
+            m.polygon().vertices.empty() && m.inputDiagnostic().status == Status::Malformed;
+        if (!ui.showOpen && !unreadable) return;  // chosen when the panel opens
+        ui.featuresGeneration = m.generation();
+        std::string file =
+            m.feature() == Model::kNoFeature ? m.path() : m.path().substr(0, m.path().rfind('#'));
+        if (polygonDocument(file) && ui.features.path() != file) ui.features.start(file);
+        ui.featuresOffered = unreadable;
+    }
+    if (ui.featuresOffered && ui.features.done()) {
+        ui.featuresOffered = false;
+        if (ui.features.features().size() > 1) ui.showOpen = true;
+    }
+}
+
 void drawOpen(Ui& ui) {
     Model& m = ui.model;
     if (m.galleryOpens() != ui.openPanel.galleryOpensSeen)  // a gallery file was opened
         ui.openPanel.galleryOpensSeen = m.galleryOpens(), ui.showOpen = true;
+    scanFeatures(ui);
     if (!ui.showOpen) return;
     if (!beginFloating(ui, "Open polygon", &ui.showOpen, 460, 420, 20, 20)) return;
     char* path = ui.openPanel.path;
@@ -32,14 +56,7 @@ void drawOpen(Ui& ui) {
     go |= ImGui::Button("Open");
     std::string chosen = go ? std::string(path) : std::string();
 
-    // The features of the loaded file (or of a collection that failed to open whole: its
-    // features are separate polygons), judged in the background: a dataset may hold thousands.
-    if (m.generation() != ui.featuresGeneration) {
-        ui.featuresGeneration = m.generation();
-        std::string file =
-            m.feature() == Model::kNoFeature ? m.path() : m.path().substr(0, m.path().rfind('#'));
-        if (polygonDocument(file) && ui.features.path() != file) ui.features.start(file);
-    }
+    scanFeatures(ui);  // the panel has just opened: its file's features
     size_t openFeature = Model::kNoFeature;
     const FeatureScan& scan = ui.features;
     if (!scan.path().empty() && (!scan.done() || !scan.features().empty()) &&

@@ -128,10 +128,11 @@ struct Ui {
     bool openFailed = false;              // the last open from the Open panel failed
     FeatureScan features;                 // the Open panel's verdicts of a collection's features
     uint64_t featuresGeneration = ~0ull;  // Model::generation() the scan was chosen for
-    ShrinkJob shrink;                     // the Shrink panel's background shrink
-    uint64_t shrinkGeneration = 0;        // Model::generation() the running shrink started from
-    char savePath[1024] = "";             // where the Shrink panel saves the repro
-    std::string shrinkNote;               // the Shrink panel's last outcome
+    bool featuresOffered = false;  // the scan is of a collection that failed whole: shown once done
+    ShrinkJob shrink;              // the Shrink panel's background shrink
+    uint64_t shrinkGeneration = 0;  // Model::generation() the running shrink started from
+    char savePath[1024] = "";       // where the Shrink panel saves the repro
+    std::string shrinkNote;         // the Shrink panel's last outcome
     // Presenter mode (panel_caption.cpp, style.cpp). `scale` is uiScale.value() each frame.
     UiScale uiScale;
     Theme theme = Theme::Dark;      // wanted; main applies a change between frames

@@ -71,6 +71,8 @@ flood_windowless_test(edit_input_test)
 
 # ---- the panels' per-trace state, kept per Ui (window-free ImGui, no display needed) ----------
 flood_windowless_test(ui_state_test panel_transcript.cpp panel_timeline.cpp)
+# ---- the Open panel: a collection that fails whole lists its features -----------------------
+flood_windowless_test(open_panel_test panel_open.cpp)
 
 # ---- the picture shows what the sentence says: Fig. 7 step 23 in presenter view -------------
 flood_screenshot_test(narration_screenshot_test)

@@ -14,8 +14,36 @@ SegmentVertex segment(Point a, Point b, Point o, Rgba c, float width) {
 }  // namespace
 
 CanvasGeometry buildCanvasGeometry(const Model& model) {
+    return buildCanvasGeometry(model.trace(), model.classes(), model.outlineOnly(),
+                               model.inputDiagnostic().ok());
+}
+
+namespace {
+std::shared_ptr<PreparedCanvas> prepared(CanvasGeometry g, const Trace& trace) {
+    auto c = std::make_shared<PreparedCanvas>();
+    c->grid.build(trace.polygon, trace.triangles);
+    c->vertexGrid.buildVertices(trace.polygon);
+    c->vertexMarkers = std::move(g.classes);
+    c->vertexMarkers.insert(c->vertexMarkers.end(), g.regular.begin(), g.regular.end());
+    g.regular = {};
+    c->geometry = std::move(g);
+    return c;
+}
+}  // namespace
+
+std::shared_ptr<PreparedCanvas> prepareCanvas(const PreparedRun& run) {
+    return prepared(buildCanvasGeometry(*run.trace, run.classes, !run.note.empty(), run.input.ok()),
+                    *run.trace);
+}
+
+std::shared_ptr<PreparedCanvas> prepareCanvas(const Model& model) {
+    return prepared(buildCanvasGeometry(model), model.trace());
+}
+
+CanvasGeometry buildCanvasGeometry(const Trace& trace, const std::vector<VertexClass>& classes,
+                                   bool outline, bool inputOk) {
     CanvasGeometry g;
-    const Polygon& poly = model.polygon();
+    const Polygon& poly = trace.polygon;
     const auto& v = poly.vertices;
     const Index n = Index(v.size());
     auto valid = [&](Index i) { return i < n; };
@@ -37,7 +65,7 @@ CanvasGeometry buildCanvasGeometry(const Model& model) {
 
     // Triangles keep their flood-order slot even when broken, so a step's triangles stay a
     // prefix; a broken one becomes degenerate (draws nothing).
-    const auto& tris = model.trace().triangles;
+    const auto& tris = trace.triangles;
     g.triangles.reserve(3 * tris.size());
     g.edges.reserve(6 * tris.size());
     for (const Triangle& t : tris) {
@@ -49,7 +77,7 @@ CanvasGeometry buildCanvasGeometry(const Model& model) {
 
     // An outline (its open still flooding) is drawn unfilled: the fans' even-odd fill costs a
     // software rasteriser seconds a frame at 10⁵ vertices (each fan triangle spans the face).
-    const bool fill = !model.outlineOnly();
+    const bool fill = !outline;
     for (const Ring& r : poly.rings) {
         if (r.first + r.count > n || r.count < 3) continue;
         for (Index i = 1; fill && i + 1 < r.count; ++i)
@@ -63,14 +91,13 @@ CanvasGeometry buildCanvasGeometry(const Model& model) {
     }
 
     // The replay appends (sag, bridgeTo) at each Bridge: step s shows a prefix of this list.
-    for (const Event& e : model.trace().events) {
+    for (const Event& e : trace.events) {
         if (e.action != Action::Bridge) continue;
         bool ok = valid(e.sag) && valid(e.bridgeTo);
         g.bridges.push_back(ok ? segment(v[e.sag], v[e.bridgeTo], o, palette::kBridge, 2)
                                : segment(o, o, o, palette::kBridge, 0));
     }
 
-    const auto& classes = model.classes();
     for (Index i = 0; i < n && i < classes.size(); ++i) {
         VertexClass c = classes[i];
         bool regular = c == VertexClass::Regular;
@@ -78,8 +105,7 @@ CanvasGeometry buildCanvasGeometry(const Model& model) {
             .push_back({g.positions[2 * i], g.positions[2 * i + 1], vertexClassColor(c),
                         regular ? 2.5f : 4.5f, float(Scene::Shape::Disc)});
     }
-    const Trace& trace = model.trace();
-    g.dryIsUncut = model.inputDiagnostic().ok() && trace.diagnostic.ok() && !tris.empty() &&
+    g.dryIsUncut = inputOk && trace.diagnostic.ok() && !tris.empty() &&
                    tris.size() == poly.expectedTriangles();
     return g;
 }
@@ -126,6 +152,75 @@ std::vector<MarkerVertex> thinMarkers(const std::vector<MarkerVertex>& markers, 
         kept.push_back(m);
     }
     return kept;
+}
+
+std::vector<uint32_t> pixelBoundary(const Polygon& polygon, const Camera& cam, double pixel) {
+    const auto& v = polygon.vertices;
+    const Rect& r = cam.viewport();
+    const int W = int(std::ceil(r.w / pixel)) + 2, H = int(std::ceil(r.h / pixel)) + 2;
+    if (v.empty() || W <= 2 || H <= 2) return {};
+    // The camera is affine: its map from world to pixel coordinates (a pixel's margin round
+    // the viewport), once.
+    const Point o = v.front();
+    const Vec2 at = cam.toScreen(o), ex = cam.toScreen({o.x + 1, o.y}),
+               ey = cam.toScreen({o.x, o.y + 1});
+    const double ix = (ex.x - at.x) / pixel, jx = (ex.y - at.y) / pixel;
+    const double iy = (ey.x - at.x) / pixel, jy = (ey.y - at.y) / pixel;
+    const double i0 = (at.x - r.x) / pixel + 1, j0 = (at.y - r.y) / pixel + 1;
+    auto map = [&](Point p) {
+        const double dx = p.x - o.x, dy = p.y - o.y;
+        return Vec2{i0 + dx * ix + dy * iy, j0 + dx * jx + dy * jy};
+    };
+    std::vector<uint8_t> inked(size_t(W) * size_t(H), 0);
+    // Walks the part of a-b on the grid a pixel at a time (8-connected, as a 1-pixel line is
+    // drawn), inking it; whether it is to be drawn: it inked an end's pixel or at least
+    // kFresh pixels no line before it had. (A line of a million spikes across a disc adds a
+    // pixel or two to what the lines before it drew: a hundredth of the picture, in all.)
+    constexpr int kFresh = 4;
+    auto walk = [&](Vec2 a, Vec2 b) {
+        // Clipped to the grid (Liang-Barsky): a line off it draws nothing on screen.
+        double t0 = 0, t1 = 1;
+        const double d[2] = {b.x - a.x, b.y - a.y}, lo[2] = {a.x, a.y};
+        const double hi[2] = {double(W), double(H)};
+        for (int k = 0; k < 2; ++k) {
+            if (!std::isfinite(lo[k]) || !std::isfinite(d[k])) return false;
+            if (d[k] == 0) {
+                if (lo[k] < 0 || lo[k] >= hi[k]) return false;
+                continue;
+            }
+            double ta = (0 - lo[k]) / d[k], tb = (hi[k] - lo[k]) / d[k];
+            if (ta > tb) std::swap(ta, tb);
+            t0 = std::max(t0, ta), t1 = std::min(t1, tb);
+        }
+        if (t0 > t1) return false;
+        const double x0 = a.x + d[0] * t0, y0 = a.y + d[1] * t0;
+        const double dx = d[0] * (t1 - t0), dy = d[1] * (t1 - t0);
+        const int steps = int(std::ceil(std::max(std::abs(dx), std::abs(dy))));
+        int fresh = 0;
+        bool end = false;
+        for (int k = 0; k <= steps; ++k) {
+            const double t = steps ? double(k) / steps : 0;
+            const int i = std::clamp(int(x0 + dx * t), 0, W - 1);
+            const int j = std::clamp(int(y0 + dy * t), 0, H - 1);
+            uint8_t& cell = inked[size_t(j) * size_t(W) + size_t(i)];
+            fresh += !cell;
+            end |= !cell && ((k == 0 && t0 == 0) || (k == steps && t1 == 1));
+            cell = 1;
+        }
+        return end || fresh >= kFresh;
+    };
+    std::vector<uint32_t> lines;
+    for (const Ring& g : polygon.rings) {
+        if (g.count < 2 || g.first + g.count > v.size()) continue;
+        Vec2 a = map(v[g.first]);
+        for (Index k = 0; k < g.count; ++k) {
+            const Index i = g.first + k, j = g.first + (k + 1) % g.count;
+            const Vec2 b = map(v[j]);
+            if (walk(a, b)) lines.insert(lines.end(), {i, j});
+            a = b;
+        }
+    }
+    return lines;
 }
 
 std::vector<uint32_t> visibleLabels(const TriangleGrid& grid, const Camera& cam, uint32_t count,

@@ -10,6 +10,7 @@
 // so panning and zooming never re-upload anything.
 #pragma once
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "canvas_vertices.h"
@@ -19,6 +20,9 @@
 
 namespace flood::view {
 
+// The world geometry of a run (an outline: no fill, see canvas_geometry.cpp); of the model's.
+CanvasGeometry buildCanvasGeometry(const Trace& trace, const std::vector<VertexClass>& classes,
+                                   bool outline, bool inputOk);
 CanvasGeometry buildCanvasGeometry(const Model& model);
 
 struct CanvasOverlay {
@@ -37,6 +41,15 @@ CanvasOverlay buildCanvasOverlay(const Model& model, const SceneOptions& options
 // Markers more than a cell outside the viewport are dropped. Positions are relative to `origin`.
 std::vector<MarkerVertex> thinMarkers(const std::vector<MarkerVertex>& markers, Point origin,
                                       const Camera& camera, double cell);
+
+// The rings' edges as GL_LINES indices (as CanvasGeometry::boundaryEdges), decimated to the
+// pixel grid of `camera`'s viewport (pixels `pixel` logical pixels wide): each edge is walked
+// a pixel at a time, as a 1-pixel line is drawn, and kept only when it inks the pixel of one
+// of its ends or at least four pixels no edge before it inked; an edge off the viewport is
+// dropped. So every vertex on screen still has its pixel inked, and a million spikes across a
+// disc at full zoom-out are a fifth of their lines for a software rasteriser, the picture the
+// same but for a pixel in several hundred.
+std::vector<uint32_t> pixelBoundary(const Polygon& polygon, const Camera& camera, double pixel);
 
 // Triangles bucketed by the grid cell of their centroid, so labels cost what is on screen,
 // not what the polygon holds. Vertices too (buildVertices): a vertex is its own "centroid"
@@ -81,6 +94,19 @@ bool TriangleGrid::forEach(Point lo, Point hi, uint32_t count, size_t cap, F f) 
             for (size_t k = 0, n = cut(i, j, b); k < n; ++k) f(b[k]);
     return true;
 }
+
+// What the canvas builds of a run before its GL upload, prepared with it (prepared_run.h):
+// its geometry (uploaded once, then dropped), the label grids and the vertex markers (classes
+// first, then regular) that are thinned per camera.
+struct PreparedCanvas {
+    CanvasGeometry geometry;
+    TriangleGrid grid;        // triangle labels by cell
+    TriangleGrid vertexGrid;  // vertex labels by cell
+    std::vector<MarkerVertex> vertexMarkers;
+};
+std::shared_ptr<PreparedCanvas> prepareCanvas(const PreparedRun& run);
+// The same of what the model shows (a canvas that missed the prepared one).
+std::shared_ptr<PreparedCanvas> prepareCanvas(const Model& model);
 
 // The labels to draw: the first `count` items of `grid` in the camera's viewport whose screen
 // area is at least `minArea` px²; none when more than a screenful of them (4 per minArea of

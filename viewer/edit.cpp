@@ -15,7 +15,7 @@ namespace flood::view {
 // [SECTION] Model's side of an edit
 Model::EditedRun Model::floodEdit(Polygon polygon, const std::string& name, Up up) {
     EditedRun run;
-    floodRun(std::move(polygon), name, up, run);  // as an open floods, off the UI thread
+    floodRun(std::move(polygon), name, up, run);  // as an open floods and prepares its run
     return run;
 }
 
@@ -26,17 +26,17 @@ void Model::adoptEdit(EditedRun run, bool deferScan) {
     const size_t feature = feature_;
     const std::string origin = origin_, originName = originName_;
     const size_t originFeature = originFeature_;
-    cancelInvariants();                   // the scan reads the trace about to be replaced
-    if (!(run.trace.up == trace_->up)) {  // the dial turned: the direction panel compares
+    cancelInvariants();                    // the scan reads the trace about to be replaced
+    if (!(run.trace->up == trace_->up)) {  // the dial turned: the direction panel compares
         previousSummary_ = summary();
         hasPrevious_ = true;
-        up_ = run.trace.up;
+        up_ = run.trace->up;
     }
     ++generation_;
     openDiag_ = {};
     warnings_.clear();
     deferScan_ = deferScan;
-    adoptRun(std::move(run));
+    adopt(std::move(run));
     // What adopt() resets for an open stays as the user left it.
     feature_ = feature;
     origin_ = origin, originName_ = originName, originFeature_ = originFeature;
@@ -410,17 +410,26 @@ void Editor::reflood() {
 void Editor::startJob() {
     ++floods_;
     dirty_ = false;
-    job_.start([this, polygon = polygon_, name = name_, up = up_](
-                   Job&) mutable { jobResult_ = Model::floodEdit(std::move(polygon), name, up); },
-               [this] {
-                   if (onReady) onReady();
-               });
+    // floodEdit's phases a step each: the page draws between them (job.h).
+    auto steps = std::make_shared<RunSteps>(polygon_, name_, up_);
+    job_.startSteps(
+        [this, steps](Job&) {
+            if (steps->next() == OpenPhase::Done) {
+                jobResult_ = steps->take();
+                return false;
+            }
+            steps->step();
+            return true;
+        },
+        [this] {
+            if (onReady) onReady();
+        });
 }
 
 void Editor::finishJob() {
     job_.wait();
     // Adopted only if the model still shows what this editor edits.
-    if (generation_ == model_.generation()) {
+    if (generation_ == model_.generation() && jobResult_.trace) {  // a whole run
         model_.adoptEdit(std::move(jobResult_), gesture_ || dirty_);
         generation_ = model_.generation();
     }

@@ -55,12 +55,10 @@ int main(int argc, char** argv) {
         double t1 = now();
         model.adoptEdit(std::move(run), true);  // as in a drag: the invariant scan waits
         double t2 = now();
-        // What the canvas then rebuilds on the UI thread before the GL upload (panel_canvas.cpp).
-        CanvasGeometry g = buildCanvasGeometry(model);
-        TriangleGrid labels, vertexLabels;
-        labels.build(model.polygon(), model.trace().triangles);
-        vertexLabels.buildVertices(model.polygon());
-        CanvasOverlay o = buildCanvasOverlay(model, {}, g.origin);
+        // What the canvas then does on the UI thread before the GL upload (panel_canvas.cpp):
+        // takes the arrays prepared with the flood, builds the step's overlay.
+        std::shared_ptr<PreparedCanvas> prepared = model.takeCanvas();
+        CanvasOverlay o = buildCanvasOverlay(model, {}, prepared->geometry.origin);
         double t3 = now();
         flood.push_back(t1 - t0), adopt.push_back(t2 - t1), canvas.push_back(t3 - t2),
             total.push_back(t3 - t0);
@@ -70,12 +68,13 @@ int main(int argc, char** argv) {
                 model.trace().triangles.size(), model.failed() ? "FAILED" : "valid");
     std::printf("flood-edit-bench: edit -> new trace ready, median / max of %d edits (ms):\n",
                 edits);
-    std::printf("  flood (validate, record, exact checker; background thread) %.1f / %.1f\n",
-                median(flood), maximum(flood));
-    std::printf("  adopt (classes, transcript, keyframes; UI thread) %.1f / %.1f\n", median(adopt),
+    std::printf(
+        "  flood (validate, record, exact checker, prepare; background thread) %.1f / %.1f\n",
+        median(flood), maximum(flood));
+    std::printf("  adopt (the prepared run moved in; UI thread) %.1f / %.1f\n", median(adopt),
                 maximum(adopt));
-    std::printf("  canvas buffers (geometry, label grids, overlay; UI thread) %.1f / %.1f\n",
-                median(canvas), maximum(canvas));
+    std::printf("  canvas (the step's overlay; UI thread) %.1f / %.1f\n", median(canvas),
+                maximum(canvas));
     std::printf("  total %.1f / %.1f\n", median(total), maximum(total));
     model.cancelInvariants();
     return model.failed() ? 1 : 0;

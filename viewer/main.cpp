@@ -562,6 +562,9 @@ int runScreenshot(Ui& ui, const Args& args, Styled& styled) {
             if (args.printLayout)
                 std::printf("flood-viewer: camera %.17g %.17g %.17g\n", cam.center().x,
                             cam.center().y, cam.scale());
+            if (args.printLayout && ui.canvas.pixelBoundaryLines)  // decimated (pixelBoundary)
+                std::printf("flood-viewer: boundary %zu lines for %zu vertices\n",
+                            ui.canvas.pixelBoundaryLines, model.polygon().vertices.size());
             // The picture is written; the exit code still says what the input was.
             exitCode = !ok || exitCode == int(Status::WriteFailed) ? int(Status::WriteFailed)
                                                                    : model.exitCode();

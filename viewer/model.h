@@ -52,31 +52,7 @@ using flood::vertexClassName;
 // Text views of the log: an event in one line (flood/teach/describe.h), the transcript's items
 // (flood/teach/transcript.h).
 
-// ----------------------------------------------------------------------------------------
-// The verdict, one line per finding, of the core's kinds (flood/check/verdict.h). Ok only
-// when the exact checker passed on valid input; every failure (malformed, invalid input,
-// forbidden state, checker rejection, internal) has its own line, drawn red. A note (the
-// checker accepting the triangles of invalid input) is an Ok line drawn grey.
-struct VerdictLine {
-    Verdict kind = Verdict::Ok;
-    std::string text;
-    bool note = false;
-    bool failure() const { return kind != Verdict::Ok; }
-};
-
-// One finding of the open face, as the findings panel lists it: a validation finding
-// (validateAll, the first being validate()'s verdict), the forbidden transition, the exact
-// checker's rejection, an internal failure or an unreadable file.
-struct Finding {
-    Verdict kind = Verdict::Invalid;
-    std::string message;    // the diagnostic's whole line
-    std::string where;      // "ring R vertex V (x, y)", "step N", "triangle T", or ""
-    std::string reason;     // what is wrong, the location apart
-    Culprits culprits;      // what it blames (drawn thick in the error view)
-    bool hasPoint = false;  // `point` is where it is (diagnosticPoint, any vertex)
-    Point point;
-    uint32_t step = kNone;  // the step it shows at; kNone: none (or not known yet)
-};
+// The verdict's lines and the findings: prepared_run.h (VerdictLine, Finding).
 
 // ----------------------------------------------------------------------------------------
 class Model {
@@ -124,6 +100,8 @@ public:
     // open() and openFeature() read through GDAL; "" = the only layer, every feature. Set
     // without GDAL, an open fails (Usage) saying so rather than ignoring them.
     std::string gisLayer, gisWhere;
+    // Floods `polygon` under `name`, its input's verdict given (validated already, or not at
+    // all as --no-validate: then flooded as it is), as the open of a file does.
     void openPolygon(Polygon polygon, const std::string& name, Diagnostic input,
                      std::vector<std::string> warnings = {});
     // The feature of FID `index` (FeatureRead::fid: a GeoJSON's position in "features", or
@@ -294,13 +272,16 @@ public:
     uint32_t forbiddenStep() const { return forbiddenStep_; }
     // How often event `to` follows event `from` in the trace (the state machine's edges),
     // counted once per open.
-    using Transitions =
-        std::array<std::array<uint32_t, size_t(Action::Count)>, size_t(Action::Count)>;
+    using Transitions = view::Transitions;  // prepared_run.h
     const Transitions& transitions() const { return transitions_; }
 
     // Invariant lane: flood/check/invariants.h run over the trace in a background thread, started
     // by every open. Results are readable once done; progress counts the steps checked.
     bool invariantsDone() const;
+    // What the lane may say: nothing while what is loaded is an open's outline (no run yet, or
+    // none: cancelled), else the scan checking, cancelled, or done with or without violations.
+    enum class InvariantStatus { NoRun, Checking, Cancelled, NoneBroken, Broken };
+    InvariantStatus invariantStatus() const;
     uint32_t invariantProgress() const { return scan_.progress(); }
     const std::vector<Violation>& violations() const;  // empty until done
     uint32_t firstViolationStep() const;               // 0 until done or when none
@@ -312,7 +293,7 @@ public:
 
     // Live editing (viewer/edit.h). An edited polygon validated and flooded: touches no
     // Model state, so it may run in a background thread.
-    using EditedRun = FloodedRun;  // open_job.h: what floodRun computes
+    using EditedRun = PreparedRun;  // prepared_run.h: what floodRun computes and prepares
     static EditedRun floodEdit(Polygon polygon, const std::string& name, Up up = Up::PlusY);
     // Makes `run` the loaded run under the same name. Unlike an open, the step (clamped to
     // the new trace), the camera and the timeline stay, and no landing moves the step.
@@ -331,6 +312,9 @@ public:
     FloodSummary summary() const { return summarizeFlood(*trace_, classes_); }
     const FloodSummary& previousSummary() const { return previousSummary_; }
     bool hasPreviousSummary() const { return hasPrevious_; }
+    // The canvas's arrays and label grids prepared with the run last adopted, for the canvas
+    // to take and upload (null once taken; prepareCanvas(model) builds them again).
+    std::shared_ptr<PreparedCanvas> takeCanvas() { return std::move(canvas_); }
 
 private:
     Camera camera_;
@@ -343,7 +327,6 @@ private:
     bool playing_ = false;
     double speed_ = 8;
     Transitions transitions_{};
-    void countTransitions();
     Up up_ = Up::PlusY;  // the direction opens flood along
     FloodSummary previousSummary_;
     bool hasPrevious_ = false;
@@ -357,19 +340,20 @@ private:
     mutable std::vector<Index> chainBefore_;
     mutable uint64_t chainBeforeFor_ = ~0ull;  // generation and step of chainBefore_
     uint64_t inspectedFor_ = ~0ull;            // generation and step of inspection_
-    void computeOffenders();
-    std::string computeVerdict() const;
-    // Makes `trace` the loaded run; a `note` (an open under way) is its verdict instead.
-    void adopt(std::unique_ptr<Trace> trace, std::string note = {});
-    void adoptRun(EditedRun run);       // what an open or edit computed off the UI thread
-    std::string note_;                  // the verdict of an outline: its open's phase, or cancelled
-    std::unique_ptr<OpenJob> opening_;  // the open under way
+    // Makes `run` the loaded run (its note, an open under way, is its verdict instead).
+    void adopt(PreparedRun run);
+    void setVerdict(RunVerdict v);
+    // The synchronous open: `name` opened, its run computed (floodRun, judgeTrace) and adopted.
+    void adoptOpen(const std::string& name, std::vector<std::string> warnings, PreparedRun run);
+    void failedOpen(const std::string& path, const Diagnostic& why);
+    std::string note_;  // the verdict of an outline: its open's phase, or cancelled
+    std::shared_ptr<PreparedCanvas> canvas_;         // the run's, until the canvas takes it
+    std::unique_ptr<OpenJob> opening_;               // the open under way
     std::vector<std::unique_ptr<OpenJob>> retired_;  // cancelled opens ending their phase
     bool outlineShown_ = false;                      // opening_'s outline is adopted
     void adoptOutline();
     void adoptOpened();
     void setNote(std::string note);
-    void computeVerdictLines();
     void remember(const std::string& path);
     Diagnostic openDiag_;
     std::string galleryDir_;
@@ -378,14 +362,11 @@ private:
     std::string origin_, originName_;  // the shrunk polygon's source file, and its display name
     size_t originFeature_ = kNoFeature;
     CheckResult check_;
-    std::optional<Judgement> judged_;  // adoptEdit: the judge already ran with the flood
     bool deferScan_ = false, scanWaiting_ = false;  // adoptEdit's deferred invariant scan
     std::vector<VerdictLine> verdictLines_;
     std::vector<Finding> findings_;
     size_t findingsOmitted_ = 0, currentFinding_ = 0;
     bool findingsComplete_ = true;
-    std::optional<Findings> validated_;  // adoptEdit: validateAll already ran with the flood
-    void computeFindings();
     uint32_t findingStep(const Finding& f) const;
     Culprits error_;
     uint32_t firstErrorStep_ = kNone;

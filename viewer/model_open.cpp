@@ -60,21 +60,24 @@ void Model::open(const std::string& file) {
         r.diagnostic = {Status::Malformed, path + ": " + ex.what()};
     }
     if (!r.diagnostic.ok()) {
-        // A failed open keeps what was loaded; with nothing loaded, the failure is the verdict.
-        openDiag_ = r.diagnostic;
-        if (trace_->polygon.vertices.empty()) {
-            openPolygon({}, path, r.diagnostic);
-            openDiag_ = r.diagnostic;
-        }
+        failedOpen(path, r.diagnostic);
         return;
     }
-    if (isTrace) {
-        openTrace(std::move(t), path);
-    } else {
-        Diagnostic d = validate(r.polygon, path);
-        openPolygon(std::move(r.polygon), path, d, std::move(r.warnings));
-    }
+    // What the window's open runs in its job (open_job.h), here at once.
+    PreparedRun run;
+    if (isTrace) judgeTrace(std::move(t), path, run);
+    else floodRun(std::move(r.polygon), path, up_, run);
+    adoptOpen(path, std::move(r.warnings), std::move(run));
     remember(path);
+}
+
+// A failed open keeps what was loaded; with nothing loaded, the failure is the verdict.
+void Model::failedOpen(const std::string& path, const Diagnostic& why) {
+    openDiag_ = why;
+    if (trace_->polygon.vertices.empty()) {
+        openPolygon({}, path, why);
+        openDiag_ = why;
+    }
 }
 
 void Model::remember(const std::string& path) {
@@ -88,37 +91,28 @@ void Model::remember(const std::string& path) {
 }
 
 void Model::openTrace(Trace trace, const std::string& name) {
-    playing_ = false;
-    ++generation_;
-    path_ = name;
-    openDiag_ = {};
-    warnings_.clear();
     // The trace holds the run; validation of a copy only says whether its input was valid.
-    Polygon copy = trace.polygon;
-    input_ = copy.vertices.empty() ? Diagnostic{} : validate(copy, name);
-    up_ = trace.up;
-    adopt(std::make_unique<Trace>(std::move(trace)));
+    PreparedRun run;
+    judgeTrace(std::move(trace), name, run);
+    adoptOpen(name, {}, std::move(run));
 }
 
 void Model::openPolygon(Polygon polygon, const std::string& name, Diagnostic input,
                         std::vector<std::string> warnings) {
+    PreparedRun run;
+    floodRun(std::move(polygon), name, up_, run, {}, std::move(input));
+    adoptOpen(name, std::move(warnings), std::move(run));
+}
+
+void Model::adoptOpen(const std::string& name, std::vector<std::string> warnings, PreparedRun run) {
     playing_ = false;
     ++generation_;
     path_ = name;
-    openDiag_ = input.status == Status::Malformed ? input : Diagnostic{};
-    input_ = std::move(input);
+    openDiag_ = run.input.status == Status::Malformed ? run.input : Diagnostic{};
     warnings_ = std::move(warnings);
-    cancelInvariants();  // the scan reads the trace about to be replaced
-    auto trace = std::make_unique<Trace>();
-    if (!polygon.vertices.empty()) {
-        try {
-            *trace = record(polygon, Options{up_});
-        } catch (const std::exception& ex) {
-            trace->diagnostic = {Status::Internal, name + ": " + ex.what()};
-        }
-    }
-    trace->polygon = std::move(polygon);
-    adopt(std::move(trace));
+    up_ = run.trace->up;  // a trace's, as recorded
+    cancelInvariants();   // the scan reads the trace about to be replaced
+    adopt(std::move(run));
 }
 
 // ---- the window's open, in the background (open_job.h) ----------------------------------
@@ -144,16 +138,10 @@ OpenPhase Model::openPhase() const { return opening_ ? opening_->phase() : OpenP
 uint32_t Model::openProgress() const { return opening_ ? opening_->progress() : 0; }
 uint32_t Model::openTotal() const { return opening_ ? opening_->total() : 0; }
 
-// The outline's verdict while its open goes on: the phase, and how big the polygon is.
-static std::string phaseNote(OpenPhase p, size_t vertices) {
-    return std::string(openPhaseName(p)) + "... " + std::to_string(vertices) + " vertices";
-}
-
+// An outline's verdict is its note alone (prepared_run.h).
 void Model::setNote(std::string note) {
     note_ = std::move(note);
-    computeVerdictLines();
-    computeFindings();
-    verdict_ = computeVerdict();
+    setVerdict(noteVerdict(note_));
 }
 
 void Model::adoptOutline() {
@@ -162,14 +150,12 @@ void Model::adoptOutline() {
     ++generation_;
     path_ = j.request().path;
     openDiag_ = {};
-    input_ = {};
     warnings_ = j.warnings();
-    cancelInvariants();  // the scan reads the trace about to be replaced
-    auto trace = std::make_unique<Trace>();
-    trace->polygon = j.takeOutline();
-    trace->up = up_;
-    const size_t n = trace->polygon.vertices.size();
-    adopt(std::move(trace), phaseNote(std::max(j.phase(), OpenPhase::Validate), n));
+    cancelInvariants();      // the scan reads the trace about to be replaced
+    adopt(j.takeOutline());  // prepared by the job, its note "validating... N vertices"
+    const std::string note =
+        openNote(std::max(j.phase(), OpenPhase::Validate), trace_->polygon.vertices.size());
+    if (note != note_) setNote(note);
     outlineShown_ = true;
 }
 
@@ -177,15 +163,10 @@ void Model::adoptOpened() {
     OpenJob& j = *opening_;
     // The outline was fitted already: a view the user moved meanwhile stays.
     const bool fit = !outlineShown_ || needsFit_;
-    playing_ = false;
-    ++generation_;
-    path_ = j.request().path;
-    warnings_ = j.warnings();
-    cancelInvariants();
-    FloodedRun& run = j.run();
-    openDiag_ = run.input.status == Status::Malformed ? run.input : Diagnostic{};
-    if (j.request().trace) up_ = run.trace.up;
-    adoptRun(std::move(run));
+    const bool trace = j.request().trace;
+    const Up up = up_;
+    adoptOpen(j.request().path, j.warnings(), j.takeRun());
+    if (!trace) up_ = up;  // a polygon's open floods along the dial's direction, kept
     needsFit_ = fit;
     remember(j.request().path);
 }
@@ -201,22 +182,14 @@ bool Model::pollOpen() {
     if (!done) {
         if (phase == OpenPhase::Read) return false;
         if (!outlineShown_) adoptOutline();
-        else if (const std::string note = phaseNote(phase, trace_->polygon.vertices.size());
+        else if (const std::string note = openNote(phase, trace_->polygon.vertices.size());
                  note != note_)
             setNote(note);
         return false;
     }
     const Diagnostic& read = j.readDiagnostic();
-    if (!read.ok()) {
-        // As open(): what was loaded stays; with nothing loaded, the failure is the verdict.
-        openDiag_ = read;
-        if (trace_->polygon.vertices.empty()) {
-            openPolygon({}, j.request().path, read);
-            openDiag_ = read;
-        }
-    } else {
-        adoptOpened();
-    }
+    if (!read.ok()) failedOpen(j.request().path, read);  // as open()
+    else adoptOpened();
     opening_.reset();
     outlineShown_ = false;
     return true;
@@ -285,8 +258,9 @@ bool Model::openFeature(const std::string& path, size_t index) {
         openDiag_ = f.read.diagnostic;
         return false;
     }
-    Diagnostic v = validate(f.read.polygon, name);
-    openPolygon(std::move(f.read.polygon), name, v, std::move(f.read.warnings));
+    PreparedRun run;
+    floodRun(std::move(f.read.polygon), name, up_, run);
+    adoptOpen(name, std::move(f.read.warnings), std::move(run));
     feature_ = index;
     remember(path);
     return true;
@@ -295,9 +269,9 @@ bool Model::openFeature(const std::string& path, size_t index) {
 void Model::openShrunk(const ShrinkResult& result) {
     const std::string from = path_;
     const size_t fromFeature = feature_;
-    Polygon p = result.polygon;
-    Diagnostic v = validate(p, from + " (shrunk)");
-    openPolygon(std::move(p), from + " (shrunk)", v);
+    PreparedRun run;
+    floodRun(result.polygon, from + " (shrunk)", up_, run);
+    adoptOpen(from + " (shrunk)", {}, std::move(run));
     // What it came from: a file (the feature's file for "FILE#N"), one click away.
     originName_ = from;
     origin_ = fromFeature == kNoFeature ? from : from.substr(0, from.rfind('#'));

@@ -1,4 +1,4 @@
-// An open as a background job: read, validate, flood, check (open_job.h).
+// An open as a background job: read, validate, flood, check, prepare (open_job.h).
 #include "open_job.h"
 
 #include <utility>
@@ -14,56 +14,103 @@ const char* openPhaseName(OpenPhase p) {
         case OpenPhase::Validate: return "validating";
         case OpenPhase::Flood: return "flooding";
         case OpenPhase::Check: return "checking";
+        case OpenPhase::Prepare: return "preparing";
         case OpenPhase::Done: break;
     }
     return "done";
 }
 
-static bool go(const EnterPhase& enter, OpenPhase p) { return !enter || enter(p); }
+std::string openNote(OpenPhase p, size_t vertices) {
+    return std::string(openPhaseName(p)) + "... " + std::to_string(vertices) + " vertices";
+}
 
-// Every finding of an invalid input, beside validate()'s verdict (off the UI thread, as the
-// flood is).
+// ---- RunSteps ---------------------------------------------------------------------------
+RunSteps::RunSteps(Polygon polygon, std::string name, Up up, std::optional<Diagnostic> given)
+    : name_(std::move(name)), up_(up), polygon_(std::move(polygon)) {
+    run_.trace.up = up;  // an empty canvas too: the dial's direction is kept
+    if (given) {
+        run_.input = std::move(*given);
+        // Not validated here; its findings are still every finding of an invalid input.
+        if (!run_.input.ok() && !polygon_.vertices.empty())
+            run_.findings = validateAll(polygon_, name_);
+    } else {
+        polygon_.splits.clear();  // validate() finds the polygon's own T-junctions
+    }
+    next_ = polygon_.vertices.empty() ? OpenPhase::Prepare
+            : given                   ? OpenPhase::Flood
+                                      : OpenPhase::Validate;
+}
+
+RunSteps::RunSteps(Trace trace, std::string name)
+    : name_(std::move(name)), up_(trace.up), recorded_(true) {
+    run_.trace = std::move(trace);
+}
+
+OpenPhase RunSteps::after(OpenPhase p) const {
+    if (p == OpenPhase::Validate && recorded_) return OpenPhase::Check;
+    return OpenPhase(int(p) + 1);
+}
+
+// Every finding of an invalid input, beside validate()'s verdict.
 static void validateInto(Polygon& polygon, const std::string& name, FloodedRun& run) {
     run.input = validate(polygon, name);
     if (!run.input.ok()) run.findings = validateAll(polygon, name);
 }
 
-bool floodRun(Polygon polygon, const std::string& name, Up up, FloodedRun& run,
-              const EnterPhase& enter) {
-    polygon.splits.clear();  // validate() finds the polygon's own T-junctions
-    run.trace.up = up;       // an empty canvas too: the dial's direction is kept
-    if (!polygon.vertices.empty()) {
-        if (!go(enter, OpenPhase::Validate)) return false;
-        validateInto(polygon, name, run);
-        if (!go(enter, OpenPhase::Flood)) return false;
-        try {
-            run.trace = record(polygon, Options{up});
-        } catch (const std::exception& ex) {
-            run.trace.diagnostic = {Status::Internal, name + ": " + ex.what()};
-        }
-        // The exact checker is the costly half of adopting a run: judged here too.
-        if (!go(enter, OpenPhase::Check)) return false;
-        run.judged = judgeRun(polygon, run.trace.triangles, run.trace.diagnostic, name);
+void RunSteps::step() {
+    const Trace& T = run_.trace;
+    switch (next_) {
+        case OpenPhase::Validate:
+            if (!recorded_) {
+                validateInto(polygon_, name_, run_);
+            } else if (!T.polygon.vertices.empty()) {
+                Polygon copy = T.polygon;  // the trace holds the run: its polygon stays as recorded
+                validateInto(copy, name_, run_);
+            }
+            break;
+        case OpenPhase::Flood: try { run_.trace = record(polygon_, Options{up_});
+            } catch (const std::exception& ex) {
+                run_.trace.diagnostic = {Status::Internal, name_ + ": " + ex.what()};
+            }
+            break;
+        case OpenPhase::Check:
+            // The exact checker is the costly half of judging a run: here, off the UI thread.
+            if (!recorded_ || !T.polygon.vertices.empty() || !T.diagnostic.ok())
+                run_.judged =
+                    judgeRun(recorded_ ? T.polygon : polygon_, T.triangles, T.diagnostic, name_);
+            break;
+        case OpenPhase::Prepare:
+            if (!recorded_) {
+                run_.trace.polygon = std::move(polygon_);
+                run_.trace.up = up_;
+            }
+            prepared_ = prepareRun(std::move(run_), name_);
+            break;
+        case OpenPhase::Read:
+        case OpenPhase::Done: return;
     }
-    run.trace.polygon = std::move(polygon);
-    run.trace.up = up;
+    next_ = after(next_);
+}
+
+static bool runAll(RunSteps& steps, PreparedRun& run, const EnterPhase& enter) {
+    for (OpenPhase p; (p = steps.next()) != OpenPhase::Done; steps.step())
+        if (enter && !enter(p)) return false;
+    run = steps.take();
     return true;
 }
 
-bool judgeTrace(Trace trace, const std::string& name, FloodedRun& run, const EnterPhase& enter) {
-    if (!go(enter, OpenPhase::Validate)) return false;
-    if (!trace.polygon.vertices.empty()) {
-        Polygon copy = trace.polygon;  // the trace holds the run: its polygon stays as recorded
-        validateInto(copy, name, run);
-    }
-    if (!go(enter, OpenPhase::Check)) return false;
-    const Polygon& P = trace.polygon;
-    if (!P.vertices.empty() || !trace.diagnostic.ok())
-        run.judged = judgeRun(P, trace.triangles, trace.diagnostic, name);
-    run.trace = std::move(trace);
-    return true;
+bool floodRun(Polygon polygon, const std::string& name, Up up, PreparedRun& run,
+              const EnterPhase& enter, std::optional<Diagnostic> given) {
+    RunSteps steps(std::move(polygon), name, up, std::move(given));
+    return runAll(steps, run, enter);
 }
 
+bool judgeTrace(Trace trace, const std::string& name, PreparedRun& run, const EnterPhase& enter) {
+    RunSteps steps(std::move(trace), name);
+    return runAll(steps, run, enter);
+}
+
+// ---- OpenJob ----------------------------------------------------------------------------
 void OpenJob::start(Request request) {
     request_ = std::move(request);
     phase_.store(int(OpenPhase::Read), std::memory_order_release);
@@ -71,8 +118,8 @@ void OpenJob::start(Request request) {
     outline_ = {};
     warnings_.clear();
     complete_ = false;
-    run_ = {};
-    job_.start([this](Job& job) { work(job); });
+    steps_.reset();
+    job_.startSteps([this](Job& job) { return step(job); });
 }
 
 bool OpenJob::enter(Job& job, OpenPhase p) {
@@ -82,10 +129,32 @@ bool OpenJob::enter(Job& job, OpenPhase p) {
     return !job.cancelRequested();
 }
 
-void OpenJob::work(Job& job) {
-    job.setTotal(uint64_t(OpenPhase::Done) * kPerPhase);
+void OpenJob::finish(Job& job) {
+    job.setProgress(job.total());
+    phase_.store(int(OpenPhase::Done), std::memory_order_release);
+}
+
+bool OpenJob::step(Job& job) {
+    if (!steps_) {
+        job.setTotal(kTotal);
+        if (!enter(job, OpenPhase::Read)) return false;
+        read(job);
+        if (!steps_) finish(job);  // the read failed: read_ says why
+        return steps_.has_value();
+    }
+    const OpenPhase p = steps_->next();
+    if (p == OpenPhase::Done) {
+        complete_ = true;
+        finish(job);
+        return false;
+    }
+    if (!enter(job, p)) return false;
+    steps_->step();
+    return true;
+}
+
+void OpenJob::read(Job& job) {
     const std::string& path = request_.path;
-    if (!enter(job, OpenPhase::Read)) return;
     // The bytes read move the bar through the read's share (a 10⁶-vertex face is ~40 MB).
     ReadProgress reading;
     reading.changed = [&] {
@@ -103,20 +172,17 @@ void OpenJob::work(Job& job) {
         r.diagnostic = {Status::Malformed, path + ": " + ex.what()};
     }
     read_ = r.diagnostic;
-    if (!read_.ok()) {
-        job.setProgress(job.total());
-        phase_.store(int(OpenPhase::Done), std::memory_order_release);
-        return;
-    }
+    if (!read_.ok()) return;
     warnings_ = std::move(r.warnings);
-    // The outline to show meanwhile: a copy, since validation records T-junctions in its own.
-    outline_ = request_.trace ? trace.polygon : r.polygon;
-    auto next = [&](OpenPhase p) { return enter(job, p); };
-    complete_ = request_.trace ? judgeTrace(std::move(trace), path, run_, next)
-                               : floodRun(std::move(r.polygon), path, request_.up, run_, next);
-    if (!complete_) return;
-    job.setProgress(job.total());
-    phase_.store(int(OpenPhase::Done), std::memory_order_release);
+    // The outline to show meanwhile, prepared here too: a copy of the polygon, since
+    // validation records T-junctions in its own.
+    FloodedRun outline;
+    outline.trace.polygon = request_.trace ? trace.polygon : r.polygon;
+    outline.trace.up = request_.trace ? trace.up : request_.up;
+    const size_t n = outline.trace.polygon.vertices.size();
+    outline_ = prepareRun(std::move(outline), path, openNote(OpenPhase::Validate, n));
+    if (request_.trace) steps_.emplace(std::move(trace), path);
+    else steps_.emplace(std::move(r.polygon), path, request_.up);
 }
 
 }  // namespace flood::view

@@ -1,6 +1,6 @@
-// Opening a file in the window (issue 26 §4): read, validate, flood and check run as one Job
-// (job.h), so a face of 10⁶ vertices shows its outline as soon as it is read and the window
-// stays live while it floods. Model::openInBackground starts it and Model::pollOpen adopts
+// Opening a file in the window (issue 26 §4): read, validate, flood, check and prepare run as
+// one Job (job.h), a phase a step, so a face of 10⁶ vertices shows its outline as soon as it
+// is read and the window (the page too, between phases) stays live while it floods. Model::openInBackground starts it and Model::pollOpen adopts
 // what it has ready; Model::open stays the synchronous path (tests, scripts, screenshots).
 #pragma once
 #include <atomic>
@@ -13,33 +13,52 @@
 #include "flood/io/io.h"
 #include "flood/log/replay.h"
 #include "job.h"
+#include "prepared_run.h"
 
 namespace flood::view {
 
 // The phases of an open, in order. A trace read from a file has no Flood phase.
-enum class OpenPhase : int { Read, Validate, Flood, Check, Done };
-const char* openPhaseName(OpenPhase p);  // "reading", "validating", "flooding", "checking", "done"
-
-// A run computed off the UI thread, for the model to adopt (Model::adoptEdit, an open's
-// Model::pollOpen): the trace, the input's verdict, the judge's and every finding.
-struct FloodedRun {
-    Trace trace;       // trace.polygon: the polygon flooded, its T-junctions recorded
-    Diagnostic input;  // the validator's verdict on it
-    std::optional<Judgement> judged;  // judgeRun on the run, unless nothing was flooded
-    Findings findings;                // validateAll's, when `input` is invalid
-};
+enum class OpenPhase : int { Read, Validate, Flood, Check, Prepare, Done };
+// "reading", "validating", "flooding", "checking", "preparing", "done"
+const char* openPhaseName(OpenPhase p);
+// An outline's verdict while its open goes on: "flooding... N vertices".
+std::string openNote(OpenPhase p, size_t vertices);
 
 // Called before each phase with it; false stops the run there (a cancelled open).
 using EnterPhase = std::function<bool(OpenPhase)>;
 
-// Validates, floods (invalid polygons too: the viewer shows where the machine stops) and
-// judges `polygon`; an empty polygon is an empty canvas, not an invalid one. False when
-// `enter` stopped it (the run is then incomplete and not to be adopted).
-bool floodRun(Polygon polygon, const std::string& name, Up up, FloodedRun& run,
-              const EnterPhase& enter = {});
-// The same for a recorded trace: its polygon validated (a copy: the trace is the run) and
-// its triangles judged.
-bool judgeTrace(Trace trace, const std::string& name, FloodedRun& run,
+// floodRun and judgeTrace cut at their phases, one a step (a Job's steps: its thread on the
+// desktop, between frames in the page), the last preparing the run (prepared_run.h).
+class RunSteps {
+public:
+    // A polygon to validate, flood (invalid polygons too: the viewer shows where the machine
+    // stops) and judge; an empty polygon is an empty canvas, not an invalid one. `given`: the
+    // input's verdict already known (validated, or not at all as --no-validate): the polygon
+    // is flooded as it is, its T-junctions as recorded.
+    RunSteps(Polygon polygon, std::string name, Up up, std::optional<Diagnostic> given = {});
+    // A recorded trace: its polygon validated (a copy: the trace is the run), its triangles
+    // judged.
+    RunSteps(Trace trace, std::string name);
+    OpenPhase next() const { return next_; }  // the phase step() runs; Done: none is left
+    void step();
+    PreparedRun take() { return std::move(prepared_); }  // once next() is Done
+
+private:
+    OpenPhase after(OpenPhase p) const;
+    std::string name_;
+    Up up_;
+    bool recorded_ = false;  // a trace: no Flood phase
+    Polygon polygon_;        // to flood
+    FloodedRun run_;
+    PreparedRun prepared_;
+    OpenPhase next_ = OpenPhase::Validate;
+};
+
+// RunSteps run whole: false when `enter` stopped them (the run is then incomplete and not
+// to be adopted).
+bool floodRun(Polygon polygon, const std::string& name, Up up, PreparedRun& run,
+              const EnterPhase& enter = {}, std::optional<Diagnostic> given = {});
+bool judgeTrace(Trace trace, const std::string& name, PreparedRun& run,
                 const EnterPhase& enter = {});
 
 class OpenJob {
@@ -54,6 +73,7 @@ public:
         std::function<void(const std::string& path, OpenPhase)> onPhase;
     };
     static constexpr uint32_t kPerPhase = 1000;  // progress units a phase is worth
+    static constexpr uint32_t kTotal = uint32_t(OpenPhase::Done) * kPerPhase;
 
     void start(Request request);
     const Request& request() const { return request_; }
@@ -68,24 +88,26 @@ public:
     uint32_t total() const { return job_.total(); }
 
     // Once phase() is past Read: the read's verdict and, when it read, the polygon as read
-    // (the outline to show while the rest runs), its warnings and size.
+    // prepared as an outline (to show while the rest runs), its warnings.
     const Diagnostic& readDiagnostic() const { return read_; }
-    Polygon takeOutline() { return std::move(outline_); }
+    PreparedRun takeOutline() { return std::move(outline_); }
     const std::vector<std::string>& warnings() const { return warnings_; }
     // Once done(): whether every phase ran (not cancelled, the read succeeded), and the run.
     bool complete() const { return complete_; }
-    FloodedRun& run() { return run_; }
+    PreparedRun takeRun() { return steps_->take(); }
 
 private:
-    void work(Job& job);
+    bool step(Job& job);  // the read, then a phase of steps_ a call
+    void read(Job& job);
     bool enter(Job& job, OpenPhase p);
+    void finish(Job& job);
     Request request_;
     std::atomic<int> phase_{int(OpenPhase::Read)};
     Diagnostic read_;
-    Polygon outline_;
+    PreparedRun outline_;
     std::vector<std::string> warnings_;
     bool complete_ = false;
-    FloodedRun run_;
+    std::optional<RunSteps> steps_;  // once read
     Job job_;  // declared last, so it is joined before what its work writes is destroyed
 };
 

@@ -9,6 +9,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <string>
 
 #include "geometry/number_text.h"
@@ -25,6 +26,25 @@ namespace {
 // Side of a cell of the marker thinning grid, in pixels before UI scale: nearly four radii
 // of a class dot, so where thinning bites the dots cover a quarter of the screen at most.
 constexpr double kMarkerCell = 16;
+// From this many vertices the thin boundary is decimated to the pixel grid (pixelBoundary):
+// below it a face draws every edge, as the pixel tests' small faces always have.
+constexpr size_t kPixelBoundaryFrom = 20000;
+
+// The thin boundary for the camera: decimated when that leaves at most half the edges, else
+// none (every edge drawn). FLOOD_VIEWER_EXACT_BOUNDARY=1 draws every edge (a test's baseline,
+// and the exact picture should one be wanted).
+std::vector<uint32_t> decimatedBoundary(const Model& m) {
+    static const bool exact = [] {
+        const char* e = std::getenv("FLOOD_VIEWER_EXACT_BOUNDARY");
+        return e && *e && std::string(e) != "0";
+    }();
+    const Polygon& P = m.polygon();
+    if (exact || P.vertices.size() < kPixelBoundaryFrom) return {};
+    const float ratio = std::max(ImGui::GetIO().DisplayFramebufferScale.x, 1.f);
+    std::vector<uint32_t> lines = pixelBoundary(P, m.camera(), 1.0 / ratio);
+    if (lines.size() > P.vertices.size()) return {};  // more than half of the 2n indices
+    return lines;
+}
 
 void canvasInput(Ui& ui) {
     Model& m = ui.model;
@@ -95,20 +115,23 @@ void canvasInput(Ui& ui) {
     }
 }
 
-// Uploads what changed since the last frame: the whole geometry after an open, the overlay
-// after a step or a display option changed.
+// Uploads what changed since the last frame: the whole geometry after an open (prepared with
+// the run, off the UI thread: prepared_run.h), the overlay after a step or a display option
+// changed.
 void syncBuffers(Ui& ui) {
     Model& m = ui.model;
     CanvasState& cs = ui.canvas;
     if (cs.generation != m.generation()) {
-        CanvasGeometry g = buildCanvasGeometry(m);
+        std::shared_ptr<PreparedCanvas> prepared = m.takeCanvas();
+        if (!prepared) prepared = prepareCanvas(m);
+        PreparedCanvas& p = *prepared;
+        const CanvasGeometry& g = p.geometry;
         ui.renderer.setGeometry(g);
         cs.origin = g.origin;
         std::copy(g.bbox, g.bbox + 4, cs.bbox);
-        cs.grid.build(m.polygon(), m.trace().triangles);
-        cs.vertexGrid.buildVertices(m.polygon());
-        cs.vertexMarkers = std::move(g.classes);
-        cs.vertexMarkers.insert(cs.vertexMarkers.end(), g.regular.begin(), g.regular.end());
+        cs.grid = std::move(p.grid);
+        cs.vertexGrid = std::move(p.vertexGrid);
+        cs.vertexMarkers = std::move(p.vertexMarkers);
         cs.generation = m.generation();
         cs.overlayStep = ~0u;
     }
@@ -135,6 +158,9 @@ void syncBuffers(Ui& ui) {
         std::vector<MarkerVertex> overlay = thinMarkers(gorges, cs.origin, cam, cell);
         overlay.insert(overlay.end(), all.begin() + cs.overlay.gorgeMarkers, all.end());
         ui.renderer.setMarkers(thinMarkers(cs.vertexMarkers, cs.origin, cam, cell), overlay);
+        const std::vector<uint32_t> boundary = decimatedBoundary(m);
+        ui.renderer.setPixelBoundary(boundary);
+        cs.pixelBoundaryLines = boundary.size() / 2;
     }
 }
 

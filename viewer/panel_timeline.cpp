@@ -123,26 +123,33 @@ void strip(Ui& ui) {
     }
 }
 
-// The invariant lane's status: progress while the background scan runs, then what it found.
+// The invariant lane's status: progress while the background scan runs, then what it found;
+// nothing is claimed of an open's outline, which has no run.
 void invariantStatus(Ui& ui) {
     Model& m = ui.model;
     if (m.landOnFirstViolation())
         ui.message = "moved to the first broken invariant (the machine stops later)";
-    if (!m.invariantsDone()) {
-        ImGui::TextDisabled("invariants: checking step %u of %u", m.invariantProgress(), m.steps());
-        ImGui::SameLine();
-        if (ImGui::SmallButton("Cancel##invariants")) m.cancelInvariants();
-        return;
+    using S = Model::InvariantStatus;
+    switch (m.invariantStatus()) {
+        case S::NoRun:
+            ImGui::TextDisabled(m.opening() ? "invariants: checked once it is flooded"
+                                            : "invariants: not checked (not flooded)");
+            return;
+        case S::Checking:
+            ImGui::TextDisabled("invariants: checking step %u of %u", m.invariantProgress(),
+                                m.steps());
+            ImGui::SameLine();
+            if (ImGui::SmallButton("Cancel##invariants")) m.cancelInvariants();
+            return;
+        case S::Cancelled:
+            ImGui::TextDisabled("invariants: cancelled at step %u", m.invariantProgress());
+            return;
+        case S::NoneBroken:
+            ImGui::TextColored(toImVec4(palette::kOk), "invariants: none broken");
+            return;
+        case S::Broken: break;
     }
     const std::vector<Violation>& v = m.violations();
-    if (m.invariantProgress() < m.steps() && v.empty()) {
-        ImGui::TextDisabled("invariants: cancelled at step %u", m.invariantProgress());
-        return;
-    }
-    if (v.empty()) {
-        ImGui::TextColored(toImVec4(palette::kOk), "invariants: none broken");
-        return;
-    }
     ImGui::TextColored(ImVec4(1, 0.55f, 0.2f, 1),
                        "invariants: %zu steps break one; first at step %u: %s (%s)", v.size(),
                        v.front().step, invariantName(v.front().which), v.front().detail.c_str());

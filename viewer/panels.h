@@ -43,6 +43,7 @@ struct CanvasState {
     TriangleGrid vertexGrid;                  // vertex labels by cell
     std::vector<MarkerVertex> vertexMarkers;  // classes first, then regular: thinned per camera
     std::array<double, 8> thinKey{};  // camera centre x, y, scale, viewport w, h, x, y, step
+    size_t pixelBoundaryLines = 0;    // the thin boundary's lines when decimated, 0: every edge
     CanvasOverlay overlay;
     WorldView view;  // what Renderer::render draws this frame
     // Hover picking is a scan of the polygon: redo it only when something moved.

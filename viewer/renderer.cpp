@@ -166,7 +166,7 @@ bool Renderer::init(std::string* error) {
     glGenBuffers(GLsizei(buf_.size()), buf_.data());
     glGenVertexArrays(GLsizei(wvao_.size()), wvao_.data());
     // Triangles, edges and fans index the shared positions; the cover quad has its own.
-    for (Buffer b : {Triangles, Edges, Fans, Cover, BoundaryEdges}) {
+    for (Buffer b : {Triangles, Edges, Fans, Cover, BoundaryEdges, PixelBoundary}) {
         glBindVertexArray(wvao_[b]);
         glBindBuffer(GL_ARRAY_BUFFER, buf_[b == Cover ? Cover : Positions]);
         glEnableVertexAttribArray(0);
@@ -206,9 +206,19 @@ void Renderer::setGeometry(const CanvasGeometry& g) {
     put(Boundary, GL_ARRAY_BUFFER, g.boundary, g.boundary.size());
     put(Bridges, GL_ARRAY_BUFFER, g.bridges, g.bridges.size());
     put(BoundaryEdges, GL_ELEMENT_ARRAY_BUFFER, g.boundaryEdges, g.boundaryEdges.size());
+    count_[PixelBoundary] = 0;  // the last geometry's, for its camera: the canvas sets it again
     dryIsUncut_ = g.dryIsUncut;
     glBindVertexArray(0);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
+void Renderer::setPixelBoundary(const std::vector<uint32_t>& lines) {
+    if (!screen_.id) return;
+    glBindVertexArray(wvao_[PixelBoundary]);  // an element buffer is VAO state
+    upload(GL_ELEMENT_ARRAY_BUFFER, buf_[PixelBoundary], lines.data(),
+           lines.size() * sizeof(lines[0]));
+    count_[PixelBoundary] = lines.size();
+    glBindVertexArray(0);
 }
 
 void Renderer::setOverlay(const std::vector<SegmentVertex>& lines) {
@@ -330,7 +340,8 @@ void Renderer::drawWorld(const WorldView& v, Vec2 windowSize, float pixelRatio) 
 
     if (v.thinBoundary) {
         setColor(world_.color, palette::kBoundary);
-        elements(BoundaryEdges, GL_LINES, 0, count_[BoundaryEdges]);
+        const Buffer b = count_[PixelBoundary] ? PixelBoundary : BoundaryEdges;
+        elements(b, GL_LINES, 0, count_[b]);
     }
 
     useWorld(segment_, v, windowSize);

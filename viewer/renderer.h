@@ -45,6 +45,9 @@ public:
 
     // World-space buffers: the trace's once when it is opened, the overlay when the step changes.
     void setGeometry(const CanvasGeometry& g);
+    // The thin boundary drawn instead of every edge (pixelBoundary: decimated for the current
+    // camera); empty: every edge.
+    void setPixelBoundary(const std::vector<uint32_t>& lines);
     // The overlay's lines (CanvasOverlay::lines); its markers come from setMarkers.
     void setOverlay(const std::vector<SegmentVertex>& lines);
     // The markers thinned for the current camera (thinMarkers): the vertices' and the overlay's.
@@ -87,6 +90,7 @@ private:
         Cover,
         Boundary,
         BoundaryEdges,
+        PixelBoundary,
         Bridges,
         Classes,
         Regular,

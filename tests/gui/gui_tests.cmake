@@ -94,3 +94,6 @@ flood_screenshot_test(save_png_screenshot_test)
 
 # ---- a big open: the outline and the progress box with Cancel while it floods ---------------
 flood_screenshot_test(open_progress_test)
+
+# ---- a 10^5-vertex outline: its boundary decimated to the pixel grid draws what every edge does
+flood_screenshot_test(outline_pixels_test)

@@ -1,6 +1,6 @@
 // GUI test (issue 26 §4, big faces open at once): while an open runs in the background, the
 // outline is on the canvas and a box over the canvas shows the progress bar (ImGui's
-// PlotHistogram colour, about half full as the flood begins: two of four phases done) and the
+// PlotHistogram colour, two fifths full as the flood begins: two of five phases done) and the
 // Cancel button; at 1280x800 and, in presenter view, at a projector's 1024x768. The open is
 // held as its flood begins by FLOOD_VIEWER_HOLD_OPEN (viewer/main.cpp), as a 10⁶-vertex face
 // would be for seconds. The pictures stay in the build directory (open-progress-*.png).
@@ -58,7 +58,7 @@ int check(int W, int H, const std::string& extra) {
     stbi_image_free(px);
     std::printf("%s: box %.0f %.0f %.0f x %.0f, %ld fill, %ld button, %ld outline pixels\n",
                 what.c_str(), box.x, box.y, box.w, box.h, fill, button, polygon);
-    // About half the bar (less the Cancel button) is filled: two of the four phases.
+    // Two fifths of the bar (less the Cancel button) is filled: two of the five phases.
     const double barArea = (box.w * 0.5) * 12;
     if (fill < barArea * 0.5) return failWith(what + ": the progress bar is not drawn half full");
     if (button < 100) return failWith(what + ": no Cancel button");

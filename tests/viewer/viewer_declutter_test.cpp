@@ -3,6 +3,8 @@
 #if __has_include("model.h")
 #include <gtest/gtest.h>
 
+#include <set>
+
 #include "viewer_model_support.h"  // the model, the tests' helpers
 
 // [SECTION] declutter at scale: marker thinning and label culling, without a window
@@ -34,6 +36,101 @@ struct DenseFace {
 };
 
 }  // namespace
+
+// The boundary decimated to the pixel grid (pixelBoundary): at the fit of 10^5 spikes across a
+// disc a fraction of the lines, every line an edge of a ring; every vertex on screen has its
+// pixel (or, as rasterisers choose, a neighbour) inked by a line kept, and the pixels the kept
+// lines ink are those all edges ink but for at most 1 in 100. Zoomed in on a few vertices the
+// lines off screen go; a small face keeps every edge.
+TEST(ViewerDeclutter, PixelBoundaryInksThePixelsTheEdgesDo) {
+    DenseFace f(100000);
+    const Polygon& P = f.m.polygon();
+    // The pixels of the viewport (and a pixel round it) segments pass through, sampled a
+    // quarter pixel apart.
+    struct Ink {
+        const Camera& c;
+        int W, H;
+        std::vector<uint8_t> px;
+        Ink(const Camera& cam)
+            : c(cam),
+              W(int(cam.viewport().w) + 2),
+              H(int(cam.viewport().h) + 2),
+              px(size_t(W) * H, 0) {}
+        uint8_t* at(Vec2 s) {
+            const int i = int(std::floor(s.x - c.viewport().x)) + 1,
+                      j = int(std::floor(s.y - c.viewport().y)) + 1;
+            return i < 0 || j < 0 || i >= W || j >= H ? nullptr : &px[size_t(j) * W + i];
+        }
+        void line(Vec2 p, Vec2 q) {
+            // Only the part within two pixels of the viewport is sampled.
+            const Rect& r = c.viewport();
+            double t0 = 0, t1 = 1;
+            const double d[2] = {q.x - p.x, q.y - p.y}, o[2] = {p.x, p.y};
+            const double lo[2] = {r.x - 2, r.y - 2}, hi[2] = {r.x + r.w + 2, r.y + r.h + 2};
+            for (int k = 0; k < 2; ++k) {
+                if (d[k] == 0) {
+                    if (o[k] < lo[k] || o[k] > hi[k]) return;
+                    continue;
+                }
+                double a = (lo[k] - o[k]) / d[k], b = (hi[k] - o[k]) / d[k];
+                if (a > b) std::swap(a, b);
+                t0 = std::max(t0, a), t1 = std::min(t1, b);
+            }
+            if (t0 > t1) return;
+            const double len = (t1 - t0) * std::max(std::abs(d[0]), std::abs(d[1]));
+            const int n = int(4 * len) + 1;
+            for (int k = 0; k <= n; ++k) {
+                const double t = t0 + (t1 - t0) * k / n;
+                if (uint8_t* b = at({p.x + d[0] * t, p.y + d[1] * t})) *b = 1;
+            }
+        }
+        bool near(Vec2 s) {
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx)
+                    if (uint8_t* b = at({s.x + dx, s.y + dy}); b && *b) return true;
+            return false;
+        }
+    };
+    auto check = [&](const Camera& c, const std::vector<uint32_t>& lines) {
+        ASSERT_EQ(lines.size() % 2, 0u);
+        Ink kept(c), all(c);
+        for (size_t k = 0; k + 1 < lines.size(); k += 2) {
+            ASSERT_LT(lines[k + 1], P.vertices.size());
+            const Ring& g = P.rings[P.ringOf(lines[k])];
+            EXPECT_EQ(lines[k + 1], lines[k] + 1 == g.first + g.count ? g.first : lines[k] + 1);
+            kept.line(c.toScreen(P.vertices[lines[k]]), c.toScreen(P.vertices[lines[k + 1]]));
+        }
+        size_t shown = 0, missed = 0;
+        for (const Ring& g : P.rings)
+            for (Index v = g.first; v < g.first + g.count; ++v) {
+                const Index w = v + 1 == g.first + g.count ? g.first : v + 1;
+                all.line(c.toScreen(P.vertices[v]), c.toScreen(P.vertices[w]));
+                const Vec2 s = c.toScreen(P.vertices[v]);
+                if (!c.viewport().contains(s)) continue;
+                ++shown;
+                missed += !kept.near(s);
+            }
+        EXPECT_GT(shown, 0u);
+        EXPECT_EQ(missed, 0u) << "of " << shown << " vertices on screen";
+        size_t inked = 0, lost = 0, extra = 0;
+        for (size_t k = 0; k < all.px.size(); ++k)
+            inked += all.px[k], lost += all.px[k] && !kept.px[k], extra += kept.px[k] && !all.px[k];
+        EXPECT_EQ(extra, 0u);
+        EXPECT_LE(lost * 100, inked) << lost << " of " << inked << " pixels";
+    };
+    const std::vector<uint32_t> fit = pixelBoundary(P, f.fit, 1);
+    EXPECT_LT(fit.size() / 2, P.vertices.size() / 3);  // 800x600: a fraction of 10^5 lines
+    check(f.fit, fit);
+    const Camera in = f.zoomedOn(500, 200);
+    const std::vector<uint32_t> zoomed = pixelBoundary(P, in, 1);
+    check(in, zoomed);
+    EXPECT_LT(zoomed.size() / 2, P.vertices.size() / 3);  // the edges off screen dropped
+    Model square;
+    square.openPolygon(squareWithHole(false, false), "square", {});
+    Camera c;
+    c.fit(square.polygon(), f.view);
+    EXPECT_EQ(pixelBoundary(square.polygon(), c, 1), buildCanvasGeometry(square).boundaryEdges);
+}
 
 TEST(ViewerDeclutter, ThinningKeepsAtMostOneMarkerPerCellAndAllWhenZoomedIn) {
     DenseFace f(20000);

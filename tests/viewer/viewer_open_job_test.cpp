@@ -10,6 +10,7 @@
 #include <mutex>
 #include <thread>
 
+#include "canvas_geometry.h"
 #include "model.h"
 #include "test_support.h"
 
@@ -74,9 +75,13 @@ TEST(OpenJob, OutlineIsAdoptedBeforeTheFlood) {
     const std::string n = std::to_string(verticesIn(kComb));
     EXPECT_EQ(m.verdict(), "flooding... " + n + " vertices");
     EXPECT_FALSE(m.failed());
+    // The outline has no run: the invariant lane claims nothing of it (not "none broken").
+    EXPECT_EQ(m.invariantStatus(), Model::InvariantStatus::NoRun);
     gate.release();
     m.waitOpen();
     EXPECT_FALSE(m.opening());
+    m.waitForInvariants();
+    EXPECT_EQ(m.invariantStatus(), Model::InvariantStatus::NoneBroken);
     Model sync;
     sync.open(kComb);
     EXPECT_GT(m.steps(), 0u);
@@ -110,21 +115,22 @@ TEST(OpenJob, InvalidAndTraceOpensEqualTheSynchronousOnes) {
 }
 
 TEST(OpenJob, ProgressIsMonotoneAndReachesTheTotal) {
+    constexpr int kPhases = int(OpenPhase::Done);  // read, validate, flood, check, prepare
     Model m;
-    Gate gates[4];
+    Gate gates[kPhases];
     // One gate per phase, each released in turn: the progress at each is where it stands.
-    std::function<void(const std::string&, OpenPhase)> hooks[4];
-    for (int k = 0; k < 4; ++k) {
+    std::function<void(const std::string&, OpenPhase)> hooks[kPhases];
+    for (int k = 0; k < kPhases; ++k) {
         gates[k].path = kComb, gates[k].phase = OpenPhase(k);
         hooks[k] = gates[k].hook();
     }
     m.openHook = [&](const std::string& p, OpenPhase at) { hooks[int(at)](p, at); };
     m.openInBackground(kComb);
     uint32_t last = 0;
-    for (int k = 0; k < 4; ++k) {
+    for (int k = 0; k < kPhases; ++k) {
         gates[k].waitReached();
         m.pollOpen();
-        EXPECT_EQ(m.openTotal(), 4 * OpenJob::kPerPhase);
+        EXPECT_EQ(m.openTotal(), kPhases * OpenJob::kPerPhase);
         EXPECT_GE(m.openProgress(), last);
         EXPECT_EQ(m.openProgress(), uint32_t(k) * OpenJob::kPerPhase);
         last = m.openProgress();
@@ -147,7 +153,7 @@ TEST(OpenJob, ProgressReachesTheTotalWhenDone) {
     // Done but not yet polled: the bar is full.
     while (m.openProgress() < m.openTotal() || m.openTotal() == 0)
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    EXPECT_EQ(m.openProgress(), 4 * OpenJob::kPerPhase);
+    EXPECT_EQ(m.openProgress(), OpenJob::kTotal);
     m.waitOpen();
     EXPECT_GT(m.steps(), 0u);
 }
@@ -175,7 +181,8 @@ TEST(OpenJob, CancelWhileReadingKeepsWhatWasLoaded) {
 }
 
 TEST(OpenJob, CancelAfterTheReadKeepsTheOutlineNotFlooded) {
-    for (OpenPhase at : {OpenPhase::Validate, OpenPhase::Flood, OpenPhase::Check}) {
+    for (OpenPhase at :
+         {OpenPhase::Validate, OpenPhase::Flood, OpenPhase::Check, OpenPhase::Prepare}) {
         SCOPED_TRACE(openPhaseName(at));
         Model m;
         m.open(sourcePath("polygons/hole.json"));
@@ -197,12 +204,53 @@ TEST(OpenJob, CancelAfterTheReadKeepsTheOutlineNotFlooded) {
                                    std::string(openPhaseName(at)) + " (" +
                                    std::to_string(verticesIn(kComb)) + " vertices read)");
         EXPECT_FALSE(m.failed());
+        EXPECT_EQ(m.invariantStatus(), Model::InvariantStatus::NoRun);  // nothing flooded
         // The job ended its phase in the background: nothing of it is adopted later.
         m.waitOpen();
         EXPECT_EQ(m.steps(), 0u);
         std::this_thread::sleep_for(std::chrono::milliseconds(50));
         std::lock_guard<std::mutex> lock(gate.mu);
         for (const auto& [path, phase] : gate.entered) EXPECT_LE(int(phase), int(at));
+    }
+}
+
+// Everything of the run but its GL upload is prepared in the job (prepared_run.h): while the
+// job prepares, the window still shows the outline; then pollOpen moves in the replay's
+// keyframes and the canvas's arrays and grids, the same as the synchronous open prepares.
+TEST(OpenJob, TheRunArrivesPreparedAsTheSynchronousOpenPreparesIt) {
+    for (const std::string& file : {kComb, sourcePath("polygons/invalid/self-intersection.json")}) {
+        SCOPED_TRACE(file);
+        Gate gate;
+        gate.path = file, gate.phase = OpenPhase::Prepare;
+        Model bg;
+        bg.openHook = gate.hook();
+        bg.openInBackground(file);
+        gate.waitReached();
+        EXPECT_FALSE(bg.pollOpen());
+        EXPECT_TRUE(bg.outlineOnly());  // the outline, prepared in the job too
+        std::shared_ptr<PreparedCanvas> outline = bg.takeCanvas();
+        ASSERT_TRUE(outline);
+        EXPECT_TRUE(outline->geometry.triangles.empty());
+        EXPECT_TRUE(outline->geometry.fans.empty());  // an outline is not filled
+        EXPECT_EQ(outline->geometry.positions.size(), 2 * verticesIn(file));
+        gate.release();
+        bg.waitOpen();
+        Model sync;
+        sync.open(file);
+        EXPECT_FALSE(bg.outlineOnly());
+        EXPECT_EQ(bg.verdict(), sync.verdict());
+        EXPECT_EQ(bg.keyframeCount(), sync.keyframeCount());
+        EXPECT_GT(bg.keyframeCount(), 0u);
+        EXPECT_EQ(bg.transcript().size(), sync.transcript().size());
+        EXPECT_EQ(bg.classes(), sync.classes());
+        std::shared_ptr<PreparedCanvas> a = bg.takeCanvas(), b = sync.takeCanvas();
+        ASSERT_TRUE(a && b);
+        EXPECT_EQ(a->geometry.triangles, b->geometry.triangles);
+        EXPECT_EQ(a->geometry.triangles.size(), 3 * bg.trace().triangles.size());
+        EXPECT_EQ(a->geometry.positions, b->geometry.positions);
+        EXPECT_EQ(a->geometry.fans, b->geometry.fans);
+        EXPECT_EQ(a->vertexMarkers.size(), bg.polygon().vertices.size());
+        EXPECT_FALSE(bg.takeCanvas());  // taken once: the canvas owns it now
     }
 }
 

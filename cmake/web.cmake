@@ -107,3 +107,18 @@ function(flood_web_page target)
   set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${CMAKE_SOURCE_DIR}/web/shell.html
                ${CMAKE_SOURCE_DIR}/web/pre.js ${polygons})
 endfunction()
+
+# The page's shrinker (viewer/shrink_worker.h): the flood CLI linked once more, for a Web
+# Worker, as site/shrink-worker.js and .wasm. web/shrink_worker.js runs `flood shrink` in it on
+# the bytes the page posts; a crash there ends the worker, not the page. Built with the page.
+function(flood_web_shrink_worker page)
+  add_executable(flood-shrink-worker ${CMAKE_SOURCE_DIR}/cli/flood.cpp)
+  target_link_libraries(flood-shrink-worker PRIVATE floodcli)
+  set_target_properties(flood-shrink-worker PROPERTIES OUTPUT_NAME shrink-worker SUFFIX .js
+                        RUNTIME_OUTPUT_DIRECTORY ${CMAKE_BINARY_DIR}/site)
+  target_link_options(flood-shrink-worker PRIVATE -sENVIRONMENT=worker -sINVOKE_RUN=0
+    "SHELL:--pre-js ${CMAKE_SOURCE_DIR}/web/shrink_worker.js")
+  set_property(TARGET flood-shrink-worker APPEND PROPERTY LINK_DEPENDS
+               ${CMAKE_SOURCE_DIR}/web/shrink_worker.js)
+  add_dependencies(${page} flood-shrink-worker)
+endfunction()

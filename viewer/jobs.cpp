@@ -11,8 +11,13 @@ namespace flood::view {
 void ShrinkJob::start(const Polygon& polygon, ShrinkOptions options) {
     reset();
     maxTries_ = options.maxTries;
+    if (inWorker()) {
+        worker_.start(polygon, options);
+        return;
+    }
     options.onTry = [this, user = std::move(options.onTry)](size_t tries, size_t vertices) {
         job_.setProgress(tries);
+        vertices_.store(vertices);
         if (user && !user(tries, vertices)) return false;
         return !job_.cancelRequested();
     };
@@ -28,9 +33,38 @@ void ShrinkJob::start(const Polygon& polygon, ShrinkOptions options) {
     });
 }
 
+void ShrinkJob::poll() {
+    if (!inWorker() || !worker_.started() || ended_) return;
+    report_ = worker_.poll();
+    if (report_.end == WorkerReport::End::Running) return;
+    stoppedNote_ = workerStopNote(report_);
+    if (report_.end == WorkerReport::End::Finished)
+        result_ = shrinkResultFromWorker(report_, "the repro");
+    ended_ = true;
+}
+
+void ShrinkJob::cancel() {
+    if (inWorker()) {
+        worker_.cancel();
+        poll();
+    } else {
+        job_.cancel();
+    }
+}
+
+void ShrinkJob::requestCancel() {
+    if (inWorker()) cancel();  // terminating a worker does not wait for it
+    else job_.requestCancel();
+}
+
 void ShrinkJob::reset() {
     job_.reset();
+    worker_.reset();
+    report_ = {};
     result_ = {};
+    stoppedNote_.clear();
+    ended_ = false;
+    vertices_.store(0);
 }
 
 FeatureVerdict judgeFeature(const FeatureRead& f) {

@@ -9,8 +9,21 @@
 #include "download.h"
 #include "panels.h"
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten.h>
+#endif
+
 namespace flood::view {
 namespace {
+
+// Where the panel's buttons were drawn in the last frame (the page's tests click them): Shrink,
+// Cancel, Save; w = 0 when not shown.
+Rect g_buttons[3];
+void drawn(int which) {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    g_buttons[which] = {a.x, a.y, b.x - a.x, b.y - a.y};
+}
+const std::string* g_note = nullptr;
 
 // "dir/name.ext" or "dir/name.geojson#3" -> "dir/name-shrunk.geojson" (feature 3: "-3-shrunk").
 std::string reproPath(const std::string& original) {
@@ -30,8 +43,11 @@ std::string reproPath(const std::string& original) {
 void drawShrink(Ui& ui) {
     Model& m = ui.model;
     ShrinkJob& job = ui.shrink;
+    job.poll();  // the page's worker (shrink_worker.h)
     const bool running = job.started() && !job.done();
     ui.shrinkBox = {};
+    g_buttons[0] = g_buttons[1] = g_buttons[2] = {};
+    g_note = &ui.shrinkNote;
     if (!running && !m.shrunk() && (!m.failed() || m.polygon().vertices.empty())) return;
 
     // First shown under the Edit box at the canvas's right edge: clear of the find box and its
@@ -50,17 +66,23 @@ void drawShrink(Ui& ui) {
         // The shrinker does not know how many tries it will need: the bar is out of the most
         // it may make, the label says how many so far.
         std::string label = std::to_string(job.tries()) + " tries";
+        if (job.vertices() > 0) label += ", " + std::to_string(job.vertices()) + " vertices";
         ImGui::ProgressBar(float(double(job.tries()) / double(std::max<size_t>(1, job.maxTries()))),
                            ImVec2(320 * ui.scale, 0), label.c_str());
         // Not joined here: a classification in flight may take up to its time limit; the
         // frame goes on and the repro found so far opens once the thread has stopped.
-        if (ImGui::Button("Cancel")) job.requestCancel();
+        const bool cancel = ImGui::Button("Cancel");
+        drawn(1);
+        if (cancel) job.requestCancel();
     } else if (job.done()) {
         ShrinkResult r = job.result();
+        const std::string stopped = job.stoppedNote();
         job.reset();
         // A shrink of a polygon that is no longer open is of no use.
         if (m.generation() == ui.shrinkGeneration) {
-            if (r.failure.kind == Failure::Kind::None) {
+            if (!stopped.empty()) {  // the page's worker crashed or was cancelled
+                ui.shrinkNote = stopped;
+            } else if (r.failure.kind == Failure::Kind::None) {
                 ui.shrinkNote = "the shrinker finds no failure to keep (" + r.failure.message + ")";
             } else {
                 const size_t was = m.polygon().vertices.size();
@@ -73,11 +95,17 @@ void drawShrink(Ui& ui) {
                                 (r.cancelled ? " (cancelled)" : "") + ": " + r.failure.message;
             }
         }
-    } else if (m.failed() && ImGui::Button("Shrink")) {
-        ShrinkOptions o;  // in a forked child, so a crash or a hang is a failure, not ours
-        ui.shrinkGeneration = m.generation();
-        ui.shrinkNote.clear();
-        job.start(m.polygon(), o);
+    } else if (m.failed()) {
+        const bool go = ImGui::Button("Shrink");
+        drawn(0);
+        if (go) {
+            // Each try in a forked child (the page: all in one Web Worker), so a crash or a
+            // hang is a failure, not ours.
+            ShrinkOptions o;
+            ui.shrinkGeneration = m.generation();
+            ui.shrinkNote.clear();
+            job.start(m.polygon(), o);
+        }
     }
 
     if (m.shrunk()) {
@@ -88,7 +116,9 @@ void drawShrink(Ui& ui) {
         if (ImGui::Button("Back to the original")) m.openOrigin();
         ImGui::InputText("##save", ui.savePath, sizeof ui.savePath);
         ImGui::SameLine();
-        if (ImGui::Button("Save")) {
+        const bool save = ImGui::Button("Save");
+        drawn(2);
+        if (save) {
             Diagnostic d = saveGeoJson(m.polygon(), ui.savePath);
             std::string error;  // in the page, the file reaches the user as a download
             if (d.ok() && !offerDownload(ui.savePath, &error)) d = {Status::WriteFailed, error};
@@ -103,5 +133,18 @@ void drawShrink(Ui& ui) {
     }
     ImGui::End();
 }
+
+#ifdef __EMSCRIPTEN__
+// For the page's tests (tests/web/page_test.mjs): component k (x, y, w, h) of a button above
+// (-1 when not shown), whether a shrink runs, and the panel's note.
+extern "C" {
+EMSCRIPTEN_KEEPALIVE double flood_web_shrink_rect(int which, int k) {
+    if (which < 0 || which > 2 || k < 0 || k > 3 || g_buttons[which].w <= 0) return -1;
+    const Rect& r = g_buttons[which];
+    return k == 0 ? r.x : k == 1 ? r.y : k == 2 ? r.w : r.h;
+}
+EMSCRIPTEN_KEEPALIVE const char* flood_web_shrink_note() { return g_note ? g_note->c_str() : ""; }
+}
+#endif
 
 }  // namespace flood::view

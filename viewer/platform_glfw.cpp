@@ -15,13 +15,14 @@
 #include <emscripten/html5.h>
 
 // Resolves at the next animation frame, or, when `idle`, at the next one after an input event
-// or `timeout` seconds, whichever comes first (the desktop's glfwWaitEventsTimeout).
+// or `timeout` seconds, whichever comes first (the desktop's glfwWaitEventsTimeout). The page's
+// own "flood-wake" event (a message from the shrink's worker) is an input too.
 // clang-format off
 EM_ASYNC_JS(void, flood_web_next_frame, (int idle, double timeout), {
     if (idle) {
         await new Promise(resolve => {
             const events = ["keydown", "keyup", "pointerdown", "pointerup", "pointermove",
-                            "wheel", "resize", "drop"];
+                            "wheel", "resize", "drop", "flood-wake"];
             let timer;
             const done = () => {
                 clearTimeout(timer);

@@ -7,7 +7,11 @@
 // P (Save PNG) downloads a PNG of the canvas; a file dropped on the canvas opens; Ctrl+O opens
 // the browser's file picker and a file chosen there opens; the recent files are still listed
 // after a reload; presenter=1 gives the presenter layout, theme=light a light canvas; a
-// second polygon chosen in the Open panel's gallery opens. DROP_FILE must have 5 vertices,
+// second polygon chosen in the Open panel's gallery opens; the Shrink panel shrinks a failing
+// sample in a Web Worker while frames go on, and its Save downloads a repro the native CLI
+// reads back failing the same way; a forced crash of that worker (test-shrink-crash=N) leaves
+// the page running with the panel saying so; the Edit panel's Save (Ctrl+S, Enter) downloads
+// a polygon the native CLI triangulates as the original. DROP_FILE must have 5 vertices,
 // PICK_FILE 3. Prints the time to the first frame.
 import { execFileSync, spawn } from "node:child_process";
 import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
@@ -90,7 +94,7 @@ const cleanup = () => {
   for (const d of [profile, downloads]) try { rmSync(d, { recursive: true, force: true }); } catch {}
 };
 process.on("exit", cleanup);
-setTimeout(() => { console.log("FAIL the page test took over 240 s"); process.exit(1); }, 240000).unref();
+setTimeout(() => { console.log("FAIL the page test took over 300 s"); process.exit(1); }, 300000).unref();
 
 const browserWs = await new Promise((resolve, reject) => {
   let text = "";
@@ -354,6 +358,121 @@ if (row[2] > 0) {
   await screenshot("page-gallery.png");
 }
 
+// ---- the Shrink panel: the shrink runs in a Web Worker (viewer/shrink_worker.h) ------------------
+// A failing sample shrinks while the page goes on drawing frames; Save offers the repro as a
+// download, and the native CLI reads it back failing as the original does.
+const nativeFlood = process.env.NATIVE_FLOOD || "build/flood";
+const shrinkStart = Date.now();  // what these sections add to the test (docs/BENCHMARKS.md)
+const shrinkButton = (which) => evaluate(`[0, 1, 2, 3].map((k) => Module._flood_web_shrink_rect(${which}, k))`);
+const shrinkNote = () => evaluate("Module.UTF8ToString(Module._flood_web_shrink_note())");
+const sample = "polygons/tutorial/crossing-face.json";
+// How the native `flood triangulate --no-validate` fails on a file: its exit code and the name
+// of the forbidden transition (or the checker's rejection) in its message.
+function nativeFailure(file) {
+  try {
+    execFileSync(nativeFlood, ["triangulate", "--no-validate", file, "-o", join(profile, "triangulated.json")], { encoding: "utf8", stdio: "pipe" });
+    return "ok";
+  } catch (e) {
+    const m = /forbidden transition \w+|exact checker rejects/.exec(e.stderr) || [e.stderr.split("\n")[0]];
+    return `exit ${e.status}: ${m[0]}`;
+  }
+}
+async function startShrink(query) {
+  await navigate(query);
+  const button = await until("the Shrink panel's Shrink button is shown", "Module._flood_web_shrink_rect(0, 2)", (v) => v > 0, 20000);
+  if (!(button > 0)) return false;
+  // click() without its last frames: the shrink may be over by then.
+  const [x, y, w, h] = await shrinkButton(0);
+  await send("Input.dispatchMouseEvent", { type: "mouseMoved", x: x + w / 2, y: y + h / 2 });
+  await settle(2);
+  await send("Input.dispatchMouseEvent", { type: "mousePressed", x: x + w / 2, y: y + h / 2, button: "left", clickCount: 1 });
+  await settle(2);
+  await send("Input.dispatchMouseEvent", { type: "mouseReleased", x: x + w / 2, y: y + h / 2, button: "left", clickCount: 1 });
+  return true;
+}
+// Frames drawn while the shrink runs (its Cancel button shown), until the panel's note says
+// how it ended.
+async function shrinkRuns(what, countFrames = true) {
+  let first = null, last = null, running = 0;
+  for (const start = Date.now(); Date.now() - start < 60000;) {
+    const [note, cancel, frames] = await evaluate("[Module.UTF8ToString(Module._flood_web_shrink_note()), Module._flood_web_shrink_rect(1, 2), Module._flood_web_frames()]");
+    if (note) break;
+    if (cancel > 0) { running++; if (first === null) first = frames; last = frames; }
+    await sleep(20);
+  }
+  const note = await shrinkNote();
+  check(note !== "", `${what}: the Shrink panel says how it ended (${JSON.stringify(note)})`);
+  if (countFrames) check(first !== null && last - first >= 2, `${what}: frames are drawn while the worker shrinks (${first === null ? "no running shrink seen" : last - first + " frames"})`);
+  return note;
+}
+const sampleFailure = nativeFailure(sample);
+if (await startShrink("?polygon=tutorial/crossing-face.json")) {
+  const before = await evaluate("Module._flood_web_vertices()");
+  const note = await shrinkRuns("crossing-face.json's shrink");
+  const after = await evaluate("Module._flood_web_vertices()");
+  check(note.startsWith(`shrunk ${before} -> ${after} vertices`) && after < before,
+        `the shrink opens a smaller repro (${before} -> ${after} vertices)`);
+  await settle();
+  const save = await shrinkButton(2);
+  check(save[2] > 0, `the repro's Save button is shown (${save.join(",")})`);
+  const reproName = "crossing-face-shrunk.geojson";
+  if (save[2] > 0) {
+    await click(save);
+    await until(`Save downloads ${reproName}`, "0", () => existsSync(join(downloads, reproName)), 30000);
+  }
+  if (existsSync(join(downloads, reproName))) {
+    const repro = join(downloads, reproName);
+    const back = nativeFailure(repro);
+    check(back === sampleFailure && back !== "ok",
+          `the downloaded repro fails in the native flood triangulate as ${sample} does (${back}; the original: ${sampleFailure})`);
+    const read = JSON.parse(readFileSync(repro, "utf8"));
+    const count = JSON.stringify(read).match(/\[-?[0-9.e+-]+,-?[0-9.e+-]+\]/g)?.length ?? 0;
+    check(count >= after && count <= after + 1, `the download holds the repro's ${after} vertices (${count} positions)`);
+  }
+}
+
+// ---- a crash in the shrink's worker ends only the worker ----------------------------------------
+// The test-only test-shrink-crash=N makes the worker's CLI abort at its Nth clock reading.
+if (await startShrink("?polygon=tutorial/crossing-face.json&test-shrink-crash=30")) {
+  const before = await evaluate("Module._flood_web_vertices()");
+  const note = await shrinkRuns("the crashing shrink", false);
+  check(note.startsWith("the shrink stopped with a crash") && note.includes("forced crash"),
+        `the Shrink panel says the shrink stopped with a crash (${JSON.stringify(note)})`);
+  const f = await frames();
+  await settle(4);
+  check(await frames() >= f + 4, "the page goes on drawing frames after the worker's crash");
+  check(await evaluate("Module._flood_web_vertices()") === before, `the polygon shown is unchanged (${before} vertices)`);
+  check(await evaluate("Module._flood_web_shrink_rect(0, 2)") > 0, "the Shrink button is offered again");
+}
+
+// ---- the Edit panel's Save reaches the user as a download ----------------------------------------
+// Ctrl+S opens the Save window (at the canvas's corner + 60 px, default ImGui style: its path
+// field is the first row under a 19 px title bar); Enter in the field saves. The download,
+// read by the native CLI, floods to the very triangles of the polygon it was saved from.
+await navigate("?polygon=paper-figure-7.json");
+// ImGui 1.86 takes Ctrl from the Control key's own events, not from a key's modifiers.
+const control = (type) => send("Input.dispatchKeyEvent", { type, modifiers: type === "keyDown" ? 2 : 0, key: "Control", code: "ControlLeft", windowsVirtualKeyCode: 17, nativeVirtualKeyCode: 17 });
+await control("keyDown");
+await settle(2);
+await key("s", 83, 2);
+await control("keyUp");
+await settle(2);
+const field = await rect(0);
+await click([field[0] + 60 + 8, field[1] + 60 + 19 + 8, 300, 19]);
+await key("Enter", 13);
+const savedName = "paper-figure-7-edited.json";
+await until(`the Edit panel's Save downloads ${savedName}`, "0", () => existsSync(join(downloads, savedName)), 30000);
+if (existsSync(join(downloads, savedName))) {
+  const tri = (file, out) => {
+    try { execFileSync(nativeFlood, ["triangulate", file, "-o", out], { stdio: "pipe" }); return 0; } catch (e) { return e.status; }
+  };
+  const [a, b] = [join(profile, "original-triangles.json"), join(profile, "saved-triangles.json")];
+  const codes = [tri("polygons/paper-figure-7.json", a), tri(join(downloads, savedName), b)];
+  check(codes[0] === 0 && codes[1] === 0 && readFileSync(a).equals(readFileSync(b)),
+        `the saved polygon opens with the native flood triangulate, to the original's triangles (exit codes ${codes})`);
+}
+
+console.log(`the Shrink and Edit sections took ${((Date.now() - shrinkStart) / 1000).toFixed(1)} s`);
 check(errors.length === 0, "no console error" + (errors.length ? ":\n  " + errors.join("\n  ") : ""));
 ws.close();
 console.log(failures ? `page test: ${failures} failed` : "page test: all passed");

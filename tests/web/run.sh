@@ -7,7 +7,9 @@
 #     step, the canvas against the native viewer's screenshot, arrow keys, Save PNG as a
 #     download, Copy into the browser's clipboard (against the native flood transcript), a
 #     dropped file, the file picker, recent files kept over a reload, presenter=1,
-#     theme=light, a second gallery polygon clicked in the Open panel.
+#     theme=light, a second gallery polygon clicked in the Open panel, the Shrink panel's
+#     shrink in a Web Worker (its repro downloaded and read back by the native CLI) and a
+#     crash of that worker forced by the test-only URL parameter test-shrink-crash=N.
 # The native build/flood and build/flood-viewer are built if missing (CI's test phase made them).
 set -euo pipefail
 cd "$(dirname "$0")/../.."

@@ -108,8 +108,9 @@ bool Model::invariantsDone() const {
 }
 
 Model::InvariantStatus Model::invariantStatus() const {
-    // An outline has no run: the empty trace it is shown with breaks nothing it could claim.
-    if (outlineOnly()) return InvariantStatus::NoRun;
+    // An outline has no run, nor has a file that could not be read: an empty trace breaks
+    // nothing, and "none broken" would claim a check of a flood that never was.
+    if (outlineOnly() || steps() == 0) return InvariantStatus::NoRun;
     if (!invariantsDone()) return InvariantStatus::Checking;
     if (!found_.empty()) return InvariantStatus::Broken;
     return invariantProgress() < steps() ? InvariantStatus::Cancelled : InvariantStatus::NoneBroken;

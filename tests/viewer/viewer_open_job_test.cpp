@@ -57,6 +57,16 @@ size_t verticesIn(const std::string& path) { return readPolygonFile(path).polygo
 
 }  // namespace
 
+// A file that cannot be read is not flooded: the lane claims nothing of it either.
+TEST(OpenJob, AnUnreadableFileClaimsNoInvariant) {
+    Model m;
+    m.open(std::string(FLOOD_SOURCE_DIR) + "/polygons/datasets/mixed.geojson");  // feature 5
+    ASSERT_EQ(m.inputDiagnostic().status, Status::Malformed);
+    ASSERT_EQ(m.steps(), 0u);
+    m.waitForInvariants();
+    EXPECT_EQ(m.invariantStatus(), Model::InvariantStatus::NoRun);
+}
+
 TEST(OpenJob, OutlineIsAdoptedBeforeTheFlood) {
     Gate gate;
     gate.path = kComb, gate.phase = OpenPhase::Flood;

@@ -33,11 +33,11 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
         recentSet_ = 0;
     }
     // The bank lists are built once they pay (banksPay()): a part whose gorges the plane
-    // index prunes well never pays the sweep. Labels are
-    // only sound on loops whose edges are the input's and meet only at their ends; where
-    // points are shared (touching rings, T-junctions) the plane index alone is used. The
-    // initial links are kept for the sweep, which may run after edits. Off the axes the
-    // sweep runs along the direction itself (its rays are the lines across it).
+    // index prunes well never pays the sweep. Labels are only sound on loops whose edges are
+    // the input's and meet only at their ends; where points are shared (touching rings,
+    // T-junctions) the plane index alone is used. The initial links are kept for the sweep,
+    // which may run after edits. Off the axes the sweep runs along the direction itself (its
+    // rays are the lines across it).
     // With at most kProbes sags every bracket is probed whole before the plane index is asked
     // (search()), so the index never works and the lists are never built: no initial links.
     if (banks_.built()) banks_.clear();  // a failed build clears itself (buildBanks())

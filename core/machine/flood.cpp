@@ -347,9 +347,9 @@ private:
     // Left, Right, NextRight, NextLeft (§4, §5): sag_search.h.
     NodeId findSag(NodeId nx, Ev& e) {
         if constexpr (kRecording) {
-            return sags_.find(left_, right_, water_, nx, partNodes_, e);
+            return sags_.find(left_, right_, water_, nx, e);
         } else {
-            return sags_.find(left_, right_, water_, nx, partNodes_, uncounted_);
+            return sags_.find(left_, right_, water_, nx, uncounted_);
         }
     }
 

@@ -32,17 +32,18 @@ void SagSearch::index(const Heights& heights, NodeId partFirstNode, Index partFi
             recent_[__builtin_ctzll(set)] = {};
         recentSet_ = 0;
     }
-    // The bank lists are built once the plane index has visited more than half a box per
-    // node of the part: a part whose gorges it prunes well never pays the sweep. Labels are
-    // only sound on loops whose edges are the input's and meet only at their ends; where
-    // points are shared (touching rings, T-junctions) the plane index alone is used. The
-    // initial links are kept for the sweep, which may run after edits. Off the axes the
-    // sweep runs along the direction itself (its rays are the lines across it).
+    // The bank lists are built once they pay (banksPay()): a part whose gorges the plane
+    // index prunes well never pays the sweep. Labels are only sound on loops whose edges are
+    // the input's and meet only at their ends; where points are shared (touching rings,
+    // T-junctions) the plane index alone is used. The initial links are kept for the sweep,
+    // which may run after edits. Off the axes the sweep runs along the direction itself (its
+    // rays are the lines across it).
     // With at most kProbes sags every bracket is probed whole before the plane index is asked
     // (search()), so the index never works and the lists are never built: no initial links.
     if (banks_.built()) banks_.clear();  // a failed build clears itself (buildBanks())
     banksTried_ = touching || count <= size_t(kProbes);
-    treeWork_ = 0;
+    rent_ = 0;
+    buy_ = false;
     partFirstVertex_ = partFirstVertex;
     initialNodes_ = nodes.end() - partFirstNode_;
     initialStep_.clear();
@@ -87,14 +88,13 @@ inline void SagSearch::bracket(NodeId water, NodeId nx, int64_t& lo, int64_t& hi
 
 // The search, its work counted as the sag search's. An empty bracket (most steps once the
 // sags are below the water) counts nothing, so it is ruled out before the counters are read.
-NodeId SagSearch::counted(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
-                          Event& e) {
+NodeId SagSearch::counted(NodeId left, NodeId right, NodeId water, NodeId next, Event& e) {
     int64_t lo, hi;
     bracket(water, next, lo, hi);
     if (hi <= lo + 1) return kNil;
     WorkCounters& w = work();
     const uint64_t before = w.nodeVisits + w.sagTests + w.orientCalls;  // not all ten counters
-    NodeId s = search(left, right, water, next, partNodes, lo, hi, e);
+    NodeId s = search(left, right, water, next, lo, hi, e);
     w.sagSearch += w.nodeVisits + w.sagTests + w.orientCalls - before;
     return s;
 }
@@ -111,8 +111,8 @@ uint32_t SagSearch::sagsBelow(NodeId n) {
 
 // Sags are sorted, so the search starts at the water level and stops at Next: ranks lo < k < hi
 // (bracket()).
-NodeId SagSearch::search(NodeId left, NodeId right, NodeId water, NodeId nx, uint32_t partNodes,
-                         int64_t lo, int64_t hi, Event& e) {
+NodeId SagSearch::search(NodeId left, NodeId right, NodeId water, NodeId nx, int64_t lo, int64_t hi,
+                         Event& e) {
     const Heights& h = *heights_;
     const Nodes& nodes = h.nodes();
     Point l = h.at(left), r = h.at(right), nl = h.at(nodes[left].prev),
@@ -137,7 +137,7 @@ NodeId SagSearch::search(NodeId left, NodeId right, NodeId water, NodeId nx, uin
         ++work().sagTests;
         return inside(index_.point(rank), l, r, nr, nl);
     };
-    if (!banksTried_ && treeWork_ > partNodes / 2) buildBanks();
+    if (buy_) buildBanks();
     if (banks_.built()) {
         // The lowest such sag sees a bank that is an input edge across open water: it is
         // the first unused sag of the bank's list in the bracket (ALGORITHM.md §4). The
@@ -161,7 +161,8 @@ NodeId SagSearch::search(NodeId left, NodeId right, NodeId water, NodeId nx, uin
     if (k < 0) {
         const uint64_t before = work().nodeVisits;
         k = index_.lowest(lo, hi, region, test);
-        treeWork_ += work().nodeVisits - before;
+        rent_ += work().nodeVisits - before;
+        buy_ = !banksTried_ && banksPay();
     }
     if (k < 0) return kNil;
     return use(k);
@@ -179,8 +180,24 @@ NodeId SagSearch::use(int64_t rank) {
     return s;
 }
 
+// Ski rental: the plane index's box visits are the rent, the bank sweep the purchase, priced
+// at kPrice box visits a node of the part. Nothing is bought below half a box a node (the old
+// rule, which alone bought the sweep on families whose tree stays cheap: circle-holes from 10^5
+// on, +62 % instructions a vertex from 10^4 to 10^6); past it, buy once the rent paid passes
+// the price (never more than twice the cheaper choice), or once the rent per sag bridged so
+// far, projected over the sags left and doubled, would: doubled, since a sliver family's
+// searches grow costlier as the water rises (circle-smooth), so a plain projection falls short
+// and the rent is paid twice (Growth.GeneratedFamiliesWorkPerVertexIsLinear).
+bool SagSearch::banksPay() const {
+    const uint64_t n = initialNodes_;
+    if (rent_ * 2 <= n) return false;
+    if (rent_ > kPrice * n) return true;
+    const uint64_t bridged = sags_.size() - unused_;
+    return 2 * rent_ * unused_ > kPrice * n * bridged;
+}
+
 void SagSearch::buildBanks() {
-    banksTried_ = true;
+    banksTried_ = true, buy_ = false;
     // Without shared points the part's initial nodes are its vertices, in order (inputEdge()).
     const Point* point = heights_->points() + partFirstVertex_;
     std::vector<uint32_t>& sagOfRank = sagOfRank_;

@@ -25,28 +25,28 @@ public:
     // passed and no point is shared (Polygon::pointsDistinct), so no two edges meet.
     void index(const Heights& heights, NodeId partFirstNode, Index partFirstVertex, bool touching,
                bool simple = false);
-    // The sag sought, now used; kNil if none. `partNodes`: the part's nodes so far.
+    // The sag sought, now used; kNil if none.
     // Inline up to the first test: once every sag is bridged, most steps ask.
-    NodeId find(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
-                Event& e) {
+    NodeId find(NodeId left, NodeId right, NodeId water, NodeId next, Event& e) {
         if (unused_ == 0) return kNil;  // every sag bridged already (or none): nothing to count
-        return counted(left, right, water, next, partNodes, e);
+        return counted(left, right, water, next, e);
     }
 
 private:
-    NodeId counted(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
-                   Event& e);
-    NodeId search(NodeId left, NodeId right, NodeId water, NodeId next, uint32_t partNodes,
-                  int64_t lo, int64_t hi, Event& e);
+    NodeId counted(NodeId left, NodeId right, NodeId water, NodeId next, Event& e);
+    NodeId search(NodeId left, NodeId right, NodeId water, NodeId next, int64_t lo, int64_t hi,
+                  Event& e);
     uint32_t sagsBelow(NodeId n);
     void bracket(NodeId water, NodeId next, int64_t& lo, int64_t& hi);
     NodeId use(int64_t rank);
+    bool banksPay() const;
     void buildBanks();
     uint32_t inputEdge(NodeId a, NodeId b) const;
     uint32_t initialNext(uint32_t t) const;
     int64_t bankCandidate(NodeId left, NodeId right, int64_t lo, int64_t hi) const;
 
     static constexpr int64_t kProbes = 4;  // ranks tested before the sag tree
+    static constexpr uint64_t kPrice = 3;  // the bank sweep's price, box visits a node (banksPay())
     const Heights* heights_ = nullptr;     // the run's, from index() on
     std::vector<NodeId> sags_;             // by height rank
     SagIndex index_;                       // the sags by height rank, searchable by x
@@ -63,8 +63,9 @@ private:
     static constexpr size_t kCountedSags = 8;
     SagBanks banks_;  // the sags each input edge sees, once the plane index is costly
     bool banksTried_ = false;
-    bool simple_ = false;    // index()'s: the bank sweep need not check that edges meet
-    uint64_t treeWork_ = 0;  // box visits of the plane index in this part
+    bool buy_ = false;     // banksPay() said so after the last plane index search
+    bool simple_ = false;  // index()'s: the bank sweep need not check that edges meet
+    uint64_t rent_ = 0;    // box visits of the plane index in this part (banksPay())
     NodeId partFirstNode_ = NodeId(0);
     uint32_t partFirstVertex_ = 0, initialNodes_ = 0;
     // The part's initial links (local ids), for inputEdge() and the bank sweep: most go to the

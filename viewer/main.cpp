@@ -46,6 +46,7 @@ EMSCRIPTEN_KEEPALIVE int flood_web_vertices() {
 }
 EMSCRIPTEN_KEEPALIVE int flood_web_presenter() { return g_ui ? int(g_ui->presenter) : -1; }
 // The invariant scan still running (1), in slices between frames (viewer/job.h).
+EMSCRIPTEN_KEEPALIVE int flood_web_opening() { return g_shown ? int(g_shown->opening()) : -1; }
 EMSCRIPTEN_KEEPALIVE int flood_web_scanning() {
     return g_shown ? int(!g_shown->invariantsDone()) : -1;
 }

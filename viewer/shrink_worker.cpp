@@ -16,7 +16,8 @@
 // it ends, what C++ reads is written into the page's file system: /shrink/ID.geojson (the
 // repro), ID.log (the CLI's messages), ID.error (a crash's). Every message wakes the frame
 // loop (the "flood-wake" event, viewer/platform_glfw.cpp). A test-only URL parameter,
-// test-shrink-crash=N, makes the worker trap at its Nth clock reading (about the Nth try).
+// test-shrink-crash=N, makes the worker trap at its Nth clock reading (about the Nth try);
+// test-shrink-slow=MS makes each reading MS longer (a shrink long enough to watch).
 // clang-format off
 EM_JS(int, flood_web_shrink_start, (const char* input, const char* up), {
     const all = Module["floodShrinks"] = Module["floodShrinks"] || { next: 1 };
@@ -57,9 +58,12 @@ EM_JS(int, flood_web_shrink_start, (const char* input, const char* up), {
         console.warn("flood-viewer: the shrink's worker stopped: " + e.message);
         s.finish(2, e.message || "the worker stopped");
     };
-    const crashAt = Number(new URLSearchParams(location.search).get("test-shrink-crash")) || 0;
+    const query = new URLSearchParams(location.search);
+    const crashAt = Number(query.get("test-shrink-crash")) || 0;
+    const slowMs = Number(query.get("test-shrink-slow")) || 0;
     s.worker.postMessage({ name: file.slice(file.lastIndexOf("/") + 1), bytes: FS.readFile(file),
-                           args: UTF8ToString(up) ? ["--up", UTF8ToString(up)] : [], crashAt });
+                           args: UTF8ToString(up) ? ["--up", UTF8ToString(up)] : [], crashAt,
+                           slowMs });
     return id;
 });
 EM_JS(double, flood_web_shrink_number, (int id, int what), {

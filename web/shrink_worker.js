@@ -8,7 +8,8 @@
 //   {done: exitCode, repro}        the repro file's bytes, null when none was written.
 // Nothing here catches a trap or an abort: it ends this worker, and the page hears of it as
 // the worker's error event. crashAt > 0 (the page's test-only URL parameter
-// test-shrink-crash=N) aborts at the CLI's Nth clock reading, about its Nth try.
+// test-shrink-crash=N) aborts at the CLI's Nth clock reading, about its Nth try; slowMs > 0
+// (test-shrink-slow=MS) makes each reading MS longer.
 Module["print"] = (text) => postMessage({ line: text });
 Module["printErr"] = (text) => {
   const line = text.replace(/\x1b\[K/g, "");
@@ -26,16 +27,19 @@ let floodJob = null;
 const floodRun = () => {
   if (!floodJob || !runtimeInitialized) return;
   // No destructuring: Emscripten 3.1.6's JS optimizer drops such a declaration.
-  const job = floodJob, name = job.name, crashAt = job.crashAt;
+  const job = floodJob, name = job.name, crashAt = job.crashAt, slowMs = job.slowMs || 0;
   floodJob = null;
   FS.mkdirTree("/in");
   FS.mkdirTree("/out");
   FS.writeFile("/in/" + name, job.bytes);
-  if (crashAt > 0) {
+  if (crashAt > 0 || slowMs > 0) {
     let readings = 0;
     const now = _emscripten_get_now;
     _emscripten_get_now = () => {
       if (++readings === crashAt) abort("a forced crash (test-shrink-crash=" + crashAt + ")");
+      // test-shrink-slow=MS: each reading (about a try) takes MS longer, so that a test sees
+      // the page draw while this worker works, however fast the machine.
+      for (const until = now() + slowMs; now() < until;) {}
       return now();
     };
   }

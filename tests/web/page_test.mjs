@@ -297,6 +297,20 @@ if (bigFile) {
   for (const type of ["dragEnter", "dragOver", "drop"])
     await send("Input.dispatchDragEvent", { type, x, y, data: { items: [], files: [bigFile], dragOperationsMask: 1 } });
   await until(`the dropped ${big} opens`, "document.title", (t) => typeof t === "string" && t.includes(big), 60000);
+  // The open itself runs a phase a slice (read, validate, flood, check, prepare): its outline
+  // comes first, and frames go on between the phases until the run is adopted.
+  let openFrames = null, openFirst = null, openLast = null;
+  for (const start = Date.now(); Date.now() - start < 60000;) {
+    const [opening, frames] = await evaluate("[Module._flood_web_opening(), Module._flood_web_frames()]");
+    if (openFirst === null) openFirst = frames;
+    openLast = frames;
+    if (opening !== 1) break;
+    await new Promise((r) => setTimeout(r, 20));
+  }
+  openFrames = openLast - openFirst;
+  check(await evaluate("Module._flood_web_opening()") === 0, `the open of ${big} ends`);
+  check(await evaluate("Module._flood_web_steps()") > 0, `${big} is flooded (${await evaluate("Module._flood_web_steps()")} steps)`);
+  check(openFrames >= 1, `frames are drawn between ${big}'s outline and its flooded run (${openFrames} frames)`);
   // Sample the frame counter while the scan runs: frames go on between its slices.
   let pendingFrames = null, first = null, last = null;
   for (const start = Date.now(); Date.now() - start < 60000;) {
@@ -406,7 +420,9 @@ async function shrinkRuns(what, countFrames = true) {
   return note;
 }
 const sampleFailure = nativeFailure(sample);
-if (await startShrink("?polygon=tutorial/crossing-face.json")) {
+// test-shrink-slow=20: each try about 20 ms longer, so the shrink lasts a second or two however
+// fast the machine, and the frames counted while it runs are not a race.
+if (await startShrink("?polygon=tutorial/crossing-face.json&test-shrink-slow=20")) {
   const before = await evaluate("Module._flood_web_vertices()");
   const note = await shrinkRuns("crossing-face.json's shrink");
   const after = await evaluate("Module._flood_web_vertices()");

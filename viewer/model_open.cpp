@@ -180,7 +180,9 @@ bool Model::pollOpen() {
     const bool done = j.done();
     const OpenPhase phase = j.phase();
     if (!done) {
-        if (phase == OpenPhase::Read) return false;
+        // Done before done(): the job is ending, perhaps after a failed read with no outline
+        // to show; what it ended with is adopted once done() says it is all written.
+        if (phase == OpenPhase::Read || phase == OpenPhase::Done) return false;
         if (!outlineShown_) adoptOutline();
         else if (const std::string note = openNote(phase, trace_->polygon.vertices.size());
                  note != note_)

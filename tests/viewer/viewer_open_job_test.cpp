@@ -287,6 +287,16 @@ TEST(OpenJob, ASecondOpenCancelsTheFirst) {
 
 TEST(OpenJob, AFailingReadReportsItsDiagnostic) {
     const std::string missing = (scratch("open-job-missing") / "no-such.json").string();
+    // Polled as fast as it goes, many times: the job marks its phase Done a moment before
+    // done(), and a poll in between once adopted an outline the failed read never made.
+    for (int k = 0; k < 200; ++k) {
+        Model m;
+        m.openInBackground(missing);
+        bool finished = false;
+        while (m.opening()) finished |= m.pollOpen();
+        ASSERT_TRUE(finished) << k;
+        ASSERT_EQ(m.openDiagnostic().status, Status::Malformed) << k;
+    }
     Model empty;
     empty.openInBackground(missing);
     bool finished = false;

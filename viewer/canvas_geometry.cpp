@@ -18,8 +18,7 @@ CanvasGeometry buildCanvasGeometry(const Model& model) {
                                model.inputDiagnostic().ok());
 }
 
-namespace {
-std::shared_ptr<PreparedCanvas> prepared(CanvasGeometry g, const Trace& trace) {
+std::shared_ptr<PreparedCanvas> prepareCanvas(CanvasGeometry g, const Trace& trace) {
     auto c = std::make_shared<PreparedCanvas>();
     c->grid.build(trace.polygon, trace.triangles);
     c->vertexGrid.buildVertices(trace.polygon);
@@ -29,15 +28,9 @@ std::shared_ptr<PreparedCanvas> prepared(CanvasGeometry g, const Trace& trace) {
     c->geometry = std::move(g);
     return c;
 }
-}  // namespace
-
-std::shared_ptr<PreparedCanvas> prepareCanvas(const PreparedRun& run) {
-    return prepared(buildCanvasGeometry(*run.trace, run.classes, !run.note.empty(), run.input.ok()),
-                    *run.trace);
-}
 
 std::shared_ptr<PreparedCanvas> prepareCanvas(const Model& model) {
-    return prepared(buildCanvasGeometry(model), model.trace());
+    return prepareCanvas(buildCanvasGeometry(model), model.trace());
 }
 
 CanvasGeometry buildCanvasGeometry(const Trace& trace, const std::vector<VertexClass>& classes,

@@ -104,7 +104,8 @@ struct PreparedCanvas {
     TriangleGrid vertexGrid;  // vertex labels by cell
     std::vector<MarkerVertex> vertexMarkers;
 };
-std::shared_ptr<PreparedCanvas> prepareCanvas(const PreparedRun& run);
+// Takes the run's geometry (buildCanvasGeometry) and adds its label grids.
+std::shared_ptr<PreparedCanvas> prepareCanvas(CanvasGeometry geometry, const Trace& trace);
 // The same of what the model shows (a canvas that missed the prepared one).
 std::shared_ptr<PreparedCanvas> prepareCanvas(const Model& model);
 

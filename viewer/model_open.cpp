@@ -180,13 +180,12 @@ bool Model::pollOpen() {
     const bool done = j.done();
     const OpenPhase phase = j.phase();
     if (!done) {
-        // Done before done(): the job is ending, perhaps after a failed read with no outline
-        // to show; what it ended with is adopted once done() says it is all written.
-        if (phase == OpenPhase::Read || phase == OpenPhase::Done) return false;
+        // A failed read has no outline to show: what it ended with waits for done().
+        if (!j.outlineReady()) return false;
         if (!outlineShown_) adoptOutline();
-        else if (const std::string note = openNote(phase, trace_->polygon.vertices.size());
-                 note != note_)
-            setNote(note);
+        else if (phase != OpenPhase::Read && phase != OpenPhase::Done &&
+                 openNote(phase, trace_->polygon.vertices.size()) != note_)
+            setNote(openNote(phase, trace_->polygon.vertices.size()));
         return false;
     }
     const Diagnostic& read = j.readDiagnostic();

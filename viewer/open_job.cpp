@@ -1,6 +1,7 @@
 // An open as a background job: read, validate, flood, check, prepare (open_job.h).
 #include "open_job.h"
 
+#include <algorithm>
 #include <utility>
 
 #include "flood/io/gdal/read_any.h"
@@ -68,10 +69,23 @@ void RunSteps::step() {
                 validateInto(copy, name_, run_);
             }
             break;
-        case OpenPhase::Flood: try { run_.trace = record(polygon_, Options{up_});
+        case OpenPhase::Flood:
+            try {
+                // Its log reserved, its slices, its log trimmed: each a step of its own.
+                if (!recording_) {
+                    recording_ = std::make_unique<Recording>(polygon_, Options{up_});
+                    floodEnded_ = false;
+                    return;
+                }
+                if (!floodEnded_) {
+                    floodEnded_ = !recording_->advance(kFloodSlice);
+                    return;
+                }
+                run_.trace = recording_->take();
             } catch (const std::exception& ex) {
                 run_.trace.diagnostic = {Status::Internal, name_ + ": " + ex.what()};
             }
+            recording_.reset();
             break;
         case OpenPhase::Check:
             // The exact checker is the costly half of judging a run: here, off the UI thread.
@@ -84,7 +98,10 @@ void RunSteps::step() {
                 run_.trace.polygon = std::move(polygon_);
                 run_.trace.up = up_;
             }
-            prepared_ = prepareRun(std::move(run_), name_);
+            if (!preparing_) preparing_.emplace(std::move(run_), name_);
+            if (preparing_->step()) return;  // the phase goes on
+            prepared_ = preparing_->take();
+            preparing_.reset();
             break;
         case OpenPhase::Read:
         case OpenPhase::Done: return;
@@ -92,9 +109,18 @@ void RunSteps::step() {
     next_ = after(next_);
 }
 
+double RunSteps::phaseDone() const {
+    // A flood takes about 1.5 steps a vertex (record() reserves as much).
+    if (recording_)
+        return std::min(0.99, recording_->steps() / (1.5 * double(polygon_.vertices.size()) + 64));
+    if (preparing_) return preparing_->done() / double(PrepareSteps::kParts);
+    return 0;
+}
+
 static bool runAll(RunSteps& steps, PreparedRun& run, const EnterPhase& enter) {
+    OpenPhase entered = OpenPhase::Done;
     for (OpenPhase p; (p = steps.next()) != OpenPhase::Done; steps.step())
-        if (enter && !enter(p)) return false;
+        if (p != entered && enter && !enter(entered = p)) return false;
     run = steps.take();
     return true;
 }
@@ -115,10 +141,12 @@ void OpenJob::start(Request request) {
     request_ = std::move(request);
     phase_.store(int(OpenPhase::Read), std::memory_order_release);
     read_ = {};
+    outlineReady_.store(false, std::memory_order_relaxed);
     outline_ = {};
     warnings_.clear();
     complete_ = false;
     steps_.reset();
+    entered_ = OpenPhase::Read;
     job_.startSteps([this](Job& job) { return step(job); });
 }
 
@@ -148,8 +176,10 @@ bool OpenJob::step(Job& job) {
         finish(job);
         return false;
     }
-    if (!enter(job, p)) return false;
+    if (p != entered_ && !enter(job, entered_ = p)) return false;
     steps_->step();
+    if (steps_->next() == p)  // the phase goes on: how far it is
+        job.setProgress(uint64_t(p) * kPerPhase + uint64_t(steps_->phaseDone() * kPerPhase));
     return true;
 }
 
@@ -183,6 +213,7 @@ void OpenJob::read(Job& job) {
     outline_ = prepareRun(std::move(outline), path, openNote(OpenPhase::Validate, n));
     if (request_.trace) steps_.emplace(std::move(trace), path);
     else steps_.emplace(std::move(r.polygon), path, request_.up);
+    outlineReady_.store(true, std::memory_order_release);
 }
 
 }  // namespace flood::view

@@ -5,6 +5,7 @@
 #pragma once
 #include <atomic>
 #include <functional>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -27,8 +28,10 @@ std::string openNote(OpenPhase p, size_t vertices);
 // Called before each phase with it; false stops the run there (a cancelled open).
 using EnterPhase = std::function<bool(OpenPhase)>;
 
-// floodRun and judgeTrace cut at their phases, one a step (a Job's steps: its thread on the
-// desktop, between frames in the page), the last preparing the run (prepared_run.h).
+// floodRun and judgeTrace cut in steps (a Job's steps: its thread on the desktop, between
+// frames in the page): a phase a step, but the flood a slice of kFloodSlice machine steps a
+// step and the preparation (prepared_run.h) a part a step, so that no step of a large run
+// holds the page long.
 class RunSteps {
 public:
     // A polygon to validate, flood (invalid polygons too: the viewer shows where the machine
@@ -41,6 +44,8 @@ public:
     RunSteps(Trace trace, std::string name);
     OpenPhase next() const { return next_; }  // the phase step() runs; Done: none is left
     void step();
+    double phaseDone() const;                            // how much of next() is done, in [0, 1)
+    static constexpr uint64_t kFloodSlice = 16384;       // ~15 ms of a flood, natively
     PreparedRun take() { return std::move(prepared_); }  // once next() is Done
 
 private:
@@ -51,6 +56,9 @@ private:
     Polygon polygon_;        // to flood
     FloodedRun run_;
     PreparedRun prepared_;
+    std::unique_ptr<Recording> recording_;   // the Flood phase under way
+    bool floodEnded_ = false;                // its last slice taken
+    std::optional<PrepareSteps> preparing_;  // the Prepare phase under way
     OpenPhase next_ = OpenPhase::Validate;
 };
 
@@ -87,7 +95,9 @@ public:
     uint32_t progress() const { return job_.progress(); }
     uint32_t total() const { return job_.total(); }
 
-    // Once phase() is past Read: the read's verdict and, when it read, the polygon as read
+    // True once the read succeeded and its outline is prepared (a failed read never sets it).
+    bool outlineReady() const { return outlineReady_.load(std::memory_order_acquire); }
+    // Once outlineReady() or done(): the read's verdict and, when it read, the polygon as read
     // prepared as an outline (to show while the rest runs), its warnings.
     const Diagnostic& readDiagnostic() const { return read_; }
     PreparedRun takeOutline() { return std::move(outline_); }
@@ -103,11 +113,13 @@ private:
     void finish(Job& job);
     Request request_;
     std::atomic<int> phase_{int(OpenPhase::Read)};
+    std::atomic<bool> outlineReady_{false};  // what read() wrote is visible
     Diagnostic read_;
     PreparedRun outline_;
     std::vector<std::string> warnings_;
     bool complete_ = false;
-    std::optional<RunSteps> steps_;  // once read
+    std::optional<RunSteps> steps_;        // once read
+    OpenPhase entered_ = OpenPhase::Read;  // the phase enter() last began
     Job job_;  // declared last, so it is joined before what its work writes is destroyed
 };
 

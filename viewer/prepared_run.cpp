@@ -181,15 +181,35 @@ RunVerdict noteVerdict(const std::string& note) {
     return v;
 }
 
-PreparedRun prepareRun(FloodedRun run, const std::string& name, std::string note) {
-    PreparedRun p;
-    p.trace = std::make_unique<Trace>(std::move(run.trace));
+PrepareSteps::PrepareSteps(FloodedRun run, std::string name, std::string note)
+    : run_(std::move(run)), name_(std::move(name)) {
+    p_.note = std::move(note);
+}
+
+PrepareSteps::~PrepareSteps() = default;
+
+bool PrepareSteps::step() {
+    switch (next_++) {
+        case 0:  // the replay's keyframes: a pass over the events
+            p_.trace = std::make_unique<Trace>(std::move(run_.trace));
+            p_.replay = std::make_unique<Replay>(*p_.trace);
+            p_.input = std::move(run_.input);
+            return true;
+        case 1: p_.classes = classifyVertices(p_.trace->polygon, p_.trace->up); return true;
+        case 2: p_.transcript = transcriptItems(p_.trace->events); return true;
+        case 3: verdict(); return true;
+        case 4:
+            geometry_ = std::make_unique<CanvasGeometry>(
+                buildCanvasGeometry(*p_.trace, p_.classes, !p_.note.empty(), p_.input.ok()));
+            return true;
+        case 5: p_.canvas = prepareCanvas(std::move(*geometry_), *p_.trace); return false;
+        default: return false;
+    }
+}
+
+void PrepareSteps::verdict() {
+    PreparedRun& p = p_;
     const Trace& t = *p.trace;
-    p.replay = std::make_unique<Replay>(t);
-    p.note = std::move(note);
-    p.input = std::move(run.input);
-    p.classes = classifyVertices(t.polygon, t.up);
-    p.transcript = transcriptItems(t.events);
     p.triangleStep.assign(t.triangles.size(), 0);
     for (const Event& e : t.events)
         for (uint32_t k = e.firstTriangle;
@@ -198,16 +218,21 @@ PreparedRun prepareRun(FloodedRun run, const std::string& name, std::string note
     if (!p.note.empty()) {
         p.verdict = noteVerdict(p.note);
     } else {
-        judgeLines(p.verdict, t, p.input, std::move(run.judged), p.triangleStep);
-        listFindings(p.verdict, t, p.input, std::move(run.findings), name, p.triangleStep);
+        judgeLines(p.verdict, t, p.input, std::move(run_.judged), p.triangleStep);
+        listFindings(p.verdict, t, p.input, std::move(run_.findings), name_, p.triangleStep);
         listOffenders(p.verdict, t);
         joinLines(p.verdict);
     }
     for (size_t i = 1; i < t.events.size(); ++i)
         ++p.transitions[size_t(t.events[i - 1].action)][size_t(t.events[i].action)];
     if (const Event* e = firstForbidden(t)) p.forbiddenStep = e->step + 1;
-    p.canvas = prepareCanvas(p);
-    return p;
+}
+
+PreparedRun prepareRun(FloodedRun run, const std::string& name, std::string note) {
+    PrepareSteps steps(std::move(run), name, std::move(note));
+    while (steps.step()) {
+    }
+    return steps.take();
 }
 
 }  // namespace flood::view

@@ -75,6 +75,7 @@ struct RunVerdict {
 RunVerdict noteVerdict(const std::string& note);
 
 struct PreparedCanvas;  // canvas_geometry.h: the canvas's arrays and label grids
+struct CanvasGeometry;  // canvas_vertices.h: its arrays
 
 using Transitions = std::array<std::array<uint32_t, size_t(Action::Count)>, size_t(Action::Count)>;
 
@@ -95,5 +96,26 @@ struct PreparedRun {
 // `run` made ready to show under `name`; with a `note`, it is an outline (no events) whose
 // verdict is the note.
 PreparedRun prepareRun(FloodedRun run, const std::string& name, std::string note = {});
+
+// prepareRun() a part at a time, each a pass over the run (the page prepares a large run
+// between its frames): the keyframes, the classes, the transcript, the verdict, the canvas's
+// arrays, its label grids.
+class PrepareSteps {
+public:
+    PrepareSteps(FloodedRun run, std::string name, std::string note = {});
+    ~PrepareSteps();
+    bool step();  // the next part; false once the last is done
+    static constexpr int kParts = 6;
+    int done() const { return next_; }            // parts done so far
+    PreparedRun take() { return std::move(p_); }  // once step() returned false
+
+private:
+    void verdict();
+    FloodedRun run_;
+    std::string name_;
+    PreparedRun p_;
+    std::unique_ptr<CanvasGeometry> geometry_;  // between the canvas's two parts
+    int next_ = 0;
+};
 
 }  // namespace flood::view

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -42,22 +43,46 @@ void backWithHugePages(void* data, size_t bytes) {
 
 }  // namespace
 
-Trace record(const Polygon& polygon, const Options& options) {
+// The trace is filled in place: the machine floods its polygon and the recorder appends to
+// its log, so neither moves while the run lasts.
+struct Recording::State {
     Trace t;
+    Recorder rec;
+    std::optional<SteppedRun> run;
+};
+
+Recording::Recording(const Polygon& polygon, const Options& options) : s_(new State) {
+    Trace& t = s_->t;
     t.polygon = polygon;
     t.up = options.up;
-    Recorder rec;
-    rec.events = &t.events;
+    s_->rec.events = &t.events;
     // Runs take about 1.5 events per vertex: reserve once rather than regrow (and copy) the log.
     t.events.reserve(polygon.vertices.size() + polygon.vertices.size() / 2 + 64);
     backWithHugePages(t.events.data(), t.events.capacity() * sizeof(Event));
-    rec.growth = polygon.vertices.size() / 2 + 64;
-    FloodResult r = triangulate(t.polygon, &rec, options);
-    // The log is most of a trace's memory: it keeps just its events (one copy of it, once).
-    t.events.shrink_to_fit();
+    s_->rec.growth = polygon.vertices.size() / 2 + 64;
+    s_->run.emplace(t.polygon, &s_->rec, options);
+}
+Recording::~Recording() = default;
+
+bool Recording::advance(uint64_t steps) { return s_->run->advance(steps); }
+uint32_t Recording::steps() const { return s_->run->steps(); }
+
+Trace Recording::take() {
+    Trace& t = s_->t;
+    FloodResult& r = s_->run->result();
+    // The log is most of a trace's memory: it keeps just its events (one copy of it, once),
+    // unless its slack is a few percent (the copy would cost more than it frees).
+    if (t.events.capacity() - t.events.size() > t.events.size() / 32) t.events.shrink_to_fit();
     t.triangles = std::move(r.triangles);
     t.diagnostic = r.diagnostic;
-    return t;
+    return std::move(t);
+}
+
+Trace record(const Polygon& polygon, const Options& options) {
+    Recording recording(polygon, options);
+    while (recording.advance(UINT64_MAX)) {
+    }
+    return recording.take();
 }
 
 Replay::Replay(const Trace& trace, uint32_t keyframeInterval)

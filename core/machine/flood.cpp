@@ -78,8 +78,15 @@ public:
     Machine& operator=(const Machine&) = delete;
 
     bool refused() const { return refused_; }
+    uint32_t stepsTaken() const { return step_; }
 
     void run() {
+        if (start()) advance(UINT64_MAX);
+    }
+
+    // A run in slices (SteppedRun): start() sets it up, then each advance() takes at most
+    // `steps` steps of the parts' floods; it returns false once the run has ended.
+    bool start() {
         nodes_.clear();
         result_.triangles.clear();
         if (!result_.diagnostic.ok())
@@ -88,7 +95,7 @@ public:
             result_.diagnostic = {Status::Usage,
                                   "the flood direction (" + upName(up_) +
                                       ") is not a direction: it must be a nonzero finite vector"};
-            return;
+            return false;
         }
         if (heights_.general()) heights_.rank();
         // Room for every node and gorge of the run, so that neither array moves (a move holds
@@ -105,8 +112,19 @@ public:
         if (gorges_.capacity() < 2 * minima + 16) gorges_.reserve(2 * minima + 16);
         const size_t triangles = poly_.vertices.size() + 2 * poly_.rings.size();
         if (result_.triangles.capacity() < triangles) result_.triangles.reserve(triangles);
-        for (uint32_t part = 0; part < poly_.parts.size() && ok(); ++part) floodPart(part);
+        nextPart_ = 0;
+        return true;
+    }
+    bool advance(uint64_t steps) {
+        while (ok() && (left_ != kNil || nextPart_ < poly_.parts.size())) {
+            if (left_ == kNil) beginPart(nextPart_++);
+            // The part's flood; a forbidden state ends it too (forbid() drops the fingers).
+            for (; left_ != kNil && steps; --steps) step();
+            if (left_ != kNil) return true;  // out of steps
+            if (ok()) endPart();
+        }
         result_.steps = step_;
+        return false;
     }
 
 private:
@@ -121,10 +139,10 @@ private:
     bool ok() const { return result_.diagnostic.ok(); }
 
     // ---- [SECTION] a part: set-up, the run, the left-behind check ---------------------------
-    // A part is flooded from the lowest node of its outer loop until no gorge is left; then
-    // every node must have been flooded: a loop never reached means a hole outside the outer
-    // ring, or loops that cross.
-    void floodPart(uint32_t part) {
+    // A part is flooded from the lowest node of its outer loop until no gorge is left
+    // (advance() steps it); then every node must have been flooded: a loop never reached
+    // means a hole outside the outer ring, or loops that cross.
+    void beginPart(uint32_t part) {
         const NodeId start = setUp(part);
         if (!ok()) return;
         Ev e = begin(Action::Start);
@@ -133,15 +151,17 @@ private:
         startGorge(start);
         e.bottom = nodes_[start].v;
         emit(e);
-        while (ok() && left_ != kNil) {
-            if (budget_-- == 0) {
-                Ev f = begin(Action::Forbidden);
-                return forbid(f, Forbidden::NoProgress, left_, right_);
-            }
-            step();
+    }
+    void step() {
+        if (budget_-- == 0) {
+            Ev f = begin(Action::Forbidden);
+            return forbid(f, Forbidden::NoProgress, left_, right_);
         }
+        decide();
+    }
+    void endPart() {
         // Every node the part had was cut off (the usual end): nothing to look for.
-        const NodeId alive = ok() && killed_ < partNodes_ ? firstAliveNode(partFirstNode_) : kNil;
+        const NodeId alive = killed_ < partNodes_ ? firstAliveNode(partFirstNode_) : kNil;
         if (alive != kNil) {
             Ev f = begin(Action::Forbidden);
             forbid(f, Forbidden::LeftBehind, alive, kNil);
@@ -305,7 +325,7 @@ private:
     }
 
     // ---- [SECTION] the decision tree (Fig. 9) ----------------------------------------------
-    void step() {
+    void decide() {
         work().nodeVisits += 4;  // Left, Right and the fingers
         NodeId nl = prev(left_), nr = next(right_);
         Ev e = begin(Action::Raise);
@@ -594,6 +614,7 @@ private:
     std::vector<uint32_t>& todo_ = b_.todo;  // pending gorges (ids), last pushed first
     NodeId left_ = kNil, right_ = kNil, water_ = kNil, partFirstNode_ = NodeId(0);
     uint32_t part_ = 0, partNodes_ = 0, killed_ = 0, cut_ = 0, step_ = 0;  // killed_: of the part
+    uint32_t nextPart_ = 0;  // the part advance() sets up next
     uint64_t budget_ = 0;
     FloodResult& result_;
     bool refused_ = false;  // quiet: a forbidden state was reached
@@ -612,5 +633,21 @@ void flood(const Polygon& poly, Listener* listener, const Options& options, Floo
     quiet.run();
     if (quiet.refused()) Machine<true>(poly, nullptr, options, out, keep).run();
 }
+
+struct SteppedRun::Impl {
+    FloodResult result;
+    Machine<true> machine;
+    bool going;
+    Impl(const Polygon& poly, Listener* listener, const Options& options)
+        : machine(poly, listener, options, result, nullptr), going(machine.start()) {}
+};
+SteppedRun::SteppedRun(const Polygon& polygon, Listener* listener, const Options& options)
+    : impl_(new Impl(polygon, listener, options)) {}
+SteppedRun::~SteppedRun() = default;
+bool SteppedRun::advance(uint64_t steps) {
+    return impl_->going = impl_->going && impl_->machine.advance(steps);
+}
+uint32_t SteppedRun::steps() const { return impl_->machine.stepsTaken(); }
+FloodResult& SteppedRun::result() { return impl_->result; }
 
 }  // namespace flood

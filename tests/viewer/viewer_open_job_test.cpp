@@ -1,5 +1,6 @@
 // The window's open in the background (viewer/open_job.h, Model::openInBackground): the
-// outline adopted before the flood, progress monotone to its total, Cancel at each phase,
+// outline adopted before the flood, its flood and preparation cut in steps, progress monotone
+// to its total, Cancel at each phase,
 // a second open cancelling the first, a failing read's diagnostic, and the run adopted equal
 // to the synchronous open's. A Gate held by the open's hook stops it at a phase.
 #if __has_include("model.h")
@@ -7,10 +8,12 @@
 
 #include <chrono>
 #include <condition_variable>
+#include <map>
 #include <mutex>
 #include <thread>
 
 #include "canvas_geometry.h"
+#include "flood/tools/generate.h"
 #include "model.h"
 #include "test_support.h"
 
@@ -262,6 +265,33 @@ TEST(OpenJob, TheRunArrivesPreparedAsTheSynchronousOpenPreparesIt) {
         EXPECT_EQ(a->vertexMarkers.size(), bg.polygon().vertices.size());
         EXPECT_FALSE(bg.takeCanvas());  // taken once: the canvas owns it now
     }
+}
+
+// No step of an open holds the page for a whole phase of a large run: the flood is cut in
+// slices of machine steps (its log reserved and trimmed apart), the preparation in parts, and
+// within a phase the progress only grows. The run is the one record() makes whole.
+TEST(OpenJob, AFloodIsCutInSlicesAndItsPreparationInParts) {
+    const Polygon polygon = generate("comb", 1, 100000);
+    RunSteps steps(polygon, "comb", Up::PlusY);
+    std::map<OpenPhase, size_t> taken;
+    OpenPhase phase = OpenPhase::Done;
+    double done = 0;
+    for (OpenPhase p; (p = steps.next()) != OpenPhase::Done; steps.step(), ++taken[p]) {
+        if (p != phase) phase = p, done = 0;
+        EXPECT_GE(steps.phaseDone(), done) << openPhaseName(p);
+        EXPECT_LT(steps.phaseDone(), 1.0) << openPhaseName(p);
+        done = steps.phaseDone();
+    }
+    const PreparedRun run = steps.take();
+    const Trace whole = record(polygon);
+    ASSERT_TRUE(run.trace);
+    EXPECT_GT(done, 0.5) << "the preparation's last part began past its half";
+    EXPECT_EQ(taken[OpenPhase::Validate], 1u);
+    EXPECT_GE(taken[OpenPhase::Flood], whole.events.size() / RunSteps::kFloodSlice + 2);
+    EXPECT_EQ(taken[OpenPhase::Prepare], size_t(PrepareSteps::kParts));
+    EXPECT_TRUE(run.trace->events == whole.events);
+    EXPECT_TRUE(run.trace->triangles == whole.triangles);
+    EXPECT_TRUE(run.verdict.check.ok) << run.verdict.text;
 }
 
 TEST(OpenJob, ASecondOpenCancelsTheFirst) {

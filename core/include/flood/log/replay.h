@@ -5,6 +5,7 @@
 // pointers, bridges), so their memory stays a small multiple of the log's even when
 // thousands of gorges wait at once.
 #pragma once
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -25,6 +26,22 @@ struct Trace {
 
 // Runs the machine with a recording listener.
 Trace record(const Polygon& polygon, const Options& options = {});
+
+// record() in slices (SteppedRun): the web page records a large run between its frames.
+class Recording {
+public:
+    explicit Recording(const Polygon& polygon, const Options& options = {});
+    ~Recording();
+    Recording(const Recording&) = delete;
+    Recording& operator=(const Recording&) = delete;
+    bool advance(uint64_t steps);  // at most `steps` more steps; false once the run has ended
+    uint32_t steps() const;        // taken so far
+    Trace take();                  // the trace, once advance() returned false
+
+private:
+    struct State;  // core/log/replay.cpp
+    std::unique_ptr<State> s_;
+};
 
 // A gorge waiting on the to-do list (pending, after a Bridge) or held at a top (after a Spill).
 struct Gorge {

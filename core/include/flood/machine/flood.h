@@ -1,5 +1,6 @@
 // Public entry point of the core: triangulate a polygon by flooding (Ronfard & Rossignac 1994).
 #pragma once
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -45,6 +46,25 @@ public:
 
 private:
     std::unique_ptr<Workspace> workspace_;
+};
+
+// triangulate(polygon, listener, options) cut in slices, for a caller that must not hold still
+// for a large run and has no thread to give it (the web page floods between its frames): each
+// advance() takes at most `steps` of the machine's steps (an event each). The same events,
+// triangles and diagnostic as triangulate(). `polygon` and `listener` must outlive it.
+class SteppedRun {
+public:
+    SteppedRun(const Polygon& polygon, Listener* listener, const Options& options = {});
+    ~SteppedRun();
+    SteppedRun(const SteppedRun&) = delete;
+    SteppedRun& operator=(const SteppedRun&) = delete;
+    bool advance(uint64_t steps);  // false once the run has ended
+    uint32_t steps() const;        // taken so far
+    FloodResult& result();         // whole once advance() returned false
+
+private:
+    struct Impl;  // core/machine/flood.cpp
+    std::unique_ptr<Impl> impl_;
 };
 
 // Human-readable description of a forbidden event, naming the vertices (index, ring, x, y).

@@ -3,8 +3,9 @@
 // the pixel grid (pixelBoundary, canvas_geometry.h): far fewer lines, the same picture. The
 // baseline is the same shot with every edge drawn (FLOOD_VIEWER_EXACT_BOUNDARY=1). Stated
 // tolerance: every inked canvas pixel of either picture lies within one pixel of an inked pixel
-// of the other, and at most 2% of the inked pixels differ at all. The pictures stay in the
-// build directory (outline-pixels-*.png).
+// of the other, and at most 2% of the inked pixels differ at all; at the default window size
+// and at projector size (1024x768). The pictures stay in the build directory
+// (outline-pixels-*.png).
 #include <stb_image.h>  // implementation lives in Debian's libstb
 
 #include <cstdio>
@@ -28,14 +29,14 @@ struct Shot {
     size_t lines = 0;  // the decimated boundary's, as printed; 0: every edge
 };
 
-bool shoot(const std::string& input, bool exact, Shot& s) {
-    const std::string png =
-        std::string(FLOOD_WORK_DIR) + "/outline-pixels-" + (exact ? "exact" : "decimated") + ".png";
+bool shoot(const std::string& input, bool exact, const std::string& size, Shot& s) {
+    const std::string png = std::string(FLOOD_WORK_DIR) + "/outline-pixels-" + size + "-" +
+                            (exact ? "exact" : "decimated") + ".png";
     std::remove(png.c_str());
     const ViewerRun run = runViewer(
         std::string("FLOOD_VIEWER_HOLD_OPEN=flooding ") +
         (exact ? "FLOOD_VIEWER_EXACT_BOUNDARY=1 " : "") + "'" + FLOOD_VIEWER + "' '" + input +
-        "' --theme dark --print-layout --screenshot '" + png + "' --size 1280x800");
+        "' --theme dark --print-layout --screenshot '" + png + "' --size " + size);
     if (run.exitCode != 0 || !run.layout.count("canvas") || !run.layout.count("opening-box"))
         return failWith(png + ": the viewer did not draw the held outline"), false;
     s.canvas = run.layout.at("canvas"), s.box = run.layout.at("opening-box");
@@ -49,20 +50,16 @@ bool shoot(const std::string& input, bool exact, Shot& s) {
     return true;
 }
 
-}  // namespace
-
-int main() {
-    if (int rc = displayOrSkip()) return rc;
-    const std::string input = std::string(FLOOD_WORK_DIR) + "/outline-pixels.json";
-    const std::string gen =
-        std::string("'") + FLOOD_CLI + "' generate circle-jagged 100000 -o '" + input + "'";
-    if (std::system(gen.c_str()) != 0) return failWith(gen);
+// The decimated outline against every edge drawn, at one window size.
+bool samePicture(const std::string& input, const std::string& size) {
+    std::printf("at %s:\n", size.c_str());
     Shot dec, all;
-    if (!shoot(input, false, dec) || !shoot(input, true, all)) return 1;
-    if (dec.w != all.w || dec.h != all.h) return failWith("the two pictures differ in size");
+    if (!shoot(input, false, size, dec) || !shoot(input, true, size, all)) return false;
+    if (dec.w != all.w || dec.h != all.h) return failWith("the two pictures differ in size"), false;
     std::printf("decimated boundary: %zu lines for 100000 edges\n", dec.lines);
-    if (dec.lines == 0 || dec.lines > 25000) return failWith("the boundary was not decimated");
-    if (all.lines != 0) return failWith("FLOOD_VIEWER_EXACT_BOUNDARY=1 still decimated");
+    if (dec.lines == 0 || dec.lines > 25000)
+        return failWith("the boundary was not decimated"), false;
+    if (all.lines != 0) return failWith("FLOOD_VIEWER_EXACT_BOUNDARY=1 still decimated"), false;
     // Inked: not the canvas's background (its top-left corner), on the canvas, out of the box.
     const Rect& c = dec.canvas;
     const int x0 = int(c.x) + 1, y0 = int(c.y) + 1, x1 = int(c.x + c.w) - 1,
@@ -92,8 +89,21 @@ int main() {
         }
     std::printf("inked pixels %ld, differing %ld, farther than a pixel from the other's %ld\n", ink,
                 differ, stray);
-    if (ink < 5000) return failWith("no outline drawn");
-    if (stray > 0) return failWith("the decimated outline strays more than a pixel");
-    if (differ > ink / 50) return failWith("more than 2% of the outline's pixels differ");
+    if (ink < 5000) return failWith("no outline drawn"), false;
+    if (stray > 0) return failWith("the decimated outline strays more than a pixel"), false;
+    if (differ > ink / 50) return failWith("more than 2% of the outline's pixels differ"), false;
+    return true;
+}
+
+}  // namespace
+
+int main() {
+    if (int rc = displayOrSkip()) return rc;
+    const std::string input = std::string(FLOOD_WORK_DIR) + "/outline-pixels.json";
+    const std::string gen =
+        std::string("'") + FLOOD_CLI + "' generate circle-jagged 100000 -o '" + input + "'";
+    if (std::system(gen.c_str()) != 0) return failWith(gen);
+    for (const char* size : {"1280x800", "1024x768"})
+        if (!samePicture(input, size)) return 1;
     return 0;
 }

@@ -68,8 +68,9 @@ canvas=$(echo "$layout" | awk '$2 == "layout" && $3 == "canvas" {print $4 "," $5
 [ -n "$canvas" ] || { echo "web: no canvas in the native viewer's layout:"; echo "$layout"; exit 1; }
 printf '[[[0,0],[4,0],[4,3],[2,5],[0,3]]]\n' >"$tmp/dropped-house.json"
 printf 'POLYGON ((0 0, 6 0, 3 4, 0 0))\n' >"$tmp/picked-triangle.wkt"
-# A face whose invariant scan takes many frames' slices in the page.
-"$native/flood" generate spiral 100000 -o "$tmp/big-spiral.json"
+# A face whose invariant scan takes many frames' slices in the page (FLOOD_WEB_BIG vertices:
+# docs/BENCHMARKS.md measures the page's stalls with 10^6).
+"$native/flood" generate spiral "${FLOOD_WEB_BIG:-100000}" -o "$tmp/big-spiral.json"
 port=${FLOOD_WEB_PORT:-8029}
 python3 -m http.server --bind 127.0.0.1 --directory "$web/site" "$port" >"$tmp/server.log" 2>&1 &
 server=$!

@@ -413,6 +413,7 @@ async function exportAs(format, what) {  // the export's note once it has ended 
 }
 
 // The SVG of Fig. 7's last step: all of its triangles.
+const exportStart = Date.now();  // what these sections add to the test (docs/BENCHMARKS.md)
 await navigate("?polygon=paper-figure-7.json&step=99999");
 const lastStep = await step();
 const svgName = `paper-figure-7-step${lastStep}.svg`;
@@ -476,6 +477,8 @@ for (const f of nativeNames.filter((n) => existsSync(join(downloads, n)))) {
   }
   previous = png;
 }
+
+console.log(`the Export sections took ${((Date.now() - exportStart) / 1000).toFixed(1)} s`);
 
 // ---- the Shrink panel: the shrink runs in a Web Worker (viewer/shrink_worker.h) ------------------
 // A failing sample shrinks while the page goes on drawing frames; Save offers the repro as a
@@ -569,6 +572,7 @@ if (await startShrink("?polygon=tutorial/crossing-face.json&test-shrink-crash=30
 }
 
 // ---- the Shrink panel's Cancel ends the worker; a shrink started afterwards finishes ------------
+const cancelStart = Date.now();
 // test-shrink-slow=200: a shrink of many seconds (about 85 tries of 200 ms), still running
 // when Cancel is pressed. The page's Web Workers are seen over the DevTools protocol
 // (auto-attached targets of type worker).
@@ -600,6 +604,8 @@ if (await startShrink("?polygon=tutorial/crossing-face.json&test-shrink-slow=200
     await until("the finished shrink's worker ends", "0", () => shrinkWorkers() === 0, 10000);
   }
 }
+
+console.log(`the Shrink Cancel section took ${((Date.now() - cancelStart) / 1000).toFixed(1)} s`);
 
 // ---- the Edit panel's Save reaches the user as a download ----------------------------------------
 // Ctrl+S opens the Save window (at the canvas's corner + 60 px, default ImGui style: its path

@@ -92,12 +92,18 @@ function(flood_web_cli target)
 endfunction()
 
 # The viewer as a page: index.html (web/shell.html), its .js, .wasm and .data (polygons/ as
-# /polygons). ASYNCIFY lets the viewer's own loop yield to the browser at each frame.
+# /polygons). ASYNCIFY lets the viewer's own loop yield to the browser at each frame; only the
+# functions that are on the stack when it yields are instrumented (web/asyncify-only.txt: main,
+# the run loops, platform::pollEvents and waitEvents, which await the next frame), not every
+# function that might reach an indirect call: that was 1.3 MB of the 3.8 MB .wasm
+# (docs/BENCHMARKS.md). A new caller of pollEvents/waitEvents must be added there, or the page
+# stops after its first frame (the page test's first checks).
 function(flood_web_page target)
   set(site ${CMAKE_BINARY_DIR}/site)
   set_target_properties(${target} PROPERTIES OUTPUT_NAME index SUFFIX .html
                         RUNTIME_OUTPUT_DIRECTORY ${site})
   target_link_options(${target} PRIVATE -sASYNCIFY -sASYNCIFY_STACK_SIZE=65536
+    -sASYNCIFY_ONLY=@${CMAKE_SOURCE_DIR}/web/asyncify-only.txt
     -sMINIFY_HTML=0 -sEXPORTED_RUNTIME_METHODS=ccall,FS,UTF8ToString -sINITIAL_MEMORY=67108864
     "SHELL:--shell-file ${CMAKE_SOURCE_DIR}/web/shell.html"
     "SHELL:--pre-js ${CMAKE_SOURCE_DIR}/web/pre.js"
@@ -105,7 +111,7 @@ function(flood_web_page target)
     "SHELL:--preload-file ${CMAKE_SOURCE_DIR}/polygons@/polygons")
   file(GLOB polygons CONFIGURE_DEPENDS ${CMAKE_SOURCE_DIR}/polygons/*)
   set_property(TARGET ${target} APPEND PROPERTY LINK_DEPENDS ${CMAKE_SOURCE_DIR}/web/shell.html
-               ${CMAKE_SOURCE_DIR}/web/pre.js ${polygons})
+               ${CMAKE_SOURCE_DIR}/web/pre.js ${CMAKE_SOURCE_DIR}/web/asyncify-only.txt ${polygons})
 endfunction()
 
 # The page's shrinker (viewer/shrink_worker.h): the flood CLI linked once more, for a Web

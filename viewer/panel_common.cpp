@@ -49,6 +49,11 @@ Rect windowRect() {
     return {p.x, p.y, s.x, s.y};
 }
 
+Rect itemRect() {
+    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
+    return {a.x, a.y, b.x - a.x, b.y - a.y};
+}
+
 void textOneLine(const std::string& text, float width, const ImVec4* colour) {
     std::string shown = text;
     if (ImGui::CalcTextSize(text.c_str()).x > width && text.size() > 2) {

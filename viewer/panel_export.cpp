@@ -9,6 +9,10 @@
 #include "export_job.h"
 #include "panels.h"
 
+#ifdef __EMSCRIPTEN__
+#include <emscripten.h>
+#endif
+
 namespace flood::view {
 
 namespace {
@@ -16,6 +20,20 @@ namespace {
 enum ExportFormat { CanvasPng, CanvasSvg, Gif, PngSequence, FormatCount };
 const char* const kFormatNames[FormatCount] = {"PNG (canvas)", "SVG (canvas)", "GIF (animated)",
                                                "PNG sequence"};
+
+// Where the panel's controls were drawn in the last frame (the page's tests click them): the
+// toolbar's Export... button, the format combo (while closed), Export, Cancel, then the combo's
+// list items while it is open; w = 0 when not shown.
+enum Control {
+    Opener,
+    FormatCombo,
+    ExportButton,
+    CancelButton,
+    FirstFormat,
+    ControlCount = FirstFormat + FormatCount
+};
+Rect g_controls[ControlCount];
+const std::string* g_note = nullptr;
 
 std::string suggestedPath(const Model& m, int format) {
     std::string base = exportBaseName(m);
@@ -30,6 +48,9 @@ std::string suggestedPath(const Model& m, int format) {
 }  // namespace
 
 void drawExport(Ui& ui) {
+    for (Rect& r : g_controls) r = {};
+    g_controls[Opener] = ui.exportOpener;
+    g_note = &ui.exportNote;
     if (!ui.showExport) return;
     Model& m = ui.model;
     if (!beginFloating(ui, "Export", &ui.showExport, 360, 300, 40, 60)) return;
@@ -38,7 +59,16 @@ void drawExport(Ui& ui) {
     ImGui::BeginDisabled(running);
 
     int format = std::clamp(ui.exportFormat, 0, FormatCount - 1);
-    if (ImGui::Combo("format", &format, kFormatNames, FormatCount)) ui.exportPath[0] = 0;
+    // ImGui::Combo's list, written out so that its items' places are known.
+    if (!ImGui::BeginCombo("format", kFormatNames[format])) {
+        g_controls[FormatCombo] = itemRect();  // (once open, the last item is its list's window)
+    } else {
+        for (int f = 0; f < FormatCount; ++f) {
+            if (ImGui::Selectable(kFormatNames[f], f == format)) format = f, ui.exportPath[0] = 0;
+            g_controls[FirstFormat + f] = itemRect();
+        }
+        ImGui::EndCombo();
+    }
     ui.exportFormat = format;
     int size[2] = {s.width, s.height};
     if (ImGui::InputInt2("size (px)", size))
@@ -73,6 +103,7 @@ void drawExport(Ui& ui) {
         ImGui::TextColored(toImVec4(palette::kCulprit), "built without giflib (FLOOD_GIF)");
 #endif
     bool go = ImGui::Button("Export");
+    g_controls[ExportButton] = itemRect();
     ImGui::EndDisabled();
 
     if (go && !running) {
@@ -89,6 +120,7 @@ void drawExport(Ui& ui) {
     if (ui.exportJob) {
         ImGui::ProgressBar(float(ui.exportJob->progress()), ImVec2(-1, 0));
         if (ImGui::Button("Cancel")) ui.exportJob->cancel();
+        g_controls[CancelButton] = itemRect();
     }
     if (!ui.exportNote.empty()) {
         ImGui::PushTextWrapPos(0);
@@ -99,5 +131,18 @@ void drawExport(Ui& ui) {
     }
     ImGui::End();
 }
+
+#ifdef __EMSCRIPTEN__
+// For the page's tests (tests/web/page_test.mjs): component k (x, y, w, h) of a control above
+// (-1 when not shown), and the last export's note.
+extern "C" {
+EMSCRIPTEN_KEEPALIVE double flood_web_export_rect(int which, int k) {
+    if (which < 0 || which >= ControlCount || k < 0 || k > 3 || g_controls[which].w <= 0) return -1;
+    const Rect& r = g_controls[which];
+    return k == 0 ? r.x : k == 1 ? r.y : k == 2 ? r.w : r.h;
+}
+EMSCRIPTEN_KEEPALIVE const char* flood_web_export_note() { return g_note ? g_note->c_str() : ""; }
+}
+#endif
 
 }  // namespace flood::view

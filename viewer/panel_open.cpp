@@ -112,8 +112,7 @@ void drawOpen(Ui& ui) {
             std::string label =
                 std::to_string(i + 1) + ". " + g.title + "##gallery" + std::to_string(i);
             if (ImGui::Selectable(label.c_str(), g.file == m.path())) chosen = g.file;
-            const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-            ui.openPanel.galleryRows.push_back({a.x, a.y, b.x - a.x, b.y - a.y});
+            ui.openPanel.galleryRows.push_back(itemRect());
             if (!g.description.empty()) {
                 ImGui::Indent();
                 ImGui::TextDisabled("%s", g.description.c_str());

@@ -19,10 +19,7 @@ namespace {
 // Where the panel's buttons were drawn in the last frame (the page's tests click them): Shrink,
 // Cancel, Save; w = 0 when not shown.
 Rect g_buttons[3];
-void drawn(int which) {
-    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    g_buttons[which] = {a.x, a.y, b.x - a.x, b.y - a.y};
-}
+void drawn(int which) { g_buttons[which] = itemRect(); }
 const std::string* g_note = nullptr;
 
 // "dir/name.ext" or "dir/name.geojson#3" -> "dir/name-shrunk.geojson" (feature 3: "-3-shrunk").

@@ -230,6 +230,7 @@ void drawTimeline(Ui& ui) {
     if (ImGui::Button("Present (Tab)")) ui.presenter = true;
     sameLineOrWrap(buttonWidth("Export..."));
     if (ImGui::Button("Export...")) ui.showExport = true;
+    ui.exportOpener = itemRect();
     sameLineOrWrap(buttonWidth("Help"));
     if (ImGui::Button("Help")) ui.showHelp = true;
     ImVec2 end0 = ImGui::GetItemRectMin(), end1 = ImGui::GetItemRectMax();

@@ -17,8 +17,7 @@ void drawTranscript(Ui& ui) {
     beginTiled("Transcript", {col.x, col.y + col.h * 0.6, col.w, col.h * 0.4});
     const auto& items = m.transcript();
     if (ImGui::SmallButton("Copy")) ImGui::SetClipboardText(transcript(items).c_str());
-    const ImVec2 a = ImGui::GetItemRectMin(), b = ImGui::GetItemRectMax();
-    ui.transcriptCopy = {a.x, a.y, b.x - a.x, b.y - a.y};
+    ui.transcriptCopy = itemRect();
     ImGui::SameLine();
     ImGui::TextDisabled("(%zu items, %u events)", items.size(), m.steps());
     ImGui::BeginChild("text");

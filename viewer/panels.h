@@ -143,6 +143,7 @@ struct Ui {
     ImFont* captionFont = nullptr;  // the caption's larger font, rebuilt with the scale
     Rect toolbarEnd, captionRect;   // where the last toolbar button and the caption were
     Rect transcriptCopy;            // the Transcript panel's Copy button as last drawn
+    Rect exportOpener;              // the toolbar's Export... button as last drawn
     bool showExport = false;        // the Export panel (panel_export.cpp)
     ExportSettings exportSettings;  // what it exports; its format and path below
     int exportFormat = 0;           // ExportFormat
@@ -271,6 +272,8 @@ void sameLineOrWrap(float width);
 float buttonWidth(const char* label);
 // The current ImGui window's rectangle (between Begin and End).
 Rect windowRect();
+// The last ImGui item's rectangle, as drawn (where the page's tests click it).
+Rect itemRect();
 // `text` on one line of at most `width` pixels: cut in the middle ("/home/.../face.json") when
 // longer, the whole of it then in a tooltip. `colour` null: the text colour.
 void textOneLine(const std::string& text, float width, const ImVec4* colour = nullptr);

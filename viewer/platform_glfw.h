@@ -28,6 +28,8 @@ void destroyWindow();
 
 bool shouldClose();
 void requestClose();
+// In the page both yield to the browser until its next frame (ASYNCIFY): a function that
+// calls them must be listed, with them, in web/asyncify-only.txt.
 void pollEvents();
 void waitEvents(double timeoutSeconds);  // idle without spinning when nothing plays
 void newFrame();                         // ImGui's platform half of a frame

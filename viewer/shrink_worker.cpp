@@ -4,7 +4,6 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
-#include <regex>
 
 #include "download.h"
 
@@ -143,13 +142,18 @@ ShrinkResult shrinkResultFromWorker(const WorkerReport& report, const std::strin
             if (ring.is_array())
                 for (const auto& v : ring)
                     if (v.is_number_unsigned()) r.origin.push_back(v.get<Index>());
-    // The CLI's summary: "shrink: KIND[ (input valid, kept valid)]: ... -> ... (N runs)".
-    std::smatch m;
-    static const std::regex summary(
-        R"(shrink: .*?( \(input valid, kept valid\))?: .* \((\d+) runs\))");
-    if (std::regex_search(report.log, m, summary)) {
-        r.inputValid = m[1].matched;
-        r.tries = std::stoul(m[2]);
+    // The CLI's summary: "shrink: KIND[ (input valid, kept valid)]: ... -> ... (N runs)". Found
+    // without std::regex, which alone cost the page 90 KB of wasm (docs/BENCHMARKS.md).
+    for (size_t at = report.log.find("shrink: "); at != std::string::npos;
+         at = report.log.find("shrink: ", at + 1)) {
+        const std::string line = report.log.substr(at, report.log.find('\n', at) - at);
+        const size_t open = line.rfind(" ("), runs = line.size() - 6;
+        if (line.size() < 6 || line.compare(runs, 6, " runs)") != 0 || open == std::string::npos ||
+            open + 2 >= runs || line.find_first_not_of("0123456789", open + 2) != runs)
+            continue;
+        r.inputValid = line.find(" (input valid, kept valid): ") != std::string::npos;
+        r.tries = std::stoul(line.substr(open + 2, runs - open - 2));
+        break;
     }
     r.reproduces = true;  // the CLI writes a repro only once it failed the same way read back
     return r;

@@ -62,6 +62,32 @@ TEST(ShrinkWorker, TheCliReproIsTheShrinkTheDesktopMakes) {
     EXPECT_TRUE(page.reproduces);
 }
 
+TEST(ShrinkWorker, TheCliSummaryGivesTheTriesAndWhetherTheInputWasValid) {
+    WorkerReport report = cliShrink(sourcePath("polygons/tutorial/crossing-face.json"),
+                                    scratch("shrink-worker-summary"));
+    ASSERT_EQ(report.exitCode, 0) << report.log;
+    // Progress lines and a message line around the summary, as the CLI writes them.
+    const std::string progress = "shrink: 3 tries, 40 vertices\nshrink: 9 tries, 12 vertices\n";
+    report.log = progress +
+                 "shrink: forbidden transition SpillNoBottom (input valid, kept valid): 40 "
+                 "vertices in 1 rings -> 4 vertices in 1 rings (17 runs)\n"
+                 "shrink: spilling over a top found no bottom (not a summary: 3 runs)\n";
+    ShrinkResult r = shrinkResultFromWorker(report, "the repro");
+    EXPECT_EQ(r.tries, 17u);
+    EXPECT_TRUE(r.inputValid);
+    report.log = progress +
+                 "shrink: forbidden transition SpillNoBottom: 992 vertices in 1 rings -> 4 "
+                 "vertices in 1 rings (85 runs)";  // the last line, no newline
+    r = shrinkResultFromWorker(report, "the repro");
+    EXPECT_EQ(r.tries, 85u);
+    EXPECT_FALSE(r.inputValid);
+    report.log = progress;  // no summary: the tries are not known
+    r = shrinkResultFromWorker(report, "the repro");
+    EXPECT_EQ(r.tries, 0u);
+    EXPECT_FALSE(r.inputValid);
+    EXPECT_NE(r.failure.kind, Failure::Kind::None) << "the repro itself still reads";
+}
+
 TEST(ShrinkWorker, NothingToShrinkSaysTheCliError) {
     const WorkerReport report =
         cliShrink(sourcePath("polygons/paper-figure-7.json"), scratch("shrink-worker-none"));

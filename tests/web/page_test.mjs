@@ -1,25 +1,31 @@
 // The page in headless Chromium, driven over the DevTools protocol with no npm package
 // (Node 20: --experimental-websocket). Run by tests/web/run.sh, which serves the site and
-// makes the native screenshot to compare with:
+// makes the native screenshot and exports to compare with:
 //   node --experimental-websocket page_test.mjs URL NATIVE.png CANVAS_X,Y,W,H DROP_FILE PICK_FILE OUT_DIR
+//        BIG_FILE NATIVE_LAST.svg NATIVE_FRAMES_DIR
 // Checks: the page loads with no console error; the URL's polygon and step are shown; the
 // canvas matches the native viewer's at that step; the arrow keys step (counter and picture);
 // P (Save PNG) downloads a PNG of the canvas; a file dropped on the canvas opens; Ctrl+O opens
 // the browser's file picker and a file chosen there opens; the recent files are still listed
 // after a reload; presenter=1 gives the presenter layout, theme=light a light canvas; a
-// second polygon chosen in the Open panel's gallery opens; the Shrink panel shrinks a failing
+// second polygon chosen in the Open panel's gallery opens; the Export panel's SVG of Fig. 7's
+// last step downloads, parses and draws the native CLI's triangles (NATIVE_LAST.svg is the
+// native viewer's), its PNG sequence of monotone.json downloads frame by frame as the native
+// viewer's --export-png-dir (NATIVE_FRAMES_DIR); the Shrink panel shrinks a failing
 // sample in a Web Worker while frames go on, and its Save downloads a repro the native CLI
 // reads back failing the same way; a forced crash of that worker (test-shrink-crash=N) leaves
-// the page running with the panel saying so; the Edit panel's Save (Ctrl+S, Enter) downloads
+// the page running with the panel saying so; Cancel ends the worker, and a shrink started
+// after it finishes; the Edit panel's Save (Ctrl+S, Enter) downloads
 // a polygon the native CLI triangulates as the original. DROP_FILE must have 5 vertices,
-// PICK_FILE 3. Prints the time to the first frame.
+// PICK_FILE 3; BIG_FILE is a large face (its open and scan run in slices). Prints the time to
+// the first frame.
 import { execFileSync, spawn } from "node:child_process";
 import { existsSync, mkdtempSync, readdirSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { inflateSync } from "node:zlib";
 
-const [url, nativePng, canvasArg, dropFile, pickFile, outDir, bigFile] = process.argv.slice(2);
+const [url, nativePng, canvasArg, dropFile, pickFile, outDir, bigFile, nativeSvg, nativeFrames] = process.argv.slice(2);
 const canvas = canvasArg.split(",").map(Number);  // x, y, w, h in pixels (scale 1)
 const W = 1280, H = 800;
 let failures = 0;
@@ -62,9 +68,9 @@ function decodePng(buf) {
   return { width, height, rgba: out };
 }
 
-// Pixels of the canvas rectangle that differ by more than `tolerance` in some channel.
-function canvasDiff(a, b, tolerance = 24) {
-  const [cx, cy, cw, ch] = canvas;
+// Pixels of the canvas rectangle (or `area`) that differ by more than `tolerance` in some channel.
+function canvasDiff(a, b, tolerance = 24, area = canvas) {
+  const [cx, cy, cw, ch] = area;
   let differ = 0;
   for (let y = cy; y < cy + ch; y++)
     for (let x = cx; x < cx + cw; x++) {
@@ -114,6 +120,7 @@ await new Promise((resolve) => ws.addEventListener("open", resolve));
 let nextId = 1;
 const pending = new Map(), errors = [];
 let chooserOpened = false;
+const workers = new Map();  // the page's live Web Workers (auto-attached targets): session -> URL
 ws.addEventListener("message", (e) => {
   const m = JSON.parse(e.data);
   if (m.id && pending.has(m.id)) {
@@ -122,6 +129,10 @@ ws.addEventListener("message", (e) => {
     m.error ? reject(new Error(JSON.stringify(m.error))) : resolve(m.result);
   } else if (m.method === "Page.fileChooserOpened") {
     chooserOpened = true;
+  } else if (m.method === "Target.attachedToTarget" && m.params.targetInfo.type === "worker") {
+    workers.set(m.params.sessionId, m.params.targetInfo.url);
+  } else if (m.method === "Target.detachedFromTarget") {
+    workers.delete(m.params.sessionId);
   } else if (m.method === "Runtime.consoleAPICalled" && m.params.type === "error") {
     errors.push("console.error: " + m.params.args.map((a) => a.value ?? a.description).join(" "));
   } else if (m.method === "Runtime.exceptionThrown") {
@@ -154,6 +165,7 @@ async function navigate(query) {
   await until(`${query} draws its first frame`, "!window.floodOldPage && typeof Module === 'object' && Module._flood_web_frames ? Module._flood_web_frames() : 0", (v) => v >= 1);
   await settle(6);
 }
+const nativeFlood = process.env.NATIVE_FLOOD || "build/flood";
 // Where the viewer drew the canvas (0), the caption (1), the Transcript's Copy button (2), the
 // gallery's row i (3 + i).
 const rect = (what) => evaluate(`[0, 1, 2, 3].map((k) => Module._flood_web_rect(${what}, k))`);
@@ -258,7 +270,7 @@ check(readdirSync(downloads).length === 1, `one file downloaded (${readdirSync(d
 const origin = new URL(url).origin;
 await send("Browser.grantPermissions", { origin, permissions: ["clipboardReadWrite", "clipboardSanitizedWrite"] });
 await send("Emulation.setFocusEmulationEnabled", { enabled: true });
-const expected = execFileSync(process.env.NATIVE_FLOOD || "build/flood", ["transcript", "polygons/paper-figure-7.json"], { encoding: "utf8" }).trim();
+const expected = execFileSync(nativeFlood, ["transcript", "polygons/paper-figure-7.json"], { encoding: "utf8" }).trim();
 const copyButton = await rect(2);
 check(copyButton[2] > 0, `the Transcript panel's Copy button is shown (${copyButton.join(",")})`);
 if (copyButton[2] > 0) {
@@ -379,10 +391,105 @@ if (row[2] > 0) {
   await screenshot("page-gallery.png");
 }
 
+// ---- the Export panel's downloads, read back as a user would --------------------------------------
+// The toolbar's Export... opens the panel, the format is chosen in its combo's list, then
+// Export. The SVG parses as XML (in the browser) and holds the very triangles of the native
+// flood triangulate; the PNG sequence's frames decode at the export's size, one per step as
+// the native viewer's --export-png-dir gives them, each its own picture and the native one's.
+const exportControl = (which) => evaluate(`[0, 1, 2, 3].map((k) => Module._flood_web_export_rect(${which}, k))`);
+const exportNote = () => evaluate("Module.UTF8ToString(Module._flood_web_export_note())");
+const [OPENER, COMBO, EXPORT_BUTTON, FIRST_FORMAT] = [0, 1, 2, 4];  // viewer/panel_export.cpp
+const [SVG_FORMAT, PNG_SEQUENCE] = [1, 3];                           // its kFormatNames
+async function exportAs(format, what) {  // the export's note once it has ended ("" when not)
+  const opener = await exportControl(OPENER);
+  check(opener[2] > 0, `${what}: the toolbar's Export... button is shown (${opener.join(",")})`);
+  if (!(opener[2] > 0)) return "";
+  await click(opener);
+  const shown = (which) => `[0, 1, 2, 3].map((k) => Module._flood_web_export_rect(${which}, k))`;
+  const combo = await until(`${what}: the Export panel shows its format combo`, shown(COMBO), (r) => r?.[2] > 0, 10000);
+  if (!(combo?.[2] > 0)) return "";
+  await click(combo);
+  const item = await until(`${what}: the combo lists format ${format}`, shown(FIRST_FORMAT + format), (r) => r?.[2] > 0, 10000);
+  if (!(item?.[2] > 0)) return "";
+  await click(item);
+  const go = await exportControl(EXPORT_BUTTON);
+  check(go[2] > 0, `${what}: the Export button is shown (${go.join(",")})`);
+  if (!(go[2] > 0)) return "";
+  await click(go);
+  return until(`${what}: the panel says how the export ended`, "Module.UTF8ToString(Module._flood_web_export_note())", (n) => typeof n === "string" && n !== "", 60000);
+}
+
+// The SVG of Fig. 7's last step: all of its triangles.
+const exportStart = Date.now();  // what these sections add to the test (docs/BENCHMARKS.md)
+await navigate("?polygon=paper-figure-7.json&step=99999");
+const lastStep = await step();
+const svgName = `paper-figure-7-step${lastStep}.svg`;
+const svgNote = await exportAs(SVG_FORMAT, "the SVG export");
+check(svgNote === `wrote ${svgName}`, `the Export panel says it wrote ${svgName} (${JSON.stringify(svgNote)})`);
+await until(`the SVG export downloads ${svgName} (${svgNote})`, "0", () => existsSync(join(downloads, svgName)), 30000);
+if (existsSync(join(downloads, svgName))) {
+  const text = readFileSync(join(downloads, svgName), "utf8");
+  const read = await evaluate(`(() => {
+    const doc = new DOMParser().parseFromString(${JSON.stringify(text)}, "image/svg+xml");
+    const error = doc.querySelector("parsererror");
+    if (error) return { error: error.textContent };
+    const svg = doc.documentElement, land = doc.querySelector("path[fill-rule=evenodd]");
+    return { root: svg.localName, size: [svg.getAttribute("width"), svg.getAttribute("height")],
+             ring: land ? land.getAttribute("d") : "",
+             triangles: [...doc.querySelectorAll("polygon")].map((p) => p.getAttribute("points")) };
+  })()`);
+  check(read && !read.error && read.root === "svg", `the SVG download parses as SVG (${read?.error ?? read?.root})`);
+  check(read?.size?.join("x") === "1280x800", `the SVG is the panel's size, 1280x800 (${read?.size?.join("x")})`);
+  // Its triangles' corners are the polygon's (the land's path, vertex by vertex): as vertex
+  // numbers, they must be the native CLI's triangles.
+  const tri = JSON.parse(execFileSync(nativeFlood, ["triangulate", "polygons/paper-figure-7.json", "-o", "-"], { encoding: "utf8" }));
+  const corners = (read?.ring ?? "").match(/-?[0-9.]+(?:e[-+]?[0-9]+)?/g) ?? [];
+  const vertexAt = new Map();
+  for (let i = 0; i + 1 < corners.length; i += 2) vertexAt.set(`${corners[i]},${corners[i + 1]}`, i / 2);
+  check(vertexAt.size === tri.vertices.length, `the SVG's land has the polygon's ${tri.vertices.length} vertices (${vertexAt.size})`);
+  const key = (t) => [...t].sort((a, b) => a - b).join(" ");
+  const drawn = (read?.triangles ?? []).map((p) => key(p.trim().split(/\s+/).map((xy) => vertexAt.get(xy) ?? -1))).sort();
+  const made = tri.triangles.map(key).sort();
+  check(drawn.length === made.length && drawn.every((t, i) => t === made[i]),
+        `the SVG draws the native flood triangulate's ${made.length} triangles (${drawn.length} drawn, ${drawn.filter((t, i) => t !== made[i]).length} differ)`);
+  check(text === readFileSync(nativeSvg, "utf8"), "the SVG download is the native flood-viewer --screenshot OUT.svg's, byte for byte");
+}
+
+// A PNG sequence of monotone.json: its frames arrive as downloads, one file each.
+await navigate("?polygon=monotone.json");
+const nativeNames = readdirSync(nativeFrames).filter((f) => f.endsWith(".png")).sort();
+const monotoneSteps = await evaluate("Module._flood_web_steps()");
+check(nativeNames.length === monotoneSteps + 1, `the native sequence has a frame per step, 0..${monotoneSteps} (${nativeNames.length} frames)`);
+const seqNote = await exportAs(PNG_SEQUENCE, "the PNG sequence export");
+check(seqNote === `wrote ${nativeNames.length} frames in monotone-frames`,
+      `the Export panel says it wrote ${nativeNames.length} frames (${JSON.stringify(seqNote)})`);
+await until(`the PNG sequence downloads ${nativeNames.length} frames (${seqNote})`, "0",
+            () => nativeNames.every((f) => existsSync(join(downloads, f))), 30000);
+const gotNames = readdirSync(downloads).filter((f) => /^frame-/.test(f)).sort();
+check(gotNames.join() === nativeNames.join(), `the downloads are the frames ${nativeNames[0]}..${nativeNames.at(-1)} (${gotNames.join(", ")})`);
+let previous = null;
+for (const f of nativeNames.filter((n) => existsSync(join(downloads, n)))) {
+  const bytes = readFileSync(join(downloads, f));
+  const isPng = bytes.subarray(0, 8).equals(Buffer.from([137, 80, 78, 71, 13, 10, 26, 10]));
+  const png = isPng ? decodePng(bytes) : null, theirs = decodePng(readFileSync(join(nativeFrames, f)));
+  check(png && png.width === theirs.width && png.height === theirs.height,
+        `${f} is a PNG of the native frame's size, ${theirs.width}x${theirs.height} (${png ? png.width + "x" + png.height : "not a PNG"})`);
+  if (!png || png.width !== theirs.width || png.height !== theirs.height) continue;
+  const whole = [0, 0, png.width, png.height];
+  const d = canvasDiff(png, theirs, 24, whole);
+  check(d < 0.02, `${f} matches the native viewer's (${(d * 100).toFixed(2)} % of pixels differ)`);
+  if (previous) {
+    const moved = canvasDiff(png, previous, 0, whole);
+    check(moved > 0.0005, `${f} differs from the frame before it (${(moved * 100).toFixed(2)} % of pixels)`);
+  }
+  previous = png;
+}
+
+console.log(`the Export sections took ${((Date.now() - exportStart) / 1000).toFixed(1)} s`);
+
 // ---- the Shrink panel: the shrink runs in a Web Worker (viewer/shrink_worker.h) ------------------
 // A failing sample shrinks while the page goes on drawing frames; Save offers the repro as a
 // download, and the native CLI reads it back failing as the original does.
-const nativeFlood = process.env.NATIVE_FLOOD || "build/flood";
 const shrinkStart = Date.now();  // what these sections add to the test (docs/BENCHMARKS.md)
 const shrinkButton = (which) => evaluate(`[0, 1, 2, 3].map((k) => Module._flood_web_shrink_rect(${which}, k))`);
 const shrinkNote = () => evaluate("Module.UTF8ToString(Module._flood_web_shrink_note())");
@@ -400,6 +507,9 @@ function nativeFailure(file) {
 }
 async function startShrink(query) {
   await navigate(query);
+  return pressShrink();
+}
+async function pressShrink() {
   const button = await until("the Shrink panel's Shrink button is shown", "Module._flood_web_shrink_rect(0, 2)", (v) => v > 0, 20000);
   if (!(button > 0)) return false;
   // click() without its last frames: the shrink may be over by then.
@@ -467,6 +577,42 @@ if (await startShrink("?polygon=tutorial/crossing-face.json&test-shrink-crash=30
   check(await evaluate("Module._flood_web_vertices()") === before, `the polygon shown is unchanged (${before} vertices)`);
   check(await evaluate("Module._flood_web_shrink_rect(0, 2)") > 0, "the Shrink button is offered again");
 }
+
+// ---- the Shrink panel's Cancel ends the worker; a shrink started afterwards finishes ------------
+const cancelStart = Date.now();
+// test-shrink-slow=200: a shrink of many seconds (about 85 tries of 200 ms), still running
+// when Cancel is pressed. The page's Web Workers are seen over the DevTools protocol
+// (auto-attached targets of type worker).
+await send("Target.setAutoAttach", { autoAttach: true, waitForDebuggerOnStart: false, flatten: true });
+const shrinkWorkers = () => [...workers.values()].filter((u) => u.endsWith("/shrink-worker.js")).length;
+if (await startShrink("?polygon=tutorial/crossing-face.json&test-shrink-slow=200")) {
+  const before = await evaluate("Module._flood_web_vertices()");
+  const cancel = await until("the running shrink shows its Cancel button", "[0, 1, 2, 3].map((k) => Module._flood_web_shrink_rect(1, k))", (r) => r?.[2] > 0, 20000);
+  await until("a shrink's worker starts", "0", () => shrinkWorkers() > 0, 10000);
+  check(shrinkWorkers() === 1, `the shrink runs in one Web Worker (${[...workers.values()].join(", ")})`);
+  if (cancel?.[2] > 0) await click(cancel);
+  const note = await until("Cancel: the Shrink panel says how the shrink ended", "Module.UTF8ToString(Module._flood_web_shrink_note())", (n) => typeof n === "string" && n !== "", 10000);
+  check(/^shrink cancelled after \d+ tries/.test(note), `Cancel: the Shrink panel says the shrink was cancelled (${JSON.stringify(note)})`);
+  await until("Cancel ends the shrink's worker", "0", () => shrinkWorkers() === 0, 10000);
+  check(shrinkWorkers() === 0, `Cancel ends the shrink's Web Worker (${shrinkWorkers()} left)`);
+  const f = await frames();
+  await settle(4);
+  check(await frames() >= f + 4, "the page goes on drawing frames after Cancel");
+  check(await evaluate("Module._flood_web_vertices()") === before, `Cancel leaves the polygon shown unchanged (${before} vertices)`);
+  // The page reads test-shrink-slow from its URL at each Shrink: the second one as the first
+  // section's, 20 ms a reading.
+  await evaluate("history.replaceState(null, '', location.search.replace('test-shrink-slow=200', 'test-shrink-slow=20'))");
+  if (await pressShrink()) {
+    await until("a second Shrink starts", "Module.UTF8ToString(Module._flood_web_shrink_note())", (n) => typeof n === "string" && !n.startsWith("shrink cancelled"), 10000);
+    const again = await shrinkRuns("the shrink after a cancelled one");
+    const after = await evaluate("Module._flood_web_vertices()");
+    check(again.startsWith(`shrunk ${before} -> ${after} vertices`) && after < before,
+          `the shrink after a cancelled one opens its repro (${JSON.stringify(again)})`);
+    await until("the finished shrink's worker ends", "0", () => shrinkWorkers() === 0, 10000);
+  }
+}
+
+console.log(`the Shrink Cancel section took ${((Date.now() - cancelStart) / 1000).toFixed(1)} s`);
 
 // ---- the Edit panel's Save reaches the user as a download ----------------------------------------
 // Ctrl+S opens the Save window (at the canvas's corner + 60 px, default ImGui style: its path

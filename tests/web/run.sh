@@ -7,9 +7,11 @@
 #     step, the canvas against the native viewer's screenshot, arrow keys, Save PNG as a
 #     download, Copy into the browser's clipboard (against the native flood transcript), a
 #     dropped file, the file picker, recent files kept over a reload, presenter=1,
-#     theme=light, a second gallery polygon clicked in the Open panel, the Shrink panel's
-#     shrink in a Web Worker (its repro downloaded and read back by the native CLI) and a
-#     crash of that worker forced by the test-only URL parameter test-shrink-crash=N.
+#     theme=light, a second gallery polygon clicked in the Open panel, the Export panel's SVG
+#     and PNG sequence downloaded and read back against the native CLI and viewer, the Shrink
+#     panel's shrink in a Web Worker (its repro downloaded and read back by the native CLI), a
+#     crash of that worker forced by the test-only URL parameter test-shrink-crash=N, and its
+#     Cancel (the worker ends, a shrink started next finishes).
 # The native build/flood and build/flood-viewer are built if missing (CI's test phase made them).
 set -euo pipefail
 cd "$(dirname "$0")/../.."
@@ -71,6 +73,12 @@ printf 'POLYGON ((0 0, 6 0, 3 4, 0 0))\n' >"$tmp/picked-triangle.wkt"
 # A face whose invariant scan takes many frames' slices in the page (FLOOD_WEB_BIG vertices:
 # docs/BENCHMARKS.md measures the page's stalls with 10^6).
 "$native/flood" generate spiral "${FLOOD_WEB_BIG:-100000}" -o "$tmp/big-spiral.json"
+# The Export panel's downloads against the native viewer's exports: Fig. 7's last step as SVG,
+# monotone.json's flood as a PNG sequence (the panel's default size, 1280x800, both).
+xvfb-run -a -s "-screen 0 1280x800x24" "$native/flood-viewer" polygons/paper-figure-7.json \
+  --step 99999 --screenshot "$tmp/native-last.svg" >/dev/null
+xvfb-run -a -s "-screen 0 1280x800x24" "$native/flood-viewer" polygons/monotone.json \
+  --export-png-dir "$tmp/native-frames" >/dev/null
 port=${FLOOD_WEB_PORT:-8029}
 python3 -m http.server --bind 127.0.0.1 --directory "$web/site" "$port" >"$tmp/server.log" 2>&1 &
 server=$!
@@ -83,6 +91,6 @@ mkdir -p "$shots"
 cp "$shot" "$shots/"
 node --experimental-websocket tests/web/page_test.mjs "http://127.0.0.1:$port/index.html" \
   "$shot" "$canvas" "$tmp/dropped-house.json" "$tmp/picked-triangle.wkt" "$shots" \
-  "$tmp/big-spiral.json" || failed=1
+  "$tmp/big-spiral.json" "$tmp/native-last.svg" "$tmp/native-frames" || failed=1
 echo "web: screenshots in $shots"
 exit $failed

@@ -35,7 +35,7 @@ using namespace flood::view;
 namespace {
 const Model* g_shown = nullptr;
 const Ui* g_ui = nullptr;
-int g_frames = 0;
+int g_frames = 0, g_scanFrames = 0;
 }  // namespace
 extern "C" {
 EMSCRIPTEN_KEEPALIVE int flood_web_frames() { return g_frames; }
@@ -45,11 +45,14 @@ EMSCRIPTEN_KEEPALIVE int flood_web_vertices() {
     return g_shown ? int(g_shown->polygon().vertices.size()) : -1;
 }
 EMSCRIPTEN_KEEPALIVE int flood_web_presenter() { return g_ui ? int(g_ui->presenter) : -1; }
-// The invariant scan still running (1), in slices between frames (viewer/job.h).
+// An open under way (1), in steps between frames (viewer/open_job.h).
 EMSCRIPTEN_KEEPALIVE int flood_web_opening() { return g_shown ? int(g_shown->opening()) : -1; }
+// The invariant scan still running (1), in slices between frames (viewer/job.h), and the
+// frames drawn so far while one ran (counted here: a test's sampling could miss them).
 EMSCRIPTEN_KEEPALIVE int flood_web_scanning() {
     return g_shown ? int(!g_shown->invariantsDone()) : -1;
 }
+EMSCRIPTEN_KEEPALIVE int flood_web_scan_frames() { return g_scanFrames; }
 EMSCRIPTEN_KEEPALIVE const char* flood_web_recent(int i) {  // the Open panel's Recent list
     if (!g_shown || i < 0 || size_t(i) >= g_shown->recentFiles().size()) return "";
     return g_shown->recentFiles()[size_t(i)].c_str();
@@ -467,7 +470,7 @@ void runInteractive(Ui& ui, const Args& args, Styled& styled) {
         Job::runSlices(1.0 / 60);  // the web page's background work; nothing on the desktop
         platform::swapBuffers();
 #ifdef __EMSCRIPTEN__
-        g_shown = &model, g_ui = &ui, ++g_frames;
+        g_shown = &model, g_ui = &ui, ++g_frames, g_scanFrames += !model.invariantsDone();
 #endif
 
         double now = platform::time();

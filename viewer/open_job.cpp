@@ -146,6 +146,7 @@ void OpenJob::start(Request request) {
     warnings_.clear();
     complete_ = false;
     steps_.reset();
+    outlining_.reset();
     entered_ = OpenPhase::Read;
     job_.startSteps([this](Job& job) { return step(job); });
 }
@@ -169,6 +170,14 @@ bool OpenJob::step(Job& job) {
         read(job);
         if (!steps_) finish(job);  // the read failed: read_ says why
         return steps_.has_value();
+    }
+    if (outlining_) {  // still the read's phase: its outline a part a step
+        if (!outlining_->step()) {
+            outline_ = outlining_->take();
+            outlining_.reset();
+            outlineReady_.store(true, std::memory_order_release);
+        }
+        return true;
     }
     const OpenPhase p = steps_->next();
     if (p == OpenPhase::Done) {
@@ -204,16 +213,15 @@ void OpenJob::read(Job& job) {
     read_ = r.diagnostic;
     if (!read_.ok()) return;
     warnings_ = std::move(r.warnings);
-    // The outline to show meanwhile, prepared here too: a copy of the polygon, since
+    // The outline to show meanwhile, prepared in the next steps: a copy of the polygon, since
     // validation records T-junctions in its own.
     FloodedRun outline;
     outline.trace.polygon = request_.trace ? trace.polygon : r.polygon;
     outline.trace.up = request_.trace ? trace.up : request_.up;
     const size_t n = outline.trace.polygon.vertices.size();
-    outline_ = prepareRun(std::move(outline), path, openNote(OpenPhase::Validate, n));
+    outlining_.emplace(std::move(outline), path, openNote(OpenPhase::Validate, n));
     if (request_.trace) steps_.emplace(std::move(trace), path);
     else steps_.emplace(std::move(r.polygon), path, request_.up);
-    outlineReady_.store(true, std::memory_order_release);
 }
 
 }  // namespace flood::view

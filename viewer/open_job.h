@@ -107,7 +107,7 @@ public:
     PreparedRun takeRun() { return steps_->take(); }
 
 private:
-    bool step(Job& job);  // the read, then a phase of steps_ a call
+    bool step(Job& job);  // the read, its outline's parts, then steps_ a step a call
     void read(Job& job);
     bool enter(Job& job, OpenPhase p);
     void finish(Job& job);
@@ -118,8 +118,9 @@ private:
     PreparedRun outline_;
     std::vector<std::string> warnings_;
     bool complete_ = false;
-    std::optional<RunSteps> steps_;        // once read
-    OpenPhase entered_ = OpenPhase::Read;  // the phase enter() last began
+    std::optional<PrepareSteps> outlining_;  // the outline, once read, until prepared
+    std::optional<RunSteps> steps_;          // once read
+    OpenPhase entered_ = OpenPhase::Read;    // the phase enter() last began
     Job job_;  // declared last, so it is joined before what its work writes is destroyed
 };
 

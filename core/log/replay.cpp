@@ -68,14 +68,14 @@ bool Recording::advance(uint64_t steps) { return s_->run->advance(steps); }
 uint32_t Recording::steps() const { return s_->run->steps(); }
 
 Trace Recording::take() {
-    Trace& t = s_->t;
+    Trace t = std::move(s_->t);  // the run is over: nothing refers to it any more
     FloodResult& r = s_->run->result();
     // The log is most of a trace's memory: it keeps just its events (one copy of it, once),
     // unless its slack is a few percent (the copy would cost more than it frees).
     if (t.events.capacity() - t.events.size() > t.events.size() / 32) t.events.shrink_to_fit();
     t.triangles = std::move(r.triangles);
     t.diagnostic = r.diagnostic;
-    return std::move(t);
+    return t;
 }
 
 Trace record(const Polygon& polygon, const Options& options) {

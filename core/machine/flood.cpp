@@ -81,11 +81,12 @@ public:
     uint32_t stepsTaken() const { return step_; }
 
     void run() {
-        if (start()) advance(UINT64_MAX);
+        if (start()) advance<false>();
     }
 
     // A run in slices (SteppedRun): start() sets it up, then each advance() takes at most
-    // `steps` steps of the parts' floods; it returns false once the run has ended.
+    // `steps` steps of the parts' floods; it returns false once the run has ended. Unsliced
+    // (run()), the loop counts nothing: a small polygon's call pays no slicing.
     bool start() {
         nodes_.clear();
         result_.triangles.clear();
@@ -115,11 +116,16 @@ public:
         nextPart_ = 0;
         return true;
     }
-    bool advance(uint64_t steps) {
+    template <bool kSliced = true>
+    bool advance(uint64_t steps = 0) {
         while (ok() && (left_ != kNil || nextPart_ < poly_.parts.size())) {
             if (left_ == kNil) beginPart(nextPart_++);
             // The part's flood; a forbidden state ends it too (forbid() drops the fingers).
-            for (; left_ != kNil && steps; --steps) step();
+            if constexpr (kSliced) {
+                for (; left_ != kNil && steps; --steps) step();
+            } else {
+                while (left_ != kNil) step();
+            }
             if (left_ != kNil) return true;  // out of steps
             if (ok()) endPart();
         }

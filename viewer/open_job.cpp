@@ -110,9 +110,8 @@ void RunSteps::step() {
 }
 
 double RunSteps::phaseDone() const {
-    // A flood takes about 1.5 steps a vertex (record() reserves as much).
     if (recording_)
-        return std::min(0.99, recording_->steps() / (1.5 * double(polygon_.vertices.size()) + 64));
+        return std::min(0.99, recording_->steps() / double(recording_->expectedSteps()));
     if (preparing_) return preparing_->done() / double(PrepareSteps::kParts);
     return 0;
 }

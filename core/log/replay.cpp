@@ -57,7 +57,7 @@ Recording::Recording(const Polygon& polygon, const Options& options) : s_(new St
     t.up = options.up;
     s_->rec.events = &t.events;
     // Runs take about 1.5 events per vertex: reserve once rather than regrow (and copy) the log.
-    t.events.reserve(polygon.vertices.size() + polygon.vertices.size() / 2 + 64);
+    t.events.reserve(expectedSteps());
     backWithHugePages(t.events.data(), t.events.capacity() * sizeof(Event));
     s_->rec.growth = polygon.vertices.size() / 2 + 64;
     s_->run.emplace(t.polygon, &s_->rec, options);
@@ -66,6 +66,10 @@ Recording::~Recording() = default;
 
 bool Recording::advance(uint64_t steps) { return s_->run->advance(steps); }
 uint32_t Recording::steps() const { return s_->run->steps(); }
+size_t Recording::expectedSteps() const {
+    const size_t n = s_->t.polygon.vertices.size();
+    return n + n / 2 + 64;
+}
 
 Trace Recording::take() {
     Trace t = std::move(s_->t);  // the run is over: nothing refers to it any more

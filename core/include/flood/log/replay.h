@@ -36,6 +36,7 @@ public:
     Recording& operator=(const Recording&) = delete;
     bool advance(uint64_t steps);  // at most `steps` more steps; false once the run has ended
     uint32_t steps() const;        // taken so far
+    size_t expectedSteps() const;  // about what a run takes (1.5 a vertex): what the log reserves
     Trace take();                  // the trace, once advance() returned false
 
 private:

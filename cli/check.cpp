@@ -12,6 +12,7 @@
 
 #include "check_progress.h"
 #include "check_rows.h"
+#include "task_runner.h"
 #include "verbosity.h"
 
 #include <unistd.h>
@@ -248,8 +249,10 @@ private:
     DatasetRead readDataset(const std::string& path, bool& gis) {
         Selection s = o_.selection;
         s.allLayers = true;  // each layer's features, each row naming its layer
+        // A file is read only when no feature waits, so the other workers would mostly wait:
+        // they parse slices of a large FeatureCollection beside this one.
         return gdal::readAnyFeatures(path, s, o_.maxInputBytes, !o_.extractDir.empty(), gis,
-                                     progress);
+                                     progress, threadRunner(o_.jobs));
     }
 
     void read(size_t i, std::vector<Job>& more) {

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "flood/io/io.h"
 
@@ -19,6 +20,17 @@ std::optional<ReadResult> parseJsonFast(std::string_view text, size_t capacity, 
 // Reads any JSON document through a document tree: every message of docs/ERRORS.md, with its
 // line and column.
 ReadResult parseJsonTree(std::string_view text, const std::string& name);
+
+// The "features" array of a document `{..., "features": [...], ...}`: its brackets and the
+// commas between its elements, found by a scan of the bytes (io_json_cut.cpp). Nothing when
+// the text is not such an object or the scan could misread it (a member name with escapes, two
+// "features" arrays, an unclosed string or bracket). What it finds is only where to cut: the
+// pieces must still be parsed, and the document around the array too.
+struct FeatureCut {
+    size_t open = 0, close = 0;  // the array's '[' and ']'
+    std::vector<size_t> commas;  // between its elements, in order
+};
+std::optional<FeatureCut> cutFeatures(std::string_view text);
 
 // Cleans the ring just appended to `rr.polygon.vertices` at `first`, in place, and records it
 // (io_read.cpp).

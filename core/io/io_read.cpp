@@ -457,24 +457,93 @@ std::vector<int64_t> gdalFids(const json& items) {
 json featureSequence(std::string_view text) {
     const bool separated = text.find('\x1e') != std::string_view::npos;
     const char cut = separated ? '\x1e' : '\n';
-    json items = json::array();
+    std::vector<std::string_view> records;
     for (size_t pos = 0; pos <= text.size();) {
         size_t end = text.find(cut, pos);
         if (end == std::string_view::npos) end = text.size();
         std::string_view record = text.substr(pos, end - pos);
         pos = end + 1;
-        if (record.find_first_not_of(" \t\r\n") == std::string_view::npos) continue;
+        if (record.find_first_not_of(" \t\r\n") != std::string_view::npos)
+            records.push_back(record);
+    }
+    // Counted first: a document on one line is not parsed twice.
+    if (records.empty() || (!separated && records.size() < 2)) return nullptr;
+    json items = json::array();
+    for (std::string_view record : records) {
         if (tooDeep(record) != std::string_view::npos) return nullptr;
         json f = json::parse(record.begin(), record.end(), nullptr, false);
         if (!f.is_object() || !f.contains("type") || f["type"] != "Feature") return nullptr;
         items.push_back(std::move(f));
     }
-    if (items.empty() || (!separated && items.size() < 2)) return nullptr;
     return items;
 }
 
+namespace {
+
+// A slice of the features array is at least this long (64 KiB), and there are at most
+// kMaxSlices: enough for the threads to share, each copied alone while it is parsed.
+constexpr size_t kSliceBytes = size_t(1) << 16;
+constexpr size_t kMaxSlices = 256;
+// The features are made polygons in about this many tasks (a feature is one at least): a
+// dataset's largest feature can be many times its average.
+constexpr size_t kConvertTasks = 1024;
+
+// Counts each Feature object closing at `depth` (the features array's elements) as the parser
+// meets it: the parse is most of a large file's read.
+json::parser_callback_t featureCounter(ReadProgress* progress, int depth) {
+    if (!progress) return nullptr;
+    return [progress, depth](int d, json::parse_event_t event, json&) {
+        if (d == depth && event == json::parse_event_t::object_end) {
+            ++progress->featuresParsed;
+            progress->tell();
+        }
+        return true;
+    };
+}
+
+// The features of a FeatureCollection parsed in slices, as tasks of `run`: the document
+// around the array with the array emptied, then each slice of elements as an array of its
+// own. Null when any piece fails, or is not what the one-piece parse would find: that parse
+// then runs and says why. Valid JSON cut at its array's commas gives valid pieces, and valid
+// pieces put back together give the same document.
+json parseInSlices(std::string_view text, const std::optional<io_detail::FeatureCut>& cut,
+                   ReadProgress* progress, const TaskRunner& run) {
+    if (!cut) return nullptr;
+    std::string around;
+    around.reserve(text.size() - (cut->close - cut->open) + 1);
+    around.append(text.substr(0, cut->open + 1)).append(text.substr(cut->close));
+    json doc = json::parse(around, nullptr, false);
+    if (doc.is_discarded() || !doc.is_object() || !doc.contains("type") ||
+        doc["type"] != "FeatureCollection" || !doc.contains("features") ||
+        !doc["features"].is_array() || !doc["features"].empty())
+        return nullptr;
+    std::vector<size_t> bounds{cut->open};
+    const size_t step = std::max(kSliceBytes, (cut->close - cut->open) / kMaxSlices);
+    for (size_t comma : cut->commas)
+        if (comma - bounds.back() >= step) bounds.push_back(comma);
+    bounds.push_back(cut->close);
+    std::vector<json> slices(bounds.size() - 1);
+    run(slices.size(), [&](size_t k) {
+        std::string piece = "[";
+        piece.append(text.substr(bounds[k] + 1, bounds[k + 1] - bounds[k] - 1)).push_back(']');
+        slices[k] = json::parse(piece, featureCounter(progress, 1), false);
+    });
+    size_t count = 0;
+    for (const json& slice : slices) {
+        if (slice.is_discarded() || !slice.is_array() || slice.empty()) return nullptr;
+        count += slice.size();
+    }
+    json items = json::array();
+    items.get_ref<json::array_t&>().reserve(count);
+    for (json& slice : slices)
+        for (json& item : slice) items.push_back(std::move(item));
+    return items;
+}
+
+}  // namespace
+
 DatasetRead parseFeatures(std::string_view text, const std::string& name, bool keepSource,
-                          ReadProgress* progress) {
+                          ReadProgress* progress, const TaskRunner& run) {
     DatasetRead out;
     auto whole = [&] {
         FeatureRead f;
@@ -483,55 +552,76 @@ DatasetRead parseFeatures(std::string_view text, const std::string& name, bool k
         return std::move(out);
     };
     if (text.find("\"Feature") == std::string_view::npos ||
-        text.find('\0') != std::string_view::npos ||
-        io_detail::firstUnderflow(text) != std::string_view::npos)  // as 1e400
+        text.find('\0') != std::string_view::npos)
         return whole();
+    // The scans of the whole text, at once when there are threads.
+    const size_t npos = std::string_view::npos;
+    size_t underflow = npos, deep = npos;
+    std::optional<io_detail::FeatureCut> cut;
+    if (run) {
+        run(3, [&](size_t k) {
+            if (k == 0) underflow = io_detail::firstUnderflow(text);
+            else if (k == 1) deep = tooDeep(text);
+            else cut = io_detail::cutFeatures(text);
+        });
+    } else {
+        underflow = io_detail::firstUnderflow(text);
+    }
+    if (underflow != npos) return whole();  // as 1e400
     json items = featureSequence(text);
     if (items.is_null()) {
-        if (text.find("\"FeatureCollection\"") == std::string_view::npos ||
-            tooDeep(text) != std::string_view::npos)
+        if (text.find("\"FeatureCollection\"") == npos || (run ? deep : tooDeep(text)) != npos)
             return whole();
-        // With a progress record, each Feature object closing in the "features" array (depth
-        // 2) is counted as the parser meets it: the parse is most of a large file's read.
-        json::parser_callback_t count = nullptr;
-        if (progress)
-            count = [progress](int depth, json::parse_event_t event, json&) {
-                if (depth == 2 && event == json::parse_event_t::object_end) {
-                    ++progress->featuresParsed;
-                    progress->tell();
-                }
-                return true;
-            };
-        json doc = json::parse(text.begin(), text.end(), count, false);
-        if (doc.is_discarded()) return whole();  // parsePolygon says where and why
-        if (!doc.is_object() || !doc.contains("type") || doc["type"] != "FeatureCollection" ||
-            !doc.contains("features") || !doc["features"].is_array() || doc["features"].empty())
-            return whole();
-        items = std::move(doc["features"]);
+        if (run) items = parseInSlices(text, cut, progress, run);
+        if (items.is_null()) {
+            json doc = json::parse(text.begin(), text.end(), featureCounter(progress, 2), false);
+            if (doc.is_discarded()) return whole();  // parsePolygon says where and why
+            if (!doc.is_object() || !doc.contains("type") || doc["type"] != "FeatureCollection" ||
+                !doc.contains("features") || !doc["features"].is_array() || doc["features"].empty())
+                return whole();
+            items = std::move(doc["features"]);
+        }
     }
     const std::vector<int64_t> fid = gdalFids(items);
-    for (size_t i = 0; i < items.size(); ++i) {
-        if (!polygonal(items[i])) {
-            const json& g = items[i]["geometry"];
-            std::string type = g.is_object() && g.contains("type") && g["type"].is_string()
-                                   ? echo(g["type"].get<std::string>())
-                                   : "null";
-            out.skipped.push_back(name + ": feature " + std::to_string(fid[i]) +
-                                  ": not polygonal (" + type + "), skipped");
-            continue;
+    // Each range of features on its own, then in order: the same lists for any `run`. Each
+    // feature's tree is freed once read, by the task that read it: freeing a large document
+    // is a good part of its parse's time.
+    const size_t count = items.size();
+    const size_t per = std::max<size_t>(1, run ? count / kConvertTasks : count);
+    const size_t tasks = std::max<size_t>(1, (count + per - 1) / per);
+    std::vector<DatasetRead> parts(tasks);
+    auto convert = [&](size_t k) {
+        for (size_t i = k * per; i < std::min(count, (k + 1) * per); ++i) {
+            const json& item = items[i];
+            if (polygonal(item)) {
+                parts[k].features.push_back(readFeature(name, item, i, fid[i], keepSource));
+                if (progress) {
+                    ++progress->featuresRead;
+                    progress->tell();
+                }
+            } else {
+                const json& g = item["geometry"];
+                std::string type = g.is_object() && g.contains("type") && g["type"].is_string()
+                                       ? echo(g["type"].get<std::string>())
+                                       : "null";
+                parts[k].skipped.push_back(name + ": feature " + std::to_string(fid[i]) +
+                                           ": not polygonal (" + type + "), skipped");
+            }
+            items[i] = nullptr;
         }
-        out.features.push_back(readFeature(name, items[i], i, fid[i], keepSource));
-        if (progress) {
-            ++progress->featuresRead;
-            progress->tell();
-        }
+    };
+    if (run) run(tasks, convert);
+    else convert(0);
+    for (DatasetRead& part : parts) {
+        for (FeatureRead& f : part.features) out.features.push_back(std::move(f));
+        for (std::string& s : part.skipped) out.skipped.push_back(std::move(s));
     }
     if (out.features.empty()) return whole();  // "no polygon found"
     return out;
 }
 
 DatasetRead readFeaturesFile(const std::string& path, uint64_t maxBytes, bool keepSource,
-                             ReadProgress* progress) {
+                             ReadProgress* progress, const TaskRunner& run) {
     std::string text;
     Diagnostic d = readInputFile(path, text, maxBytes, "GeoJSON or WKT", nullptr, progress);
     if (!d.ok()) {
@@ -540,7 +630,7 @@ DatasetRead readFeaturesFile(const std::string& path, uint64_t maxBytes, bool ke
         out.features.back().read.diagnostic = d;
         return out;
     }
-    return parseFeatures(text, path == "-" ? "<stdin>" : path, keepSource, progress);
+    return parseFeatures(text, path == "-" ? "<stdin>" : path, keepSource, progress, run);
 }
 
 }  // namespace flood

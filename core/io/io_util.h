@@ -158,11 +158,14 @@ inline size_t firstUnderflow(std::string_view text) {
         }
         if (c != '-' && (c < '0' || c > '9')) continue;
         size_t j = i;
+        bool small = false;  // a negative exponent: underflows() must look
         while (j < text.size() &&
                ((text[j] >= '0' && text[j] <= '9') || text[j] == '.' || text[j] == 'e' ||
-                text[j] == 'E' || text[j] == '-' || text[j] == '+'))
+                text[j] == 'E' || text[j] == '-' || text[j] == '+')) {
+            small |= text[j] == '-' && j > i;
             ++j;
-        if (underflows(text.substr(i, j - i))) return i;
+        }
+        if ((small || j - i >= 300) && underflows(text.substr(i, j - i))) return i;
         i = j - 1;
     }
     return std::string_view::npos;

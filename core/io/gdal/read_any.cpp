@@ -12,10 +12,11 @@ ReadResult readAny(const std::string& path, const Selection& s, uint64_t maxByte
 }
 
 DatasetRead readAnyFeatures(const std::string& path, const Selection& s, uint64_t maxBytes,
-                            bool keepSource, bool& gis, ReadProgress* progress) {
+                            bool keepSource, bool& gis, ReadProgress* progress,
+                            const TaskRunner& run) {
     gis = handles(path, s);
     if (gis) return readFeatures(path, s);
-    return readFeaturesFile(path, maxBytes, keepSource, progress);
+    return readFeaturesFile(path, maxBytes, keepSource, progress, run);
 }
 
 bool listedFile(const std::string& path) { return polygonFileName(path) || gisFile(path); }

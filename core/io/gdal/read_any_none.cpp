@@ -24,9 +24,10 @@ ReadResult readAny(const std::string& path, const Selection& s, uint64_t maxByte
 }
 
 DatasetRead readAnyFeatures(const std::string& path, const Selection& s, uint64_t maxBytes,
-                            bool keepSource, bool& gis, ReadProgress* progress) {
+                            bool keepSource, bool& gis, ReadProgress* progress,
+                            const TaskRunner& run) {
     gis = false;
-    if (!s.any()) return readFeaturesFile(path, maxBytes, keepSource, progress);
+    if (!s.any()) return readFeaturesFile(path, maxBytes, keepSource, progress, run);
     DatasetRead d;
     d.features.emplace_back();
     d.features[0].read.diagnostic = refused(path);

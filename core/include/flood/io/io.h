@@ -104,10 +104,15 @@ struct ReadProgress {
         if (changed) changed();
     }
 };
+// Runs task(0), ..., task(n - 1), in any order, perhaps several at once: how a caller with
+// threads lends them to a large read (`flood check -j`). The core starts no thread itself.
+using TaskRunner = std::function<void(size_t n, const std::function<void(size_t)>& task)>;
+// With `run`, a FeatureCollection is parsed in slices and its features made polygons in
+// ranges, as tasks given to `run`; the result is the same as without it.
 DatasetRead parseFeatures(std::string_view text, const std::string& name, bool keepSource,
-                          ReadProgress* progress = nullptr);
+                          ReadProgress* progress = nullptr, const TaskRunner& run = {});
 DatasetRead readFeaturesFile(const std::string& path, uint64_t maxBytes, bool keepSource,
-                             ReadProgress* progress = nullptr);
+                             ReadProgress* progress = nullptr, const TaskRunner& run = {});
 
 // Reads all of `path` ("-" is stdin) into `text`. Malformed, naming the file, when it cannot
 // be opened or read, is a directory, holds a NUL byte (binary data, not `expected`: reading

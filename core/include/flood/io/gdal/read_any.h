@@ -23,9 +23,11 @@ ReadResult readAny(const std::string& path, const Selection& s,
 
 // The features of `path`, one entry each (gdal::readFeatures or readFeaturesFile, which keeps
 // each feature's GeoJSON text with `keepSource`); `gis` says which reader it was. `progress`
-// follows the core's reading (a GIS dataset's is not followed).
+// follows the core's reading (a GIS dataset's is not followed); `run` lends threads to the
+// core's reading (parseFeatures).
 DatasetRead readAnyFeatures(const std::string& path, const Selection& s, uint64_t maxBytes,
-                            bool keepSource, bool& gis, ReadProgress* progress = nullptr);
+                            bool keepSource, bool& gis, ReadProgress* progress = nullptr,
+                            const TaskRunner& run = {});
 
 // A file a folder listing offers (flood check DIR, the viewer's browser): a polygon file
 // (polygonFileName(), flood/io/io.h) or, built with GDAL, a GIS dataset (gisFile()).

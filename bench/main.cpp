@@ -1,7 +1,8 @@
 // flood-bench: Flood against the peer triangulators on the same inputs (issue 4).
 //
-//   flood-bench dump DIR FIXTURES [--seed S] [--max-size N] [--large F,G]
+//   flood-bench dump DIR FIXTURES [--seed S] [--max-size N] [--large F,G] [--real R]
 //                                                             write inputs + DIR/manifest.tsv
+//                                                             (R: real coastlines, family coast)
 //   flood-bench run DIR [--timeout S] [--out FILE]            time every triangulator, check it
 //   flood-bench memory FILE.poly [--record]                   peak memory of one Flood run
 //   flood-bench floor FILE.poly                               the floor's parts, ns (floor.h)
@@ -297,7 +298,7 @@ std::string safeName(const std::string& name) {
 }
 
 int cmdDump(const std::string& dir, const std::string& fixtures, uint64_t seed, size_t maxSize,
-            const std::vector<std::string>& large) {
+            const std::vector<std::string>& large, const std::string& real) {
     fs::create_directories(dir);
     std::vector<InputInfo> rows;
     auto add = [&](const std::string& name, const std::string& family, size_t size,
@@ -318,20 +319,25 @@ int cmdDump(const std::string& dir, const std::string& fixtures, uint64_t seed, 
         std::fprintf(stderr, "dump %-32s %9zu vertices %5zu holes %s\n", name.c_str(), r.vertices,
                      r.holes, r.valid ? "" : "INVALID");
     };
-    std::vector<fs::path> files;
-    if (fs::is_directory(fixtures))
-        for (const auto& e : fs::directory_iterator(fixtures))
-            if (e.path().extension() == ".json") files.push_back(e.path());
-    std::sort(files.begin(), files.end());
-    for (const auto& f : files) {
-        ReadResult rr = readPolygonFile(f.string());
-        if (!rr.diagnostic.ok()) {
-            std::fprintf(stderr, "dump: skipping unreadable %s: %s\n", f.c_str(),
-                         rr.diagnostic.message.c_str());
-            continue;
+    // Each .json file of a folder, in name order, as FAMILY/STEM.
+    auto addFolder = [&](const std::string& folder, const std::string& family) {
+        std::vector<fs::path> files;
+        if (fs::is_directory(folder))
+            for (const auto& e : fs::directory_iterator(folder))
+                if (e.path().extension() == ".json") files.push_back(e.path());
+        std::sort(files.begin(), files.end());
+        for (const auto& f : files) {
+            ReadResult rr = readPolygonFile(f.string());
+            if (!rr.diagnostic.ok()) {
+                std::fprintf(stderr, "dump: skipping unreadable %s: %s\n", f.c_str(),
+                             rr.diagnostic.message.c_str());
+                continue;
+            }
+            add(family + "/" + f.stem().string(), family, rr.polygon.vertices.size(), rr.polygon);
         }
-        add("fixture/" + f.stem().string(), "fixture", rr.polygon.vertices.size(), rr.polygon);
-    }
+    };
+    addFolder(fixtures, "fixture");
+    if (!real.empty()) addFolder(real, "coast");
     for (const auto& family : benchFamilies())
         for (size_t size : benchSizes(family, large))
             if (size <= maxSize)
@@ -495,7 +501,8 @@ int cmdFloor(const std::string& path) {
 
 int usage() {
     std::fprintf(stderr,
-                 "usage: flood-bench dump DIR FIXTURES [--seed S] [--max-size N] [--large F,G]\n"
+                 "usage: flood-bench dump DIR FIXTURES [--seed S] [--max-size N] [--large F,G] "
+                 "[--real R]\n"
                  "       flood-bench run DIR [--timeout S] [--out FILE]\n"
                  "       flood-bench memory FILE.poly [--record]\n"
                  "       flood-bench floor FILE.poly\n");
@@ -520,7 +527,8 @@ int main(int argc, char** argv) {
             for (std::string f; std::getline(list, f, ',');)
                 if (!f.empty()) large.push_back(f);
             return cmdDump(a[1], a[2], std::stoull(option("--seed", "1")),
-                           std::stoull(option("--max-size", "1000000")), large);
+                           std::stoull(option("--max-size", "1000000")), large,
+                           option("--real", ""));
         }
         if (a[0] == "run" && a.size() >= 2)
             return cmdRun(a[1], std::stod(option("--timeout", "60")),

@@ -2,8 +2,9 @@
 # Runs the peer benchmarks (issues 4, 13) and writes docs/BENCHMARKS.md, docs/bench.svg and the
 # README's bench block: every family of the generator at 10^3..10^6 (10^7 for BENCH_LARGE), the
 # floor, and the peers side by side in one run (CGAL, GLU, GEOS, native earcut.hpp in the C++ driver; earcut through
-# its Python binding; earcut, libtess and poly2tri under Node.js); then `flood triangulate` end to
-# end at 10^6 and 10^7 (bench/end_to_end.sh).
+# its Python binding; earcut, libtess and poly2tri under Node.js); real coastlines from
+# OpenStreetMap (bench/real_inputs.py, the family "coast"); then `flood triangulate` end to end at
+# 10^6 and 10^7, and `flood check -j1` against `-j2` on the world's countries (bench/end_to_end.sh).
 #   scripts/bench.sh                  everything: deps, build, inputs, earcut, peers, memory, report
 #   scripts/bench.sh --report-only    rewrite the report from the last results in build-bench/bench
 # Environment: BENCH_TIMEOUT (seconds per input and triangulator, default 30),
@@ -36,7 +37,9 @@ if [ "${1:-}" != "--report-only" ]; then
   cp "$root/bench/node/package.json" "$root/bench/node/package-lock.json" "$build/node/"
   (cd "$build/node" && npm ci --no-audit --no-fund --silent)
   [ -d "$fixtures" ] || echo "bench: $fixtures not found: running without earcut's fixtures"
-  echo "== inputs";  "$build/flood-bench" dump "$data" "$fixtures" --seed "$seed" --max-size "$maxsize" --large "$large"
+  # Kept in build-bench/real between runs: making them valid (ogr2ogr -makevalid) takes a while.
+  echo "== real coastlines"; "$py" "$root/bench/real_inputs.py" "$build/node/node_modules" "$build/real"
+  echo "== inputs";  "$build/flood-bench" dump "$data" "$fixtures" --seed "$seed" --max-size "$maxsize" --large "$large" --real "$build/real"
   echo "== earcut (Python)";  "$py" "$root/bench/earcut_bench.py" "$data" --timeout "$timeout"
   for peer in earcut libtess poly2tri; do
     echo "== $peer (Node.js)"
@@ -58,7 +61,8 @@ if [ "${1:-}" != "--report-only" ]; then
       fi
     done
   done
-  echo "== end to end"; "$root/bench/end_to_end.sh" "$data" "$build/flood" "$seed" "$((4 * timeout))"
+  echo "== end to end"; "$root/bench/end_to_end.sh" "$data" "$build/flood" "$seed" "$((4 * timeout))" \
+    "$build/node/node_modules/@geo-maps/countries-land-1m/map.geo.json"
   echo "== machine"
   { echo "cpu: $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')";
     echo "cores: $(nproc)"; echo "kernel: $(uname -r)";

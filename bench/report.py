@@ -315,10 +315,25 @@ def end_to_end_goals(D):
     return out
 
 
-def ratio_line(pairs):
-    """'name ×r' for (name, r or None) pairs, and whether every r is below 1."""
-    text = "; ".join("%s %s" % (n, "×%.2f" % r if r else "–") for n, r in pairs)
-    return text, bool(pairs) and all(r is not None and r < 1 for _, r in pairs)
+OVER = "over"  # a ratio whose peer did not finish within the limit while Flood did: a win
+
+
+def ratio(D, name, flood_nsv, peer):
+    """Flood / peer on one input: a number, OVER, or None when not both measured."""
+    p = D.nsv(name, peer)
+    if flood_nsv and p:
+        return flood_nsv / p
+    r = D.get(name, peer)
+    if flood_nsv and r and r["status"] in ("timeout", "skipped"):
+        return OVER
+    return None
+
+
+def ratio_line(pairs, peer):
+    """'name ×r' for (name, ratio()) pairs, and whether Flood is ahead on every one."""
+    text = "; ".join("%s %s" % (n, "×%.2f" % r if isinstance(r, float) else
+                                "%s over the limit" % LABEL[peer] if r == OVER else "–") for n, r in pairs)
+    return text, bool(pairs) and all(r == OVER or (r is not None and r < 1) for _, r in pairs)
 
 
 def issue31_goals(D):
@@ -326,27 +341,18 @@ def issue31_goals(D):
     out = []
     coasts = [n for n in D.inputs if D.info[n]["family"] == REAL]
     if coasts:
-        pairs = []
-        for n in coasts:
-            v, e = D.validated(n), D.nsv(n, "earcut-hpp")
-            pairs.append(("%s (%s v)" % (n.split("/")[1], D.info[n]["vertices"]), v / e if v and e else None))
-        text, ok = ratio_line(pairs)
+        pairs = [("%s (%s v)" % (n.split("/")[1], D.info[n]["vertices"]), ratio(D, n, D.validated(n), "earcut-hpp"))
+                 for n in coasts]
+        text, ok = ratio_line(pairs, "earcut-hpp")
         out.append(("Validated (validate() + a fresh `triangulate()`) ahead of native earcut.hpp on every real "
                     "coastline (Flood / earcut.hpp)", text, ok))
-    pairs = []
-    for fam in D.families:
-        for n in D.by_family(fam):
-            if int(D.info[n]["size"]) in (100000, MILLION):
-                v, e = D.validated(n), D.nsv(n, "earcut-hpp")
-                pairs.append((n, v / e if v and e else None))
-    text, ok = ratio_line(pairs)
+    pairs = [(n, ratio(D, n, D.validated(n), "earcut-hpp")) for fam in D.families for n in D.by_family(fam)
+             if int(D.info[n]["size"]) in (100000, MILLION)]
+    text, ok = ratio_line(pairs, "earcut-hpp")
     out.append(("Validated ahead of native earcut.hpp on every family at 10⁵ and 10⁶ (Flood / earcut.hpp)",
                 text, ok))
-    pairs = []
-    for n in D.by_family("islands"):
-        f, e = D.nsv(n, "flood"), D.nsv(n, "earcut-hpp")
-        pairs.append((n, f / e if f and e else None))
-    text, ok = ratio_line(pairs)
+    pairs = [(n, ratio(D, n, D.nsv(n, "flood"), "earcut-hpp")) for n in D.by_family("islands")]
+    text, ok = ratio_line(pairs, "earcut-hpp")
     out.append(("islands: a fresh `triangulate()` ahead of native earcut.hpp at every size", text, ok))
     lines, ok = [], True
     for fam in D.families:
@@ -354,12 +360,9 @@ def issue31_goals(D):
         ok = ok and a is not None and a <= 1.05 and k >= 3
         lines.append("%s %s" % (fam, "–" if a is None else "%.2f" % a))
     out.append(("Fitted exponent A ≤ 1.05 from 10⁴ up (10⁷ where run) on every family", "; ".join(lines), ok))
-    pairs = []
-    for fam in ("comb", "equal-heights"):
-        for n in D.by_family(fam):
-            f, g = D.nsv(n, "flood"), D.nsv(n, "glu")
-            pairs.append((n, f / g if f and g else None))
-    text, ok = ratio_line(pairs)
+    pairs = [(n, ratio(D, n, D.nsv(n, "flood"), "glu")) for fam in ("comb", "equal-heights")
+             for n in D.by_family(fam)]
+    text, ok = ratio_line(pairs, "glu")
     out.append(("Ahead of GLU on comb and equal-heights at every size (Flood / GLU)", text, ok))
     jobs = {r["jobs"]: r for r in D.check_jobs if r["wall_s"] != "failed"}
     if "1" in jobs and "2" in jobs:

@@ -7,11 +7,13 @@
 #include <algorithm>
 #include <iostream>
 #include <memory>
+#include <thread>
 
 #include "flood/check/checker.h"
 #include "flood/check/touches.h"
 #include "flood/io/gdal/gdal_io.h"
 #include "flood/io/io.h"
+#include "task_runner.h"
 #include "verbosity.h"
 
 namespace flood::cli {
@@ -88,8 +90,10 @@ int triangulateGis(const GisTriangulation& t) {
     const std::string name = t.in == "-" ? "<stdin>" : t.in;
     // stdin is the core's to read, a selection or not.
     bool gis = false;
-    DatasetRead d = gdal::readAnyFeatures(t.in, t.in == "-" ? Selection{} : t.selection,
-                                          t.maxInputBytes, false, gis);
+    // A large FeatureCollection is parsed on every core (parseFeatures' slices).
+    DatasetRead d = gdal::readAnyFeatures(
+        t.in, t.in == "-" ? Selection{} : t.selection, t.maxInputBytes, false, gis, nullptr,
+        threadRunner(std::max(1u, std::thread::hardware_concurrency())));
     for (const std::string& w : d.skipped) warning() << w << "\n";
     if (d.features.size() == 1 && d.features[0].wholeFile && !d.features[0].read.diagnostic.ok()) {
         std::cerr << "error: " << d.features[0].read.diagnostic.message << "\n";

@@ -15,6 +15,9 @@ data="$1" flood="$2" seed="$3" timeout="$4" dataset="${5:-}"
 tmp="$data/e2e"
 mkdir -p "$tmp"
 
+# smaller A [B] -> the smaller of two times (A when B is empty): a best of runs.
+smaller() { echo "$1 ${2:-$1}" | awk '{ print $1 < $2 ? $1 : $2 }'; }
+
 # peak_run FILE [PREFIX...] -> "wall user peak_kb" of one run, or "failed"
 peak_run() {
   local file="$1"; shift
@@ -53,7 +56,7 @@ tail -n +2 "$data/manifest.tsv" | while IFS=$'\t' read -r name family size verti
         r=$(peak_run "$tmp/in.json" taskset -c 0)
         [ "$r" = failed ] && { one=""; break; }
         w=${r%% *}
-        one=$(echo "$w ${one:-$w}" | awk '{ print $1 < $2 ? $1 : $2 }')
+        one=$(smaller "$w" "$one")
       done
       # "end to end, CPU time per step ...: read R validate V flood F check C write W ns/vertex; ..."
       steps=$(timeout "$timeout" "$flood" bench "$tmp/in.json" --repeat 1 | grep '^end to end' |
@@ -74,7 +77,7 @@ if [ -n "$dataset" ] && [ -f "$dataset" ]; then
       /usr/bin/time -f '%e %M' -o "$tmp/time.txt" timeout "$timeout" \
         "$flood" check -q -j"$jobs" "$dataset" >/dev/null 2>"$tmp/stderr.txt" || [ $? -le 6 ] || continue
       read -r w peak < <(tail -1 "$tmp/time.txt")
-      best=$(echo "$w ${best:-$w}" | awk '{ print $1 < $2 ? $1 : $2 }')
+      best=$(smaller "$w" "$best")
     done
     printf '%s\t%s\t%s\t%s\t%s\n' "$(basename "$(dirname "$dataset")")" "$(stat -c %s "$dataset")" \
       "$jobs" "${best:-failed}" "${peak:-0}" >> "$data/check_jobs.tsv"

@@ -588,6 +588,7 @@ def markdown(D, svg_name):
                  "touching itself becomes a ring and holes touching it), each the largest polygon that "
                  "gives (bench/real_inputs.py). *Validated* is what a caller pays: `validate()` plus a "
                  "fresh `triangulate()`; native earcut.hpp validates nothing.\n\n")
+        others = [w for w in TRIANGULATORS if w not in ("flood", "flood-rec", "earcut-hpp")]
         rows = []
         for n in coasts:
             f, v = D.nsv(n, "flood"), D.validated(n)
@@ -595,10 +596,10 @@ def markdown(D, svg_name):
             rows.append([n, D.info[n]["vertices"], D.info[n]["holes"], D.cell_text(n, "flood"), fmt(v),
                          D.cell_text(n, "earcut-hpp"), "%.2f" % (f / e) if f and e else "–",
                          "%.2f" % (v / e) if v and e else "–"] +
-                        [D.cell_text(n, w) for w in TRIANGULATORS if w not in ("flood", "flood-rec", "earcut-hpp")])
+                        [D.cell_text(n, w) for w in others])
         s.append(table(["input", "n", "holes", "Flood", "Flood validated", "earcut.hpp (C++)", "Flood / earcut.hpp",
                         "validated / earcut.hpp"] +
-                       [LABEL[w] for w in TRIANGULATORS if w not in ("flood", "flood-rec", "earcut-hpp")], rows))
+                       [LABEL[w] for w in others], rows))
     s.append("\n## earcut's fixtures (ns per vertex)\n\n")
     s.append("Input validity is Flood's `validate()`; invalid inputs are run anyway, and every "
              "triangulator's output is judged. Flood / earcut (Node) is given where both are valid.\n\n")

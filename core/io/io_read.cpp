@@ -480,6 +480,15 @@ json featureSequence(std::string_view text) {
 
 namespace {
 
+// The "features" array of a FeatureCollection document, or null when `doc` is not one (or was
+// discarded by a failed parse).
+json* featuresOf(json& doc) {
+    if (!doc.is_object() || !doc.contains("type") || doc["type"] != "FeatureCollection" ||
+        !doc.contains("features") || !doc["features"].is_array())
+        return nullptr;
+    return &doc["features"];
+}
+
 // A slice of the features array is at least this long (64 KiB), and there are at most
 // kMaxSlices: enough for the threads to share, each copied alone while it is parsed.
 constexpr size_t kSliceBytes = size_t(1) << 16;
@@ -513,10 +522,8 @@ json parseInSlices(std::string_view text, const std::optional<io_detail::Feature
     around.reserve(text.size() - (cut->close - cut->open) + 1);
     around.append(text.substr(0, cut->open + 1)).append(text.substr(cut->close));
     json doc = json::parse(around, nullptr, false);
-    if (doc.is_discarded() || !doc.is_object() || !doc.contains("type") ||
-        doc["type"] != "FeatureCollection" || !doc.contains("features") ||
-        !doc["features"].is_array() || !doc["features"].empty())
-        return nullptr;
+    const json* emptied = featuresOf(doc);
+    if (!emptied || !emptied->empty()) return nullptr;
     std::vector<size_t> bounds{cut->open};
     const size_t step = std::max(kSliceBytes, (cut->close - cut->open) / kMaxSlices);
     for (size_t comma : cut->commas)
@@ -575,11 +582,9 @@ DatasetRead parseFeatures(std::string_view text, const std::string& name, bool k
         if (run) items = parseInSlices(text, cut, progress, run);
         if (items.is_null()) {
             json doc = json::parse(text.begin(), text.end(), featureCounter(progress, 2), false);
-            if (doc.is_discarded()) return whole();  // parsePolygon says where and why
-            if (!doc.is_object() || !doc.contains("type") || doc["type"] != "FeatureCollection" ||
-                !doc.contains("features") || !doc["features"].is_array() || doc["features"].empty())
-                return whole();
-            items = std::move(doc["features"]);
+            json* features = featuresOf(doc);
+            if (!features || features->empty()) return whole();  // parsePolygon says why
+            items = std::move(*features);
         }
     }
     const std::vector<int64_t> fid = gdalFids(items);

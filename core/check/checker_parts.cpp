@@ -17,8 +17,12 @@
 // there in angular order, the winding sums of the new gaps counted up from the gap below the
 // point. Collinear edges along the same stretch (parts touching along it) sort with the
 // interior-below one first, so the count between them never exceeds the sums either side.
+// Parts that a vertical or horizontal line sets apart from every other part overlap none and
+// are left out of the sweep (on islands side by side, all of them); when the rest overlap,
+// every part is swept, so the overlap reported is the whole sweep's first.
 // This checker is an oracle: it uses only the polygon's vertices, its boundary edges and
-// orient(), and deliberately neither calls nor shares code with core/check/validate.cpp.
+// orient(), and deliberately neither calls nor shares code with core/check/validate.cpp; the
+// one piece both use is the cut of boxes by lines (geometry/boxes_apart.h), tested alone.
 #include "check/checker_parts.h"
 
 #include <algorithm>
@@ -30,6 +34,7 @@
 
 #include "flood/geometry/predicates.h"
 #include "flood/geometry/work.h"
+#include "geometry/boxes_apart.h"
 #include "geometry/number_text.h"  // formatPoint: shortest round-trip
 
 namespace flood {
@@ -108,24 +113,10 @@ PartsOverlap crossing(const Segment& s, const Segment& t, const std::string& whe
             {s.part, t.part}};
 }
 
-}  // namespace
-
-PartsOverlap partsOverlap(const std::vector<Point>& V, const std::vector<Index>& partOfVertex,
-                          std::vector<BoundaryEdge> boundary) {
-    for (Index v = 0; v < V.size(); ++v)
-        if (!std::isfinite(V[v].x) || !std::isfinite(V[v].y))
-            return {"non-finite-coordinate: " + vertexName(V, v) + " cannot be swept", {v}, {}};
-
-    Edges edges{V, {}};
+// The sweep over `edges` (the header comment): the first overlap found, or none.
+PartsOverlap sweep(Edges& edges) {
+    const std::vector<Point>& V = edges.V;
     std::vector<Segment>& segs = edges.segs;
-    segs.reserve(boundary.size());
-    for (const BoundaryEdge& e : boundary) {
-        Point pa = V[e.a], pb = V[e.b];
-        if (pa == pb) continue;  // no extent, no side (rule 3 already refuses such edges)
-        bool up = lexLess(pa, pb);
-        segs.push_back({up ? e.a : e.b, up ? e.b : e.a, partOfVertex[e.a], up ? 1 : -1});
-    }
-    boundary = {};
     // An edge's end: its vertex, the edge and whether it starts there in one word (8 bytes;
     // the sort reads the point through the vertex).
     struct End {
@@ -206,6 +197,55 @@ PartsOverlap partsOverlap(const std::vector<Point>& V, const std::vector<Index>&
                 return crossing(segs[*std::prev(upper)], segs[*upper], "");
     }
     return {};
+}
+
+// The parts that a vertical or horizontal line sets apart from every other part
+// (geometry/boxes_apart.h) overlap none: their edges need not be swept. Empty: none known.
+std::vector<char> partsAlone(const std::vector<Point>& V, const std::vector<Segment>& segs) {
+    Index parts = 0;
+    for (const Segment& s : segs) {
+        if (s.part == kNone) return {};  // in no part (rule 2 refuses it): no shortcut
+        parts = std::max(parts, s.part + 1);
+    }
+    std::vector<Box> boxes(parts);
+    for (const Segment& s : segs) boxes[s.part].add(V[s.lo]), boxes[s.part].add(V[s.hi]);
+    size_t groupCount = 0;
+    std::vector<Index> groupOf = groupsApart(boxes, groupCount);
+    std::vector<Index> size(groupCount, 0);
+    for (Index g : groupOf) ++size[g];
+    std::vector<char> alone(parts);
+    for (Index k = 0; k < parts; ++k) alone[k] = size[groupOf[k]] == 1;
+    return alone;
+}
+
+}  // namespace
+
+PartsOverlap partsOverlap(const std::vector<Point>& V, const std::vector<Index>& partOfVertex,
+                          std::vector<BoundaryEdge> boundary) {
+    for (Index v = 0; v < V.size(); ++v)
+        if (!std::isfinite(V[v].x) || !std::isfinite(V[v].y))
+            return {"non-finite-coordinate: " + vertexName(V, v) + " cannot be swept", {v}, {}};
+
+    Edges edges{V, {}};
+    std::vector<Segment>& segs = edges.segs;
+    segs.reserve(boundary.size());
+    for (const BoundaryEdge& e : boundary) {
+        Point pa = V[e.a], pb = V[e.b];
+        if (pa == pb) continue;  // no extent, no side (rule 3 already refuses such edges)
+        bool up = lexLess(pa, pb);
+        segs.push_back({up ? e.a : e.b, up ? e.b : e.a, partOfVertex[e.a], up ? 1 : -1});
+    }
+    boundary = {};
+    // Sweep only the parts not alone; if those overlap, sweep them all, so that the overlap
+    // reported is the one the whole sweep meets first.
+    const std::vector<char> alone = partsAlone(V, segs);
+    if (std::find(alone.begin(), alone.end(), 1) != alone.end()) {
+        Edges crowded{V, {}};
+        for (const Segment& s : segs)
+            if (!alone[s.part]) crowded.segs.push_back(s);
+        if (sweep(crowded).reason.empty()) return {};
+    }
+    return sweep(edges);
 }
 
 }  // namespace flood

@@ -17,8 +17,9 @@ struct BoundaryEdge {
 // triangles of different parts have disjoint interiors: the parts' boundary winding numbers
 // sum to at most 1 everywhere. Parts may touch at points, T-junctions and collinear stretches.
 // Returns an empty reason when they do not overlap, else the reason ("parts-overlap: ..."),
-// naming the two parts and a vertex or the two crossing edges, with those as data. Exact (orient and coordinate comparisons),
-// O(n log n): a sweep over the boundary edges.
+// naming the two parts and a vertex or the two crossing edges, with those as data. Exact
+// (orient and coordinate comparisons), O(n log n): a sweep over the boundary edges of the
+// parts that no line sets apart from the others.
 struct PartsOverlap {
     std::string reason;           // "" when the parts do not overlap
     std::vector<Index> vertices;  // the vertex beside the overlap, or the crossing edges' ends

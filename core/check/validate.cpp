@@ -35,11 +35,14 @@
 // by testing its pairs of edges instead of sweeping (pairsClear()), with the sweep's verdicts
 // (tests/check/validate_paths_test.cpp). The sweep itself runs first with only the tests
 // Shamos-Hoey needs (sweepEdges(minimal)), and again with all of them, whose order fixes the
-// message, only when that one finds a problem.
+// message, only when that one finds a problem. A MultiPolygon whose parts fall into groups
+// that lines set apart is validated group by group (validate_groups.cpp), and whole only when
+// a group fails, so the message is still the whole sweep's.
 //
 // Where each check lives: this file holds checks 1-3 and 6, the order they run in and the
 // entry points; check 4 is validate_edges.cpp, check 5 validate_touches.cpp, every finding
-// (validateAll()) validate_all.cpp; the validator's state is check/validator.h.
+// (validateAll()) validate_all.cpp, the groups of parts validate_groups.cpp; the validator's
+// state is check/validator.h.
 #include <string>
 
 #include "check/validate_paths.h"
@@ -157,18 +160,24 @@ Diagnostic Validator::run() {
 
 namespace {
 
+using validate_detail::kGroupsFrom;
+using validate_detail::kReusedUpTo;
 using validate_detail::Scratch;
 using validate_detail::Validator;
+using validate_detail::validGroupByGroup;
 
 // Small polygons reuse this thread's scratch; a large one gets its own, freed on return, so
 // that no thread keeps a large polygon's arrays (flooding comes next and needs the memory).
-Diagnostic validateIn(Polygon& polygon, const std::string& name, bool pairsFirst,
-                      std::vector<Index>* enclosing = nullptr) {
-    constexpr size_t kReusedUpTo = 1 << 14;  // vertices: at most a few MB kept per thread
+// `shortcuts`: the pair test of a small ring, the minimal sweep, a MultiPolygon group by group.
+Diagnostic validateIn(Polygon& polygon, const std::string& name, bool shortcuts,
+                      std::vector<Index>* enclosing) {
     thread_local Scratch reused;
+    if (shortcuts && polygon.vertices.size() >= kGroupsFrom &&
+        validGroupByGroup(polygon, name, reused, enclosing))
+        return {};
     Scratch fresh;
     Validator v(polygon, name, polygon.vertices.size() <= kReusedUpTo ? reused : fresh);
-    v.pairsFirst = pairsFirst;
+    v.pairsFirst = shortcuts;
     Diagnostic d = v.run();
     polygon.splits.assign(d.ok() ? v.splits.begin() : v.splits.end(), v.splits.end());
     polygon.pointsDistinct = d.ok() && v.touchPoints.empty();  // check 5 grouped every shared point
@@ -179,8 +188,9 @@ Diagnostic validateIn(Polygon& polygon, const std::string& name, bool pairsFirst
 
 }  // namespace
 
-Diagnostic validateBySweep(Polygon& polygon, const std::string& name) {
-    return validateIn(polygon, name, false);
+Diagnostic validateBySweep(Polygon& polygon, const std::string& name,
+                           std::vector<Index>* enclosing) {
+    return validateIn(polygon, name, false, enclosing);
 }
 
 Diagnostic validateNesting(Polygon& polygon, const std::string& name,
@@ -189,7 +199,7 @@ Diagnostic validateNesting(Polygon& polygon, const std::string& name,
 }
 
 Diagnostic validate(Polygon& polygon, const std::string& name) {
-    return validateIn(polygon, name, true);
+    return validateIn(polygon, name, true, nullptr);
 }
 
 }  // namespace flood

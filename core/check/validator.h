@@ -2,7 +2,8 @@
 // core/check; the public door is validate() and validateAll() in io/io.h). Where each check
 // lives: validate.cpp (checks 1-3 and 6, the order they run in, the entry points),
 // validate_edges.cpp (check 4: the sweep and the small-ring pair test), validate_touches.cpp
-// (check 5: rings meeting at a point), validate_all.cpp (every finding, for validateAll()).
+// (check 5: rings meeting at a point), validate_all.cpp (every finding, for validateAll()),
+// validate_groups.cpp (a MultiPolygon group by group).
 #pragma once
 #include <algorithm>
 #include <functional>
@@ -49,6 +50,7 @@ struct Occurrence {
 // validating a small polygon allocates nothing once warm: on a 15-vertex polygon the dozens of
 // allocations were most of the cost. Each user resets what it uses.
 struct Scratch {
+    // A thread keeps one for polygons of up to this many vertices: at most a few MB.
     std::vector<EdgeSplit> junctions, splits;
     std::vector<Index> ringOfV, partOfRing, enclosing, groupOf;
     std::vector<int> ringSign;
@@ -63,6 +65,7 @@ struct Scratch {
     SweepTreeLinks links;
     std::vector<std::vector<Occurrence>> touchPoints;
 };
+constexpr size_t kReusedUpTo = 1 << 14;
 
 struct Validator {
     const Polygon& P;
@@ -201,6 +204,15 @@ struct Validator {
         else c.edges.push_back(junctions[o.owner - n].edge);
     }
 };
+
+// validate() on a MultiPolygon of at least kGroupsFrom vertices whose parts fall into groups
+// apart (validate_groups.cpp): true when every group is valid, then the polygon's splits and
+// pointsDistinct, and `enclosing` if given, are set as the whole polygon's validation sets
+// them; false when there is one group, or a group is invalid (validate the whole polygon).
+// Groups of up to kReusedUpTo vertices are validated in `reused`.
+constexpr size_t kGroupsFrom = 64;
+bool validGroupByGroup(Polygon& polygon, const std::string& name, Scratch& reused,
+                       std::vector<Index>* enclosing);
 
 // --- exact geometric helpers -------------------------------------------------------------
 

@@ -169,6 +169,30 @@ TEST(CheckerParts, ReasonNamesTheTwoPartsAndAVertex) {
     EXPECT_EQ(c.culprits.rings, (std::vector<uint32_t>{1, 0}));
 }
 
+// Parts that a line sets apart from all others are not swept (geometry/boxes_apart.h): an
+// overlap among the rest is still found, in a row or a column of parts apart, and reported as
+// the sweep of every part reports it.
+TEST(CheckerParts, OverlapAmongPartsApartIsFound) {
+    std::vector<Polygon> apart, touching;
+    for (int k = 0; k < 40; ++k) {
+        if (k == 20) {  // the overlapping pair, at the same place in both layouts
+            for (auto* pieces : {&apart, &touching}) {
+                pieces->push_back(part(box(200, 0, 203, 3)));
+                pieces->push_back(part(box(201, 1, 205, 2)));
+            }
+        }
+        apart.push_back(part(box(4 * k, 0, 4 * k + 3, 3)));
+        touching.push_back(part(box(3 * k - 300, 0, 3 * k - 297, 3)));  // along whole edges
+    }
+    EXPECT_TRUE(overlapRejected(apart));
+    EXPECT_TRUE(overlapRejected(touching));
+    Together a = together(apart), t = together(touching);
+    EXPECT_EQ(checkTriangulation(a.polygon, a.triangles).reason,
+              checkTriangulation(t.polygon, t.triangles).reason);
+    apart.erase(apart.begin() + 21);  // the pair's second square
+    EXPECT_TRUE(touchingAccepted(apart));
+}
+
 // [SECTION] touching parts: accepted
 
 TEST(CheckerParts, AcceptsPartsTouchingAtVertices) {
@@ -331,23 +355,28 @@ SweepWork checkerWork(const Together& t) {
 }  // namespace
 
 TEST(CheckerParts, WorkPerVertexStaysFlat) {
-    for (const char* shape : {"islands", "stack"}) {
+    for (const char* shape : {"row", "stack"}) {
         SweepWork base{};
         for (size_t n : {1000, 10000, 100000}) {
-            Together t;
-            if (std::string(shape) == "islands") {
-                t = together({generate("islands", 1, n)});
-            } else {  // k long rectangles on top of each other: the sweep holds 2k edges at once
-                std::vector<Polygon> stack;
-                for (size_t k = 0; k < n / 4; ++k)
-                    stack.push_back(part(box(k % 7, 2.0 * k, 1000, 2.0 * k + 1)));
-                t = together(stack);
-            }
-            SweepWork w = checkerWork(t);
+            std::vector<Polygon> pieces;
+            for (size_t k = 0; k < n / 8; ++k)
+                if (std::string(shape) == "row") {  // squares with a hole, along whole edges
+                    pieces.push_back(part(box(3.0 * k, k % 3, 3.0 * k + 3, k % 3 + 3),
+                                          {box(3.0 * k + 1, k % 3 + 1, 3.0 * k + 2, k % 3 + 2)}));
+                } else {  // long rectangles on top of each other: the sweep holds them all at once
+                    pieces.push_back(part(box(k % 7, 2.0 * k, 1000, 2.0 * k + 2)));
+                }
+            SweepWork w = checkerWork(together(pieces));
             EXPECT_GT(w.steps, 0) << shape;
             if (n == 1000) base = w;
             EXPECT_LE(w.steps, 1.5 * base.steps) << shape << " at " << n;
             EXPECT_LE(w.orients, 2.5 * base.orients) << shape << " at " << n;  // log n comparisons
         }
     }
+}
+
+// Islands apart (a line between each and the next): no sweep at all.
+TEST(CheckerParts, IslandsApartAreNotSwept) {
+    SweepWork w = checkerWork(together({generate("islands", 1, 10000)}));
+    EXPECT_EQ(w.steps, 0);
 }

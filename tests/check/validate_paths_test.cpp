@@ -1,6 +1,7 @@
 // validate() tests every pair of edges of a small single ring instead of sweeping
-// (core/check/validate_edges.cpp, pairsClear), and sweeps first with the minimal tests: it must
-// give the full sweep's verdict, message, culprits and splits on every input — the samples, the
+// (core/check/validate_edges.cpp, pairsClear), sweeps first with the minimal tests, and
+// validates a MultiPolygon group by group (validate_groups.cpp): it must give the full
+// sweep's verdict, message, culprits, splits and nesting on every input — the samples, the
 // invalid catalogue, generated polygons and mutations of them that repeat points, put vertices
 // on edges, cross, overlap and fold back. And its cost, counted: the sweep's hand-over of an
 // edge's place, the box test before orient().
@@ -12,6 +13,7 @@
 #include "check/validate_paths.h"
 #include "flood/geometry/work.h"
 #include "flood/tools/generate.h"
+#include "geometry/boxes_apart.h"
 #include "test_support.h"
 
 using namespace flood;
@@ -21,8 +23,11 @@ namespace {
 
 // Both paths on copies of p; everything they report must agree.
 void expectSamePaths(const Polygon& p, const std::string& what) {
-    Polygon a = p, b = p;
-    Diagnostic da = validate(a, "poly"), db = validateBySweep(b, "poly");
+    Polygon a = p, b = p, c = p;
+    std::vector<Index> nestA, nestB;
+    Diagnostic da = validate(a, "poly"), db = validateBySweep(b, "poly", &nestB);
+    EXPECT_EQ(validateNesting(c, "poly", nestA).message, da.message) << what;
+    EXPECT_EQ(nestA, nestB) << what;
     ASSERT_EQ(da.status, db.status) << what << ": " << da.message << " / " << db.message;
     EXPECT_EQ(da.message, db.message) << what;
     EXPECT_EQ(da.culprits.vertices, db.culprits.vertices) << what;
@@ -225,4 +230,132 @@ TEST(ValidatePaths, MinimalSweepHalvesTheWork) {
                   << double(full) / n << " per vertex\n";
         EXPECT_LT(2 * minimal, full) << family;
     }
+}
+
+// MultiPolygons whose parts lie apart, side by side, in grids, overlapping, touching along a
+// line, one inside another: validate() takes each group of parts apart alone
+// (validate_groups.cpp) and must still give the whole sweep's answer — on valid layouts, on
+// overlapping ones, and on mutations that move a vertex of one part onto another part or
+// swap vertices within a part.
+namespace {
+
+// The parts of `pieces` placed at `offsets` (each piece's own parts, its holes kept).
+Polygon layout(const std::vector<Polygon>& pieces, const std::vector<Point>& offsets) {
+    Polygon out;
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        const Polygon& p = pieces[k];
+        for (const Part& part : p.parts)
+            for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) {
+                std::vector<Point> ring;
+                for (Index v = p.rings[r].first; v < p.rings[r].first + p.rings[r].count; ++v)
+                    ring.push_back(
+                        {p.vertices[v].x + offsets[k].x, p.vertices[v].y + offsets[k].y});
+                out.addRing(ring, r == part.firstRing);
+            }
+    }
+    return out;
+}
+
+Box boxOf(const Polygon& p) {
+    Box b;
+    for (Point v : p.vertices) b.add(v);
+    return b;
+}
+
+size_t groupsOf(const Polygon& p) {
+    std::vector<Box> boxes(p.parts.size());
+    for (Index k = 0; k < p.parts.size(); ++k)
+        for (Index r = p.parts[k].firstRing; r < p.parts[k].firstRing + p.parts[k].ringCount; ++r)
+            for (Index v = p.rings[r].first; v < p.rings[r].first + p.rings[r].count; ++v)
+                boxes[k].add(p.vertices[v]);
+    size_t count = 0;
+    groupsApart(boxes, count);
+    return count;
+}
+
+}  // namespace
+
+TEST(ValidatePaths, PartsApartGiveTheWholeSweepsAnswer) {
+    Rng rng{41};
+    const std::vector<std::string> families{"star",      "comb-rect",      "circle-holes",
+                                            "staircase", "touching-holes", "t-junctions",
+                                            "steiner",   "islands"};
+    size_t grouped = 0, invalid = 0, valid = 0;
+    for (int round = 0; round < 60; ++round) {
+        const size_t count = 2 + rng.below(7);
+        std::vector<Polygon> pieces;
+        double width = 0, height = 0;
+        for (size_t k = 0; k < count; ++k) {
+            pieces.push_back(generate(families[rng.below(families.size())], rng.next() % 100 + 1,
+                                      12 + rng.below(40)));
+            Box b = boxOf(pieces.back());
+            for (Point& v : pieces.back().vertices) v = {v.x - b.x0, v.y - b.y0};
+            width = std::max(width, b.x1 - b.x0), height = std::max(height, b.y1 - b.y0);
+        }
+        // A step of a whole box keeps the pieces apart; exactly the box makes them touch along
+        // a line; less makes them overlap; 0.25 puts a piece over the first one's corner.
+        const double steps[] = {width + 1, width, width * 0.5, width * 0.25};
+        const double step = steps[rng.below(4)];
+        const int style = int(rng.below(3));  // a row, a grid, or scattered over the first piece
+        std::vector<Point> offsets;
+        for (size_t k = 0; k < count; ++k) {
+            if (style == 0) offsets.push_back({double(k) * step, 0});
+            else if (style == 1)
+                offsets.push_back({double(k % 3) * step, double(k / 3) * (height + 1)});
+            else offsets.push_back({double(rng.below(4)) * step, double(rng.below(4)) * step});
+        }
+        Polygon p = layout(pieces, offsets);
+        grouped += groupsOf(p) >= 2 && p.vertices.size() >= 64;
+        const std::string what = "layout " + std::to_string(round);
+        (validateBySweep(p, "p").ok() ? valid : invalid)++;
+        expectSamePaths(p, what);
+        for (int m = 0; m < 6; ++m) {
+            Polygon q = p;
+            std::vector<Point>& V = q.vertices;
+            const size_t i = rng.below(V.size()), j = rng.below(V.size());
+            if (m % 3 == 0) V[i] = V[j];  // onto a vertex, usually of another part
+            else if (m % 3 == 1) {        // onto the middle of an edge
+                const Index r = q.ringOf(Index(j)),
+                            next = j + 1 == q.rings[r].first + q.rings[r].count ? q.rings[r].first
+                                                                                : Index(j + 1);
+                V[i] = {(V[j].x + V[next].x) / 2, (V[j].y + V[next].y) / 2};
+            } else std::swap(V[i], V[j]);
+            invalid += !validateBySweep(q, "q").ok();
+            expectSamePaths(q, what + " mutation " + std::to_string(m));
+        }
+    }
+    // Groups interleaved in part order, each with T-junctions: parts 0 and 2 meet at a corner,
+    // part 1 lies apart. The splits are still in edge order.
+    Polygon t = generate("t-junctions", 1, 40);
+    const Box b = boxOf(t);
+    const double w = b.x1 - b.x0, h = b.y1 - b.y0;
+    Polygon corners = layout({t, t, t}, {{0, 0}, {10 * w, 0}, {w, h}});
+    ASSERT_EQ(groupsOf(corners), 2u);
+    ASSERT_TRUE(validateBySweep(corners, "p").ok());
+    EXPECT_GT(corners.splits.size(), 3u);
+    expectSamePaths(corners, "interleaved groups");
+    EXPECT_GT(grouped, 20u);  // the group path was taken, on valid and on invalid layouts
+    EXPECT_GT(valid, 10u);
+    EXPECT_GT(invalid, 100u);
+}
+
+// Work, counted: validating many islands side by side grows like n, group by group, where the
+// whole sweep keeps every island's edges in one tree (log n per step).
+TEST(ValidatePaths, IslandsApartCostTheSamePerVertexAtEverySize) {
+    std::vector<double> perVertex;
+    for (size_t size : {1000, 100000}) {
+        Polygon p = generate("islands", 1, size);
+        work() = {};
+        ASSERT_TRUE(validate(p, "islands").ok());
+        perVertex.push_back(double(work().orientCalls + work().validatorSteps) /
+                            double(p.vertices.size()));
+        work() = {};
+        Polygon q = p;
+        ASSERT_TRUE(validateBySweep(q, "islands").ok());
+        std::cout << "[ WORK ] islands/" << size << ": " << perVertex.back()
+                  << " per vertex by groups, "
+                  << double(work().orientCalls + work().validatorSteps) / double(p.vertices.size())
+                  << " whole\n";
+    }
+    EXPECT_LE(perVertex[1], perVertex[0] * 1.02);
 }

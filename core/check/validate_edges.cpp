@@ -1,6 +1,6 @@
 // Check 4 of validate(): no two edges cross or overlap — a sweep over the vertices in
-// below() order (sweep_tree.h), or on a small single ring a test of every pair of edges with
-// the sweep's verdicts. The order of checks and the costs are in validate.cpp's header.
+// below() order (sweep_tree.h), or on a small polygon a test of every pair of edges with the
+// sweep's verdicts. The order of checks and the costs are in validate.cpp's header.
 #include <algorithm>
 #include <cmath>
 
@@ -343,13 +343,13 @@ void Validator::orderJunctions() {
                     junctions.end());
 }
 
-// Check 4 on a small single ring: every pair of edges whose boxes meet goes to
-// classifyMeeting(), with no sort and no tree. When no pair shows anything (no problem, no
-// vertex on another edge, no point twice), the sweep would find nothing either — its tests are
-// these on fewer pairs — and a single ring encloses nothing and lies in nothing. Whatever a pair
-// shows is forgotten and left to the sweep, whose order decides which problem is reported.
-// Below kPairsUpTo vertices this costs fewer instructions than the sweep (docs/BENCHMARKS.md,
-// "Validation cost").
+// Check 4 on a small polygon: every pair of edges whose boxes meet goes to classifyMeeting(),
+// with no sort and no tree. When no pair shows anything (no problem, no vertex on another
+// edge, no point twice), the sweep would find nothing either — its tests are these on fewer
+// pairs — and the rings are disjoint closed curves: ringsApartNesting() nests them. Whatever a
+// pair shows is forgotten and left to the sweep, whose order decides which problem is
+// reported. Below kPairsUpTo vertices this costs fewer instructions than the sweep
+// (docs/BENCHMARKS.md, "Validation cost"); a point hole (an edge of no extent) always sweeps.
 constexpr size_t kPairsUpTo = 96;
 
 bool Validator::pairsClear() {
@@ -357,7 +357,7 @@ bool Validator::pairsClear() {
     std::vector<EdgeBox>& boxes = s.boxes;  // each edge's box, computed once, not once a pair
     boxes.resize(n);
     for (Index e = 0; e < n; ++e) {
-        Point a = V[e], b = V[e + 1 == n ? 0 : e + 1];
+        Point a = V[e], b = V[next(e)];
         boxes[e] = {std::min(a.x, b.x), std::max(a.x, b.x), std::min(a.y, b.y), std::max(a.y, b.y)};
     }
     for (Index e = 0; e < n; ++e) {
@@ -365,7 +365,7 @@ bool Validator::pairsClear() {
         for (Index f = e + 1; f < n; ++f) {
             const EdgeBox& b = boxes[f];  // as boxesApart()
             if (a.x1 < b.x0 || b.x1 < a.x0 || a.y1 < b.y0 || b.y1 < a.y0) continue;
-            if (V[e] == V[f]) return false;  // a point twice: the rings (here one) touch there
+            if (V[e] == V[f]) return false;  // a point twice: the rings touch there
             classifyMeeting(e, f);
             if (problem || !junctions.empty()) return false;
         }
@@ -373,9 +373,47 @@ bool Validator::pairsClear() {
     return true;
 }
 
+// enclosing[] for rings that meet nowhere: a ring lies inside another exactly when its first
+// vertex does (exact winding numbers), and the innermost of the rings around it is the one
+// with the most rings around itself.
+void Validator::ringsApartNesting() {
+    const Index R = Index(P.rings.size());
+    enclosing.assign(R, kNone);
+    if (R == 1) return;
+    std::vector<char>& around = s.ringSeen;  // around[r * R + t]: ring t winds around ring r
+    around.assign(size_t(R) * R, 0);
+    std::vector<Index>& depth = s.newRings;  // how many rings wind around each
+    depth.assign(R, 0);
+    for (Index r = 0; r < R; ++r) {
+        const Point p = pt(P.rings[r].first);
+        for (Index t = 0; t < R; ++t) {
+            if (t == r) continue;
+            const Ring& ring = P.rings[t];
+            int winding = 0;
+            for (Index v = ring.first; v < ring.first + ring.count; ++v) {
+                const Point a = pt(v),
+                            b = pt(v + 1 == ring.first + ring.count ? ring.first : v + 1);
+                if (a.y <= p.y) {
+                    if (b.y > p.y && orient(a, b, p) > 0) ++winding;  // upward, p on its left
+                } else if (b.y <= p.y && orient(a, b, p) < 0) {
+                    --winding;  // downward, p on its right
+                }
+            }
+            if (winding != 0) around[size_t(r) * R + t] = 1, ++depth[r];
+        }
+    }
+    for (Index r = 0; r < R; ++r)
+        for (Index t = 0; t < R; ++t)
+            if (around[size_t(r) * R + t] &&
+                (enclosing[r] == kNone || depth[t] > depth[enclosing[r]]))
+                enclosing[r] = t;
+}
+
 Diagnostic Validator::checkEdges() {
-    if (pairsFirst && P.rings.size() == 1 && n <= kPairsUpTo && pairsClear()) {
-        enclosing.assign(1, kNone);
+    if (pairsFirst && n <= kPairsUpTo &&
+        std::none_of(P.rings.begin(), P.rings.end(), [](const Ring& r) { return r.count == 1; }) &&
+        pairsClear()) {
+        ringsApartNesting();
         return {};
     }
     if (pairsFirst) {

@@ -1,4 +1,4 @@
-// validate() takes shortcuts: on small single rings a test of every pair of edges instead of
+// validate() takes shortcuts: on small polygons a test of every pair of edges instead of
 // the sweep (core/check/validate.cpp), on a MultiPolygon a sweep of each group of parts apart
 // (validate_groups.cpp). The whole sweep alone, for tests that hold them to one verdict and one
 // message. Internal to core/, not a public API.

@@ -75,7 +75,7 @@ struct Validator {
     std::vector<EdgeSplit>& splits;     // the junctions within one part, for the machine
     std::optional<Index> zeroArea;      // first vertex of the first ring of zero area (check 3)
     bool edgesCrossed = false;          // check 4's problem is a crossing of two edges
-    bool pairsFirst = true;  // shortcuts: pairsClear() on small single rings, the minimal sweep
+    bool pairsFirst = true;  // shortcuts: pairsClear() on small polygons, the minimal sweep
     size_t n = 0;
     std::vector<Index>& ringOfV;  // ring of each vertex
     std::vector<int>& ringSign;   // orientation of each ring: +1 counter-clockwise, -1 clockwise
@@ -182,6 +182,7 @@ struct Validator {
     Diagnostic checkEdges();        // sweepEdges(), then orderJunctions()
     bool sweepEdges(bool minimal);  // false: stopped at a problem (or by minimal's doubt)
     bool pairsClear();
+    void ringsApartNesting();
     void classifyMeeting(Index e, Index f);
     void touchOnEdge(Index vertex, Index edge);
     void orderJunctions();

@@ -201,14 +201,16 @@ PartsOverlap sweep(Edges& edges) {
 
 // The parts that a vertical or horizontal line sets apart from every other part
 // (geometry/boxes_apart.h) overlap none: their edges need not be swept. Empty: none known.
-std::vector<char> partsAlone(const std::vector<Point>& V, const std::vector<Segment>& segs) {
+std::vector<char> partsAlone(const std::vector<Point>& V, const std::vector<Index>& partOfVertex,
+                             const std::vector<BoundaryEdge>& boundary) {
     Index parts = 0;
-    for (const Segment& s : segs) {
-        if (s.part == kNone) return {};  // in no part (rule 2 refuses it): no shortcut
-        parts = std::max(parts, s.part + 1);
+    for (const BoundaryEdge& e : boundary) {
+        const Index part = partOfVertex[e.a];
+        if (part == kNone) return {};  // in no part (rule 2 refuses it): no shortcut
+        parts = std::max(parts, part + 1);
     }
     std::vector<Box> boxes(parts);
-    for (const Segment& s : segs) boxes[s.part].add(V[s.lo]), boxes[s.part].add(V[s.hi]);
+    for (const BoundaryEdge& e : boundary) boxes[partOfVertex[e.a]].add(V[e.a]);
     size_t groupCount = 0;
     std::vector<Index> groupOf = groupsApart(boxes, groupCount);
     std::vector<Index> size(groupCount, 0);
@@ -225,26 +227,28 @@ PartsOverlap partsOverlap(const std::vector<Point>& V, const std::vector<Index>&
     for (Index v = 0; v < V.size(); ++v)
         if (!std::isfinite(V[v].x) || !std::isfinite(V[v].y))
             return {"non-finite-coordinate: " + vertexName(V, v) + " cannot be swept", {v}, {}};
-
-    Edges edges{V, {}};
-    std::vector<Segment>& segs = edges.segs;
-    segs.reserve(boundary.size());
-    for (const BoundaryEdge& e : boundary) {
-        Point pa = V[e.a], pb = V[e.b];
-        if (pa == pb) continue;  // no extent, no side (rule 3 already refuses such edges)
-        bool up = lexLess(pa, pb);
-        segs.push_back({up ? e.a : e.b, up ? e.b : e.a, partOfVertex[e.a], up ? 1 : -1});
-    }
-    boundary = {};
+    // The edges of the parts that are not alone, or of every part.
+    const std::vector<char> alone = partsAlone(V, partOfVertex, boundary);
+    auto edgesOf = [&](bool all) {
+        Edges edges{V, {}};
+        if (all) edges.segs.reserve(boundary.size());
+        for (const BoundaryEdge& e : boundary) {
+            Point pa = V[e.a], pb = V[e.b];
+            if (pa == pb) continue;  // no extent, no side (rule 3 already refuses such edges)
+            if (!all && alone[partOfVertex[e.a]]) continue;
+            bool up = lexLess(pa, pb);
+            edges.segs.push_back({up ? e.a : e.b, up ? e.b : e.a, partOfVertex[e.a], up ? 1 : -1});
+        }
+        return edges;
+    };
     // Sweep only the parts not alone; if those overlap, sweep them all, so that the overlap
     // reported is the one the whole sweep meets first.
-    const std::vector<char> alone = partsAlone(V, segs);
     if (std::find(alone.begin(), alone.end(), 1) != alone.end()) {
-        Edges crowded{V, {}};
-        for (const Segment& s : segs)
-            if (!alone[s.part]) crowded.segs.push_back(s);
-        if (sweep(crowded).reason.empty()) return {};
+        Edges crowded = edgesOf(false);
+        if (crowded.segs.empty() || sweep(crowded).reason.empty()) return {};
     }
+    Edges edges = edgesOf(true);
+    boundary = {};
     return sweep(edges);
 }
 

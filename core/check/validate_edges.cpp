@@ -151,6 +151,10 @@ void Validator::touchOnEdge(Index vertex, Index edge) {
     else junctions.push_back({edge, vertex});
 }
 
+// The sweep line's edges are kept in a sorted row up to this many (sweep_tree.h): a real
+// coastline's line crosses 12-30 edges (docs/BENCHMARKS.md, "Validation cost, round 4").
+constexpr size_t kSweepRow = 64;
+
 // The sweep: every pair of edges that become neighbours along the sweep line goes to
 // classifyMeeting(); it stops at the first problem. Also fills enclosing[]. The full sweep
 // also tests pairs that were neighbours already, around every ending edge: the order of its
@@ -179,7 +183,7 @@ bool Validator::sweepEdges(bool minimal) {
     auto up = [&](Index e) { return segs[e].lo == e && segs[e].hi != e; };
     std::vector<Index>& events = s.events;
     sortVerticesBelow(P.vertices, s.keys, events, s.bucketStart);
-    SweepTree<SweepOrder> active(n, SweepOrder{&segs, P.vertices.data()}, s.links);
+    SweepTree<SweepOrder> active(n, SweepOrder{&segs, P.vertices.data()}, s.links, kSweepRow);
     enclosing.assign(P.rings.size(), kNone);
     std::vector<char>& ringSeen = s.ringSeen;
     ringSeen.assign(P.rings.size(), 0);

@@ -31,11 +31,11 @@
 // puts coincident vertices side by side, so no search finds them) and a sort of those, a treap
 // sweep (sweep_tree.h) with O(1) tests per event, and at a point shared by k rings a sort of
 // their 2k rays and O(log k) per ring to find a crossing (validatorSteps in flood/geometry/work.h
-// counts the work, tests/check/validate_growth_test.cpp bounds it). A small polygon is checked by
-// testing its pairs of edges instead of sweeping (pairsClear()), its rings then nested by
-// winding numbers, with the sweep's verdicts (tests/check/validate_paths_test.cpp). The sweep itself runs first with only the tests
-// Shamos-Hoey needs (sweepEdges(minimal)), and again with all of them, whose order fixes the
-// message, only when that one finds a problem. A MultiPolygon whose parts fall into groups
+// counts the work, tests/check/validate_growth_test.cpp bounds it). A small polygon is checked
+// by testing its pairs of edges instead of sweeping (pairsClear()), its rings then nested by
+// winding numbers, with the sweep's verdicts (tests/check/validate_paths_test.cpp). The sweep
+// itself runs first with only the tests Shamos-Hoey needs (sweepEdges(minimal)), and again
+// with all of them, whose order fixes the message, only when that one finds a problem. A MultiPolygon whose parts fall into groups
 // that lines set apart is validated group by group (validate_groups.cpp), and whole only when
 // a group fails, so the message is still the whole sweep's.
 //

@@ -14,10 +14,21 @@ bool validGroupByGroup(Polygon& polygon, const std::string& name, Scratch& reuse
                        std::vector<Index>* enclosing) {
     const Polygon& P = polygon;
     if (P.parts.size() < 2) return false;
+    // Parts that cover the rings in order, rings the vertices: else the whole polygon is
+    // validated, so that nothing outside the groups goes unchecked.
+    size_t rings = 0, vertices = 0;
+    for (const Part& part : P.parts) {
+        if (part.firstRing != rings) return false;
+        rings += part.ringCount;
+    }
+    for (const Ring& ring : P.rings) {
+        if (ring.first != vertices) return false;
+        vertices += ring.count;
+    }
+    if (rings != P.rings.size() || vertices != P.vertices.size()) return false;
     std::vector<Box> boxes(P.parts.size());
     for (Index k = 0; k < P.parts.size(); ++k) {
         const Part& part = P.parts[k];
-        if (part.firstRing + part.ringCount > P.rings.size()) return false;
         for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r)
             for (Index v = P.rings[r].first; v < P.rings[r].first + P.rings[r].count; ++v) {
                 if (!std::isfinite(P.vertices[v].x) || !std::isfinite(P.vertices[v].y))

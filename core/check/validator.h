@@ -1,7 +1,7 @@
 // The validator's working state, shared by the files that hold its checks (internal to
 // core/check; the public door is validate() and validateAll() in io/io.h). Where each check
 // lives: validate.cpp (checks 1-3 and 6, the order they run in, the entry points),
-// validate_edges.cpp (check 4: the sweep and the small-ring pair test), validate_touches.cpp
+// validate_edges.cpp (check 4: the sweep and the small-polygon pair test), validate_touches.cpp
 // (check 5: rings meeting at a point), validate_all.cpp (every finding, for validateAll()),
 // validate_groups.cpp (a MultiPolygon group by group).
 #pragma once
@@ -50,7 +50,6 @@ struct Occurrence {
 // validating a small polygon allocates nothing once warm: on a 15-vertex polygon the dozens of
 // allocations were most of the cost. Each user resets what it uses.
 struct Scratch {
-    // A thread keeps one for polygons of up to this many vertices: at most a few MB.
     std::vector<EdgeSplit> junctions, splits;
     std::vector<Index> ringOfV, partOfRing, enclosing, groupOf;
     std::vector<int> ringSign;
@@ -65,6 +64,7 @@ struct Scratch {
     SweepTreeLinks links;
     std::vector<std::vector<Occurrence>> touchPoints;
 };
+// A thread keeps one Scratch for polygons of up to this many vertices: at most a few MB.
 constexpr size_t kReusedUpTo = 1 << 14;
 
 struct Validator {

@@ -5,8 +5,8 @@
 // comparisons. Priorities are a hash of the index, so the shape is that of a random treap
 // whatever the input order: O(log n) expected per operation.
 // A caller may ask for a row: while the set holds at most `rowMax` edges it is a sorted array,
-// scanned for an edge and searched by halves for a place, where the treap chases links scattered
-// over the edge arrays; past rowMax it becomes the treap, and a row again below rowMax / 2
+// each edge's place in it kept in its `up` link, searched by halves for a new edge's place,
+// where the treap chases links scattered over the edge arrays; past rowMax it becomes the treap, and a row again below rowMax / 2
 // (validation's sweep; the bank sweep keeps the treap).
 // Internal to core/, not a public API.
 #pragma once
@@ -106,9 +106,7 @@ public:
         insert(e);
     }
 
-    bool contains(Index e) const {
-        return treap_ ? up_[e] != kNone || root_ == e : up_[e] == kInRow;
-    }
+    bool contains(Index e) const { return up_[e] != kNone || (treap_ && root_ == e); }
     bool empty() const { return treap_ ? root_ == kNone : row_.empty(); }
 
     // The first node in the order for which notBefore(x) holds, kNone if none: a descent from
@@ -136,8 +134,10 @@ public:
     // Removes e (present): rotated down to a leaf, then cut off.
     void erase(Index e) {
         if (!treap_) {
-            row_.erase(row_.begin() + std::ptrdiff_t(indexOf(e)));
+            const size_t at = indexOf(e);
+            row_.erase(row_.begin() + std::ptrdiff_t(at));
             up_[e] = kNone;
+            renumber(at);
             return;
         }
         while (left_[e] != kNone || right_[e] != kNone) {
@@ -158,7 +158,7 @@ public:
     void replace(Index e, Index f) {
         if (!treap_) {
             row_[indexOf(e)] = f;
-            up_[e] = kNone, up_[f] = kInRow;
+            up_[f] = up_[e], up_[e] = kNone;
             return;
         }
         Index p = up_[e];
@@ -190,14 +190,14 @@ public:
     }
 
 private:
-    static constexpr Index kInRow = kNone - 1;  // up_ of an edge in the row
-
-    size_t indexOf(Index e) const {
-        return size_t(std::find(row_.begin(), row_.end(), e) - row_.begin());
+    // In the row, up_ holds each edge's place in it.
+    size_t indexOf(Index e) const { return up_[e]; }
+    void renumber(size_t from) {
+        for (size_t i = from; i < row_.size(); ++i) up_[row_[i]] = Index(i);
     }
     void rowInsert(Index e, size_t at) {
         row_.insert(row_.begin() + std::ptrdiff_t(at), e);
-        up_[e] = kInRow;
+        renumber(at);
         if (row_.size() > rowMax_) toTreap();
     }
     // The row as the treap its order and priorities make (a Cartesian tree, built on a stack:
@@ -225,7 +225,8 @@ private:
     void toRow() {
         row_.clear();
         for (Index x = first(); x != kNone; x = next(x)) row_.push_back(x);
-        for (Index x : row_) left_[x] = right_[x] = kNone, up_[x] = kInRow;
+        for (Index x : row_) left_[x] = right_[x] = kNone;
+        renumber(0);
         root_ = kNone;
         treap_ = false;
     }

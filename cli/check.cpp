@@ -480,14 +480,6 @@ int runCheck(const CheckOptions& o) {
     auto t0 = std::chrono::steady_clock::now();
     std::vector<File> files = expand(o.inputs);
     Scheduler scheduler(files, o);
-    std::vector<std::thread> workers;
-    for (unsigned k = 0; k < std::max(1u, o.jobs); ++k)
-        workers.emplace_back([&] { scheduler.work(); });
-    double seconds = 0;
-    auto joinWorkers = [&] {
-        for (std::thread& t : workers) t.join();
-        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    };
     ReadProgress reading;
     std::mutex m;  // one writer of the line at a time
     auto draw = [&] {
@@ -497,10 +489,12 @@ int runCheck(const CheckOptions& o) {
                          .c_str());
         std::fflush(stderr);
     };
-    if (verbosity != Verbosity::Quiet && isatty(STDERR_FILENO)) {
-        // A progress line, redrawn at most 10 times a second and at each step of the reading
-        // (readingStep), erased at the end.
-        std::atomic<uint64_t> shown{~uint64_t(0)};
+    // A progress line, redrawn at most 10 times a second and at each step of the reading
+    // (readingStep), erased at the end. Hooked to the reading before any worker starts: a
+    // worker quicker than the hook read a whole file with no line at all.
+    const bool showProgress = verbosity != Verbosity::Quiet && isatty(STDERR_FILENO);
+    std::atomic<uint64_t> shown{~uint64_t(0)};
+    if (showProgress) {
         reading.changed = [&] {
             if (uint64_t step = readingStep(reading); shown.exchange(step) != step) {
                 std::lock_guard<std::mutex> lock(m);
@@ -508,6 +502,16 @@ int runCheck(const CheckOptions& o) {
             }
         };
         scheduler.progress = &reading;
+    }
+    std::vector<std::thread> workers;
+    for (unsigned k = 0; k < std::max(1u, o.jobs); ++k)
+        workers.emplace_back([&] { scheduler.work(); });
+    double seconds = 0;
+    auto joinWorkers = [&] {
+        for (std::thread& t : workers) t.join();
+        seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    };
+    if (showProgress) {
         std::condition_variable cv;
         bool finished = false;
         std::thread progress([&] {

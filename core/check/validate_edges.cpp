@@ -152,7 +152,7 @@ void Validator::touchOnEdge(Index vertex, Index edge) {
 }
 
 // The sweep line's edges are kept in a sorted row up to this many (sweep_tree.h): a real
-// coastline's line crosses 12-30 edges (docs/BENCHMARKS.md, "Validation cost, round 4").
+// coastline's line crosses few edges at a time (docs/BENCHMARKS.md, "Validation cost, round 4").
 constexpr size_t kSweepRow = 64;
 
 // The sweep: every pair of edges that become neighbours along the sweep line goes to

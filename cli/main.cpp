@@ -45,6 +45,7 @@
 #include "flood/tools/shrink.h"
 #include "pipeline.h"
 #include "run.h"
+#include "task_runner.h"
 #include "triangulate_gis.h"
 #include "verbosity.h"
 
@@ -78,7 +79,7 @@ int cmdTriangulate(const std::string& in, const std::string& out, std::string fo
     Status s = prepare(in, polygon, check);
     if (s != Status::Ok) return code(s);
     Stopwatch watch;
-    FloodResult r = triangulate(polygon, nullptr, makeOptions(up));
+    FloodResult r = triangulate(polygon, nullptr, makeOptions(up), threadRunner(jobs));
     detail() << "flood: " << r.triangles.size() << " triangles, " << timeText(watch.lap()) << "\n";
     struct Timed {  // -v: the time of the rest, whichever way it ends
         Stopwatch& watch;
@@ -90,9 +91,10 @@ int cmdTriangulate(const std::string& in, const std::string& out, std::string fo
         else writeJson(o.stream(), polygon, r.triangles);
     };
     auto judged = [&] { return judge(polygon, r.triangles, r.diagnostic, check, exactCheck); };
-    // A file is written through a temporary, so it can be written while the check runs.
+    // A file is written through a temporary, so it can be written while the check runs (with
+    // a second thread: -j).
     // Anything else (stdout, a pipe) is written only once the check has passed.
-    if (exactCheck && r.diagnostic.ok() && Output::discardable(out)) {
+    if (exactCheck && r.diagnostic.ok() && jobs > 1 && Output::discardable(out)) {
         Output o(out);
         if (o.discardable()) {
             s = checkWhileWriting(polygon, r.triangles, check, [&] { write(o); });
@@ -536,6 +538,11 @@ int flood::cli::run(int argc, char** argv) {
     auto* tri = app.add_subcommand("triangulate", "Triangulate a polygon and write the result");
     flooding(tri, "Input polygon (GeoJSON, ring array or WKT; - for stdin)", true);
     tri->add_option("-o,--output", out, "Output file (- for stdout, the default)");
+    tri->add_option("-j,--jobs", jobs,
+                    "Threads for a MultiPolygon's parts: validated and flooded in parallel, the "
+                    "exact check beside the writing from 2 (default: all cores)")
+        ->type_name("N")
+        ->check(CLI::Range(1u, 1024u));
     tri->add_option("--format", format,
                     "json, svg, obj, or with GDAL any vector driver or its extension (gpkg, fgb, "
                     "GeoJSON, shp, KML, CSV, ...): a layer of the triangles of each feature "
@@ -614,7 +621,7 @@ int flood::cli::run(int argc, char** argv) {
     addUp(shr, up);
 
     cli::CheckOptions checkOptions;
-    checkOptions.jobs = std::max(1u, std::thread::hardware_concurrency());
+    checkOptions.jobs = jobs = std::max(1u, std::thread::hardware_concurrency());
     auto* chk = app.add_subcommand("check",
                                    "Check every polygon of a dataset: each feature of "
                                    "each file, folders recursively; a table or --json");

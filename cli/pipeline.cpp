@@ -6,12 +6,14 @@
 #include "check.h"  // grouped()
 #include "flood/check/touches.h"
 #include "flood/io/gdal/read_any.h"
+#include "task_runner.h"
 #include "verbosity.h"
 
 namespace flood::cli {
 
 uint64_t maxInputBytes = kDefaultMaxInputBytes;
 Selection selection;
+unsigned jobs = 1;
 
 ReadResult readInput(const std::string& path) {
     return gdal::readAny(path, selection, maxInputBytes);
@@ -32,7 +34,7 @@ Status prepare(const std::string& path, Polygon& polygon, bool check, bool flood
         std::cerr << "error: " << rr.diagnostic.message << "\n";
         return rr.diagnostic.status;
     }
-    Diagnostic d = check ? validate(rr.polygon, name) : Diagnostic{};
+    Diagnostic d = check ? validate(rr.polygon, name, threadRunner(jobs)) : Diagnostic{};
     if (check) detail() << "validate: " << timeText(watch.lap()) << "\n";
     if (!d.ok()) {
         std::cerr << "error: invalid polygon: " << d.message << "\n";

@@ -26,6 +26,10 @@ inline int code(Status s) { return int(s); }
 extern uint64_t maxInputBytes;
 // --layer, --feature, --where of the subcommand that reads (GDAL datasets).
 extern Selection selection;
+// -j of `flood triangulate` (all cores unless given; other commands that read take all):
+// the threads lent to validation and to the flood of a MultiPolygon's parts
+// (flood/geometry/task_runner.h), and with two the exact check beside the writing.
+extern unsigned jobs;
 
 // GIS datasets go to GDAL (core/io/gdal/), everything else to the core's own readers
 // (gdal::readAny, flood/io/gdal/read_any.h), so the core library never depends on GDAL.

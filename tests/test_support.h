@@ -5,13 +5,17 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "flood/check/checker.h"
@@ -124,6 +128,29 @@ inline Trace writtenAndRead(const Trace& t, bool binary = false) {
     EXPECT_TRUE(d.ok()) << d.message;
     EXPECT_EQ(back.events.size(), t.events.size());
     return back;
+}
+
+// The tasks one after another, last first: any order must do.
+struct Backwards {  // a TaskRunner (flood/geometry/task_runner.h)
+    size_t calls = 0, most = 0;  // how often called, the most tasks given at once
+    TaskRunner runner() {
+        return [this](size_t n, const std::function<void(size_t)>& task) {
+            ++calls;
+            most = std::max(most, n);
+            for (size_t k = n; k-- > 0;) task(k);
+        };
+    }
+};
+
+// Two threads taking the tasks in turn, as `flood check -j2` lends them.
+inline void twoThreads(size_t n, const std::function<void(size_t)>& task) {
+    std::atomic<size_t> next{0};
+    auto work = [&] {
+        for (size_t k; (k = next++) < n;) task(k);
+    };
+    std::thread other(work);
+    work();
+    other.join();
 }
 
 }  // namespace flood::testing

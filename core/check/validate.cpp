@@ -170,10 +170,10 @@ using validate_detail::validGroupByGroup;
 // that no thread keeps a large polygon's arrays (flooding comes next and needs the memory).
 // `shortcuts`: the pair test of a small ring, the minimal sweep, a MultiPolygon group by group.
 Diagnostic validateIn(Polygon& polygon, const std::string& name, bool shortcuts,
-                      std::vector<Index>* enclosing) {
+                      std::vector<Index>* enclosing, const TaskRunner& run = {}) {
     thread_local Scratch reused;
     if (shortcuts && polygon.vertices.size() >= kGroupsFrom &&
-        validGroupByGroup(polygon, name, reused, enclosing))
+        validGroupByGroup(polygon, name, reused, enclosing, run))
         return {};
     Scratch fresh;
     Validator v(polygon, name, polygon.vertices.size() <= kReusedUpTo ? reused : fresh);
@@ -198,8 +198,8 @@ Diagnostic validateNesting(Polygon& polygon, const std::string& name,
     return validateIn(polygon, name, true, &enclosing);
 }
 
-Diagnostic validate(Polygon& polygon, const std::string& name) {
-    return validateIn(polygon, name, true, nullptr);
+Diagnostic validate(Polygon& polygon, const std::string& name, const TaskRunner& run) {
+    return validateIn(polygon, name, true, nullptr, run);
 }
 
 }  // namespace flood

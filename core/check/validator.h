@@ -210,10 +210,12 @@ struct Validator {
 // apart (validate_groups.cpp): true when every group is valid, then the polygon's splits and
 // pointsDistinct, and `enclosing` if given, are set as the whole polygon's validation sets
 // them; false when there is one group, or a group is invalid (validate the whole polygon).
-// Groups of up to kReusedUpTo vertices are validated in `reused`.
+// Groups of up to kReusedUpTo vertices are validated in `reused`. With `run`, the groups are
+// validated as kGroupTasks tasks (runs of groups of about equal size) given to it.
 constexpr size_t kGroupsFrom = 64;
+constexpr size_t kGroupTasks = 8;
 bool validGroupByGroup(Polygon& polygon, const std::string& name, Scratch& reused,
-                       std::vector<Index>* enclosing);
+                       std::vector<Index>* enclosing, const TaskRunner& run = {});
 
 // --- exact geometric helpers -------------------------------------------------------------
 

@@ -12,6 +12,19 @@ Index Polygon::ringOf(Index v) const {
     return Index(it - rings.begin()) - 1;
 }
 
+bool Polygon::tiled() const {
+    size_t ringsSeen = 0, verticesSeen = 0;
+    for (const Part& part : parts) {
+        if (part.firstRing != ringsSeen) return false;
+        ringsSeen += part.ringCount;
+    }
+    for (const Ring& ring : rings) {
+        if (ring.first != verticesSeen) return false;
+        verticesSeen += ring.count;
+    }
+    return ringsSeen == rings.size() && verticesSeen == vertices.size();
+}
+
 size_t Polygon::expectedTriangles() const {
     size_t t = 0;
     for (const Part& p : parts) {

@@ -78,6 +78,9 @@ public:
     Machine& operator=(const Machine&) = delete;
 
     bool refused() const { return refused_; }
+    // Floods only the parts [first, end) of a tiled polygon (Polygon::tiled()), in place of
+    // all: set before start().
+    void onlyParts(uint32_t first, uint32_t end) { firstPart_ = first, endPart_ = end; }
     uint32_t stepsTaken() const { return step_; }
 
     void run() {
@@ -106,19 +109,27 @@ public:
         // A small input takes the bound minima <= nodes uncounted (a few KB at most), so a
         // warm call skips the count; a large one counts them (one pass, cheap beside the
         // run) and reserves what it asks, so a warm call on it reserves nothing.
-        const size_t loopNodes = poly_.vertices.size() + poly_.splits.size();
-        const size_t minima = loopNodes <= kUncountedMinima ? loopNodes : heights_.ringMinima();
+        endPart_ = std::min<uint32_t>(endPart_, uint32_t(poly_.parts.size()));
+        const bool all = firstPart_ == 0 && endPart_ == poly_.parts.size();
+        const Index firstRing = all ? 0 : poly_.parts[firstPart_].firstRing;
+        const Index endRing = all ? Index(poly_.rings.size()) : poly_.parts[endPart_ - 1].firstRing +
+                                                                  poly_.parts[endPart_ - 1].ringCount;
+        const size_t vertices = all ? poly_.vertices.size()
+                                    : partEnd(poly_.parts[endPart_ - 1]) - poly_.rings[firstRing].first;
+        const size_t loopNodes = vertices + poly_.splits.size();
+        const size_t minima =
+            loopNodes <= kUncountedMinima ? loopNodes : heights_.ringMinima(firstRing, endRing);
         if (nodes_.capacity() < loopNodes + 2 * minima + 16)
             nodes_.reserve(loopNodes + 2 * minima + 16);
         if (gorges_.capacity() < 2 * minima + 16) gorges_.reserve(2 * minima + 16);
-        const size_t triangles = poly_.vertices.size() + 2 * poly_.rings.size();
+        const size_t triangles = vertices + 2 * size_t(endRing - firstRing);
         if (result_.triangles.capacity() < triangles) result_.triangles.reserve(triangles);
-        nextPart_ = 0;
+        nextPart_ = firstPart_;
         return true;
     }
     template <bool kSliced = true>
     bool advance(uint64_t steps = 0) {
-        while (ok() && (left_ != kNil || nextPart_ < poly_.parts.size())) {
+        while (ok() && (left_ != kNil || nextPart_ < endPart_)) {
             if (left_ == kNil) beginPart(nextPart_++);
             // The part's flood; a forbidden state ends it too (forbid() drops the fingers).
             if constexpr (kSliced) {
@@ -621,6 +632,7 @@ private:
     NodeId left_ = kNil, right_ = kNil, water_ = kNil, partFirstNode_ = NodeId(0);
     uint32_t part_ = 0, partNodes_ = 0, killed_ = 0, cut_ = 0, step_ = 0;  // killed_: of the part
     uint32_t nextPart_ = 0;  // the part advance() sets up next
+    uint32_t firstPart_ = 0, endPart_ = UINT32_MAX;  // the parts flooded (onlyParts())
     uint64_t budget_ = 0;
     FloodResult& result_;
     bool refused_ = false;  // quiet: a forbidden state was reached
@@ -638,6 +650,14 @@ void flood(const Polygon& poly, Listener* listener, const Options& options, Floo
     Machine<false> quiet(poly, nullptr, options, out, keep);
     quiet.run();
     if (quiet.refused()) Machine<true>(poly, nullptr, options, out, keep).run();
+}
+
+bool floodParts(const Polygon& poly, const Options& options, uint32_t firstPart,
+                uint32_t endPart, FloodResult& out) {
+    Machine<false> quiet(poly, nullptr, options, out, nullptr);
+    quiet.onlyParts(firstPart, endPart);
+    quiet.run();
+    return out.diagnostic.ok();
 }
 
 struct SteppedRun::Impl {

@@ -58,9 +58,11 @@ bool Heights::lowerVertex(Index a, Index b) const {
     return a < b;
 }
 
-size_t Heights::ringMinima() const {
+size_t Heights::ringMinima(Index firstRing, Index endRing) const {
     size_t minima = 0;
-    for (const Ring& r : poly_.rings) {
+    for (Index k = firstRing; k < endRing; ++k) {
+        const Ring& r = poly_.rings[k];
+        work().nodeVisits += r.count;
         if (r.count < 3) {
             minima += r.count == 1;  // a point hole: a sag
             continue;
@@ -71,7 +73,6 @@ size_t Heights::ringMinima() const {
             minima += lowerVertex(v, before) && lowerVertex(v, after);
         }
     }
-    work().nodeVisits += poly_.vertices.size();
     return minima;
 }
 

@@ -49,8 +49,9 @@ public:
         }
     }
     // The vertices lower than both their neighbours along their ring: at least the sags of
-    // the machine's loops unless rings touch (merged loops have other neighbours there).
-    size_t ringMinima() const;
+    // the machine's loops unless rings touch (merged loops have other neighbours there). Of
+    // the rings [firstRing, endRing).
+    size_t ringMinima(Index firstRing, Index endRing) const;
     // The same order as lower(), as a value (sag_index.h).
     HeightKey key(NodeId n) const {
         if (general_) return {double(rank_[nodes_[n].v]), 0, nodes_[n].v, n};

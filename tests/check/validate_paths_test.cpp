@@ -22,12 +22,28 @@ using namespace flood::testing;
 namespace {
 
 // Both paths on copies of p; everything they report must agree.
+// How often validate() gave its groups to a runner (expectSamePaths).
+size_t runnerCalls = 0;
+
 void expectSamePaths(const Polygon& p, const std::string& what) {
     Polygon a = p, b = p, c = p;
     std::vector<Index> nestA, nestB;
     Diagnostic da = validate(a, "poly"), db = validateBySweep(b, "poly", &nestB);
     EXPECT_EQ(validateNesting(c, "poly", nestA).message, da.message) << what;
     EXPECT_EQ(nestA, nestB) << what;
+    // Groups validated as tasks, in any order and on two threads, give the same.
+    Backwards back;
+    for (const TaskRunner& run : {back.runner(), TaskRunner(twoThreads)}) {
+        Polygon d = p;
+        EXPECT_EQ(validate(d, "poly", run).message, da.message) << what;
+        EXPECT_EQ(d.pointsDistinct, a.pointsDistinct) << what;
+        EXPECT_EQ(d.splits.size(), a.splits.size()) << what;
+        for (size_t i = 0; i < std::min(d.splits.size(), a.splits.size()); ++i) {
+            EXPECT_EQ(d.splits[i].edge, a.splits[i].edge) << what;
+            EXPECT_EQ(d.splits[i].vertex, a.splits[i].vertex) << what;
+        }
+    }
+    runnerCalls += back.calls;
     ASSERT_EQ(da.status, db.status) << what << ": " << da.message << " / " << db.message;
     EXPECT_EQ(da.message, db.message) << what;
     EXPECT_EQ(da.culprits.vertices, db.culprits.vertices) << what;
@@ -335,6 +351,7 @@ TEST(ValidatePaths, PartsApartGiveTheWholeSweepsAnswer) {
     EXPECT_GT(corners.splits.size(), 3u);
     expectSamePaths(corners, "interleaved groups");
     EXPECT_GT(grouped, 20u);  // the group path was taken, on valid and on invalid layouts
+    EXPECT_GT(runnerCalls, 20u);  // and its groups given to the runner
     EXPECT_GT(valid, 10u);
     EXPECT_GT(invalid, 100u);
 }

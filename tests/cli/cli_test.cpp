@@ -458,3 +458,27 @@ TEST(Cli, GenerateHelpListsEveryFamily) {
     EXPECT_NE(unknown.out.find("families: " + want.front() + ", "), std::string::npos)
         << unknown.out;
 }
+
+// -j lends threads to a MultiPolygon's validation and flood and to the check beside the
+// writing: the file written is the one a single thread writes, and -v still times each step.
+TEST(Cli, TriangulateWritesTheSameFileOnOneThreadAndOnTwo) {
+    fs::path d = scratch("jobs");
+    const std::string in = (d / "islands.json").string();
+    ASSERT_EQ(run("generate islands 50000 -o " + in).code, 0);
+    std::vector<std::string> outs;
+    for (const char* j : {"1", "2", "3"}) {
+        const std::string out = (d / ("out-j" + std::string(j) + ".json")).string();
+        RunResult r = run("triangulate -v -j " + std::string(j) + " " + in + " -o " + out);
+        EXPECT_EQ(r.code, 0) << r.out;
+        for (const char* step : {"validate: ", "flood: ", "check and write: "})
+            EXPECT_TRUE(has(r.out, step)) << j << ": " << r.out;
+        outs.push_back(slurp(out));
+    }
+    EXPECT_TRUE(has(outs[0], "\"triangles\": [["));
+    EXPECT_EQ(outs[1], outs[0]);
+    EXPECT_EQ(outs[2], outs[0]);
+    RunResult zero = run("triangulate -j 0 " + in);
+    EXPECT_EQ(zero.code, 2) << zero.out;
+    EXPECT_TRUE(has(zero.out, "--jobs")) << zero.out;
+    fs::remove_all(d);
+}

@@ -12,9 +12,13 @@
 
 #include "flood/io/io.h"
 #include "io/io_json.h"
+#include "test_support.h"
 
 namespace flood {
 namespace {
+
+using testing::Backwards;
+using testing::twoThreads;
 
 // Everything a read holds, as text: equal texts, equal reads.
 std::string describe(const DatasetRead& d) {
@@ -41,29 +45,6 @@ std::string describe(const DatasetRead& d) {
         s += "\n";
     }
     return s;
-}
-
-// The tasks one after another, last first: any order must do.
-struct Backwards {
-    size_t calls = 0, most = 0;  // how often called, the most tasks given at once
-    TaskRunner runner() {
-        return [this](size_t n, const std::function<void(size_t)>& task) {
-            ++calls;
-            most = std::max(most, n);
-            for (size_t k = n; k-- > 0;) task(k);
-        };
-    }
-};
-
-// Two threads taking the tasks in turn, as `flood check -j2` lends them.
-void twoThreads(size_t n, const std::function<void(size_t)>& task) {
-    std::atomic<size_t> next{0};
-    auto work = [&] {
-        for (size_t k; (k = next++) < n;) task(k);
-    };
-    std::thread other(work);
-    work();
-    other.join();
 }
 
 // A feature whose properties hold what a byte scan could stumble on: brackets, commas, quotes

@@ -65,6 +65,9 @@ struct Polygon {
     bool pointsDistinct = false;
 
     Index ringOf(Index v) const;  // ring containing vertex v (binary search)
+    // The parts take the rings in order and the rings the vertices, with nothing left over,
+    // as every reader builds them: then a run of parts owns a run of vertices of its own.
+    bool tiled() const;
     size_t holeCount() const { return rings.size() - parts.size(); }
     // n + 2h - 2 per part, summed: the triangle count of any triangulation (§1); two fewer
     // for each extra copy of a point where rings touch, one fewer for each T-junction and

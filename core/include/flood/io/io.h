@@ -11,6 +11,7 @@
 
 #include "flood/geometry/polygon.h"
 #include "flood/geometry/status.h"
+#include "flood/geometry/task_runner.h"
 
 namespace flood {
 
@@ -104,9 +105,6 @@ struct ReadProgress {
         if (changed) changed();
     }
 };
-// Runs task(0), ..., task(n - 1), in any order, perhaps several at once: how a caller with
-// threads lends them to a large read (`flood check -j`). The core starts no thread itself.
-using TaskRunner = std::function<void(size_t n, const std::function<void(size_t)>& task)>;
 // With `run`, a FeatureCollection is parsed in slices and its features made polygons in
 // ranges, as tasks given to `run`; the result is the same as without it.
 DatasetRead parseFeatures(std::string_view text, const std::string& name, bool keepSource,
@@ -128,8 +126,10 @@ Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t ma
 // Rings may touch at single points without crossing: shared vertices, or a vertex inside
 // another ring's edge (a T-junction; within a part it is recorded in polygon.splits for the
 // flood machine and the checker — so validate before triangulating). Returns Invalid with
-// "NAME: ring R vertex V (x, y): reason" on the first problem found.
-Diagnostic validate(Polygon& polygon, const std::string& name);
+// "NAME: ring R vertex V (x, y): reason" on the first problem found. With `run`, the parts of
+// a MultiPolygon that lines set apart are validated as tasks given to it; the result is the
+// same as without it.
+Diagnostic validate(Polygon& polygon, const std::string& name, const TaskRunner& run = {});
 
 // Every problem validate() would find, not only the first (as QGIS's "Check validity" lists
 // them): the first is validate()'s own diagnostic, the verdict; the others follow, check by

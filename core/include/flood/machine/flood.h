@@ -7,6 +7,7 @@
 
 #include "flood/geometry/polygon.h"
 #include "flood/geometry/status.h"
+#include "flood/geometry/task_runner.h"
 #include "flood/geometry/up.h"
 #include "flood/machine/events.h"
 
@@ -27,6 +28,11 @@ struct FloodResult {
 // ends in a Forbidden diagnostic, never a crash or a hang. `listener` may be null.
 FloodResult triangulate(const Polygon& polygon, Listener* listener = nullptr,
                         const Options& options = {});
+// The same result, the parts of a large MultiPolygon flooded as tasks given to `run` (several
+// at once if it has threads): with no listener, on +y (the default), from kPartTasksFrom
+// vertices (triangulate.cpp).
+FloodResult triangulate(const Polygon& polygon, Listener* listener, const Options& options,
+                        const TaskRunner& run);
 
 // Triangulates polygon after polygon keeping its working memory (the machine's loops, sag
 // lists, gorges, and the result) from call to call, as earcut keeps its node pool: once its

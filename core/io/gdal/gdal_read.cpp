@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -27,13 +28,33 @@ void addCleanRing(ReadResult& rr, const std::string& name, const std::vector<Poi
 namespace gdal::direct {
 namespace {
 
+constexpr const char* kGeoJsonLimit = "OGR_GEOJSON_MAX_OBJ_SIZE";
+
 void registerOnce() {
     static std::once_flag once;
     std::call_once(once, [] {
         GDALAllRegister();
         // Errors are reported through our diagnostics, not printed by GDAL on stderr.
         CPLSetErrorHandler(CPLQuietErrorHandler);
+        // GDAL's GeoJSON driver refuses an object over 200 MB, saying only "Failed to read
+        // GeoJSON data" (the world's countries at 1:1M are 213 MB). --max-input-bytes is
+        // the limit here, so the driver's is lifted, unless the user set it.
+        if (!CPLGetConfigOption(kGeoJsonLimit, nullptr)) CPLSetConfigOption(kGeoJsonLimit, "0");
     });
+}
+
+// When the user's OGR_GEOJSON_MAX_OBJ_SIZE (in MB) is what refused the file, says so: GDAL
+// does not.
+std::string geoJsonLimitNote(const std::string& path) {
+    const char* limit = CPLGetConfigOption(kGeoJsonLimit, nullptr);
+    struct stat st;
+    if (!limit || std::atof(limit) <= 0 || ::stat(path.c_str(), &st) != 0 ||
+        double(st.st_size) <= std::atof(limit) * 1024 * 1024 ||
+        !std::strstr(CPLGetLastErrorMsg(), "GeoJSON"))
+        return "";
+    return " (the file has " + std::to_string((st.st_size + (1 << 20) - 1) >> 20) + " MB, over " +
+           kGeoJsonLimit + "=" + io_detail::echo(limit) +
+           ", the most GDAL's GeoJSON driver reads: unset it, or set it to 0 for no limit)";
 }
 
 // GDAL's last message, or `silent` (what failed, said by us) when GDAL gave none.
@@ -162,7 +183,7 @@ struct Reader {
                     return malformed(std::string("the dataset has no layers (GDAL's ") +
                                      GDALGetDriverLongName(known) + " driver finds none)");
             return malformed("not a vector dataset GDAL can open: " +
-                             lastError("no GDAL driver recognises it"));
+                             lastError("no GDAL driver recognises it") + geoJsonLimitNote(path));
         }
         std::vector<OGRLayer*> layers;
         if (!s.layer.empty()) {

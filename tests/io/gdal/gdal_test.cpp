@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "flood/io/gdal/gdal_io.h"
+#include "flood/tools/generate.h"
 #include "test_support.h"
 
 namespace flood::testing {
@@ -585,6 +586,66 @@ TEST_F(Gdal, MessagesSayWhatIsWrong) {
                   "filter: GDAL's SetAttributeFilter failed without a message");
     GetGDALDriverManager()->DeregisterDriver(silent);
     delete silent;
+}
+
+}  // namespace
+}  // namespace flood::testing
+
+namespace flood::testing {
+namespace {
+
+// GDAL's GeoJSON driver refuses an object over OGR_GEOJSON_MAX_OBJ_SIZE MB (200 unless set)
+// with "Failed to read GeoJSON data" alone. Flood lifts that limit unless the user set it
+// (--max-input-bytes is its own); a limit the user set is named when it is what refused the file.
+TEST_F(Gdal, AGeoJsonOverTheUsersSizeLimitIsNamed) {
+    const Polygon islands = generate("islands", 1, 100000);
+    json multi = json::array();
+    for (const Part& part : islands.parts) {
+        json rings = json::array();
+        for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) {
+            json ring = json::array();
+            const Ring& g = islands.rings[r];
+            for (Index v = g.first; v <= g.first + g.count; ++v) {  // closed
+                const Point p = islands.vertices[v == g.first + g.count ? g.first : v];
+                ring.push_back({p.x, p.y});
+            }
+            rings.push_back(ring);
+        }
+        multi.push_back(rings);
+    }
+    const json collection = {
+        {"type", "FeatureCollection"},
+        {"features",
+         {{{"type", "Feature"},
+           {"properties", {{"name", "big"}}},
+           {"geometry", {{"type", "MultiPolygon"}, {"coordinates", multi}}}}}}};
+    const std::string file = path("big.geojson");
+    { std::ofstream(file) << collection.dump(); }
+    ASSERT_GT(fs::file_size(file), 1u << 20);
+    const std::string kept = CPLGetConfigOption("OGR_GEOJSON_MAX_OBJ_SIZE", "");
+    CPLSetConfigOption("OGR_GEOJSON_MAX_OBJ_SIZE", "1");
+    DatasetRead refused = gdal::readFeatures(file, named("big"));
+    ASSERT_EQ(refused.features.size(), 1u);
+    EXPECT_EQ(refused.features[0].read.diagnostic.status, Status::Malformed);
+    EXPECT_NE(refused.features[0].read.diagnostic.message.find(
+                  "over OGR_GEOJSON_MAX_OBJ_SIZE=1, the most GDAL's GeoJSON driver reads"),
+              std::string::npos)
+        << refused.features[0].read.diagnostic.message;
+    CPLSetConfigOption("OGR_GEOJSON_MAX_OBJ_SIZE", "0");  // what Flood sets when it is unset
+    DatasetRead read = gdal::readFeatures(file, named("big"));
+    ASSERT_EQ(read.features.size(), 1u);
+    EXPECT_TRUE(read.features[0].read.diagnostic.ok()) << read.features[0].read.diagnostic.message;
+    EXPECT_EQ(read.features[0].read.polygon.vertices.size(), islands.vertices.size());
+    CPLSetConfigOption("OGR_GEOJSON_MAX_OBJ_SIZE", kept.empty() ? nullptr : kept.c_str());
+    // From the command line, the user's setting is kept and named; unset, the file is read.
+    const std::string where = " --where \"name = 'big'\" " + file + " -o " + path("big.json");
+    RunResult capped = runShell("OGR_GEOJSON_MAX_OBJ_SIZE=1 " + std::string(FLOOD_CLI) +
+                                " triangulate" + where + " 2>&1");
+    EXPECT_EQ(capped.code, 3) << capped.out;
+    EXPECT_NE(capped.out.find("OGR_GEOJSON_MAX_OBJ_SIZE=1"), std::string::npos) << capped.out;
+    RunResult plain = runShell("env -u OGR_GEOJSON_MAX_OBJ_SIZE " + std::string(FLOOD_CLI) +
+                               " triangulate" + where + " 2>&1");
+    EXPECT_EQ(plain.code, 0) << plain.out;
 }
 
 }  // namespace

@@ -15,13 +15,13 @@ uint64_t maxInputBytes = kDefaultMaxInputBytes;
 Selection selection;
 unsigned jobs = 1;
 
-ReadResult readInput(const std::string& path) {
-    return gdal::readAny(path, selection, maxInputBytes);
+ReadResult readInput(const std::string& path, const TaskRunner& run) {
+    return gdal::readAny(path, selection, maxInputBytes, nullptr, run);
 }
 
 Status prepare(const std::string& path, Polygon& polygon, bool check, bool floodInvalid) {
     Stopwatch watch;
-    ReadResult rr = readInput(path);
+    ReadResult rr = readInput(path, threadRunner(jobs));
     const std::string name = path == "-" ? "<stdin>" : path;
     detail() << "read: " << name << ": " << rr.polygon.vertices.size() << " vertices, "
              << rr.polygon.rings.size() << (rr.polygon.rings.size() == 1 ? " ring, " : " rings, ")

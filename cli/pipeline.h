@@ -27,13 +27,15 @@ extern uint64_t maxInputBytes;
 // --layer, --feature, --where of the subcommand that reads (GDAL datasets).
 extern Selection selection;
 // -j of `flood triangulate` (all cores unless given; other commands that read take all):
-// the threads lent to validation and to the flood of a MultiPolygon's parts
-// (flood/geometry/task_runner.h), and with two the exact check beside the writing.
+// the threads lent to the reading of a large geometry, to validation and to the flood of a
+// MultiPolygon's parts (flood/geometry/task_runner.h), and with two the exact check beside
+// the writing.
 extern unsigned jobs;
 
 // GIS datasets go to GDAL (core/io/gdal/), everything else to the core's own readers
 // (gdal::readAny, flood/io/gdal/read_any.h), so the core library never depends on GDAL.
-ReadResult readInput(const std::string& path);
+// `run` lends threads to the reading of a large geometry.
+ReadResult readInput(const std::string& path, const TaskRunner& run = {});
 
 // Reads and validates; on failure prints the diagnostic and returns its status.
 // With `check` false (--no-validate) validation is skipped, so the flood machine itself

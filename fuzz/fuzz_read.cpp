@@ -1,16 +1,61 @@
 // libFuzzer harness: parsePolygon on arbitrary bytes (GeoJSON, bare ring arrays, WKT).
 // The reader must return a diagnostic for anything it cannot read, never crash, hang, leak
-// or throw. A successful read must give a structurally consistent Polygon.
+// or throw. A successful read must give a structurally consistent Polygon. The fast JSON
+// reader, asked to read in pieces at any size, must read what it reads in one.
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
+#include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 
 #include "flood/io/io.h"
+#include "io/io_json.h"
+
+namespace {
+
+bool same(const flood::ReadResult& a, const flood::ReadResult& b) {
+    const flood::Polygon &p = a.polygon, &q = b.polygon;
+    if (p.vertices.size() != q.vertices.size() || p.rings.size() != q.rings.size() ||
+        p.parts.size() != q.parts.size() || a.warnings != b.warnings ||
+        a.warningsOmitted != b.warningsOmitted)
+        return false;
+    for (size_t i = 0; i < p.vertices.size(); ++i)  // bit for bit: NaN is no concern here
+        if (std::memcmp(&p.vertices[i], &q.vertices[i], sizeof(flood::Point)) != 0) return false;
+    for (size_t i = 0; i < p.rings.size(); ++i)
+        if (p.rings[i].first != q.rings[i].first || p.rings[i].count != q.rings[i].count)
+            return false;
+    for (size_t i = 0; i < p.parts.size(); ++i)
+        if (p.parts[i].firstRing != q.parts[i].firstRing ||
+            p.parts[i].ringCount != q.parts[i].ringCount)
+            return false;
+    return true;
+}
+
+// The JSON document, read in one and in pieces (tasks run here, last first).
+void piecesReadAsOne(std::string_view text) {
+    size_t start = text.substr(0, 3) == "\xEF\xBB\xBF" ? 3 : 0;
+    while (start < text.size() && std::strchr(" \t\r\n", text[start]) && text[start]) ++start;
+    if (start == text.size() || (text[start] != '[' && text[start] != '{') ||
+        text.find('\0') != std::string_view::npos)
+        return;
+    const flood::TaskRunner backwards = [](size_t n, const std::function<void(size_t)>& task) {
+        for (size_t k = n; k-- > 0;) task(k);
+    };
+    namespace io = flood::io_detail;
+    std::optional<flood::ReadResult> one = io::parseJsonFast(text, text.size(), start, "fuzz");
+    std::optional<flood::ReadResult> pieces =
+        io::parseJsonFast(text, text.size(), start, "fuzz", backwards, 0);
+    if (one.has_value() != pieces.has_value() || (one && !same(*one, *pieces))) std::abort();
+}
+
+}  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     std::string_view text(reinterpret_cast<const char*>(data), size);
+    piecesReadAsOne(text);
     flood::ReadResult r = flood::parsePolygon(text, "fuzz");
     if (!r.diagnostic.ok()) {
         // Bad input must say so with a Malformed status and a message.

@@ -16,6 +16,7 @@
 #include <charconv>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <utility>
 
 #include "io/io_json.h"
@@ -42,6 +43,15 @@ public:
     bool object(od::document& doc) {
         od::object o;
         return !doc.get_object().get(o) && geometry(o, 1);
+    }
+    // A piece of a coordinates array that cutCoordinates cut: polygons (depth 4) or rings,
+    // the first of them a hole of the part before when the piece does not start the array.
+    bool piece(od::document& doc, int depth, bool startsArray) {
+        od::array a;
+        if (doc.get_array().get(a)) return false;
+        if (depth == 4) return polygons(a);
+        if (!startsArray) rr_.polygon.parts.push_back({0, 0});  // that part's further holes
+        return rings(a, startsArray);
     }
 
 private:
@@ -117,14 +127,14 @@ private:
         return true;
     }
 
-    bool rings(od::array a) {
-        bool outer = true;
+    bool rings(od::array a, bool outer = true) {
+        bool any = false;
         for (auto item : a) {
             od::value e;
             if (item.get(e) || !ring(e, outer)) return false;
-            outer = false;
+            outer = false, any = true;
         }
-        return !outer;
+        return any;
     }
     bool rings(od::value v) {
         od::array a;
@@ -289,10 +299,70 @@ int leadingArrayDepth(std::string_view text, size_t i) {
 
 }  // namespace
 
+// The pieces a document is read in (each a task).
+constexpr size_t kPieces = 8;
+
+std::optional<ReadResult> parsePieces(std::string_view doc, int bareDepth,
+                                      const std::string& name, const TaskRunner& run) {
+    const std::optional<CoordinateCut> cut = cutCoordinates(doc, bareDepth, kPieces);
+    if (!cut || cut->commas.empty()) return std::nullopt;
+    std::vector<size_t> bounds{cut->open};
+    bounds.insert(bounds.end(), cut->commas.begin(), cut->commas.end());
+    bounds.push_back(cut->close);
+    std::vector<ReadResult> pieces(bounds.size() - 1);
+    std::vector<char> read(pieces.size(), 0);
+    run(pieces.size(), [&](size_t k) {
+        // The piece's elements, bracketed: an array of its own, padded as simdjson reads.
+        const std::string_view inside = doc.substr(bounds[k] + 1, bounds[k + 1] - bounds[k] - 1);
+        std::string text;
+        text.reserve(inside.size() + 2 + simdjson::SIMDJSON_PADDING);
+        text.append(1, '[').append(inside).append(1, ']');
+        od::parser parser;
+        od::document json;
+        if (parser.iterate(simdjson::padded_string_view(text.data(), text.size(), text.capacity()))
+                .get(json))
+            return;
+        ReadResult& rr = pieces[k];
+        try {
+            rr.polygon.vertices.reserve(inside.size() / 6 + 1);
+            FastReader reader(rr, name);
+            const bool whole = reader.piece(json, cut->depth, k == 0);
+            const bool atEnd = json.current_location().error() == simdjson::OUT_OF_BOUNDS;
+            read[k] = whole && atEnd && rr.warnings.empty() && rr.warningsOmitted == 0;
+        } catch (const std::bad_alloc&) {
+            // read[k] stays 0: the document is read in one, which reports it
+        }
+    });
+    for (char r : read)
+        if (!r) return std::nullopt;
+    ReadResult rr;
+    size_t vertices = 0;
+    for (const ReadResult& piece : pieces) vertices += piece.polygon.vertices.size();
+    rr.polygon.vertices.reserve(vertices);
+    for (ReadResult& piece : pieces) {
+        Polygon& p = piece.polygon;
+        const Index vertexBase = Index(rr.polygon.vertices.size());
+        const Index ringBase = Index(rr.polygon.rings.size());
+        rr.polygon.vertices.insert(rr.polygon.vertices.end(), p.vertices.begin(), p.vertices.end());
+        for (const Ring& g : p.rings) rr.polygon.rings.push_back({g.first + vertexBase, g.count});
+        size_t part = 0;
+        if (cut->depth == 3 && &piece != &pieces.front())  // holes of the part before
+            rr.polygon.parts.back().ringCount += p.parts[part++].ringCount;
+        for (; part < p.parts.size(); ++part)
+            rr.polygon.parts.push_back({p.parts[part].firstRing + ringBase, p.parts[part].ringCount});
+        p = {};  // given back as the whole grows
+    }
+    return rr;
+}
+
 std::optional<ReadResult> parseJsonFast(std::string_view text, size_t capacity, size_t start,
-                                        const std::string& name) {
+                                        const std::string& name, const TaskRunner& run,
+                                        size_t piecesFrom) {
     const int depth = text[start] == '[' ? leadingArrayDepth(text, start) : 0;
     if (text[start] == '[' && depth != 3 && depth != 4) return std::nullopt;
+    if (run && text.size() - start >= piecesFrom)
+        if (std::optional<ReadResult> pieces = parsePieces(text.substr(start), depth, name, run))
+            return pieces;
     // On-Demand reads up to SIMDJSON_PADDING bytes past the end: a text without that much
     // spare capacity (a caller's string_view) is copied once.
     std::optional<simdjson::padded_string> copy;

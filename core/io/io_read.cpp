@@ -253,7 +253,8 @@ ReadResult io_detail::parseJsonTree(std::string_view text, const std::string& na
 namespace {
 
 // `capacity` is how many bytes from text.data() may be read (the fast reader reads ahead).
-ReadResult parseText(std::string_view text, size_t capacity, const std::string& name) {
+ReadResult parseText(std::string_view text, size_t capacity, const std::string& name,
+                     const TaskRunner& run = {}) {
     size_t nul = text.find('\0');
     if (nul != std::string_view::npos) {
         ReadResult rr;
@@ -269,7 +270,7 @@ ReadResult parseText(std::string_view text, size_t capacity, const std::string& 
         return rr;
     }
     if (text[i] == '[' || text[i] == '{') {
-        if (std::optional<ReadResult> fast = io_detail::parseJsonFast(text, capacity, i, name))
+        if (std::optional<ReadResult> fast = io_detail::parseJsonFast(text, capacity, i, name, run))
             return std::move(*fast);
         return io_detail::parseJsonTree(text, name);
     }
@@ -278,8 +279,8 @@ ReadResult parseText(std::string_view text, size_t capacity, const std::string& 
 
 }  // namespace
 
-ReadResult parsePolygon(std::string_view text, const std::string& name) {
-    ReadResult rr = parseText(text, text.size(), name);
+ReadResult parsePolygon(std::string_view text, const std::string& name, const TaskRunner& run) {
+    ReadResult rr = parseText(text, text.size(), name, run);
     rr.polygon.vertices.shrink_to_fit();
     return rr;
 }
@@ -355,7 +356,8 @@ Diagnostic readInputFile(const std::string& path, std::string& text, uint64_t ma
     return {};
 }
 
-ReadResult readPolygonFile(const std::string& path, uint64_t maxBytes, ReadProgress* progress) {
+ReadResult readPolygonFile(const std::string& path, uint64_t maxBytes, ReadProgress* progress,
+                           const TaskRunner& run) {
     std::string text;
     Diagnostic d = readInputFile(path, text, maxBytes, "GeoJSON or WKT", nullptr, progress);
     if (!d.ok()) {
@@ -365,7 +367,7 @@ ReadResult readPolygonFile(const std::string& path, uint64_t maxBytes, ReadProgr
     }
     if (text.capacity() < text.size() + io_detail::kReadAhead)
         text.reserve(text.size() + io_detail::kReadAhead);
-    ReadResult rr = parseText(text, text.capacity(), path == "-" ? "<stdin>" : path);
+    ReadResult rr = parseText(text, text.capacity(), path == "-" ? "<stdin>" : path, run);
     // The vertices' spare room is given back after the text, so the two copies of them that
     // shrinking makes never coexist with it.
     std::string().swap(text);

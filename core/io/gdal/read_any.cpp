@@ -6,9 +6,9 @@ namespace flood::gdal {
 bool built() { return true; }
 
 ReadResult readAny(const std::string& path, const Selection& s, uint64_t maxBytes,
-                   ReadProgress* progress) {
+                   ReadProgress* progress, const TaskRunner& run) {
     if (handles(path, s)) return readPolygon(path, s);
-    return readPolygonFile(path, maxBytes, progress);
+    return readPolygonFile(path, maxBytes, progress, run);
 }
 
 DatasetRead readAnyFeatures(const std::string& path, const Selection& s, uint64_t maxBytes,

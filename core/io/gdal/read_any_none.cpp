@@ -16,8 +16,8 @@ Diagnostic refused(const std::string& path) {
 }  // namespace
 
 ReadResult readAny(const std::string& path, const Selection& s, uint64_t maxBytes,
-                   ReadProgress* progress) {
-    if (!s.any()) return readPolygonFile(path, maxBytes, progress);
+                   ReadProgress* progress, const TaskRunner& run) {
+    if (!s.any()) return readPolygonFile(path, maxBytes, progress, run);
     ReadResult r;
     r.diagnostic = refused(path);
     return r;

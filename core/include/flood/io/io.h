@@ -37,13 +37,16 @@ struct ReadResult {
     }
 };
 
-// Detects the format from the content. `name` is used in messages ("-" means stdin).
-ReadResult parsePolygon(std::string_view text, const std::string& name);
+// Detects the format from the content. `name` is used in messages ("-" means stdin). With
+// `run`, a large GeoJSON geometry (a bare Polygon or MultiPolygon, or its coordinates alone)
+// is parsed in pieces as tasks given to it; the result is the same.
+ReadResult parsePolygon(std::string_view text, const std::string& name,
+                        const TaskRunner& run = {});
 // `progress`, when given, follows the bytes read (ReadProgress, below).
 struct ReadProgress;
 ReadResult readPolygonFile(const std::string& path,  // "-" reads stdin
                            uint64_t maxBytes = kDefaultMaxInputBytes,
-                           ReadProgress* progress = nullptr);
+                           ReadProgress* progress = nullptr, const TaskRunner& run = {});
 
 // Well-known binary, as GEOS, shapely, PostGIS and OGR hand it out (the Python module reads
 // it): ISO WKB and PostGIS EWKB, either byte order, a Polygon or a MultiPolygon, z and m

@@ -19,7 +19,8 @@ bool built();
 // GDAL, a selection is refused (Usage, naming `path`) and every file goes to the core.
 // `progress` follows the core's reading (the viewer's open), not a GIS dataset's.
 ReadResult readAny(const std::string& path, const Selection& s,
-                   uint64_t maxBytes = kDefaultMaxInputBytes, ReadProgress* progress = nullptr);
+                   uint64_t maxBytes = kDefaultMaxInputBytes, ReadProgress* progress = nullptr,
+                   const TaskRunner& run = {});
 
 // The features of `path`, one entry each (gdal::readFeatures or readFeaturesFile, which keeps
 // each feature's GeoJSON text with `keepSource`); `gis` says which reader it was. `progress`

@@ -539,8 +539,9 @@ int flood::cli::run(int argc, char** argv) {
     flooding(tri, "Input polygon (GeoJSON, ring array or WKT; - for stdin)", true);
     tri->add_option("-o,--output", out, "Output file (- for stdout, the default)");
     tri->add_option("-j,--jobs", jobs,
-                    "Threads for a MultiPolygon's parts: validated and flooded in parallel, the "
-                    "exact check beside the writing from 2 (default: all cores)")
+                    "Threads for one input: a large GeoJSON parsed in pieces, a MultiPolygon's "
+                    "parts validated and flooded in parallel, the exact check beside the writing "
+                    "(default: every core it may use)")
         ->type_name("N")
         ->check(CLI::Range(1u, 1024u));
     tri->add_option("--format", format,
@@ -621,7 +622,7 @@ int flood::cli::run(int argc, char** argv) {
     addUp(shr, up);
 
     cli::CheckOptions checkOptions;
-    checkOptions.jobs = jobs = std::max(1u, std::thread::hardware_concurrency());
+    checkOptions.jobs = jobs = availableCores();
     auto* chk = app.add_subcommand("check",
                                    "Check every polygon of a dataset: each feature of "
                                    "each file, folders recursively; a table or --json");
@@ -643,7 +644,7 @@ int flood::cli::run(int argc, char** argv) {
                     "finding_edges of a .gpkg, else OUT_edges.EXT beside it)")
         ->type_name("OUT");
     chk->add_option("-j,--jobs", checkOptions.jobs,
-                    "Features checked in parallel (default: all cores)")
+                    "Features checked in parallel (default: every core it may use)")
         ->type_name("N")
         ->check(CLI::Range(1u, 1024u));
     chk->add_option("--max-findings", checkOptions.maxFindings,

@@ -1,5 +1,7 @@
 #include "task_runner.h"
 
+#include <sched.h>
+
 #include <algorithm>
 #include <atomic>
 #include <exception>
@@ -32,6 +34,12 @@ TaskRunner threadRunner(unsigned threads) {
         for (std::thread& h : helpers) h.join();
         if (failed) std::rethrow_exception(failed);
     };
+}
+
+unsigned availableCores() {
+    cpu_set_t set;
+    if (sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
+    return std::max(1u, std::thread::hardware_concurrency());
 }
 
 }  // namespace flood::cli

@@ -9,4 +9,8 @@ namespace flood::cli {
 // stopped. One thread: no runner (the reader's serial path).
 TaskRunner threadRunner(unsigned threads);
 
+// The cores this process may run on (taskset, cgroups' cpusets), at least 1: the default of
+// every -j. std::thread::hardware_concurrency() counts the machine's.
+unsigned availableCores();
+
 }  // namespace flood::cli

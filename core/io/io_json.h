@@ -51,8 +51,9 @@ struct CoordinateCut {
 std::optional<CoordinateCut> cutCoordinates(std::string_view doc, int bareDepth, size_t pieces);
 
 // The document in the pieces cutCoordinates finds, each parsed as a task given to `run`,
-// then joined (io_json_fast.cpp). Nothing when there is no cut, or a piece does not parse or
-// warns (a warning names its ring by its number in the whole): read the document in one.
+// then joined (io_json_fast.cpp). Nothing when there is no cut, a piece is over a quarter of
+// the document, or a piece does not parse or warns (a warning names its ring by its number in
+// the whole): read the document in one.
 std::optional<ReadResult> parsePieces(std::string_view doc, int bareDepth,
                                       const std::string& name, const TaskRunner& run);
 

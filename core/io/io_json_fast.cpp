@@ -299,8 +299,10 @@ int leadingArrayDepth(std::string_view text, size_t i) {
 
 }  // namespace
 
-// The pieces a document is read in (each a task).
-constexpr size_t kPieces = 8;
+// The pieces a document is read in (each a task). Each is copied to be parsed, and its parser
+// indexes it, so a piece larger than a quarter of the document (a ring that is most of it)
+// would need more memory than reading it in one: such a document is read in one.
+constexpr size_t kPieces = 16;
 
 std::optional<ReadResult> parsePieces(std::string_view doc, int bareDepth,
                                       const std::string& name, const TaskRunner& run) {
@@ -309,6 +311,8 @@ std::optional<ReadResult> parsePieces(std::string_view doc, int bareDepth,
     std::vector<size_t> bounds{cut->open};
     bounds.insert(bounds.end(), cut->commas.begin(), cut->commas.end());
     bounds.push_back(cut->close);
+    for (size_t k = 0; k + 1 < bounds.size(); ++k)
+        if (bounds[k + 1] - bounds[k] > doc.size() / 4) return std::nullopt;
     std::vector<ReadResult> pieces(bounds.size() - 1);
     std::vector<char> read(pieces.size(), 0);
     run(pieces.size(), [&](size_t k) {

@@ -72,7 +72,6 @@ bool expectSameInPieces(const std::string& text, int bareDepth, const std::strin
 }
 
 TEST(JsonPieces, GeometriesReadTheSameInPieces) {
-    size_t inPieces = 0, cases = 0;
     for (const char* family : {"islands", "circle-holes", "grid-holes", "steiner", "t-junctions",
                                "touching-holes", "rooms", "star"}) {
         for (uint64_t seed : {1, 2}) {
@@ -83,13 +82,14 @@ TEST(JsonPieces, GeometriesReadTheSameInPieces) {
             for (const std::string& text :
                  {geometry, bare(geometry), spaced(geometry), spaced(bare(geometry))}) {
                 const bool isBare = text[0] == '[';
-                inPieces += expectSameInPieces(text, isBare ? depth : 0, what);
-                ++cases;
+                // A ring that is most of the document (star's only ring, circle-holes'
+                // outer one) would make one piece most of it: that is read in one.
+                const bool bigRing = family == std::string("star") ||
+                                     family == std::string("circle-holes");
+                EXPECT_EQ(expectSameInPieces(text, isBare ? depth : 0, what), !bigRing) << what;
             }
         }
     }
-    // A ring or a polygon per piece at most: only a single ring (star) has nothing to cut.
-    EXPECT_GE(inPieces, cases - 8) << "the pieces were not read";
 }
 
 // Documents the pieces must not read as they seem: each is read in one, so its polygon,

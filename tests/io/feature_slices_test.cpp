@@ -12,6 +12,7 @@
 
 #include "flood/io/io.h"
 #include "io/io_json.h"
+#include "io_test_support.h"
 #include "test_support.h"
 
 namespace flood {
@@ -23,25 +24,13 @@ using testing::twoThreads;
 // Everything a read holds, as text: equal texts, equal reads.
 std::string describe(const DatasetRead& d) {
     std::string s;
-    char buf[64];
     for (const std::string& k : d.skipped) s += "skipped " + k + "\n";
     for (const FeatureRead& f : d.features) {
         s += "feature " + std::to_string(f.index) + " fid " + std::to_string(f.fid) + " whole " +
              std::to_string(f.wholeFile) + " id " + f.id + " name " + f.name + " layer " + f.layer +
              " source " + f.source + "\n";
         for (const auto& [k, v] : f.attributes) s += "  attribute " + k + "=" + v + "\n";
-        const ReadResult& r = f.read;
-        s += "  status " + std::to_string(int(r.diagnostic.status)) + " " + r.diagnostic.message +
-             " omitted " + std::to_string(r.warningsOmitted) + "\n";
-        for (const std::string& w : r.warnings) s += "  warning " + w + "\n";
-        for (const Point& p : r.polygon.vertices) {
-            std::snprintf(buf, sizeof buf, " %a,%a", p.x, p.y);
-            s += buf;
-        }
-        for (const Ring& g : r.polygon.rings)
-            s += " ring " + std::to_string(g.first) + "+" + std::to_string(g.count);
-        for (const Part& p : r.polygon.parts)
-            s += " part " + std::to_string(p.firstRing) + "+" + std::to_string(p.ringCount);
+        s += testing::io::describe(f.read);
         s += "\n";
     }
     return s;

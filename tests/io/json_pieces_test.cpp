@@ -12,6 +12,7 @@
 #include "flood/io/io.h"
 #include "flood/tools/generate.h"
 #include "io/io_json.h"
+#include "io_test_support.h"
 #include "test_support.h"
 
 namespace flood {
@@ -19,23 +20,7 @@ namespace {
 
 using testing::Backwards;
 using testing::twoThreads;
-
-// What a reader gave, in full: the diagnostic, the warnings, every vertex, ring and part.
-std::string describe(const ReadResult& r) {
-    std::string s = r.diagnostic.message + "|" + std::to_string(int(r.diagnostic.status)) + "|" +
-                    std::to_string(r.warningsOmitted);
-    for (const std::string& w : r.warnings) s += "\nwarning " + w;
-    for (const Point& v : r.polygon.vertices) {
-        char b[64];
-        std::snprintf(b, sizeof b, " %a,%a", v.x, v.y);
-        s += b;
-    }
-    for (const Ring& g : r.polygon.rings)
-        s += " ring " + std::to_string(g.first) + "+" + std::to_string(g.count);
-    for (const Part& p : r.polygon.parts)
-        s += " part " + std::to_string(p.firstRing) + "+" + std::to_string(p.ringCount);
-    return s;
-}
+using testing::io::describe;
 
 // The coordinates alone: a bare array of polygons (several parts) or of rings (one).
 std::string bare(const std::string& geometry) {

@@ -17,21 +17,8 @@
 namespace {
 
 bool same(const flood::ReadResult& a, const flood::ReadResult& b) {
-    const flood::Polygon &p = a.polygon, &q = b.polygon;
-    if (p.vertices.size() != q.vertices.size() || p.rings.size() != q.rings.size() ||
-        p.parts.size() != q.parts.size() || a.warnings != b.warnings ||
-        a.warningsOmitted != b.warningsOmitted)
-        return false;
-    for (size_t i = 0; i < p.vertices.size(); ++i)  // bit for bit: NaN is no concern here
-        if (std::memcmp(&p.vertices[i], &q.vertices[i], sizeof(flood::Point)) != 0) return false;
-    for (size_t i = 0; i < p.rings.size(); ++i)
-        if (p.rings[i].first != q.rings[i].first || p.rings[i].count != q.rings[i].count)
-            return false;
-    for (size_t i = 0; i < p.parts.size(); ++i)
-        if (p.parts[i].firstRing != q.parts[i].firstRing ||
-            p.parts[i].ringCount != q.parts[i].ringCount)
-            return false;
-    return true;
+    return flood::sameGeometry(a.polygon, b.polygon) && a.warnings == b.warnings &&
+           a.warningsOmitted == b.warningsOmitted;
 }
 
 // The JSON document, read in one and in pieces (tasks run here, last first).

@@ -12,6 +12,20 @@ Index Polygon::ringOf(Index v) const {
     return Index(it - rings.begin()) - 1;
 }
 
+bool sameGeometry(const Polygon& a, const Polygon& b) {
+    if (a.vertices != b.vertices || a.rings.size() != b.rings.size() ||
+        a.parts.size() != b.parts.size())
+        return false;
+    for (size_t i = 0; i < a.rings.size(); ++i)
+        if (a.rings[i].first != b.rings[i].first || a.rings[i].count != b.rings[i].count)
+            return false;
+    for (size_t i = 0; i < a.parts.size(); ++i)
+        if (a.parts[i].firstRing != b.parts[i].firstRing ||
+            a.parts[i].ringCount != b.parts[i].ringCount)
+            return false;
+    return true;
+}
+
 bool Polygon::tiled() const {
     size_t ringsSeen = 0, verticesSeen = 0;
     for (const Part& part : parts) {

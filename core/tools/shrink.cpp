@@ -171,20 +171,6 @@ double roundBits(double x, int bits) {
 
 // [SECTION] the repro as the user reads it back --------------------------------------------
 
-bool sameGeometry(const Polygon& a, const Polygon& b) {
-    if (a.vertices != b.vertices || a.rings.size() != b.rings.size() ||
-        a.parts.size() != b.parts.size())
-        return false;
-    for (size_t i = 0; i < a.rings.size(); ++i)
-        if (a.rings[i].first != b.rings[i].first || a.rings[i].count != b.rings[i].count)
-            return false;
-    for (size_t i = 0; i < a.parts.size(); ++i)
-        if (a.parts[i].firstRing != b.parts[i].firstRing ||
-            a.parts[i].ringCount != b.parts[i].ringCount)
-            return false;
-    return true;
-}
-
 // What `flood triangulate` does between reading and flooding: validate (which records the
 // T-junctions), or with --no-validate search for them alone. The slipping mode prepares its
 // own (classifySlip). False, with the reason, when validation refuses the polygon.

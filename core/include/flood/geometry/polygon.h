@@ -77,6 +77,10 @@ struct Polygon {
     void addRing(const std::vector<Point>& pts, bool outer);
 };
 
+// The same vertices (compared as values), rings and parts: what a reader read, apart from
+// what validation later records (splits, pointsDistinct).
+bool sameGeometry(const Polygon& a, const Polygon& b);
+
 using Triangle = std::array<Index, 3>;
 
 }  // namespace flood

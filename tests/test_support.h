@@ -131,7 +131,7 @@ inline Trace writtenAndRead(const Trace& t, bool binary = false) {
 }
 
 // The tasks one after another, last first: any order must do.
-struct Backwards {  // a TaskRunner (flood/geometry/task_runner.h)
+struct Backwards {               // a TaskRunner (flood/geometry/task_runner.h)
     size_t calls = 0, most = 0;  // how often called, the most tasks given at once
     TaskRunner runner() {
         return [this](size_t n, const std::function<void(size_t)>& task) {

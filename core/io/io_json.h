@@ -54,8 +54,8 @@ std::optional<CoordinateCut> cutCoordinates(std::string_view doc, int bareDepth,
 // then joined (io_json_fast.cpp). Nothing when there is no cut, a piece is over a quarter of
 // the document, or a piece does not parse or warns (a warning names its ring by its number in
 // the whole): read the document in one.
-std::optional<ReadResult> parsePieces(std::string_view doc, int bareDepth,
-                                      const std::string& name, const TaskRunner& run);
+std::optional<ReadResult> parsePieces(std::string_view doc, int bareDepth, const std::string& name,
+                                      const TaskRunner& run);
 
 // Cleans the ring just appended to `rr.polygon.vertices` at `first`, in place, and records it
 // (io_read.cpp).

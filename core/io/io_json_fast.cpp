@@ -304,8 +304,8 @@ int leadingArrayDepth(std::string_view text, size_t i) {
 // would need more memory than reading it in one: such a document is read in one.
 constexpr size_t kPieces = 16;
 
-std::optional<ReadResult> parsePieces(std::string_view doc, int bareDepth,
-                                      const std::string& name, const TaskRunner& run) {
+std::optional<ReadResult> parsePieces(std::string_view doc, int bareDepth, const std::string& name,
+                                      const TaskRunner& run) {
     const std::optional<CoordinateCut> cut = cutCoordinates(doc, bareDepth, kPieces);
     if (!cut || cut->commas.empty()) return std::nullopt;
     std::vector<size_t> bounds{cut->open};
@@ -353,7 +353,8 @@ std::optional<ReadResult> parsePieces(std::string_view doc, int bareDepth,
         if (cut->depth == 3 && &piece != &pieces.front())  // holes of the part before
             rr.polygon.parts.back().ringCount += p.parts[part++].ringCount;
         for (; part < p.parts.size(); ++part)
-            rr.polygon.parts.push_back({p.parts[part].firstRing + ringBase, p.parts[part].ringCount});
+            rr.polygon.parts.push_back(
+                {p.parts[part].firstRing + ringBase, p.parts[part].ringCount});
         p = {};  // given back as the whole grows
     }
     return rr;

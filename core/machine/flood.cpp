@@ -112,10 +112,12 @@ public:
         endPart_ = std::min<uint32_t>(endPart_, uint32_t(poly_.parts.size()));
         const bool all = firstPart_ == 0 && endPart_ == poly_.parts.size();
         const Index firstRing = all ? 0 : poly_.parts[firstPart_].firstRing;
-        const Index endRing = all ? Index(poly_.rings.size()) : poly_.parts[endPart_ - 1].firstRing +
-                                                                  poly_.parts[endPart_ - 1].ringCount;
-        const size_t vertices = all ? poly_.vertices.size()
-                                    : partEnd(poly_.parts[endPart_ - 1]) - poly_.rings[firstRing].first;
+        const Index endRing =
+            all ? Index(poly_.rings.size())
+                : poly_.parts[endPart_ - 1].firstRing + poly_.parts[endPart_ - 1].ringCount;
+        const size_t vertices =
+            all ? poly_.vertices.size()
+                : partEnd(poly_.parts[endPart_ - 1]) - poly_.rings[firstRing].first;
         const size_t loopNodes = vertices + poly_.splits.size();
         const size_t minima =
             loopNodes <= kUncountedMinima ? loopNodes : heights_.ringMinima(firstRing, endRing);
@@ -631,7 +633,7 @@ private:
     std::vector<uint32_t>& todo_ = b_.todo;  // pending gorges (ids), last pushed first
     NodeId left_ = kNil, right_ = kNil, water_ = kNil, partFirstNode_ = NodeId(0);
     uint32_t part_ = 0, partNodes_ = 0, killed_ = 0, cut_ = 0, step_ = 0;  // killed_: of the part
-    uint32_t nextPart_ = 0;  // the part advance() sets up next
+    uint32_t nextPart_ = 0;                          // the part advance() sets up next
     uint32_t firstPart_ = 0, endPart_ = UINT32_MAX;  // the parts flooded (onlyParts())
     uint64_t budget_ = 0;
     FloodResult& result_;
@@ -652,8 +654,8 @@ void flood(const Polygon& poly, Listener* listener, const Options& options, Floo
     if (quiet.refused()) Machine<true>(poly, nullptr, options, out, keep).run();
 }
 
-bool floodParts(const Polygon& poly, const Options& options, uint32_t firstPart,
-                uint32_t endPart, FloodResult& out) {
+bool floodParts(const Polygon& poly, const Options& options, uint32_t firstPart, uint32_t endPart,
+                FloodResult& out) {
     Machine<false> quiet(poly, nullptr, options, out, nullptr);
     quiet.onlyParts(firstPart, endPart);
     quiet.run();

@@ -45,7 +45,7 @@ void flood(const Polygon& poly, Listener* listener, const Options& options, Floo
 // unrecorded, with buffers of its own; its steps are counted from 0. Parts are flooded each
 // alone, so these triangles are the ones flood() gives those parts. False when a forbidden
 // state was reached: `out` then has no failure event (flood() the whole polygon for it).
-bool floodParts(const Polygon& poly, const Options& options, uint32_t firstPart,
-                uint32_t endPart, FloodResult& out);
+bool floodParts(const Polygon& poly, const Options& options, uint32_t firstPart, uint32_t endPart,
+                FloodResult& out);
 
 }  // namespace flood

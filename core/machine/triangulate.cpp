@@ -29,8 +29,8 @@ static bool floodAsTasks(const Polygon& polygon, const Options& options, const T
     std::vector<FloodResult> pieces(runs.size() - 1);
     std::vector<char> flooded(pieces.size(), 0);
     run(pieces.size(), [&](size_t t) {
-        flooded[t] = floodParts(polygon, options, uint32_t(runs[t]), uint32_t(runs[t + 1]),
-                                pieces[t]);
+        flooded[t] =
+            floodParts(polygon, options, uint32_t(runs[t]), uint32_t(runs[t + 1]), pieces[t]);
     });
     for (char f : flooded)
         if (!f) return false;

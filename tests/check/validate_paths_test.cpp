@@ -350,7 +350,7 @@ TEST(ValidatePaths, PartsApartGiveTheWholeSweepsAnswer) {
     ASSERT_TRUE(validateBySweep(corners, "p").ok());
     EXPECT_GT(corners.splits.size(), 3u);
     expectSamePaths(corners, "interleaved groups");
-    EXPECT_GT(grouped, 20u);  // the group path was taken, on valid and on invalid layouts
+    EXPECT_GT(grouped, 20u);      // the group path was taken, on valid and on invalid layouts
     EXPECT_GT(runnerCalls, 20u);  // and its groups given to the runner
     EXPECT_GT(valid, 10u);
     EXPECT_GT(invalid, 100u);

@@ -69,8 +69,8 @@ TEST(JsonPieces, GeometriesReadTheSameInPieces) {
                 const bool isBare = text[0] == '[';
                 // A ring that is most of the document (star's only ring, circle-holes'
                 // outer one) would make one piece most of it: that is read in one.
-                const bool bigRing = family == std::string("star") ||
-                                     family == std::string("circle-holes");
+                const bool bigRing =
+                    family == std::string("star") || family == std::string("circle-holes");
                 EXPECT_EQ(expectSameInPieces(text, isBare ? depth : 0, what), !bigRing) << what;
             }
         }
@@ -115,9 +115,8 @@ TEST(JsonPieces, CutsFallBetweenElements) {
         const Polygon p = generate(family, 5, 8000);
         const std::string g = spaced(geoJsonGeometry(p));
         for (size_t pieces : {2, 3, 8, 64}) {
-            const std::optional<io_detail::CoordinateCut> cut =
-                io_detail::cutCoordinates(g, g[0] == '[' ? (p.parts.size() > 1 ? 4 : 3) : 0,
-                                          pieces);
+            const std::optional<io_detail::CoordinateCut> cut = io_detail::cutCoordinates(
+                g, g[0] == '[' ? (p.parts.size() > 1 ? 4 : 3) : 0, pieces);
             ASSERT_TRUE(cut) << family;
             EXPECT_EQ(cut->depth, p.parts.size() > 1 ? 4 : 3);
             EXPECT_EQ(g[cut->open], '[');

@@ -40,8 +40,7 @@ struct ReadResult {
 // Detects the format from the content. `name` is used in messages ("-" means stdin). With
 // `run`, a large GeoJSON geometry (a bare Polygon or MultiPolygon, or its coordinates alone)
 // is parsed in pieces as tasks given to it; the result is the same.
-ReadResult parsePolygon(std::string_view text, const std::string& name,
-                        const TaskRunner& run = {});
+ReadResult parsePolygon(std::string_view text, const std::string& name, const TaskRunner& run = {});
 // `progress`, when given, follows the bytes read (ReadProgress, below).
 struct ReadProgress;
 ReadResult readPolygonFile(const std::string& path,  // "-" reads stdin

@@ -37,8 +37,10 @@ TaskRunner threadRunner(unsigned threads) {
 }
 
 unsigned availableCores() {
+#ifdef __GLIBC__  // the web build's libc has no affinity
     cpu_set_t set;
     if (sched_getaffinity(0, sizeof set, &set) == 0) return std::max(1, CPU_COUNT(&set));
+#endif
     return std::max(1u, std::thread::hardware_concurrency());
 }
 

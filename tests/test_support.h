@@ -130,6 +130,23 @@ inline Trace writtenAndRead(const Trace& t, bool binary = false) {
     return back;
 }
 
+// The parts of `pieces` placed at `offsets` (each piece's own parts, its holes kept).
+inline Polygon layout(const std::vector<Polygon>& pieces, const std::vector<Point>& offsets) {
+    Polygon out;
+    for (size_t k = 0; k < pieces.size(); ++k) {
+        const Polygon& p = pieces[k];
+        for (const Part& part : p.parts)
+            for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) {
+                std::vector<Point> ring;
+                for (Index v = p.rings[r].first; v < p.rings[r].first + p.rings[r].count; ++v)
+                    ring.push_back(
+                        {p.vertices[v].x + offsets[k].x, p.vertices[v].y + offsets[k].y});
+                out.addRing(ring, r == part.firstRing);
+            }
+    }
+    return out;
+}
+
 // The tasks one after another, last first: any order must do.
 struct Backwards {               // a TaskRunner (flood/geometry/task_runner.h)
     size_t calls = 0, most = 0;  // how often called, the most tasks given at once

@@ -41,13 +41,8 @@ bool validGroupByGroup(Polygon& polygon, const std::string& name, Scratch& reuse
     }
     // The groups in runs of about equal size, a task each: a task validates its groups in
     // order, each as a polygon of its own, until one fails.
-    auto partSize = [&](Index k) {
-        const Part& part = P.parts[k];
-        const Ring& last = P.rings[part.firstRing + part.ringCount - 1];
-        return size_t(last.first + last.count - P.rings[part.firstRing].first);
-    };
     std::vector<size_t> groupSize(groupCount, 0);
-    for (Index k = 0; k < P.parts.size(); ++k) groupSize[groupOf[k]] += partSize(k);
+    for (Index k = 0; k < P.parts.size(); ++k) groupSize[groupOf[k]] += P.partVertices(k);
     const std::vector<size_t> runs =
         cutEvenly(groupCount, run ? kGroupTasks : 1, [&](size_t g) { return groupSize[g]; });
     struct Task {

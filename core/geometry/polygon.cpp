@@ -41,10 +41,10 @@ bool Polygon::tiled() const {
 
 size_t Polygon::expectedTriangles() const {
     size_t t = 0;
-    for (const Part& p : parts) {
-        Index first = rings[p.firstRing].first;
-        const Ring& last = rings[p.firstRing + p.ringCount - 1];
-        size_t n = last.first + last.count - first;
+    for (Index k = 0; k < parts.size(); ++k) {
+        const Part& p = parts[k];
+        const Index first = rings[p.firstRing].first;
+        const size_t n = partVertices(k);
         // Each extra copy of a point (rings touching there) takes 2pi from the angle sum,
         // so two triangles fewer.
         const size_t copies =

@@ -19,13 +19,8 @@ constexpr size_t kPartTasks = 8;
 // serially, so that the failure and its message are the serial run's too.
 static bool floodAsTasks(const Polygon& polygon, const Options& options, const TaskRunner& run,
                          FloodResult& result) {
-    const std::vector<size_t> runs = cutEvenly(polygon.parts.size(), kPartTasks, [&](size_t k) {
-        const Part& part = polygon.parts[k];
-        size_t vertices = 0;
-        for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r)
-            vertices += polygon.rings[r].count;
-        return vertices;
-    });
+    const std::vector<size_t> runs = cutEvenly(
+        polygon.parts.size(), kPartTasks, [&](size_t k) { return polygon.partVertices(Index(k)); });
     std::vector<FloodResult> pieces(runs.size() - 1);
     std::vector<char> flooded(pieces.size(), 0);
     run(pieces.size(), [&](size_t t) {

@@ -255,23 +255,6 @@ TEST(ValidatePaths, MinimalSweepHalvesTheWork) {
 // swap vertices within a part.
 namespace {
 
-// The parts of `pieces` placed at `offsets` (each piece's own parts, its holes kept).
-Polygon layout(const std::vector<Polygon>& pieces, const std::vector<Point>& offsets) {
-    Polygon out;
-    for (size_t k = 0; k < pieces.size(); ++k) {
-        const Polygon& p = pieces[k];
-        for (const Part& part : p.parts)
-            for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) {
-                std::vector<Point> ring;
-                for (Index v = p.rings[r].first; v < p.rings[r].first + p.rings[r].count; ++v)
-                    ring.push_back(
-                        {p.vertices[v].x + offsets[k].x, p.vertices[v].y + offsets[k].y});
-                out.addRing(ring, r == part.firstRing);
-            }
-    }
-    return out;
-}
-
 Box boxOf(const Polygon& p) {
     Box b;
     for (Point v : p.vertices) b.add(v);

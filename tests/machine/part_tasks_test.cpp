@@ -15,22 +15,15 @@ namespace {
 
 // The pieces side by side along x, apart, each part of each a part of one polygon.
 Polygon sideBySide(const std::vector<Polygon>& pieces) {
-    Polygon out;
+    std::vector<Point> offsets;
     double x = 0;
     for (const Polygon& piece : pieces) {
         double x0 = std::numeric_limits<double>::infinity(), x1 = -x0;
         for (Point v : piece.vertices) x0 = std::min(x0, v.x), x1 = std::max(x1, v.x);
-        for (const Part& part : piece.parts)
-            for (Index r = part.firstRing; r < part.firstRing + part.ringCount; ++r) {
-                const Ring& ring = piece.rings[r];
-                std::vector<Point> pts(piece.vertices.begin() + ring.first,
-                                       piece.vertices.begin() + ring.first + ring.count);
-                for (Point& v : pts) v.x += x - x0;
-                out.addRing(pts, r == part.firstRing);
-            }
+        offsets.push_back({x - x0, 0});
         x += x1 - x0 + 1;
     }
-    return out;
+    return layout(pieces, offsets);
 }
 
 // Floods p serially, then as tasks run backwards and on two threads: the same result each

@@ -69,6 +69,13 @@ struct Polygon {
     // as every reader builds them: then a run of parts owns a run of vertices of its own.
     bool tiled() const;
     size_t holeCount() const { return rings.size() - parts.size(); }
+    // The vertices of parts[k]'s rings, stored one ring after the other.
+    size_t partVertices(Index k) const {
+        const Part& p = parts[k];
+        if (p.ringCount == 0) return 0;
+        const Ring& last = rings[p.firstRing + p.ringCount - 1];
+        return last.first + last.count - rings[p.firstRing].first;
+    }
     // n + 2h - 2 per part, summed: the triangle count of any triangulation (§1); two fewer
     // for each extra copy of a point where rings touch, one fewer for each T-junction and
     // for each hole that is a single point (a Steiner point).
